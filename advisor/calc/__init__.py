@@ -1,0 +1,1 @@
+"""Pure calculations: SI in, SI out, no I/O, no decisions."""

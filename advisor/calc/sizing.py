@@ -1,0 +1,288 @@
+"""Sizing of the linear chain's parts: a thread evaluated against every check, and a motor
+evaluated on its load. Pure functions of numbers and catalog rows; no decisions here."""
+
+import math
+from dataclasses import dataclass, field
+from typing import Protocol
+
+import numpy as np
+
+from advisor.calc import induction as im
+from advisor.calc import screw as sc
+from catalogs.threads import ThreadProfile
+
+MM = 1e-3
+MPA = 1e6
+
+
+@dataclass(frozen=True)
+class Check:
+    """One strength or function check: ``margin`` ≥ 1 passes."""
+
+    id: str
+    name: str
+    value: float
+    limit: float
+    unit: str
+    margin: float
+    source: str
+
+    @property
+    def passed(self) -> bool:
+        return self.margin >= 1.0
+
+
+def _upper(id: str, name: str, value: float, limit: float, unit: str, source: str) -> Check:
+    """A check of the form value ≤ limit; margin = limit / value."""
+    margin = math.inf if value <= 0 else limit / value
+    return Check(id, name, value, limit, unit, margin, source)
+
+
+def _lower(id: str, name: str, value: float, limit: float, unit: str, source: str) -> Check:
+    """A check of the form value ≥ limit; margin = value / limit."""
+    return Check(id, name, value, limit, unit, value / limit, source)
+
+
+@dataclass(frozen=True)
+class ScrewMaterial:
+    friction_coefficient: float
+    friction_low: float
+    allowable_pressure_Pa: float
+    yield_strength_Pa: float
+    elastic_modulus_Pa: float
+    yield_safety_factor: float
+    nut_height_ratio_min: float
+    nut_height_ratio_max: float
+    nut_max_turns: int
+
+
+@dataclass(frozen=True)
+class ThreadEvaluation:
+    thread: ThreadProfile
+    starts: int
+    friction_model: str
+    lead_angle_rad: float
+    friction_angle_rad: float
+    torque_Nm: float
+    torque_standard_Nm: float
+    torque_paper_Nm: float
+    efficiency: float
+    back_driving_efficiency: float
+    self_locking: bool
+    self_locking_at_low_friction: bool
+    revolutions: float
+    speed_rpm: float
+    nut_height_mm: float
+    nut_turns: float
+    nut_pressure_Pa: float
+    critical_load_N: float
+    slenderness: float
+    buckling_formula: str
+    core_stress_Pa: float
+    checks: tuple[Check, ...] = field(default=())
+
+    @property
+    def passed(self) -> bool:
+        return all(c.passed for c in self.checks)
+
+    @property
+    def failed(self) -> list[Check]:
+        return [c for c in self.checks if not c.passed]
+
+
+def evaluate_thread(
+    thread: ThreadProfile,
+    *,
+    force_N: float,
+    stroke_m: float,
+    travel_time_s: float,
+    span_m: float,
+    end_fixity: str,
+    buckling_safety_factor: float,
+    starts: int,
+    friction_model: sc.FrictionModel,
+    material: ScrewMaterial,
+) -> ThreadEvaluation:
+    """Torque, efficiency, self-locking and the strength checks of one thread.
+
+    Checks (all with margin = allowed / actual):
+    core von Mises stress ≤ σ_y / S; axial force ≤ P_cr / S_b (Euler or Johnson);
+    flank pressure ≤ [p] with the nut sized as H = max(ψ_min·d2, z_req·P);
+    nut height ratio H/d2 ≤ ψ_max; engaged turns ≤ z_max.
+    """
+    p = thread.pitch_mm * MM
+    d2 = thread.d2_mm * MM
+    d3 = thread.d3_mm * MM
+    f = material.friction_coefficient
+    psi = sc.lead_angle(p, d2, starts)
+    phi = sc.friction_angle(f, friction_model, psi)
+    phi_low = sc.friction_angle(material.friction_low, "standard", psi)
+    torque = sc.thread_torque(force_N, d2, p, f, friction_model, starts)
+    revs = sc.revolutions(stroke_m, p, starts)
+    speed = sc.screw_speed_rpm(revs, travel_time_s)
+
+    # Nut: enough turns for the flank pressure, at least the minimum height ratio.
+    h1 = thread.H1_mm * MM
+    z_req = sc.nut_turns_required(force_N, d2, h1, material.allowable_pressure_Pa)
+    height = max(material.nut_height_ratio_min * d2, z_req * p)
+    turns = height / p
+    pressure = sc.nut_bearing_pressure(force_N, d2, h1, turns)
+
+    core = sc.core_equivalent_stress(force_N, torque, d3)
+    p_cr, slenderness, formula = sc.critical_buckling_load(
+        d3, span_m, end_fixity, material.elastic_modulus_Pa, material.yield_strength_Pa
+    )
+    allowed_stress = material.yield_strength_Pa / material.yield_safety_factor
+    ivanov = "Ivanov, Детали машин: power screws"
+    checks = (
+        _upper(
+            "core_stress",
+            "screw core stress (axial force + torque, von Mises)",
+            core / MPA,
+            allowed_stress / MPA,
+            "MPa",
+            ivanov + f"; [σ] = σ_y/{material.yield_safety_factor:g}",
+        ),
+        _upper(
+            "buckling",
+            f"buckling between supports ({formula}, {end_fixity})",
+            force_N,
+            p_cr / buckling_safety_factor,
+            "N",
+            f"{formula} column formula, safety factor {buckling_safety_factor:g}",
+        ),
+        _upper(
+            "nut_pressure",
+            "nut flank bearing pressure",
+            pressure / MPA,
+            material.allowable_pressure_Pa / MPA,
+            "MPa",
+            ivanov,
+        ),
+        _upper(
+            "nut_height",
+            "nut height ratio H/d2",
+            height / d2,
+            material.nut_height_ratio_max,
+            "",
+            ivanov,
+        ),
+        _upper(
+            "nut_turns", "engaged nut turns", turns, float(material.nut_max_turns), "", ivanov
+        ),
+    )
+    return ThreadEvaluation(
+        thread=thread,
+        starts=starts,
+        friction_model=friction_model,
+        lead_angle_rad=psi,
+        friction_angle_rad=phi,
+        torque_Nm=torque,
+        torque_standard_Nm=sc.thread_torque(force_N, d2, p, f, "standard", starts),
+        torque_paper_Nm=sc.thread_torque(force_N, d2, p, f, "paper", starts),
+        efficiency=sc.efficiency(psi, phi),
+        back_driving_efficiency=sc.back_driving_efficiency(psi, phi),
+        self_locking=sc.is_self_locking(psi, phi),
+        self_locking_at_low_friction=sc.is_self_locking(psi, phi_low),
+        revolutions=revs,
+        speed_rpm=speed,
+        nut_height_mm=height / MM,
+        nut_turns=turns,
+        nut_pressure_Pa=pressure,
+        critical_load_N=p_cr,
+        slenderness=slenderness,
+        buckling_formula=formula,
+        core_stress_Pa=core,
+        checks=checks,
+    )
+
+
+class MotorRow(Protocol):
+    model: str
+    rated_power_kW: float
+    rated_speed_rpm: float
+    breakdown_torque_ratio: float
+    starting_torque_ratio: float
+
+    @property
+    def synchronous_speed_rpm(self) -> float: ...
+
+    @property
+    def rated_slip(self) -> float: ...
+
+    @property
+    def rated_torque_Nm(self) -> float: ...
+
+
+@dataclass(frozen=True)
+class MotorEvaluation:
+    motor: MotorRow
+    curve: im.KlossCurve
+    rated_torque_Nm: float
+    max_torque_Nm: float
+    starting_torque_Nm: float
+    working_slip: float | None
+    working_speed_rpm: float | None
+    torque_at_required_speed_Nm: float
+    rated_torque_margin: float
+    starting_torque_margin: float
+    breakdown_torque_margin: float
+    travel_time_s: float | None
+    slips: np.ndarray
+    torques_Nm: np.ndarray
+
+    @property
+    def problems(self) -> list[str]:
+        """Why this motor cannot drive the load continuously at the required speed."""
+        out = []
+        if self.rated_torque_margin < 1:
+            out.append(
+                f"rated torque {self.rated_torque_Nm:.3f} N·m is below the load "
+                f"{self.rated_torque_Nm / self.rated_torque_margin:.3f} N·m"
+            )
+        if self.starting_torque_margin < 1:
+            out.append(f"starting torque {self.starting_torque_Nm:.3f} N·m cannot start the load")
+        if self.working_slip is None:
+            out.append("the load exceeds the maximum torque: the motor stalls")
+        return out
+
+    @property
+    def suitable(self) -> bool:
+        return not self.problems
+
+
+def evaluate_motor(
+    motor: MotorRow, load_torque_Nm: float, required_speed_rpm: float, revolutions: float
+) -> MotorEvaluation:
+    """The motor's refined Kloss curve, its working point under the load and its margins.
+
+    The working point is the stable intersection M(s) = M_load; the travel time at that
+    speed is 60·N / n. The torque at the required speed is M(s_req), s_req = 1 − n_req/n₀,
+    and is reported for comparison with fig. 4 of seed 001.
+    """
+    mn = motor.rated_torque_Nm
+    curve = im.fit_kloss(
+        mn, motor.rated_slip, motor.breakdown_torque_ratio, motor.starting_torque_ratio
+    )
+    n0 = motor.synchronous_speed_rpm
+    s_work = curve.stable_slip(load_torque_Nm)
+    n_work = None if s_work is None else n0 * (1.0 - s_work)
+    s_req = 1.0 - required_speed_rpm / n0
+    at_req = float(curve.torque(s_req)) if 0.0 < s_req <= 1.0 else 0.0
+    slips = im.curve_slips()
+    return MotorEvaluation(
+        motor=motor,
+        curve=curve,
+        rated_torque_Nm=mn,
+        max_torque_Nm=curve.max_torque_Nm,
+        starting_torque_Nm=float(curve.torque(1.0)),
+        working_slip=s_work,
+        working_speed_rpm=n_work,
+        torque_at_required_speed_Nm=at_req,
+        rated_torque_margin=mn / load_torque_Nm,
+        starting_torque_margin=float(curve.torque(1.0)) / load_torque_Nm,
+        breakdown_torque_margin=curve.max_torque_Nm / load_torque_Nm,
+        travel_time_s=None if not n_work else 60.0 * revolutions / n_work,
+        slips=slips,
+        torques_Nm=np.asarray(curve.torque(slips)),
+    )

@@ -1,0 +1,102 @@
+"""``advisor``: the command line.
+
+``advisor --batch REQ.toml`` prints the report TOML on stdout; with ``-o OUT.toml`` it writes
+the report atomically and prints a short summary instead. Exit codes: see
+:class:`advisor.errors.ExitCode`. Never a traceback: every failure is one line per problem on
+stderr.
+
+The batch path must stay light: it imports neither textual nor rich (rich only for the
+summary of ``-o``) nor scipy.optimize.
+"""
+
+import argparse
+import sys
+from pathlib import Path
+
+from advisor import __version__
+from advisor.errors import AdvisorError, ExitCode, InfeasibleError
+
+PROG = "advisor"
+
+
+def build_parser() -> argparse.ArgumentParser:
+    p = argparse.ArgumentParser(
+        prog=PROG,
+        description="Rules-based design advisor for electromechanical drives.",
+        epilog="Exit codes: 0 design found, 2 invalid input, 3 no feasible design.",
+    )
+    p.add_argument("requirements", nargs="?", type=Path, help=argparse.SUPPRESS)
+    p.add_argument(
+        "--batch", metavar="REQ.toml", type=Path, help="advise on a requirement file, no UI"
+    )
+    p.add_argument(
+        "-o",
+        "--output",
+        metavar="OUT.toml",
+        type=Path,
+        help="write the report here (atomically) and print a summary instead",
+    )
+    p.add_argument(
+        "--catalog-dir",
+        metavar="DIR",
+        type=Path,
+        help="a directory of user catalogs added to the shipped ones",
+    )
+    p.add_argument("--version", action="version", version=f"{PROG} {__version__}")
+    return p
+
+
+def _err(message: str) -> None:
+    for line in message.splitlines() or [message]:
+        print(f"{PROG}: {line}", file=sys.stderr)
+
+
+def run_batch(req_path: Path, output: Path | None, catalog_dir: Path | None) -> int:
+    from advisor.engine import advise
+    from advisor.models import read_requirements
+    from advisor.report import to_toml, write_atomic
+
+    req = read_requirements(req_path)
+    report = advise(req, catalog_dir)
+    text = to_toml(report)
+    if output is None:
+        sys.stdout.write(text)
+        return ExitCode.OK
+    try:
+        write_atomic(output, text)
+    except OSError as exc:
+        _err(f"{output}: cannot write the report ({exc.strerror}); nothing was written")
+        return ExitCode.INVALID_INPUT
+    from advisor.summary import print_summary
+
+    print_summary(report, output)
+    return ExitCode.OK
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = build_parser()
+    try:
+        args = parser.parse_args(argv)
+    except SystemExit as exc:  # argparse: --help, --version, or a usage error (code 2)
+        return int(exc.code or 0)
+    req_path = args.batch
+    if req_path is None:
+        _err(
+            "the terminal wizard is not part of this version yet; "
+            "run `advisor --batch REQ.toml` (see `advisor --help`)"
+        )
+        return ExitCode.INVALID_INPUT
+    try:
+        return run_batch(req_path, args.output, args.catalog_dir)
+    except InfeasibleError as exc:
+        _err(str(exc))
+        return ExitCode.INFEASIBLE
+    except AdvisorError as exc:
+        _err(str(exc))
+        return exc.exit_code
+    except KeyboardInterrupt:
+        _err("interrupted; nothing was written")
+        return 130
+    except Exception as exc:  # a bug: say so in one line, never a traceback
+        _err(f"internal error ({type(exc).__name__}: {exc}); please report it with the input file")
+        return ExitCode.INTERNAL_ERROR

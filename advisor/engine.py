@@ -1,0 +1,73 @@
+"""The engine: requirements in, an explained design (the Report) out.
+
+One entry point, :func:`advise`, used by the batch command and the terminal wizard alike.
+"""
+
+from pathlib import Path
+
+import rules  # noqa: F401  (registers every rule)
+from advisor import __version__
+from advisor.linear import advise_linear
+from advisor.models import Requirements
+from advisor.report import CheckOut, DecisionOut, Report, ReportHeader
+from advisor.rulebook import Trace
+from catalogs import load_catalogs
+
+
+def advise(req: Requirements, catalog_dir: Path | None = None) -> Report:
+    """Choose and size the drive for ``req``.
+
+    Raises :class:`advisor.errors.InputError` for an input the catalogs cannot serve (an
+    unknown thread, a broken user catalog) and :class:`advisor.errors.InfeasibleError` when
+    no design satisfies the requirement.
+    """
+    cat = load_catalogs(catalog_dir)
+    trace = Trace()
+    design, checks, warnings = advise_linear(req, cat, trace)
+    return Report(
+        report=ReportHeader(
+            advisor_version=__version__,
+            application=req.application.kind,
+            title=req.application.title,
+            status="feasible" if all(c.passed for c in checks) else "checks failed",
+        ),
+        requirements=req.model_dump(exclude_none=True),
+        design=design,
+        checks=[
+            CheckOut(
+                id=c.id,
+                name=c.name,
+                value=c.value,
+                limit=c.limit,
+                unit=c.unit,
+                margin=c.margin,
+                passed=c.passed,
+                source=c.source,
+            )
+            for c in checks
+        ],
+        warnings=warnings,
+        decisions=[
+            DecisionOut(
+                id=d.id,
+                title=d.title,
+                decision=d.decision,
+                rationale=d.rationale,
+                source=d.source,
+                inputs=_tomlable(d.inputs),
+            )
+            for d in trace.decisions
+        ],
+    )
+
+
+def _tomlable(inputs: dict) -> dict:
+    """Decision inputs as TOML can hold them (no None, plain numbers and strings)."""
+    out = {}
+    for k, v in inputs.items():
+        if v is None:
+            continue
+        if isinstance(v, list | tuple):
+            v = [x for x in v if x is not None]
+        out[str(k)] = v
+    return out

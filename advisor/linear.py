@@ -1,0 +1,447 @@
+"""The linear actuator advice: induction motor + sliding screw–nut (seed 001).
+
+Orchestration only: the rules in ``rules/`` choose, the functions in ``advisor/calc`` compute.
+"""
+
+import math
+from dataclasses import dataclass
+
+from advisor.calc import induction as im
+from advisor.calc import screw as sc
+from advisor.calc.sizing import (
+    Check,
+    MotorEvaluation,
+    ScrewMaterial,
+    ThreadEvaluation,
+    evaluate_motor,
+    evaluate_thread,
+)
+from advisor.errors import InfeasibleError, InputError
+from advisor.models import Requirements
+from advisor.report import (
+    BucklingOut,
+    CurveOut,
+    InductionMotorOut,
+    LinearDesignOut,
+    MotorCandidateOut,
+    NutOut,
+    ScrewOut,
+)
+from advisor.rulebook import Trace
+from catalogs import Catalogs
+from catalogs.loader import InductionMotor
+from rules import induction as im_rules
+from rules import screw as screw_rules
+
+
+@dataclass(frozen=True)
+class MotorPlan:
+    pole_pairs: int | None
+    required_power_kW: float
+    band_kW: list[float]
+    evaluations: dict[float, MotorEvaluation | None]  # by rated power; None: not in catalog
+    selected: InductionMotor | None
+
+
+def plan_motor(
+    ev: ThreadEvaluation, cat: Catalogs, frequency_Hz: float, trace: Trace
+) -> MotorPlan:
+    """Pole pairs, rated power band and catalog motor for one thread's torque and speed."""
+    load = ev.torque_Nm
+    n_req = ev.speed_rpm
+    p_req_kW = load * n_req * math.pi / 30.0 / 1e3
+
+    pole_options = []
+    for pp in (1, 2, 3, 4):
+        line = [
+            m for m in cat.motors_with_poles(2 * pp) if m.rated_power_kW >= p_req_kW - 1e-12
+        ]
+        first = line[0] if line else None
+        pole_options.append(
+            im_rules.PoleOption(
+                pp,
+                im.synchronous_speed_rpm(frequency_Hz, pp),
+                first.model if first else None,
+                first.rated_speed_rpm if first else None,
+            )
+        )
+    pp = trace.apply(im_rules.choose_pole_pairs, n_req, pole_options)
+    if pp is None:
+        return MotorPlan(None, p_req_kW, [], {}, None)
+
+    series = list(cat.rated_powers_kW)
+    nearest, band = trace.apply(im_rules.rated_power_band, p_req_kW, series)
+    line = {m.rated_power_kW: m for m in cat.motors_with_poles(2 * pp)}
+    if nearest is None:
+        return MotorPlan(pp, p_req_kW, [], {}, None)
+
+    def evaluate(power: float) -> MotorEvaluation | None:
+        m = line.get(power)
+        return None if m is None else evaluate_motor(m, load, n_req, ev.revolutions)
+
+    # Walk up the series from the nearest power until a catalog motor carries the load.
+    start = series.index(nearest)
+    evaluations: dict[float, MotorEvaluation | None] = {}
+    options = []
+    for power in series[start:]:
+        if power > max(line, default=0):
+            break
+        evaluations[power] = evaluate(power)
+        e = evaluations[power]
+        options.append(
+            im_rules.MotorOption(
+                power,
+                e.motor.model if e else None,
+                tuple(e.problems) if e else ("not in the catalog",),
+                e.rated_torque_margin if e else None,
+            )
+        )
+        if e is not None and e.suitable:
+            break
+    model = trace.apply(im_rules.choose_motor, options)
+    selected = next((m for m in line.values() if m.model == model), None)
+    if selected is not None:
+        i = series.index(selected.rated_power_kW)
+        band = series[max(0, i - 1) : i + 2]
+        for power in band:
+            if power not in evaluations:
+                evaluations[power] = evaluate(power)
+    return MotorPlan(pp, p_req_kW, band, evaluations, selected)
+
+
+def _material(req: Requirements, cat: Catalogs, trace: Trace) -> tuple[ScrewMaterial, tuple[float, float]]:
+    s = req.screw
+    pair = cat.pair(s.material_pair)
+    lo, hi = pair.friction_range(s.lubrication)
+    f = trace.apply(
+        screw_rules.friction_coefficient, s.friction_coefficient, s.material_pair, s.lubrication, lo, hi
+    )
+    steel = cat.steel(s.screw_steel)
+    m = cat.materials
+    return (
+        ScrewMaterial(
+            friction_coefficient=f,
+            friction_low=min(lo, f),
+            allowable_pressure_Pa=pair.allowable_pressure_MPa * 1e6,
+            yield_strength_Pa=steel.yield_strength_MPa * 1e6,
+            elastic_modulus_Pa=steel.elastic_modulus_MPa * 1e6,
+            yield_safety_factor=m.strength.yield_safety_factor,
+            nut_height_ratio_min=m.nut.height_ratio_min,
+            nut_height_ratio_max=m.nut.height_ratio_max,
+            nut_max_turns=m.nut.max_turns,
+        ),
+        (lo, hi),
+    )
+
+
+def advise_linear(
+    req: Requirements, cat: Catalogs, trace: Trace
+) -> tuple[LinearDesignOut, list[Check], list[str]]:
+    lin = req.linear
+    assert lin is not None  # guaranteed by Requirements validation
+    s = req.screw
+    trace.apply(screw_rules.transmission_type, lin.force_N)
+    material, f_range = _material(req, cat, trace)
+    model = trace.apply(screw_rules.friction_model, s.friction_model)
+
+    if s.thread is not None and cat.thread(s.thread) is None:
+        known = ", ".join(t.name for t in cat.threads if t.d_mm <= 20)
+        raise InputError(
+            f"screw.thread = {s.thread!r}: not a thread of GOST 24738-81 in the catalog "
+            f"(for example {known}, … up to Tr100x20)"
+        )
+
+    def evaluate(t) -> ThreadEvaluation:
+        return evaluate_thread(
+            t,
+            force_N=lin.force_N,
+            stroke_m=lin.stroke_m,
+            travel_time_s=lin.travel_time_s,
+            span_m=lin.support_span_m,
+            end_fixity=lin.end_fixity,
+            buckling_safety_factor=lin.buckling_safety_factor,
+            starts=s.starts,
+            friction_model=model,
+            material=material,
+        )
+
+    freq = req.motor.supply_frequency_Hz
+    evaluations = {t.name: evaluate(t) for t in cat.threads}
+    options = []
+    plans: dict[str, MotorPlan] = {}
+    smallest_ok_d: float | None = None
+    for name, ev in evaluations.items():
+        d = ev.thread.d_mm
+        if smallest_ok_d is not None and d > smallest_ok_d and name != s.thread:
+            options.append(_option(ev, None))
+            continue
+        plan = plan_motor(ev, cat, freq, Trace()) if ev.passed or name == s.thread else None
+        if plan is not None:
+            plans[name] = plan
+        options.append(_option(ev, plan))
+        if ev.passed and plan is not None and plan.selected is not None and smallest_ok_d is None:
+            smallest_ok_d = d
+
+    chosen = trace.apply(screw_rules.choose_thread, options, req.application.hold_without_power, s.thread)
+    if chosen is None:
+        raise InfeasibleError(
+            "no feasible design: no GOST 24738-81 thread (8…100 mm) passes every check",
+            _infeasibility_reasons(evaluations, lin.force_N),
+        )
+    ev = evaluations[chosen]
+    if not ev.passed:
+        raise InfeasibleError(
+            f"no feasible design: the imposed thread {chosen} fails its checks",
+            [_describe(c) for c in ev.failed],
+        )
+    trace.apply(
+        screw_rules.holding,
+        req.application.hold_without_power,
+        ev.self_locking,
+        ev.self_locking_at_low_friction,
+        chosen,
+    )
+    plan = plan_motor(ev, cat, freq, trace)
+    if plan.selected is None:
+        raise InfeasibleError(
+            f"no feasible design: no 50 Hz induction motor of the catalog drives {chosen}",
+            [
+                f"screw speed {ev.speed_rpm:.0f} rpm, torque {ev.torque_Nm:.3f} N·m, "
+                f"power {plan.required_power_kW:.3f} kW",
+                "the fastest catalog motor runs at "
+                f"{max(m.rated_speed_rpm for m in cat.motors):g} rpm and the largest gives "
+                f"{max(m.rated_power_kW for m in cat.motors):g} kW",
+            ],
+        )
+
+    warnings: list[str] = []
+    if req.application.hold_without_power and not ev.self_locking_at_low_friction:
+        warnings.append(
+            f"{chosen} is not self-locking at the low end of the friction range "
+            f"(f = {material.friction_low:g}); holding without power needs a one-way device."
+        )
+    if s.friction_model == "paper":
+        warnings.append(
+            "friction_model = 'paper' uses seed 001's f/cos(ψ/2); the standard f/cos(α/2) "
+            f"gives {ev.torque_standard_Nm:.4g} N·m instead of {ev.torque_paper_Nm:.4g} N·m."
+        )
+    advisor_choice = trace.find("SCR-04").inputs.get("advisor_choice")
+    design = LinearDesignOut(
+        screw=_screw_out(ev, req, material, f_range, advisor_choice),
+        motor=_motor_out(plan, ev, cat, freq),
+    )
+    sel = plan.evaluations[plan.selected.rated_power_kW]
+    assert sel is not None
+    checks = list(ev.checks) + [
+        Check(
+            "motor_rated_torque",
+            "motor rated torque against the screw torque",
+            ev.torque_Nm,
+            sel.rated_torque_Nm,
+            "N·m",
+            sel.rated_torque_margin,
+            "GOST 12139-84 motor rating; " + screw_rules.SEED_001,
+        ),
+        Check(
+            "motor_starting_torque",
+            "motor starting torque against the screw torque",
+            ev.torque_Nm,
+            sel.starting_torque_Nm,
+            "N·m",
+            sel.starting_torque_margin,
+            "catalog starting torque ratio",
+        ),
+        Check(
+            "travel_time",
+            "travel time at the motor's working speed",
+            sel.travel_time_s or math.inf,
+            lin.travel_time_s,
+            "s",
+            lin.travel_time_s / (sel.travel_time_s or math.inf),
+            screw_rules.SEED_001,
+        ),
+    ]
+    if sel.travel_time_s and sel.travel_time_s < 0.7 * lin.travel_time_s:
+        warnings.append(
+            f"the motor makes the stroke in {sel.travel_time_s:.2f} s, much faster than the "
+            f"{lin.travel_time_s:g} s asked for: an induction motor on 50 Hz has no speed "
+            "between its pole steps."
+        )
+    return design, checks, warnings
+
+
+def _option(ev: ThreadEvaluation, plan: MotorPlan | None) -> screw_rules.ThreadOption:
+    sel = plan.selected if plan else None
+    return screw_rules.ThreadOption(
+        name=ev.thread.name,
+        d_mm=ev.thread.d_mm,
+        pitch_mm=ev.thread.pitch_mm,
+        preferred=ev.thread.preferred,
+        passed=ev.passed,
+        failed=tuple(f"{c.id} margin {c.margin:.2f}" for c in ev.failed),
+        self_locking_at_low_friction=ev.self_locking_at_low_friction,
+        motor_torque_Nm=sel.rated_torque_Nm if sel else None,
+        motor_model=sel.model if sel else None,
+    )
+
+
+def _describe(c: Check) -> str:
+    unit = f" {c.unit}" if c.unit else ""
+    return f"{c.name}: {c.value:.4g}{unit} against the limit {c.limit:.4g}{unit} (margin {c.margin:.3f})"
+
+
+def _infeasibility_reasons(evaluations: dict[str, ThreadEvaluation], force_N: float) -> list[str]:
+    largest = list(evaluations.values())[-1]
+    reasons = [f"the largest thread, {largest.thread.name}, fails: " + "; ".join(
+        _describe(c) for c in largest.failed
+    )] if largest.failed else []
+    reasons.append(
+        f"a force of {force_N:g} N needs a larger screw, a shorter span between supports, "
+        "stiffer end fixity or a stronger material pair"
+        if largest.failed
+        else "every passing thread needs a screw speed or power outside the motor catalog"
+    )
+    return reasons
+
+
+def _screw_out(
+    ev: ThreadEvaluation,
+    req: Requirements,
+    material: ScrewMaterial,
+    f_range: tuple[float, float],
+    advisor_choice: str | None,
+) -> ScrewOut:
+    t = ev.thread
+    lin = req.linear
+    assert lin is not None
+    v = sc.linear_speed(lin.stroke_m, lin.travel_time_s)
+    return ScrewOut(
+        thread=t.name,
+        imposed=req.screw.thread is not None,
+        advisor_choice=advisor_choice,
+        nominal_diameter_mm=t.d_mm,
+        pitch_mm=t.pitch_mm,
+        preferred_pitch=t.preferred,
+        starts=ev.starts,
+        lead_mm=t.pitch_mm * ev.starts,
+        d2_mm=t.d2_mm,
+        d3_mm=t.d3_mm,
+        D1_mm=t.D1_mm,
+        D2_mm=t.D2_mm,
+        D4_mm=t.D4_mm,
+        ac_mm=t.ac_mm,
+        H1_mm=t.H1_mm,
+        h3_mm=t.h3_mm,
+        material_pair=req.screw.material_pair,
+        lubrication=req.screw.lubrication,
+        screw_steel=req.screw.screw_steel,
+        friction_model=ev.friction_model,
+        friction_coefficient=material.friction_coefficient,
+        friction_range=list(f_range),
+        lead_angle_deg=math.degrees(ev.lead_angle_rad),
+        friction_angle_deg=math.degrees(ev.friction_angle_rad),
+        torque_Nm=ev.torque_Nm,
+        torque_standard_Nm=ev.torque_standard_Nm,
+        torque_paper_Nm=ev.torque_paper_Nm,
+        efficiency=ev.efficiency,
+        back_driving_efficiency=ev.back_driving_efficiency,
+        self_locking=ev.self_locking,
+        self_locking_at_low_friction=ev.self_locking_at_low_friction,
+        linear_speed_m_s=v,
+        revolutions=ev.revolutions,
+        speed_rpm=ev.speed_rpm,
+        output_power_W=lin.force_N * v,
+        nut=NutOut(
+            height_mm=ev.nut_height_mm,
+            turns=ev.nut_turns,
+            height_ratio=ev.nut_height_mm / t.d2_mm,
+            bearing_pressure_MPa=ev.nut_pressure_Pa / 1e6,
+            allowable_pressure_MPa=material.allowable_pressure_Pa / 1e6,
+        ),
+        buckling=BucklingOut(
+            formula=ev.buckling_formula,
+            end_fixity=lin.end_fixity,
+            effective_length_factor=sc.END_FIXITY_FACTOR[lin.end_fixity],
+            slenderness=ev.slenderness,
+            critical_load_N=ev.critical_load_N,
+            safety_factor_required=lin.buckling_safety_factor,
+        ),
+    )
+
+
+def _motor_out(plan: MotorPlan, ev: ThreadEvaluation, cat: Catalogs, freq: float) -> InductionMotorOut:
+    m = plan.selected
+    assert m is not None and plan.pole_pairs is not None
+    sel = plan.evaluations[m.rated_power_kW]
+    assert sel is not None and sel.working_speed_rpm is not None and sel.working_slip is not None
+    candidates = []
+    for power in plan.band_kW:
+        e = plan.evaluations.get(power)
+        role = (
+            "selected"
+            if power == m.rated_power_kW
+            else ("lower" if power < m.rated_power_kW else "higher")
+        )
+        candidates.append(_candidate_out(role, power, e))
+    return InductionMotorOut(
+        kind="induction",
+        supply_frequency_Hz=freq,
+        speed_rpm=ev.speed_rpm,
+        pole_pairs=plan.pole_pairs,
+        synchronous_speed_rpm=im.synchronous_speed_rpm(freq, plan.pole_pairs),
+        required_torque_Nm=ev.torque_Nm,
+        required_power_kW=plan.required_power_kW,
+        rated_power_kW=m.rated_power_kW,
+        model=m.model,
+        rated_speed_rpm=m.rated_speed_rpm,
+        rated_torque_Nm=m.rated_torque_Nm,
+        working_speed_rpm=sel.working_speed_rpm,
+        working_slip=sel.working_slip,
+        working_power_kW=ev.torque_Nm * sel.working_speed_rpm * math.pi / 30.0 / 1e3,
+        travel_time_s=sel.travel_time_s or math.inf,
+        efficiency_pct=m.efficiency_pct,
+        cos_phi=m.cos_phi,
+        starting_current_ratio=m.starting_current_ratio,
+        inertia_kgm2=m.inertia_kgm2,
+        mass_kg=m.mass_kg,
+        estimated=list(m.estimated),
+        source=cat.motor_sources.get(m.source, m.source),
+        candidates=candidates,
+    )
+
+
+def _candidate_out(role: str, power: float, e: MotorEvaluation | None) -> MotorCandidateOut:
+    if e is None:
+        return MotorCandidateOut(
+            role=role,
+            rated_power_kW=power,
+            in_catalog=False,
+            suitable=False,
+            problems=["no motor of this power and pole count in the catalog"],
+        )
+    n0 = e.motor.synchronous_speed_rpm
+    return MotorCandidateOut(
+        role=role,
+        rated_power_kW=power,
+        model=e.motor.model,
+        in_catalog=True,
+        rated_speed_rpm=e.motor.rated_speed_rpm,
+        rated_torque_Nm=e.rated_torque_Nm,
+        max_torque_Nm=e.max_torque_Nm,
+        starting_torque_Nm=e.starting_torque_Nm,
+        critical_slip=e.curve.critical_slip,
+        kloss_epsilon=e.curve.epsilon,
+        working_speed_rpm=e.working_speed_rpm,
+        torque_at_required_speed_Nm=e.torque_at_required_speed_Nm,
+        rated_torque_margin=e.rated_torque_margin,
+        starting_torque_margin=e.starting_torque_margin,
+        breakdown_torque_margin=e.breakdown_torque_margin,
+        travel_time_s=e.travel_time_s,
+        suitable=e.suitable,
+        problems=e.problems,
+        curve=CurveOut(
+            slip=[float(x) for x in e.slips],
+            speed_rpm=[float(n0 * (1.0 - x)) for x in e.slips],
+            torque_Nm=[float(x) for x in e.torques_Nm],
+        ),
+    )

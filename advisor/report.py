@@ -1,0 +1,220 @@
+"""The design report: a pydantic model, dumped to TOML with tomli-w and written atomically.
+
+Stable keys (other tools read them) are documented in README.md. Floats are rounded to
+six significant digits so that two runs of the same input give byte-identical files and a
+changed input shows as a readable diff.
+"""
+
+import math
+import os
+import tempfile
+from pathlib import Path
+from typing import Any
+
+import tomli_w
+from pydantic import BaseModel, ConfigDict
+
+REPORT_FORMAT = 1
+
+
+class _Out(BaseModel):
+    model_config = ConfigDict(extra="forbid")
+
+
+class CheckOut(_Out):
+    id: str
+    name: str
+    value: float
+    limit: float
+    unit: str
+    margin: float
+    passed: bool
+    source: str
+
+
+class DecisionOut(_Out):
+    id: str
+    title: str
+    decision: str
+    rationale: str
+    source: str
+    inputs: dict[str, Any] = {}
+
+
+class NutOut(_Out):
+    height_mm: float
+    turns: float
+    height_ratio: float
+    bearing_pressure_MPa: float
+    allowable_pressure_MPa: float
+
+
+class BucklingOut(_Out):
+    formula: str
+    end_fixity: str
+    effective_length_factor: float
+    slenderness: float
+    critical_load_N: float
+    safety_factor_required: float
+
+
+class ScrewOut(_Out):
+    thread: str
+    imposed: bool
+    advisor_choice: str | None = None
+    nominal_diameter_mm: float
+    pitch_mm: float
+    preferred_pitch: bool
+    starts: int
+    lead_mm: float
+    d2_mm: float
+    d3_mm: float
+    D1_mm: float
+    D2_mm: float
+    D4_mm: float
+    ac_mm: float
+    H1_mm: float
+    h3_mm: float
+    material_pair: str
+    lubrication: str
+    screw_steel: str
+    friction_model: str
+    friction_coefficient: float
+    friction_range: list[float]
+    lead_angle_deg: float
+    friction_angle_deg: float
+    torque_Nm: float
+    torque_standard_Nm: float
+    torque_paper_Nm: float
+    efficiency: float
+    back_driving_efficiency: float
+    self_locking: bool
+    self_locking_at_low_friction: bool
+    linear_speed_m_s: float
+    revolutions: float
+    speed_rpm: float
+    output_power_W: float
+    nut: NutOut
+    buckling: BucklingOut
+
+
+class CurveOut(_Out):
+    slip: list[float]
+    speed_rpm: list[float]
+    torque_Nm: list[float]
+
+
+class MotorCandidateOut(_Out):
+    role: str
+    rated_power_kW: float
+    model: str | None = None
+    in_catalog: bool
+    rated_speed_rpm: float | None = None
+    rated_torque_Nm: float | None = None
+    max_torque_Nm: float | None = None
+    starting_torque_Nm: float | None = None
+    critical_slip: float | None = None
+    kloss_epsilon: float | None = None
+    working_speed_rpm: float | None = None
+    torque_at_required_speed_Nm: float | None = None
+    rated_torque_margin: float | None = None
+    starting_torque_margin: float | None = None
+    breakdown_torque_margin: float | None = None
+    travel_time_s: float | None = None
+    suitable: bool
+    problems: list[str] = []
+    curve: CurveOut | None = None
+
+
+class InductionMotorOut(_Out):
+    kind: str
+    supply_frequency_Hz: float
+    speed_rpm: float
+    pole_pairs: int
+    synchronous_speed_rpm: float
+    required_torque_Nm: float
+    required_power_kW: float
+    rated_power_kW: float
+    model: str
+    rated_speed_rpm: float
+    rated_torque_Nm: float
+    working_speed_rpm: float
+    working_slip: float
+    working_power_kW: float
+    travel_time_s: float
+    efficiency_pct: float
+    cos_phi: float
+    starting_current_ratio: float
+    inertia_kgm2: float
+    mass_kg: float
+    estimated: list[str]
+    source: str
+    candidates: list[MotorCandidateOut]
+
+
+class LinearDesignOut(_Out):
+    screw: ScrewOut
+    motor: InductionMotorOut
+
+
+class ReportHeader(_Out):
+    format: int = REPORT_FORMAT
+    advisor_version: str
+    application: str
+    title: str = ""
+    status: str = "feasible"
+
+
+class Report(_Out):
+    report: ReportHeader
+    requirements: dict[str, Any]
+    design: LinearDesignOut
+    checks: list[CheckOut]
+    warnings: list[str] = []
+    decisions: list[DecisionOut]
+
+
+def round_sig(x: float, digits: int = 6) -> float:
+    """Round to significant digits, for stable, diffable reports.
+
+    >>> round_sig(5.084934), round_sig(0.000123456789), round_sig(1200.0)
+    (5.08493, 0.000123457, 1200.0)
+    """
+    if x == 0 or not math.isfinite(x):
+        return x
+    return round(x, digits - 1 - int(math.floor(math.log10(abs(x)))))
+
+
+def _clean(obj: Any) -> Any:
+    if isinstance(obj, float):
+        return round_sig(obj)
+    if isinstance(obj, dict):
+        return {k: _clean(v) for k, v in obj.items() if v is not None}
+    if isinstance(obj, list | tuple):
+        return [_clean(v) for v in obj if v is not None]
+    return obj
+
+
+def to_toml(report: Report) -> str:
+    """The report as TOML text (no nulls: TOML has none)."""
+    return tomli_w.dumps(_clean(report.model_dump(exclude_none=True)))
+
+
+def write_atomic(path: Path, text: str) -> None:
+    """Write ``text`` to ``path`` so that a reader sees the old file or the new one, never a
+    half-written one: write a temporary file beside it, flush it to disk, then rename."""
+    path = Path(path)
+    directory = path.parent if str(path.parent) else Path(".")
+    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=directory)
+    try:
+        with os.fdopen(fd, "w", encoding="utf-8", newline="\n") as fh:
+            fh.write(text)
+            fh.flush()
+            os.fsync(fh.fileno())
+        os.replace(tmp, path)
+    except BaseException:
+        try:
+            os.unlink(tmp)
+        except FileNotFoundError:
+            pass
+        raise
