@@ -10,6 +10,7 @@ summary of ``-o``) nor scipy.optimize.
 """
 
 import argparse
+import os
 import sys
 from pathlib import Path
 
@@ -52,6 +53,9 @@ def _err(message: str) -> None:
 
 
 def run_batch(req_path: Path, output: Path | None, catalog_dir: Path | None) -> int:
+    # pydantic scans every installed package's entry points for plugins on its first model
+    # (about 7 ms of importlib.metadata); the advisor uses none.
+    os.environ.setdefault("PYDANTIC_DISABLE_PLUGINS", "__all__")
     from advisor.engine import advise
     from advisor.models import read_requirements
     from advisor.report import to_toml, write_atomic

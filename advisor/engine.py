@@ -24,8 +24,8 @@ def advise(req: Requirements, catalog_dir: Path | None = None) -> Report:
     cat = load_catalogs(catalog_dir)
     trace = Trace()
     design, checks, warnings = advise_linear(req, cat, trace)
-    return Report(
-        report=ReportHeader(
+    return Report.make(
+        report=ReportHeader.make(
             advisor_version=__version__,
             application=req.application.kind,
             title=req.application.title,
@@ -34,7 +34,7 @@ def advise(req: Requirements, catalog_dir: Path | None = None) -> Report:
         requirements=req.model_dump(exclude_none=True),
         design=design,
         checks=[
-            CheckOut(
+            CheckOut.make(
                 id=c.id,
                 name=c.name,
                 value=c.value,
@@ -48,7 +48,7 @@ def advise(req: Requirements, catalog_dir: Path | None = None) -> Report:
         ],
         warnings=warnings,
         decisions=[
-            DecisionOut(
+            DecisionOut.make(
                 id=d.id,
                 title=d.title,
                 decision=d.decision,

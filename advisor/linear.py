@@ -4,7 +4,7 @@ Orchestration only: the rules in ``rules/`` choose, the functions in ``advisor/c
 """
 
 import math
-from dataclasses import dataclass
+from typing import NamedTuple
 
 from advisor.calc import induction as im
 from advisor.calc import screw as sc
@@ -29,13 +29,12 @@ from advisor.report import (
 )
 from advisor.rulebook import Trace
 from catalogs import Catalogs
-from catalogs.loader import InductionMotor
+from catalogs.rows import InductionMotor
 from rules import induction as im_rules
 from rules import screw as screw_rules
 
 
-@dataclass(frozen=True)
-class MotorPlan:
+class MotorPlan(NamedTuple):
     pole_pairs: int | None
     required_power_kW: float
     band_kW: list[float]
@@ -43,9 +42,7 @@ class MotorPlan:
     selected: InductionMotor | None
 
 
-def plan_motor(
-    ev: ThreadEvaluation, cat: Catalogs, frequency_Hz: float, trace: Trace
-) -> MotorPlan:
+def plan_motor(ev: ThreadEvaluation, cat: Catalogs, frequency_Hz: float, trace: Trace) -> MotorPlan:
     """Pole pairs, rated power band and catalog motor for one thread's torque and speed."""
     load = ev.torque_Nm
     n_req = ev.speed_rpm
@@ -53,9 +50,7 @@ def plan_motor(
 
     pole_options = []
     for pp in (1, 2, 3, 4):
-        line = [
-            m for m in cat.motors_with_poles(2 * pp) if m.rated_power_kW >= p_req_kW - 1e-12
-        ]
+        line = [m for m in cat.motors_with_poles(2 * pp) if m.rated_power_kW >= p_req_kW - 1e-12]
         first = line[0] if line else None
         pole_options.append(
             im_rules.PoleOption(
@@ -109,12 +104,19 @@ def plan_motor(
     return MotorPlan(pp, p_req_kW, band, evaluations, selected)
 
 
-def _material(req: Requirements, cat: Catalogs, trace: Trace) -> tuple[ScrewMaterial, tuple[float, float]]:
+def _material(
+    req: Requirements, cat: Catalogs, trace: Trace
+) -> tuple[ScrewMaterial, tuple[float, float]]:
     s = req.screw
     pair = cat.pair(s.material_pair)
     lo, hi = pair.friction_range(s.lubrication)
     f = trace.apply(
-        screw_rules.friction_coefficient, s.friction_coefficient, s.material_pair, s.lubrication, lo, hi
+        screw_rules.friction_coefficient,
+        s.friction_coefficient,
+        s.material_pair,
+        s.lubrication,
+        lo,
+        hi,
     )
     steel = cat.steel(s.screw_steel)
     m = cat.materials
@@ -182,7 +184,9 @@ def advise_linear(
         if ev.passed and plan is not None and plan.selected is not None and smallest_ok_d is None:
             smallest_ok_d = d
 
-    chosen = trace.apply(screw_rules.choose_thread, options, req.application.hold_without_power, s.thread)
+    chosen = trace.apply(
+        screw_rules.choose_thread, options, req.application.hold_without_power, s.thread
+    )
     if chosen is None:
         raise InfeasibleError(
             "no feasible design: no GOST 24738-81 thread (8…100 mm) passes every check",
@@ -226,13 +230,14 @@ def advise_linear(
             f"gives {ev.torque_standard_Nm:.4g} N·m instead of {ev.torque_paper_Nm:.4g} N·m."
         )
     advisor_choice = trace.find("SCR-04").inputs.get("advisor_choice")
-    design = LinearDesignOut(
+    design = LinearDesignOut.make(
         screw=_screw_out(ev, req, material, f_range, advisor_choice),
         motor=_motor_out(plan, ev, cat, freq),
     )
     sel = plan.evaluations[plan.selected.rated_power_kW]
     assert sel is not None
-    checks = list(ev.checks) + [
+    checks = [
+        *ev.checks,
         Check(
             "motor_rated_torque",
             "motor rated torque against the screw torque",
@@ -287,14 +292,22 @@ def _option(ev: ThreadEvaluation, plan: MotorPlan | None) -> screw_rules.ThreadO
 
 def _describe(c: Check) -> str:
     unit = f" {c.unit}" if c.unit else ""
-    return f"{c.name}: {c.value:.4g}{unit} against the limit {c.limit:.4g}{unit} (margin {c.margin:.3f})"
+    return (
+        f"{c.name}: {c.value:.4g}{unit} against the limit {c.limit:.4g}{unit} "
+        f"(margin {c.margin:.3f})"
+    )
 
 
 def _infeasibility_reasons(evaluations: dict[str, ThreadEvaluation], force_N: float) -> list[str]:
     largest = list(evaluations.values())[-1]
-    reasons = [f"the largest thread, {largest.thread.name}, fails: " + "; ".join(
-        _describe(c) for c in largest.failed
-    )] if largest.failed else []
+    reasons = (
+        [
+            f"the largest thread, {largest.thread.name}, fails: "
+            + "; ".join(_describe(c) for c in largest.failed)
+        ]
+        if largest.failed
+        else []
+    )
     reasons.append(
         f"a force of {force_N:g} N needs a larger screw, a shorter span between supports, "
         "stiffer end fixity or a stronger material pair"
@@ -315,7 +328,7 @@ def _screw_out(
     lin = req.linear
     assert lin is not None
     v = sc.linear_speed(lin.stroke_m, lin.travel_time_s)
-    return ScrewOut(
+    return ScrewOut.make(
         thread=t.name,
         imposed=req.screw.thread is not None,
         advisor_choice=advisor_choice,
@@ -351,14 +364,14 @@ def _screw_out(
         revolutions=ev.revolutions,
         speed_rpm=ev.speed_rpm,
         output_power_W=lin.force_N * v,
-        nut=NutOut(
+        nut=NutOut.make(
             height_mm=ev.nut_height_mm,
             turns=ev.nut_turns,
             height_ratio=ev.nut_height_mm / t.d2_mm,
             bearing_pressure_MPa=ev.nut_pressure_Pa / 1e6,
             allowable_pressure_MPa=material.allowable_pressure_Pa / 1e6,
         ),
-        buckling=BucklingOut(
+        buckling=BucklingOut.make(
             formula=ev.buckling_formula,
             end_fixity=lin.end_fixity,
             effective_length_factor=sc.END_FIXITY_FACTOR[lin.end_fixity],
@@ -369,7 +382,9 @@ def _screw_out(
     )
 
 
-def _motor_out(plan: MotorPlan, ev: ThreadEvaluation, cat: Catalogs, freq: float) -> InductionMotorOut:
+def _motor_out(
+    plan: MotorPlan, ev: ThreadEvaluation, cat: Catalogs, freq: float
+) -> InductionMotorOut:
     m = plan.selected
     assert m is not None and plan.pole_pairs is not None
     sel = plan.evaluations[m.rated_power_kW]
@@ -383,7 +398,7 @@ def _motor_out(plan: MotorPlan, ev: ThreadEvaluation, cat: Catalogs, freq: float
             else ("lower" if power < m.rated_power_kW else "higher")
         )
         candidates.append(_candidate_out(role, power, e))
-    return InductionMotorOut(
+    return InductionMotorOut.make(
         kind="induction",
         supply_frequency_Hz=freq,
         speed_rpm=ev.speed_rpm,
@@ -412,7 +427,7 @@ def _motor_out(plan: MotorPlan, ev: ThreadEvaluation, cat: Catalogs, freq: float
 
 def _candidate_out(role: str, power: float, e: MotorEvaluation | None) -> MotorCandidateOut:
     if e is None:
-        return MotorCandidateOut(
+        return MotorCandidateOut.make(
             role=role,
             rated_power_kW=power,
             in_catalog=False,
@@ -420,7 +435,7 @@ def _candidate_out(role: str, power: float, e: MotorEvaluation | None) -> MotorC
             problems=["no motor of this power and pole count in the catalog"],
         )
     n0 = e.motor.synchronous_speed_rpm
-    return MotorCandidateOut(
+    return MotorCandidateOut.make(
         role=role,
         rated_power_kW=power,
         model=e.motor.model,
@@ -439,7 +454,7 @@ def _candidate_out(role: str, power: float, e: MotorEvaluation | None) -> MotorC
         travel_time_s=e.travel_time_s,
         suitable=e.suitable,
         problems=e.problems,
-        curve=CurveOut(
+        curve=CurveOut.make(
             slip=[float(x) for x in e.slips],
             speed_rpm=[float(n0 * (1.0 - x)) for x in e.slips],
             torque_Nm=[float(x) for x in e.torques_Nm],

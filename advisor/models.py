@@ -140,7 +140,9 @@ def _field_info(loc: tuple[Any, ...]):
         info = fields[part]
         ann = info.annotation
         args = getattr(ann, "__args__", ())
-        model = next((a for a in (ann, *args) if isinstance(a, type) and issubclass(a, BaseModel)), None)
+        model = next(
+            (a for a in (ann, *args) if isinstance(a, type) and issubclass(a, BaseModel)), None
+        )
     return info
 
 
@@ -152,7 +154,9 @@ def _allowed_keys(loc: tuple[Any, ...]) -> list[str]:
             return []
         ann = info.annotation
         args = getattr(ann, "__args__", ())
-        model = next((a for a in (ann, *args) if isinstance(a, type) and issubclass(a, BaseModel)), None)
+        model = next(
+            (a for a in (ann, *args) if isinstance(a, type) and issubclass(a, BaseModel)), None
+        )
         if model is None:
             return []
     return list(model.model_fields)

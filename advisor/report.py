@@ -7,7 +7,6 @@ changed input shows as a readable diff.
 
 import math
 import os
-import tempfile
 from pathlib import Path
 from typing import Any
 
@@ -18,7 +17,21 @@ REPORT_FORMAT = 1
 
 
 class _Out(BaseModel):
-    model_config = ConfigDict(extra="forbid")
+    """Report tables. The engine builds them from values it computed, so they are made with
+    :meth:`make` (no validation) and dumped by :func:`_plain`; building pydantic's validator
+    and serializer for a dozen classes would cost more than the whole advice."""
+
+    model_config = ConfigDict(extra="forbid", defer_build=True)
+
+    @classmethod
+    def make(cls, **values: Any):
+        unknown = set(values) - set(cls.model_fields)
+        if unknown:
+            raise TypeError(f"{cls.__name__}: unknown fields {sorted(unknown)}")
+        missing = {n for n, f in cls.model_fields.items() if f.is_required() and n not in values}
+        if missing:
+            raise TypeError(f"{cls.__name__}: missing fields {sorted(missing)}")
+        return cls.model_construct(**values)
 
 
 class CheckOut(_Out):
@@ -182,27 +195,39 @@ def round_sig(x: float, digits: int = 6) -> float:
     """
     if x == 0 or not math.isfinite(x):
         return x
-    return round(x, digits - 1 - int(math.floor(math.log10(abs(x)))))
+    return round(x, digits - 1 - math.floor(math.log10(abs(x))))
 
 
-def _clean(obj: Any) -> Any:
+def _plain(obj: Any) -> Any:
+    """Plain dicts and lists of a report, without None (TOML has no null), floats rounded
+    to six significant digits, fields in their declared order."""
+    if isinstance(obj, BaseModel):
+        return {
+            name: _plain(getattr(obj, name))
+            for name in type(obj).model_fields
+            if getattr(obj, name) is not None
+        }
     if isinstance(obj, float):
         return round_sig(obj)
+    if isinstance(obj, bool | int | str):
+        return obj
     if isinstance(obj, dict):
-        return {k: _clean(v) for k, v in obj.items() if v is not None}
+        return {str(k): _plain(v) for k, v in obj.items() if v is not None}
     if isinstance(obj, list | tuple):
-        return [_clean(v) for v in obj if v is not None]
-    return obj
+        return [_plain(v) for v in obj if v is not None]
+    raise TypeError(f"a report cannot hold {type(obj).__name__}: {obj!r}")
 
 
 def to_toml(report: Report) -> str:
     """The report as TOML text (no nulls: TOML has none)."""
-    return tomli_w.dumps(_clean(report.model_dump(exclude_none=True)))
+    return tomli_w.dumps(_plain(report))
 
 
 def write_atomic(path: Path, text: str) -> None:
     """Write ``text`` to ``path`` so that a reader sees the old file or the new one, never a
     half-written one: write a temporary file beside it, flush it to disk, then rename."""
+    import tempfile  # only the -o path needs it; keep the stdout path light
+
     path = Path(path)
     directory = path.parent if str(path.parent) else Path(".")
     fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=directory)

@@ -1,15 +1,17 @@
 """Load and validate the catalogs; a bad entry is refused with file, row and field named."""
 
+import itertools
+import json
 import math
+import os
 import tomllib
-from dataclasses import dataclass
+import zlib
 from functools import cache
 from pathlib import Path
-from typing import Annotated, Any
-
-from pydantic import BaseModel, ConfigDict, Field, ValidationError, model_validator
+from typing import Any, NamedTuple
 
 from advisor.errors import CatalogError
+from catalogs.rows import FrictionPair, InductionMotor, Materials, ScrewSteel
 from catalogs.threads import ThreadProfile, trapezoidal_profile
 
 HERE = Path(__file__).parent
@@ -19,177 +21,16 @@ POWERS_FILE = "gost_12139_84_powers.toml"
 MOTORS_FILE = "induction_4a.toml"
 MATERIALS_FILE = "screw_materials.toml"
 
-Positive = Annotated[float, Field(gt=0, allow_inf_nan=False)]
-
-
-class _Row(BaseModel):
-    model_config = ConfigDict(extra="forbid", strict=True, frozen=True)
-
-
-# ---------------------------------------------------------------- threads (GOST 24738-81)
-class ThreadPlanRow(_Row):
-    d_mm: Positive
-    series: Annotated[int, Field(ge=1, le=2)]
-    pitches_mm: list[Positive]
-    preferred_mm: Positive
-
-    @model_validator(mode="after")
-    def _preferred_is_listed(self) -> "ThreadPlanRow":
-        if self.preferred_mm not in self.pitches_mm:
-            raise ValueError(f"preferred_mm = {self.preferred_mm} is not among pitches_mm")
-        if len(set(self.pitches_mm)) != len(self.pitches_mm):
-            raise ValueError("pitches_mm lists a pitch twice")
-        return self
-
-
-# ---------------------------------------------------------------- induction motors
-MOTOR_FIELDS = {
-    "rated_speed_rpm",
-    "slip_pct",
-    "breakdown_torque_ratio",
-    "starting_torque_ratio",
-    "efficiency_pct",
-    "cos_phi",
-    "starting_current_ratio",
-    "inertia_kgm2",
-    "mass_kg",
-}
-
-#: |n − n₀·(1 − s)| allowed between a row's published speed and slip, as a share of n₀.
-SPEED_SLIP_TOLERANCE = 0.015
-
-
-class InductionMotor(_Row):
-    model: Annotated[str, Field(min_length=1)]
-    poles: int
-    rated_power_kW: Positive
-    rated_speed_rpm: Positive
-    slip_pct: Annotated[float, Field(gt=0, lt=50, allow_inf_nan=False)]
-    breakdown_torque_ratio: Annotated[float, Field(gt=1, le=5, allow_inf_nan=False)]
-    starting_torque_ratio: Annotated[float, Field(gt=0, le=5, allow_inf_nan=False)]
-    efficiency_pct: Annotated[float, Field(gt=0, lt=100, allow_inf_nan=False)]
-    cos_phi: Annotated[float, Field(gt=0, le=1, allow_inf_nan=False)]
-    starting_current_ratio: Annotated[float, Field(ge=1, le=15, allow_inf_nan=False)]
-    inertia_kgm2: Positive
-    mass_kg: Positive
-    source: str
-    estimated: list[str] = []
-    supply_frequency_Hz: float = 50.0
-
-    @model_validator(mode="after")
-    def _consistent(self) -> "InductionMotor":
-        if self.poles not in (2, 4, 6, 8):
-            raise ValueError(f"poles = {self.poles}: allowed 2, 4, 6, 8")
-        n0 = 120.0 * self.supply_frequency_Hz / self.poles
-        if not self.rated_speed_rpm < n0:
-            raise ValueError(
-                f"rated_speed_rpm = {self.rated_speed_rpm} is not below the synchronous "
-                f"speed {n0:g} rpm"
-            )
-        from_slip = n0 * (1.0 - self.slip_pct / 100.0)
-        if abs(from_slip - self.rated_speed_rpm) > SPEED_SLIP_TOLERANCE * n0:
-            raise ValueError(
-                f"slip_pct = {self.slip_pct} gives {from_slip:.0f} rpm but rated_speed_rpm = "
-                f"{self.rated_speed_rpm:g} (allowed difference {SPEED_SLIP_TOLERANCE:.1%} of "
-                f"{n0:g} rpm)"
-            )
-        if self.starting_torque_ratio > self.breakdown_torque_ratio:
-            raise ValueError(
-                f"starting_torque_ratio = {self.starting_torque_ratio} exceeds "
-                f"breakdown_torque_ratio = {self.breakdown_torque_ratio}"
-            )
-        unknown = set(self.estimated) - MOTOR_FIELDS
-        if unknown:
-            raise ValueError(f"estimated names unknown fields {sorted(unknown)}")
-        return self
-
-    @property
-    def pole_pairs(self) -> int:
-        return self.poles // 2
-
-    @property
-    def synchronous_speed_rpm(self) -> float:
-        return 60.0 * self.supply_frequency_Hz / self.pole_pairs
-
-    @property
-    def rated_slip(self) -> float:
-        """Slip at the published rated speed (the speed, not the rounded slip, is used)."""
-        return 1.0 - self.rated_speed_rpm / self.synchronous_speed_rpm
-
-    @property
-    def rated_torque_Nm(self) -> float:
-        return self.rated_power_kW * 1e3 / (self.rated_speed_rpm * math.pi / 30.0)
-
-
-# ---------------------------------------------------------------- screw materials
-class FrictionPair(_Row):
-    name: str
-    description: str
-    f_oil: Annotated[list[Annotated[float, Field(gt=0, lt=1)]], Field(min_length=2, max_length=2)]
-    f_dry: Annotated[list[Annotated[float, Field(gt=0, lt=1)]], Field(min_length=2, max_length=2)]
-    allowable_pressure_MPa: Positive
-    source: list[str]
-    estimated: list[str] = []
-
-    @model_validator(mode="after")
-    def _ranges(self) -> "FrictionPair":
-        for name in ("f_oil", "f_dry"):
-            lo, hi = getattr(self, name)
-            if lo > hi:
-                raise ValueError(f"{name} = [{lo}, {hi}]: low end above high end")
-        return self
-
-    def friction_range(self, lubrication: str) -> tuple[float, float]:
-        lo, hi = self.f_oil if lubrication == "oil" else self.f_dry
-        return lo, hi
-
-
-class ScrewSteel(_Row):
-    name: str
-    yield_strength_MPa: Positive
-    elastic_modulus_MPa: Positive
-    source: list[str]
-
-
-class NutRules(_Row):
-    height_ratio_min: Positive
-    height_ratio_max: Positive
-    max_turns: Annotated[int, Field(ge=1)]
-    source: list[str]
-
-
-class StrengthRules(_Row):
-    yield_safety_factor: Annotated[float, Field(ge=1)]
-    source: list[str]
-
-
-class MaterialsFile(_Row):
-    sources: dict[str, str]
-    pair: list[FrictionPair]
-    steel: list[ScrewSteel]
-    nut: NutRules
-    strength: StrengthRules
-
-    @model_validator(mode="after")
-    def _sources_known(self) -> "MaterialsFile":
-        for group in (self.pair, self.steel, [self.nut, self.strength]):
-            for row in group:
-                missing = set(row.source) - set(self.sources)
-                if missing:
-                    raise ValueError(f"source names {sorted(missing)} not in [sources]")
-        return self
-
 
 # ---------------------------------------------------------------- the bundle
-@dataclass(frozen=True)
-class Catalogs:
+class Catalogs(NamedTuple):
     threads: tuple[ThreadProfile, ...]
     threads_source: str
     rated_powers_kW: tuple[float, ...]
     powers_source: str
     motors: tuple[InductionMotor, ...]
     motor_sources: dict[str, str]
-    materials: MaterialsFile
+    materials: Materials
 
     def thread(self, name: str) -> ThreadProfile | None:
         key = name.replace(" ", "").replace("×", "x").lower()
@@ -218,7 +59,7 @@ def _read(path: Path) -> dict[str, Any]:
         raise CatalogError(f"catalog {path}: broken TOML: {exc}") from None
 
 
-def _fail(path: Path, where: str, exc: ValidationError) -> CatalogError:
+def _fail(path: Path, where: str, exc) -> CatalogError:
     err = exc.errors()[0]
     loc = ".".join(str(p) for p in err["loc"])
     field = f"field {loc} = {err['input']!r}: " if loc else ""
@@ -234,6 +75,10 @@ def _rows(path: Path, data: dict[str, Any], key: str) -> list[dict[str, Any]]:
 
 
 def _load_threads(path: Path) -> tuple[list[ThreadProfile], str]:
+    from pydantic import ValidationError
+
+    from catalogs.schema import ThreadPlanRow
+
     data = _read(path)
     out = []
     for i, row in enumerate(_rows(path, data, "thread"), start=1):
@@ -264,7 +109,10 @@ def _load_powers(path: Path) -> tuple[list[float], str]:
 
 
 def _load_motors(path: Path) -> tuple[list[InductionMotor], dict[str, str]]:
+    from pydantic import ValidationError
+
     from advisor.calc.induction import fit_kloss
+    from catalogs.schema import InductionMotor as MotorSchema
 
     data = _read(path)
     sources = data.get("sources", {})
@@ -273,7 +121,11 @@ def _load_motors(path: Path) -> tuple[list[InductionMotor], dict[str, str]]:
     for i, row in enumerate(_rows(path, data, "motor"), start=1):
         where = f"row {i} (model = {row.get('model')!r})"
         try:
-            m = InductionMotor.model_validate({**row, "supply_frequency_Hz": float(freq)})
+            m = InductionMotor(
+                **MotorSchema.model_validate(
+                    {**row, "supply_frequency_Hz": float(freq)}
+                ).model_dump()
+            )
         except ValidationError as exc:
             raise _fail(path, where, exc) from None
         if m.source not in sources:
@@ -299,7 +151,7 @@ def _check_motor_series(path: Path, motors: list[InductionMotor]) -> None:
         names[m.model] = m
     for poles in {m.poles for m in motors}:
         line = sorted((m for m in motors if m.poles == poles), key=lambda m: m.rated_power_kW)
-        for a, b in zip(line, line[1:], strict=False):
+        for a, b in itertools.pairwise(line):
             if b.efficiency_pct < a.efficiency_pct - 1.5:
                 raise CatalogError(
                     f"catalog {path}, model {b.model!r}: field efficiency_pct = "
@@ -308,10 +160,14 @@ def _check_motor_series(path: Path, motors: list[InductionMotor]) -> None:
                 )
 
 
-def _load_materials(path: Path) -> MaterialsFile:
+def _load_materials(path: Path) -> Materials:
+    from pydantic import ValidationError
+
+    from catalogs.schema import MaterialsFile
+
     data = _read(path)
     try:
-        return MaterialsFile.model_validate(data)
+        return Materials.from_dict(MaterialsFile.model_validate(data).model_dump())
     except ValidationError as exc:
         err = exc.errors()[0]
         loc = err["loc"]
@@ -325,7 +181,26 @@ def _load_materials(path: Path) -> MaterialsFile:
 
 @cache
 def load_catalogs(user_dir: Path | None = None) -> Catalogs:
-    """The shipped catalogs, plus the rows of a user catalog directory if given."""
+    """The shipped catalogs, plus the rows of a user catalog directory if given.
+
+    Validated catalogs are cached as JSON in the user's cache directory, keyed by the size
+    and modification time of every file read; any change to a file validates it again.
+    """
+    files = [HERE / f for f in (THREADS_FILE, POWERS_FILE, MOTORS_FILE, MATERIALS_FILE)]
+    if user_dir is not None:
+        files += [user_dir / f for f in (THREADS_FILE, MOTORS_FILE, MATERIALS_FILE)]
+    cache_file = _cache_file(files)
+    if cache_file is not None:
+        cached = _read_cache(cache_file)
+        if cached is not None:
+            return cached
+    cat = _load_and_validate(user_dir)
+    if cache_file is not None:
+        _write_cache(cache_file, cat)
+    return cat
+
+
+def _load_and_validate(user_dir: Path | None) -> Catalogs:
     threads, threads_source = _load_threads(HERE / THREADS_FILE)
     powers, powers_source = _load_powers(HERE / POWERS_FILE)
     motors, motor_sources = _load_motors(HERE / MOTORS_FILE)
@@ -361,3 +236,58 @@ def _check_unique(path: Path, names: list[str], what: str) -> None:
         if n in seen:
             raise CatalogError(f"catalog {path}: {what} {n!r} is already in the shipped catalog")
         seen.add(n)
+
+
+# ---------------------------------------------------------------- cache of validated catalogs
+CACHE_VERSION = 1
+
+
+def _cache_file(files: list[Path]) -> Path | None:
+    if os.environ.get("DRIVE_ADVISOR_NO_CACHE"):
+        return None
+    stamp = [CACHE_VERSION]
+    for f in files:
+        try:
+            st = f.stat()
+            stamp.append([str(f.resolve()), st.st_mtime_ns, st.st_size])
+        except OSError:
+            stamp.append([str(f), None, None])
+    key = f"{zlib.crc32(json.dumps(stamp).encode()):08x}"
+    base = os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache")
+    return Path(base) / "drive-advisor" / f"catalogs-{key}.json"
+
+
+def _read_cache(path: Path) -> Catalogs | None:
+    try:
+        data = json.loads(path.read_text(encoding="utf-8"))
+        mat = data["materials"]
+        return Catalogs(
+            threads=tuple(ThreadProfile(**t) for t in data["threads"]),
+            threads_source=data["threads_source"],
+            rated_powers_kW=tuple(data["rated_powers_kW"]),
+            powers_source=data["powers_source"],
+            motors=tuple(InductionMotor(**m) for m in data["motors"]),
+            motor_sources=data["motor_sources"],
+            materials=Materials.from_dict(mat),
+        )
+    except (OSError, ValueError, KeyError, TypeError):
+        return None  # absent or stale format: validate the files again
+
+
+def _write_cache(path: Path, cat: Catalogs) -> None:
+    data = {
+        "threads": [t._asdict() for t in cat.threads],
+        "threads_source": cat.threads_source,
+        "rated_powers_kW": list(cat.rated_powers_kW),
+        "powers_source": cat.powers_source,
+        "motors": [m._asdict() for m in cat.motors],
+        "motor_sources": cat.motor_sources,
+        "materials": cat.materials.to_dict(),
+    }
+    try:
+        path.parent.mkdir(parents=True, exist_ok=True)
+        tmp = path.with_suffix(f".{os.getpid()}.tmp")
+        tmp.write_text(json.dumps(data), encoding="utf-8")
+        os.replace(tmp, path)
+    except OSError:
+        pass  # a read-only home only costs the validation time on the next run

@@ -11,7 +11,7 @@ Formulas of the standard (all in mm):
     D4 = d + 2·ac         major diameter of the nut
 """
 
-from dataclasses import dataclass
+from typing import NamedTuple
 
 
 def crest_clearance_mm(pitch_mm: float) -> float:
@@ -29,8 +29,7 @@ def crest_clearance_mm(pitch_mm: float) -> float:
     return 1.0
 
 
-@dataclass(frozen=True)
-class ThreadProfile:
+class ThreadProfile(NamedTuple):
     """One diameter–pitch combination with its GOST 24737-81 dimensions (mm)."""
 
     d_mm: float

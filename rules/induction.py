@@ -1,14 +1,13 @@
 """Rules of the induction motor choice (seed 001, GOST 12139-84)."""
 
-from dataclasses import dataclass
+from typing import NamedTuple
 
 from advisor.rulebook import Finding, rule
 
 SEED_001 = "001_085658f38eaaea54.txt"
 
 
-@dataclass(frozen=True)
-class PoleOption:
+class PoleOption(NamedTuple):
     pole_pairs: int
     synchronous_speed_rpm: float
     motor_model: str | None  # smallest catalog motor of this pole count that covers the power
@@ -20,7 +19,9 @@ def choose_pole_pairs(required_speed_rpm: float, options: list[PoleOption]) -> F
     """The largest p (slowest motor) whose rated speed — synchronous speed less the slip of
     the motor that would be used — still reaches the required speed."""
     fits = [
-        o for o in options if o.rated_speed_rpm is not None and o.rated_speed_rpm >= required_speed_rpm
+        o
+        for o in options
+        if o.rated_speed_rpm is not None and o.rated_speed_rpm >= required_speed_rpm
     ]
     table = {
         f"p={o.pole_pairs}": (
@@ -78,8 +79,7 @@ def rated_power_band(
     )
 
 
-@dataclass(frozen=True)
-class MotorOption:
+class MotorOption(NamedTuple):
     rated_power_kW: float
     model: str | None
     problems: tuple[str, ...]
@@ -92,8 +92,11 @@ def choose_motor(options: list[MotorOption]) -> Finding[str | None]:
     continuously: rated torque ≥ load, starts under load, stable working point."""
     for o in options:
         if o.model is not None and not o.problems:
-            skipped = [f"{x.rated_power_kW:g} kW ({'; '.join(x.problems) or 'not in catalog'})"
-                       for x in options if x.rated_power_kW < o.rated_power_kW]
+            skipped = [
+                f"{x.rated_power_kW:g} kW ({'; '.join(x.problems) or 'not in catalog'})"
+                for x in options
+                if x.rated_power_kW < o.rated_power_kW
+            ]
             return Finding(
                 o.model,
                 f"{o.model}, {o.rated_power_kW:g} kW.",
@@ -105,5 +108,7 @@ def choose_motor(options: list[MotorOption]) -> Finding[str | None]:
     return Finding(
         None,
         "No catalog motor drives the load.",
-        "; ".join(f"{o.rated_power_kW:g} kW: {', '.join(o.problems) or 'not in catalog'}" for o in options),
+        "; ".join(
+            f"{o.rated_power_kW:g} kW: {', '.join(o.problems) or 'not in catalog'}" for o in options
+        ),
     )

@@ -1,6 +1,6 @@
 """Rules of the sliding screw–nut stage (seed 001 and the power-screw design texts)."""
 
-from dataclasses import dataclass
+from typing import NamedTuple
 
 from advisor.rulebook import Finding, rule
 
@@ -41,7 +41,8 @@ def friction_coefficient(
     mid = round((low + high) / 2.0, 4)
     return Finding(
         mid,
-        f"f = {mid:g}, the middle of the catalog range {low:g}…{high:g} for {pair} ({lubrication}).",
+        f"f = {mid:g}, the middle of the catalog range {low:g}…{high:g} "
+        f"for {pair} ({lubrication}).",
         "No coefficient was given; the middle of the published range is the expected value, "
         "and the low end is kept for the self-locking check.",
         {"pair": pair, "lubrication": lubrication, "range": [low, high]},
@@ -66,8 +67,7 @@ def friction_model(asked: str) -> Finding[str]:
     )
 
 
-@dataclass(frozen=True)
-class ThreadOption:
+class ThreadOption(NamedTuple):
     """What the thread rule needs to know about one candidate."""
 
     name: str

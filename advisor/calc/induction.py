@@ -12,9 +12,7 @@ References
 """
 
 import math
-from dataclasses import dataclass
-
-import numpy as np
+from typing import NamedTuple
 
 from advisor.calc.roots import bisect
 
@@ -48,8 +46,7 @@ def kloss_simple_critical_slip(rated_slip: float, overload_ratio: float) -> floa
     return rated_slip * (overload_ratio + math.sqrt(overload_ratio**2 - 1.0))
 
 
-@dataclass(frozen=True)
-class KlossCurve:
+class KlossCurve(NamedTuple):
     """Refined Kloss characteristic fitted to three catalog points.
 
     ``M(s_n) = M_n``, ``M(s_k) = M_k`` (its maximum) and ``M(1) = M_start``.
@@ -59,13 +56,21 @@ class KlossCurve:
     critical_slip: float
     epsilon: float
 
-    def torque(self, slip: np.ndarray | float) -> np.ndarray | float:
-        """M(s) = 2·M_k·(1 + ε) / (s/s_k + s_k/s + 2ε); M(0) = 0 [3]."""
-        s = np.asarray(slip, dtype=float)
-        with np.errstate(divide="ignore"):
-            denom = s / self.critical_slip + self.critical_slip / s + 2.0 * self.epsilon
-            m = np.where(s > 0, 2.0 * self.max_torque_Nm * (1.0 + self.epsilon) / denom, 0.0)
-        return float(m) if m.ndim == 0 else m
+    def torque(self, slip: float) -> float:
+        """M(s) = 2·M_k·(1 + ε) / (s/s_k + s_k/s + 2ε); M(0) = 0 [3].
+
+        Scalar on purpose: a characteristic is 41 points, and the linear batch path stays
+        free of numpy's import time.
+        """
+        if slip <= 0.0:
+            return 0.0
+        sk = self.critical_slip
+        return (
+            2.0
+            * self.max_torque_Nm
+            * (1.0 + self.epsilon)
+            / (slip / sk + sk / slip + 2.0 * self.epsilon)
+        )
 
     def stable_slip(self, load_torque_Nm: float) -> float | None:
         """Slip of the steady working point under a load torque, on the stable branch
@@ -99,7 +104,7 @@ def fit_kloss(
     passes through its three points.
 
     >>> c = fit_kloss(10.123, 1 - 1415 / 1500, 2.2, 2.0)
-    >>> round(float(c.torque(1 - 1415 / 1500)), 3), round(float(c.torque(1.0)), 3)
+    >>> round(c.torque(1 - 1415 / 1500), 3), round(c.torque(1.0), 3)
     (10.123, 20.246)
     """
     lam, mu, sn = overload_ratio, starting_ratio, rated_slip
@@ -131,8 +136,7 @@ def fit_kloss(
         eps = bisect(residual, lo, hi)
     except ValueError as exc:
         raise ValueError(
-            f"no refined Kloss curve passes through s_n = {sn:.4f}, "
-            f"Mmax/Mn = {lam}, Mst/Mn = {mu}"
+            f"no refined Kloss curve passes through s_n = {sn:.4f}, Mmax/Mn = {lam}, Mst/Mn = {mu}"
         ) from exc
     sk = critical_slip(eps)
     if sk >= 1.0:
@@ -143,7 +147,7 @@ def fit_kloss(
     return KlossCurve(mk, sk, eps)
 
 
-def curve_slips(points: int = 41) -> np.ndarray:
+def curve_slips(points: int = 41) -> list[float]:
     """Slips at which a characteristic is tabulated for the report: denser near s = 0, where
     the working points lie."""
-    return np.linspace(0.0, 1.0, points) ** 1.5
+    return [(i / (points - 1)) ** 1.5 for i in range(points)]

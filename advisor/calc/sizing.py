@@ -2,10 +2,7 @@
 evaluated on its load. Pure functions of numbers and catalog rows; no decisions here."""
 
 import math
-from dataclasses import dataclass, field
-from typing import Protocol
-
-import numpy as np
+from typing import NamedTuple, Protocol
 
 from advisor.calc import induction as im
 from advisor.calc import screw as sc
@@ -15,8 +12,7 @@ MM = 1e-3
 MPA = 1e6
 
 
-@dataclass(frozen=True)
-class Check:
+class Check(NamedTuple):
     """One strength or function check: ``margin`` ≥ 1 passes."""
 
     id: str
@@ -43,8 +39,7 @@ def _lower(id: str, name: str, value: float, limit: float, unit: str, source: st
     return Check(id, name, value, limit, unit, value / limit, source)
 
 
-@dataclass(frozen=True)
-class ScrewMaterial:
+class ScrewMaterial(NamedTuple):
     friction_coefficient: float
     friction_low: float
     allowable_pressure_Pa: float
@@ -56,8 +51,7 @@ class ScrewMaterial:
     nut_max_turns: int
 
 
-@dataclass(frozen=True)
-class ThreadEvaluation:
+class ThreadEvaluation(NamedTuple):
     thread: ThreadProfile
     starts: int
     friction_model: str
@@ -79,7 +73,7 @@ class ThreadEvaluation:
     slenderness: float
     buckling_formula: str
     core_stress_Pa: float
-    checks: tuple[Check, ...] = field(default=())
+    checks: tuple[Check, ...] = ()
 
     @property
     def passed(self) -> bool:
@@ -167,9 +161,7 @@ def evaluate_thread(
             "",
             ivanov,
         ),
-        _upper(
-            "nut_turns", "engaged nut turns", turns, float(material.nut_max_turns), "", ivanov
-        ),
+        _upper("nut_turns", "engaged nut turns", turns, float(material.nut_max_turns), "", ivanov),
     )
     return ThreadEvaluation(
         thread=thread,
@@ -214,8 +206,7 @@ class MotorRow(Protocol):
     def rated_torque_Nm(self) -> float: ...
 
 
-@dataclass(frozen=True)
-class MotorEvaluation:
+class MotorEvaluation(NamedTuple):
     motor: MotorRow
     curve: im.KlossCurve
     rated_torque_Nm: float
@@ -228,8 +219,8 @@ class MotorEvaluation:
     starting_torque_margin: float
     breakdown_torque_margin: float
     travel_time_s: float | None
-    slips: np.ndarray
-    torques_Nm: np.ndarray
+    slips: list[float]
+    torques_Nm: list[float]
 
     @property
     def problems(self) -> list[str]:
@@ -268,21 +259,21 @@ def evaluate_motor(
     s_work = curve.stable_slip(load_torque_Nm)
     n_work = None if s_work is None else n0 * (1.0 - s_work)
     s_req = 1.0 - required_speed_rpm / n0
-    at_req = float(curve.torque(s_req)) if 0.0 < s_req <= 1.0 else 0.0
+    at_req = curve.torque(s_req) if 0.0 < s_req <= 1.0 else 0.0
     slips = im.curve_slips()
     return MotorEvaluation(
         motor=motor,
         curve=curve,
         rated_torque_Nm=mn,
         max_torque_Nm=curve.max_torque_Nm,
-        starting_torque_Nm=float(curve.torque(1.0)),
+        starting_torque_Nm=curve.torque(1.0),
         working_slip=s_work,
         working_speed_rpm=n_work,
         torque_at_required_speed_Nm=at_req,
         rated_torque_margin=mn / load_torque_Nm,
-        starting_torque_margin=float(curve.torque(1.0)) / load_torque_Nm,
+        starting_torque_margin=curve.torque(1.0) / load_torque_Nm,
         breakdown_torque_margin=curve.max_torque_Nm / load_torque_Nm,
         travel_time_s=None if not n_work else 60.0 * revolutions / n_work,
         slips=slips,
-        torques_Nm=np.asarray(curve.torque(slips)),
+        torques_Nm=[curve.torque(x) for x in slips],
     )

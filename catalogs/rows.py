@@ -1,0 +1,103 @@
+"""Catalog rows as the engine uses them: plain named tuples, already validated.
+
+The pydantic schemas that validate the files live in :mod:`catalogs.schema` and are imported
+only when a file has to be validated (not when the validated catalogs come from the cache).
+"""
+
+import math
+from typing import NamedTuple
+
+
+class InductionMotor(NamedTuple):
+    model: str
+    poles: int
+    rated_power_kW: float
+    rated_speed_rpm: float
+    slip_pct: float
+    breakdown_torque_ratio: float
+    starting_torque_ratio: float
+    efficiency_pct: float
+    cos_phi: float
+    starting_current_ratio: float
+    inertia_kgm2: float
+    mass_kg: float
+    source: str
+    estimated: tuple[str, ...] = ()
+    supply_frequency_Hz: float = 50.0
+
+    @property
+    def pole_pairs(self) -> int:
+        return self.poles // 2
+
+    @property
+    def synchronous_speed_rpm(self) -> float:
+        return 60.0 * self.supply_frequency_Hz / self.pole_pairs
+
+    @property
+    def rated_slip(self) -> float:
+        """Slip at the published rated speed (the speed, not the rounded slip, is used)."""
+        return 1.0 - self.rated_speed_rpm / self.synchronous_speed_rpm
+
+    @property
+    def rated_torque_Nm(self) -> float:
+        return self.rated_power_kW * 1e3 / (self.rated_speed_rpm * math.pi / 30.0)
+
+
+class FrictionPair(NamedTuple):
+    name: str
+    description: str
+    f_oil: list[float]
+    f_dry: list[float]
+    allowable_pressure_MPa: float
+    source: list[str]
+    estimated: tuple[str, ...] = ()
+
+    def friction_range(self, lubrication: str) -> tuple[float, float]:
+        lo, hi = self.f_oil if lubrication == "oil" else self.f_dry
+        return lo, hi
+
+
+class ScrewSteel(NamedTuple):
+    name: str
+    yield_strength_MPa: float
+    elastic_modulus_MPa: float
+    source: list[str]
+
+
+class NutRules(NamedTuple):
+    height_ratio_min: float
+    height_ratio_max: float
+    max_turns: int
+    source: list[str]
+
+
+class StrengthRules(NamedTuple):
+    yield_safety_factor: float
+    source: list[str]
+
+
+class Materials(NamedTuple):
+    sources: dict[str, str]
+    pair: list[FrictionPair]
+    steel: list[ScrewSteel]
+    nut: NutRules
+    strength: StrengthRules
+
+    def to_dict(self) -> dict:
+        return {
+            "sources": self.sources,
+            "pair": [x._asdict() for x in self.pair],
+            "steel": [x._asdict() for x in self.steel],
+            "nut": self.nut._asdict(),
+            "strength": self.strength._asdict(),
+        }
+
+    @classmethod
+    def from_dict(cls, d: dict) -> "Materials":
+        return cls(
+            sources=d["sources"],
+            pair=[FrictionPair(**x) for x in d["pair"]],
+            steel=[ScrewSteel(**x) for x in d["steel"]],
+            nut=NutRules(**d["nut"]),
+            strength=StrengthRules(**d["strength"]),
+        )

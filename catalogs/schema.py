@@ -1,0 +1,151 @@
+"""Pydantic schemas that validate the catalog files (see :mod:`catalogs.loader`)."""
+
+from typing import Annotated
+
+from pydantic import BaseModel, ConfigDict, Field, model_validator
+
+
+class _Row(BaseModel):
+    model_config = ConfigDict(extra="forbid", strict=True, frozen=True)
+
+
+Positive = Annotated[float, Field(gt=0, allow_inf_nan=False)]
+
+
+class _Row(BaseModel):
+    # defer_build: a run that finds the validated catalogs in the cache never pays for
+    # building the validators.
+    model_config = ConfigDict(extra="forbid", strict=True, frozen=True, defer_build=True)
+
+
+# ---------------------------------------------------------------- threads (GOST 24738-81)
+class ThreadPlanRow(_Row):
+    d_mm: Positive
+    series: Annotated[int, Field(ge=1, le=2)]
+    pitches_mm: list[Positive]
+    preferred_mm: Positive
+
+    @model_validator(mode="after")
+    def _preferred_is_listed(self) -> "ThreadPlanRow":
+        if self.preferred_mm not in self.pitches_mm:
+            raise ValueError(f"preferred_mm = {self.preferred_mm} is not among pitches_mm")
+        if len(set(self.pitches_mm)) != len(self.pitches_mm):
+            raise ValueError("pitches_mm lists a pitch twice")
+        return self
+
+
+# ---------------------------------------------------------------- induction motors
+MOTOR_FIELDS = {
+    "rated_speed_rpm",
+    "slip_pct",
+    "breakdown_torque_ratio",
+    "starting_torque_ratio",
+    "efficiency_pct",
+    "cos_phi",
+    "starting_current_ratio",
+    "inertia_kgm2",
+    "mass_kg",
+}
+
+#: |n − n₀·(1 − s)| allowed between a row's published speed and slip, as a share of n₀.
+SPEED_SLIP_TOLERANCE = 0.015
+
+
+class InductionMotor(_Row):
+    model: Annotated[str, Field(min_length=1)]
+    poles: int
+    rated_power_kW: Positive
+    rated_speed_rpm: Positive
+    slip_pct: Annotated[float, Field(gt=0, lt=50, allow_inf_nan=False)]
+    breakdown_torque_ratio: Annotated[float, Field(gt=1, le=5, allow_inf_nan=False)]
+    starting_torque_ratio: Annotated[float, Field(gt=0, le=5, allow_inf_nan=False)]
+    efficiency_pct: Annotated[float, Field(gt=0, lt=100, allow_inf_nan=False)]
+    cos_phi: Annotated[float, Field(gt=0, le=1, allow_inf_nan=False)]
+    starting_current_ratio: Annotated[float, Field(ge=1, le=15, allow_inf_nan=False)]
+    inertia_kgm2: Positive
+    mass_kg: Positive
+    source: str
+    estimated: list[str] = []
+    supply_frequency_Hz: float = 50.0
+
+    @model_validator(mode="after")
+    def _consistent(self) -> "InductionMotor":
+        if self.poles not in (2, 4, 6, 8):
+            raise ValueError(f"poles = {self.poles}: allowed 2, 4, 6, 8")
+        n0 = 120.0 * self.supply_frequency_Hz / self.poles
+        if not self.rated_speed_rpm < n0:
+            raise ValueError(
+                f"rated_speed_rpm = {self.rated_speed_rpm} is not below the synchronous "
+                f"speed {n0:g} rpm"
+            )
+        from_slip = n0 * (1.0 - self.slip_pct / 100.0)
+        if abs(from_slip - self.rated_speed_rpm) > SPEED_SLIP_TOLERANCE * n0:
+            raise ValueError(
+                f"slip_pct = {self.slip_pct} gives {from_slip:.0f} rpm but rated_speed_rpm = "
+                f"{self.rated_speed_rpm:g} (allowed difference {SPEED_SLIP_TOLERANCE:.1%} of "
+                f"{n0:g} rpm)"
+            )
+        if self.starting_torque_ratio > self.breakdown_torque_ratio:
+            raise ValueError(
+                f"starting_torque_ratio = {self.starting_torque_ratio} exceeds "
+                f"breakdown_torque_ratio = {self.breakdown_torque_ratio}"
+            )
+        unknown = set(self.estimated) - MOTOR_FIELDS
+        if unknown:
+            raise ValueError(f"estimated names unknown fields {sorted(unknown)}")
+        return self
+
+
+# ---------------------------------------------------------------- screw materials
+class FrictionPair(_Row):
+    name: str
+    description: str
+    f_oil: Annotated[list[Annotated[float, Field(gt=0, lt=1)]], Field(min_length=2, max_length=2)]
+    f_dry: Annotated[list[Annotated[float, Field(gt=0, lt=1)]], Field(min_length=2, max_length=2)]
+    allowable_pressure_MPa: Positive
+    source: list[str]
+    estimated: list[str] = []
+
+    @model_validator(mode="after")
+    def _ranges(self) -> "FrictionPair":
+        for name in ("f_oil", "f_dry"):
+            lo, hi = getattr(self, name)
+            if lo > hi:
+                raise ValueError(f"{name} = [{lo}, {hi}]: low end above high end")
+        return self
+
+
+class ScrewSteel(_Row):
+    name: str
+    yield_strength_MPa: Positive
+    elastic_modulus_MPa: Positive
+    source: list[str]
+
+
+class NutRules(_Row):
+    height_ratio_min: Positive
+    height_ratio_max: Positive
+    max_turns: Annotated[int, Field(ge=1)]
+    source: list[str]
+
+
+class StrengthRules(_Row):
+    yield_safety_factor: Annotated[float, Field(ge=1)]
+    source: list[str]
+
+
+class MaterialsFile(_Row):
+    sources: dict[str, str]
+    pair: list[FrictionPair]
+    steel: list[ScrewSteel]
+    nut: NutRules
+    strength: StrengthRules
+
+    @model_validator(mode="after")
+    def _sources_known(self) -> "MaterialsFile":
+        for group in (self.pair, self.steel, [self.nut, self.strength]):
+            for row in group:
+                missing = set(row.source) - set(self.sources)
+                if missing:
+                    raise ValueError(f"source names {sorted(missing)} not in [sources]")
+        return self
