@@ -59,11 +59,12 @@ def trapezoidal_profile(
     >>> t.name, t.d2_mm, t.d3_mm, t.D1_mm, t.D2_mm, t.D4_mm
     ('Tr16x2', 15.0, 13.5, 14.0, 15.0, 16.5)
     """
+    d_mm, pitch_mm = float(d_mm), float(pitch_mm)
     ac = crest_clearance_mm(pitch_mm)
     h3 = 0.5 * pitch_mm + ac
     return ThreadProfile(
-        d_mm=float(d_mm),
-        pitch_mm=float(pitch_mm),
+        d_mm=d_mm,
+        pitch_mm=pitch_mm,
         preferred=preferred,
         series=series,
         ac_mm=ac,

@@ -1,0 +1,118 @@
+"""Catalogs: every row has a source; broken or inconsistent rows are refused with file, row
+and field named."""
+
+import shutil
+
+import pytest
+
+from advisor.errors import CatalogError
+from catalogs import load_catalogs
+from catalogs.loader import HERE, MATERIALS_FILE, MOTORS_FILE
+
+
+def test_shipped_catalogs_load_with_sources():
+    cat = load_catalogs()
+    assert len(cat.motors) >= 50
+    for m in cat.motors:
+        assert m.source in cat.motor_sources
+    assert {m.poles for m in cat.motors} == {2, 4, 6, 8}
+    assert min(m.rated_power_kW for m in cat.motors) <= 0.18
+    assert max(m.rated_power_kW for m in cat.motors) >= 15
+    for pair in cat.materials.pair:
+        assert pair.source and all(s in cat.materials.sources for s in pair.source)
+
+
+def test_every_motor_row_is_consistent():
+    # n ≈ n₀(1 − s) within 1.5 % of n₀; P = M·ω holds by construction of rated torque
+    for m in load_catalogs().motors:
+        n0 = m.synchronous_speed_rpm
+        assert abs(n0 * (1 - m.slip_pct / 100) - m.rated_speed_rpm) <= 0.015 * n0, m.model
+        assert m.starting_torque_ratio <= m.breakdown_torque_ratio
+
+
+def test_gost_12139_series():
+    powers = load_catalogs().rated_powers_kW
+    assert {0.37, 0.55, 0.75, 1.1} <= set(powers)
+    assert 0.5 not in powers  # the paper's fig. 4 shows 0.5 kW, which the series lacks
+
+
+def _user_dir(tmp_path, name, text):
+    d = tmp_path / "cat"
+    d.mkdir()
+    (d / name).write_text(text, encoding="utf-8")
+    return d
+
+
+MOTOR_ROW = """
+[sources]
+mine = "my test bench"
+
+[[motor]]
+model = "X71B8"
+poles = 8
+rated_power_kW = 0.25
+rated_speed_rpm = 680.0
+slip_pct = {slip}
+breakdown_torque_ratio = 1.7
+starting_torque_ratio = 1.3
+efficiency_pct = 56.0
+cos_phi = 0.65
+starting_current_ratio = 3.0
+inertia_kgm2 = 0.0019
+mass_kg = 15.1
+source = "mine"
+"""
+
+
+def test_user_motor_with_inconsistent_slip_is_refused(tmp_path):
+    # the 4A71B8 row of the source table: s = 12.7 % gives 655 rpm, not 680
+    d = _user_dir(tmp_path, MOTORS_FILE, MOTOR_ROW.format(slip=12.7))
+    with pytest.raises(CatalogError) as e:
+        load_catalogs(d)
+    msg = str(e.value)
+    assert MOTORS_FILE in msg and "row 1" in msg and "X71B8" in msg and "slip_pct = 12.7" in msg
+
+
+def test_user_motor_is_added(tmp_path):
+    d = _user_dir(tmp_path, MOTORS_FILE, MOTOR_ROW.format(slip=9.3))
+    cat = load_catalogs(d)
+    assert any(m.model == "X71B8" for m in cat.motors)
+
+
+def test_user_motor_with_bad_field_is_refused(tmp_path):
+    text = MOTOR_ROW.format(slip=9.3).replace("cos_phi = 0.65", "cos_phi = 1.65")
+    d = _user_dir(tmp_path, MOTORS_FILE, text)
+    with pytest.raises(CatalogError, match=r"row 1 \(model = 'X71B8'\): field cos_phi = 1.65"):
+        load_catalogs(d)
+
+
+def test_broken_toml_catalog_is_refused(tmp_path):
+    d = _user_dir(tmp_path, MOTORS_FILE, "[[motor]\nmodel = ")
+    with pytest.raises(CatalogError, match="broken TOML"):
+        load_catalogs(d)
+
+
+def test_materials_with_unknown_source_are_refused(tmp_path):
+    text = (HERE / MATERIALS_FILE).read_text(encoding="utf-8")
+    text = text.replace('source = ["shigley-8-5", "ivanov"]', 'source = ["nowhere"]', 1)
+    d = _user_dir(tmp_path, MATERIALS_FILE, text)
+    with pytest.raises(CatalogError, match="nowhere"):
+        load_catalogs(d)
+
+
+def test_cache_follows_file_changes(tmp_path, monkeypatch):
+    monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path / "c"))
+    d = _user_dir(tmp_path, MOTORS_FILE, MOTOR_ROW.format(slip=9.3))
+    load_catalogs.cache_clear()
+    assert any(m.model == "X71B8" for m in load_catalogs(d).motors)
+    assert list((tmp_path / "c" / "drive-advisor").glob("catalogs-*.json"))
+    # a cached run gives the same catalogs
+    load_catalogs.cache_clear()
+    again = load_catalogs(d)
+    assert any(m.model == "X71B8" and m.slip_pct == 9.3 for m in again.motors)
+    # editing the file invalidates the cache: the broken row is seen
+    (d / MOTORS_FILE).write_text(MOTOR_ROW.format(slip=12.7) + "\n", encoding="utf-8")
+    load_catalogs.cache_clear()
+    with pytest.raises(CatalogError):
+        load_catalogs(d)
+    shutil.rmtree(tmp_path / "c")
