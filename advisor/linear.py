@@ -147,10 +147,12 @@ def advise_linear(
     model = trace.apply(screw_rules.friction_model, s.friction_model)
 
     if s.thread is not None and cat.thread(s.thread) is None:
-        known = ", ".join(t.name for t in cat.threads if t.d_mm <= 20)
+        d = float(s.thread[2:].split("x")[0])
+        near = sorted({t.d_mm for t in cat.threads}, key=lambda x: abs(x - d))[:2]
+        nearest = ", ".join(t.name for t in cat.threads if t.d_mm in near)
         raise InputError(
-            f"screw.thread = {s.thread!r}: not a thread of GOST 24738-81 in the catalog "
-            f"(for example {known}, … up to Tr100x20)"
+            f"screw.thread = {s.thread!r}: not a thread of GOST 24738-81 "
+            f"(Tr8 … Tr100 with the pitches the standard gives); nearest: {nearest}"
         )
 
     def evaluate(t) -> ThreadEvaluation:
@@ -188,10 +190,7 @@ def advise_linear(
         screw_rules.choose_thread, options, req.application.hold_without_power, s.thread
     )
     if chosen is None:
-        raise InfeasibleError(
-            "no feasible design: no GOST 24738-81 thread (8…100 mm) passes every check",
-            _infeasibility_reasons(evaluations, lin.force_N),
-        )
+        raise _no_thread(evaluations, plans, cat, lin.force_N)
     ev = evaluations[chosen]
     if not ev.passed:
         raise InfeasibleError(
@@ -298,23 +297,62 @@ def _describe(c: Check) -> str:
     )
 
 
-def _infeasibility_reasons(evaluations: dict[str, ThreadEvaluation], force_N: float) -> list[str]:
-    largest = list(evaluations.values())[-1]
-    reasons = (
-        [
-            f"the largest thread, {largest.thread.name}, fails: "
-            + "; ".join(_describe(c) for c in largest.failed)
-        ]
-        if largest.failed
-        else []
+def _remedy(force_N: float, failed: set[str]) -> str:
+    cures = []
+    if "buckling" in failed:
+        cures.append("a shorter span between supports or stiffer end fixity")
+    if "core_stress" in failed:
+        cures.append("a stronger screw steel (40X)")
+    if failed & {"nut_pressure", "nut_height", "nut_turns"}:
+        cures.append("a nut material that allows a higher flank pressure")
+    return f"a force of {force_N:g} N needs " + ", or ".join(cures)
+
+
+def _no_thread(
+    evaluations: dict[str, ThreadEvaluation],
+    plans: dict[str, MotorPlan],
+    cat: Catalogs,
+    force_N: float,
+) -> InfeasibleError:
+    """Why no thread could be chosen: the checks, or the motors."""
+    passing = [ev for ev in evaluations.values() if ev.passed]
+    if not passing:
+        # every thread fails a check: the largest one shows what limits the design
+        biggest = max(evaluations.values(), key=lambda e: (e.thread.d_mm, e.thread.pitch_mm))
+        return InfeasibleError(
+            "no feasible design: no GOST 24738-81 thread (Tr8 … Tr100) passes every check",
+            [f"{biggest.thread.name}: {_describe(c)}" for c in biggest.failed]
+            + [_remedy(force_N, {c.id for c in biggest.failed})],
+        )
+    speeds = sorted(ev.speed_rpm for ev in passing)
+    fastest = max(m.rated_speed_rpm for m in cat.motors)
+    slowest = min(m.rated_speed_rpm for m in cat.motors)
+    biggest_kw = max(m.rated_power_kW for m in cat.motors)
+    reasons = [
+        f"{len(passing)} threads pass the strength checks; they need {speeds[0]:.4g} … "
+        f"{speeds[-1]:.4g} rpm at the screw"
+    ]
+    if speeds[0] > fastest:
+        reasons.append(
+            f"the fastest 50 Hz motor of the catalog runs at {fastest:g} rpm: allow a longer "
+            "travel time or use more thread starts"
+        )
+    elif speeds[-1] < slowest * 0.2:
+        reasons.append(
+            f"the slowest motor runs at {slowest:g} rpm, far above the screw speed; a direct "
+            "drive cannot reach it — add a reducer"
+        )
+    else:
+        powers = [p.required_power_kW for p in plans.values() if p.selected is None]
+        if powers:
+            reasons.append(
+                f"the power needed ({min(powers):.3g} kW or more at a reachable speed) exceeds "
+                f"what the catalog's motors give (up to {biggest_kw:g} kW) at that speed"
+            )
+    return InfeasibleError(
+        "no feasible design: no catalog motor can drive a thread that passes its checks",
+        reasons,
     )
-    reasons.append(
-        f"a force of {force_N:g} N needs a larger screw, a shorter span between supports, "
-        "stiffer end fixity or a stronger material pair"
-        if largest.failed
-        else "every passing thread needs a screw speed or power outside the motor catalog"
-    )
-    return reasons
 
 
 def _screw_out(

@@ -4,17 +4,19 @@ import math
 import tomllib
 
 import pytest
+from helpers import EXAMPLES, seed001_requirement
 
 from advisor.engine import advise
 from advisor.models import parse_requirements, read_requirements
 from advisor.report import to_toml
-from helpers import EXAMPLES, seed001_requirement
 from rules import induction as im_rules
 
 
 @pytest.fixture(scope="module")
 def report():
-    return tomllib.loads(to_toml(advise(read_requirements(EXAMPLES / "linear_screw_actuator.toml"))))
+    return tomllib.loads(
+        to_toml(advise(read_requirements(EXAMPLES / "linear_screw_actuator.toml")))
+    )
 
 
 def test_thread_speed_and_pole_pairs(report):
@@ -83,8 +85,10 @@ def test_free_choice_is_the_smallest_passing_thread():
     # margin 0.49); Tr14x3 (d3 = 10.5): P_cr = π²·E·(π·10.5⁴/64)/0.4² = 7.74 kN, 7.74/3/3.5
     # = 0.74 fails; Tr14x2 (d3 = 11.5): P_cr = 11.14 kN, margin 1.06 passes.
     e = 210e9
+
     def p_cr(d3_mm):
         return math.pi**2 * e * (math.pi * (d3_mm / 1e3) ** 4 / 64) / 0.4**2
+
     assert p_cr(10.5) / 3 < 3500 < p_cr(11.5) / 3
     rep = advise(parse_requirements(seed001_requirement(material_pair="steel_bronze")))
     assert rep.design.screw.thread == "Tr14x2"

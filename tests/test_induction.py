@@ -39,7 +39,9 @@ def test_simple_kloss_misses_the_catalog_starting_torque():
 @pytest.mark.parametrize("motor", load_catalogs().motors, ids=lambda m: m.model)
 def test_refined_kloss_passes_through_the_catalog_points(motor):
     mn = motor.rated_torque_Nm
-    c = im.fit_kloss(mn, motor.rated_slip, motor.breakdown_torque_ratio, motor.starting_torque_ratio)
+    c = im.fit_kloss(
+        mn, motor.rated_slip, motor.breakdown_torque_ratio, motor.starting_torque_ratio
+    )
     assert c.torque(0.0) == 0.0
     assert c.torque(motor.rated_slip) == pytest.approx(mn, rel=1e-9)
     assert c.torque(1.0) == pytest.approx(motor.starting_torque_ratio * mn, rel=1e-9)

@@ -43,7 +43,9 @@ def test_efficiency_and_self_locking_by_hand():
     phi = sc.friction_angle(0.15, "paper", psi)
     # η = tan ψ / tan(ψ+φ) = 0.0424413 / 0.1937087 = 0.219099 (power check: 140 W / η = M·ω)
     assert sc.efficiency(psi, phi) == pytest.approx(0.219099, abs=1e-6)
-    assert 3500 * 0.04 / sc.efficiency(psi, phi) == pytest.approx(5.08485 * 1200 * math.pi / 30, rel=1e-5)
+    assert 3500 * 0.04 / sc.efficiency(psi, phi) == pytest.approx(
+        5.08485 * 1200 * math.pi / 30, rel=1e-5
+    )
     assert sc.is_self_locking(psi, phi)
     assert sc.back_driving_efficiency(psi, phi) < 0
     # a steep lead (Tr16x4 with 4 starts: lead 16 mm) is not self-locking at f = 0.1
@@ -69,7 +71,7 @@ def test_buckling_euler_by_hand():
     assert how == "Euler" and p == pytest.approx(expected)
     assert lam == pytest.approx(0.4 / (0.0135 / 4))
     # fixed-fixed halves the effective length: four times the load (still Euler? λ = 59 < 108: no)
-    p2, lam2, how2 = sc.critical_buckling_load(0.0135, 0.4, "fixed-fixed", 210e9, 355e6)
+    _p2, lam2, how2 = sc.critical_buckling_load(0.0135, 0.4, "fixed-fixed", 210e9, 355e6)
     assert how2 == "Johnson" and lam2 == pytest.approx(lam / 2)
 
 
@@ -99,4 +101,6 @@ def test_euler_and_johnson_meet_at_the_transition():
 def test_nut_by_hand():
     # z = F/(π·d2·H1·[p]) = 3500/(π·15·1·10) = 7.427 turns
     assert sc.nut_turns_required(3500, 0.015, 0.001, 10e6) == pytest.approx(3500 / (math.pi * 150))
-    assert sc.nut_bearing_pressure(3500, 0.015, 0.001, 9) == pytest.approx(3500 / (math.pi * 15 * 9) * 1e6)
+    assert sc.nut_bearing_pressure(3500, 0.015, 0.001, 9) == pytest.approx(
+        3500 / (math.pi * 15 * 9) * 1e6
+    )

@@ -1,0 +1,184 @@
+"""The batch command as a user runs it: exit codes, messages, no traceback, atomic output."""
+
+import os
+import subprocess
+import sys
+import tomllib
+from pathlib import Path
+
+import pytest
+from helpers import EXAMPLES
+
+from advisor.cli import main
+from advisor.errors import ExitCode
+
+EXAMPLE = EXAMPLES / "linear_screw_actuator.toml"
+GOOD = EXAMPLE.read_text(encoding="utf-8")
+
+
+def run(*args: str) -> subprocess.CompletedProcess:
+    env = {**os.environ}
+    return subprocess.run(
+        [sys.executable, "-m", "advisor", *args], capture_output=True, text=True, env=env
+    )
+
+
+def test_batch_prints_the_report():
+    r = run("--batch", str(EXAMPLE))
+    assert r.returncode == 0, r.stderr
+    report = tomllib.loads(r.stdout)
+    assert report["design"]["screw"]["thread"] == "Tr16x2"
+    assert r.stderr == ""
+
+
+def test_batch_is_deterministic():
+    assert run("--batch", str(EXAMPLE)).stdout == run("--batch", str(EXAMPLE)).stdout
+
+
+def test_output_file_and_summary(tmp_path):
+    out = tmp_path / "report.toml"
+    r = run("--batch", str(EXAMPLE), "-o", str(out))
+    assert r.returncode == 0, r.stderr
+    assert tomllib.loads(out.read_text())["design"]["motor"]["pole_pairs"] == 2
+    assert "Tr16x2" in r.stdout and "4A71B4" in r.stdout and str(out) in r.stdout
+    assert list(tmp_path.iterdir()) == [out]  # no temporary file left behind
+
+
+def test_version():
+    r = run("--version")
+    assert r.returncode == 0 and r.stdout.startswith("advisor 0.")
+
+
+def test_batch_path_imports_neither_textual_nor_rich():
+    code = (
+        "import sys, io, contextlib\n"
+        "from advisor.cli import main\n"
+        "with contextlib.redirect_stdout(io.StringIO()):\n"
+        f"    rc = main(['--batch', {str(EXAMPLE)!r}])\n"
+        "assert rc == 0\n"
+        "bad = [m for m in ('textual', 'rich', 'scipy.optimize') if m in sys.modules]\n"
+        "print(','.join(bad))\n"
+    )
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    assert r.stdout.strip() == ""
+
+
+def _bad(tmp_path: Path, text: str) -> Path:
+    p = tmp_path / "req.toml"
+    p.write_text(text, encoding="utf-8")
+    return p
+
+
+def _replace(old: str, new: str) -> str:
+    assert old in GOOD
+    return GOOD.replace(old, new)
+
+
+BAD_INPUTS = [
+    # (requirement text, words the one-line message must contain)
+    ("[application\nkind = 'linear'", ["broken TOML", "line 1"]),
+    (_replace("force_N = 3500", "force_N = -3500"), ["linear.force_N = -3500", "must be > 0", "N"]),
+    (_replace("force_N = 3500", "force_N = 0"), ["linear.force_N = 0", "must be > 0"]),
+    (_replace("force_N = 3500", "force_N = nan"), ["linear.force_N = nan", "finite"]),
+    (_replace("stroke_m = 0.2", "stroke_m = inf"), ["linear.stroke_m = inf", "finite"]),
+    (
+        _replace("travel_time_s = 5", 'travel_time_s = "5"'),
+        ["linear.travel_time_s = '5'", "number"],
+    ),
+    (_replace("force_N = 3500\n", ""), ["linear.force_N: missing", "rated axial force, N"]),
+    (
+        _replace('kind = "linear"', 'kind = "hovercraft"'),
+        ["application.kind = 'hovercraft'", "'linear'"],
+    ),
+    (_replace('kind = "induction"', 'kind = "steam"'), ["motor.kind = 'steam'", "'induction'"]),
+    (
+        _replace("supply_frequency_Hz = 50", "supply_frequency_Hz = 60"),
+        ["motor.supply_frequency_Hz = 60", "50"],
+    ),
+    (_replace("starts = 1", "starts = 1.5"), ["screw.starts = 1.5", "whole number"]),
+    (
+        _replace('friction_model = "paper"', 'friction_model = "magic"'),
+        ["screw.friction_model = 'magic'", "'standard'", "'paper'"],
+    ),
+    (
+        _replace("friction_coefficient = 0.15", "friction_coefficient = -0.1"),
+        ["screw.friction_coefficient = -0.1", "> 0"],
+    ),
+    (_replace('thread = "Tr16x2"', 'thread = "M16"'), ["screw.thread = 'M16'", "Tr16x2"]),
+    (
+        _replace('thread = "Tr16x2"', 'thread = "Tr17x3"'),
+        ["screw.thread = 'Tr17x3'", "GOST 24738-81"],
+    ),
+    (
+        _replace("force_N = 3500", "force_N = 3500\nforse_N = 1"),
+        ["linear.forse_N: unknown key", "force_N"],
+    ),
+    (
+        _replace("hold_without_power = false", "hold_without_power = 1"),
+        ["application.hold_without_power = 1", "true or false"],
+    ),
+    (
+        _replace("support_span_m = 0.4", "support_span_m = 0.1"),
+        ["stroke_m = 0.2", "support_span_m = 0.1"],
+    ),
+    (
+        "[application]\nkind = 'linear'\n[motor]\nkind = 'induction'\n",
+        ["[linear] table is missing"],
+    ),
+    ("", ["application: missing", "motor: missing"]),
+]
+
+
+@pytest.mark.parametrize(("text", "words"), BAD_INPUTS, ids=[w[0] for _, w in BAD_INPUTS])
+def test_bad_input_exit_2_with_a_clear_message(tmp_path, capsys, text, words):
+    rc = main(["--batch", str(_bad(tmp_path, text))])
+    err = capsys.readouterr().err
+    assert rc == ExitCode.INVALID_INPUT
+    assert "Traceback" not in err
+    for w in words:
+        assert w in err, f"{w!r} not in {err!r}"
+    for line in err.strip().splitlines():
+        assert line.startswith("advisor: ")
+
+
+def test_missing_file_and_directory(tmp_path, capsys):
+    assert main(["--batch", str(tmp_path / "nope.toml")]) == 2
+    assert "no such file" in capsys.readouterr().err
+    assert main(["--batch", str(tmp_path)]) == 2
+    assert "is a directory" in capsys.readouterr().err
+
+
+def test_infeasible_exit_3_with_reasons(tmp_path, capsys):
+    # 5 MN on a 20 m span: even Tr100x4 (d3 = 95.5 mm) buckles
+    text = _replace("force_N = 3500", "force_N = 5000000")
+    text = text.replace("support_span_m = 0.4", "support_span_m = 20").replace(
+        'thread = "Tr16x2"\n', ""
+    )
+    rc = main(["--batch", str(_bad(tmp_path, text))])
+    err = capsys.readouterr().err
+    assert rc == ExitCode.INFEASIBLE
+    assert "no feasible design" in err and "buckling" in err and "Traceback" not in err
+
+
+def test_imposed_thread_that_fails_exit_3(tmp_path, capsys):
+    # a steel nut (5 MPa allowed) on Tr16x2 needs 3500/(π·15·1·5) = 14.9 turns > 10
+    rc = main(["--batch", str(_bad(tmp_path, _replace('"steel_bronze"', '"steel_steel"')))])
+    err = capsys.readouterr().err
+    assert rc == ExitCode.INFEASIBLE
+    assert "Tr16x2" in err and "engaged nut turns: 14.85" in err
+
+
+def test_unwritable_output_is_reported(tmp_path, capsys):
+    rc = main(["--batch", str(EXAMPLE), "-o", str(tmp_path / "no" / "such" / "dir" / "r.toml")])
+    assert rc == ExitCode.INVALID_INPUT
+    assert "cannot write the report" in capsys.readouterr().err
+
+
+def test_no_arguments_explains(capsys):
+    assert main([]) == ExitCode.INVALID_INPUT
+    assert "--batch" in capsys.readouterr().err
+
+
+def test_unknown_option_is_a_usage_error(capsys):
+    assert main(["--bogus"]) == 2

@@ -1,0 +1,73 @@
+"""Property tests: any valid linear requirement ends in a design whose every check passes,
+or in a clear infeasibility — never in any other exception."""
+
+import math
+
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from advisor.engine import advise
+from advisor.errors import InfeasibleError
+from advisor.models import parse_requirements
+
+finite = dict(allow_nan=False, allow_infinity=False)
+
+
+@st.composite
+def linear_requirements(draw):
+    stroke = draw(st.floats(0.005, 3.0, **finite))
+    screw = {
+        "starts": draw(st.integers(1, 4)),
+        "friction_model": draw(st.sampled_from(["standard", "paper"])),
+        "material_pair": draw(
+            st.sampled_from(
+                ["steel_bronze", "hardened_steel_bronze", "steel_cast_iron", "steel_steel"]
+            )
+        ),
+        "lubrication": draw(st.sampled_from(["oil", "dry"])),
+        "screw_steel": draw(st.sampled_from(["45", "40X"])),
+    }
+    if draw(st.booleans()):
+        screw["friction_coefficient"] = draw(st.floats(0.02, 0.5, **finite))
+    return {
+        "application": {"kind": "linear", "hold_without_power": draw(st.booleans())},
+        "linear": {
+            "force_N": draw(st.floats(1.0, 2e6, **finite)),
+            "stroke_m": stroke,
+            "travel_time_s": draw(st.floats(0.05, 2000.0, **finite)),
+            "support_span_m": stroke * draw(st.floats(1.0, 4.0, **finite)),
+            "end_fixity": draw(
+                st.sampled_from(["pinned-pinned", "fixed-pinned", "fixed-fixed", "fixed-free"])
+            ),
+            "buckling_safety_factor": draw(st.floats(1.0, 6.0, **finite)),
+        },
+        "motor": {"kind": "induction", "supply_frequency_Hz": 50},
+        "screw": screw,
+    }
+
+
+@settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(linear_requirements())
+def test_design_or_clear_infeasibility(data):
+    req = parse_requirements(data)
+    try:
+        rep = advise(req)
+    except InfeasibleError as exc:
+        assert exc.summary.startswith("no feasible design")
+        assert exc.reasons
+        return
+    s, m = rep.design.screw, rep.design.motor
+    # the chosen thread passes its own checks, and the motor carries the screw
+    assert all(c.passed and c.margin >= 1 for c in rep.checks), [
+        c for c in rep.checks if not c.passed
+    ]
+    assert m.rated_torque_Nm >= s.torque_Nm * (1 - 1e-12)
+    assert m.travel_time_s <= data["linear"]["travel_time_s"] * (1 + 1e-9)
+    assert m.working_speed_rpm >= s.speed_rpm * (1 - 1e-9)
+    # dimensions positive and consistent
+    assert 0 < s.d3_mm < s.d2_mm < s.nominal_diameter_mm < s.D4_mm
+    assert s.nut.height_mm > 0 and s.nut.turns <= 10 + 1e-9
+    assert math.isclose(s.revolutions * s.lead_mm / 1e3, data["linear"]["stroke_m"], rel_tol=1e-9)
+    if data["application"]["hold_without_power"] and s.self_locking_at_low_friction:
+        assert s.self_locking
+    assert [c.role for c in m.candidates].count("selected") == 1

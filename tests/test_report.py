@@ -1,0 +1,57 @@
+"""Reports are written atomically: a failure never leaves a half-written or lost file."""
+
+import os
+
+import pytest
+
+from advisor import report as rp
+
+
+def test_write_atomic_replaces(tmp_path):
+    target = tmp_path / "r.toml"
+    rp.write_atomic(target, "a = 1\n")
+    rp.write_atomic(target, "a = 2\n")
+    assert target.read_text() == "a = 2\n"
+    assert list(tmp_path.iterdir()) == [target]
+
+
+@pytest.mark.parametrize("where", ["write", "fsync", "replace"])
+def test_failure_midway_keeps_the_old_file(tmp_path, monkeypatch, where):
+    target = tmp_path / "r.toml"
+    target.write_text("old = true\n")
+
+    def boom(*a, **k):
+        raise OSError(28, "No space left on device")
+
+    if where == "replace":
+        monkeypatch.setattr(rp.os, "replace", boom)
+    elif where == "fsync":
+        monkeypatch.setattr(rp.os, "fsync", boom)
+    else:
+        real_fdopen = os.fdopen
+
+        class Half:
+            def __init__(self, fh):
+                self.fh = fh
+
+            def __enter__(self):
+                return self
+
+            def __exit__(self, *exc):
+                self.fh.close()
+
+            def write(self, text):
+                self.fh.write(text[: len(text) // 2])
+                raise OSError(28, "No space left on device")
+
+        monkeypatch.setattr(rp.os, "fdopen", lambda fd, *a, **k: Half(real_fdopen(fd, *a, **k)))
+    with pytest.raises(OSError):
+        rp.write_atomic(target, "new = true\n" * 1000)
+    assert target.read_text() == "old = true\n"
+    assert list(tmp_path.iterdir()) == [target]
+
+
+def test_round_sig():
+    assert rp.round_sig(5.0848496) == 5.08485
+    assert rp.round_sig(0.0) == 0.0
+    assert rp.round_sig(-1234567.0) == -1234570.0
