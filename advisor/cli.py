@@ -98,6 +98,12 @@ def main(argv: list[str] | None = None) -> int:
     except AdvisorError as exc:
         _err(str(exc))
         return exc.exit_code
+    except BrokenPipeError:  # `advisor --batch r.toml | head`: the reader left; not an error
+        try:
+            sys.stdout = open(os.devnull, "w")
+        except OSError:
+            pass
+        return ExitCode.OK
     except KeyboardInterrupt:
         _err("interrupted; nothing was written")
         return 130

@@ -1,6 +1,6 @@
 """Warm in-process time of one advice per example (imports and catalogs already loaded).
 
-    python benchmarks/warm_advice.py [-n 200]
+python benchmarks/warm_advice.py [-n 200]
 """
 
 import argparse

@@ -182,3 +182,27 @@ def test_no_arguments_explains(capsys):
 
 def test_unknown_option_is_a_usage_error(capsys):
     assert main(["--bogus"]) == 2
+
+
+def test_a_bug_is_one_line_not_a_traceback(monkeypatch, capsys):
+    import advisor.engine
+
+    def broken(*a, **k):
+        raise ZeroDivisionError("float division by zero")
+
+    monkeypatch.setattr(advisor.engine, "advise", broken)
+    assert main(["--batch", str(EXAMPLE)]) == ExitCode.INTERNAL_ERROR
+    err = capsys.readouterr().err
+    assert "internal error (ZeroDivisionError" in err and "Traceback" not in err
+    assert len(err.strip().splitlines()) == 1
+
+
+def test_closed_pipe_is_quiet():
+    r = subprocess.run(
+        f"{sys.executable} -m advisor --batch {EXAMPLE} | head -c 10",
+        shell=True,
+        capture_output=True,
+        text=True,
+    )
+    assert r.stdout == "warnings ="[:10]
+    assert "Traceback" not in r.stderr and "internal error" not in r.stderr
