@@ -7,6 +7,7 @@ from pathlib import Path
 
 import rules  # noqa: F401  (registers every rule)
 from advisor import __version__
+from advisor.errors import InfeasibleError
 from advisor.linear import advise_linear
 from advisor.models import Requirements
 from advisor.report import CheckOut, DecisionOut, Report, ReportHeader
@@ -24,12 +25,18 @@ def advise(req: Requirements, catalog_dir: Path | None = None) -> Report:
     cat = load_catalogs(catalog_dir)
     trace = Trace()
     design, checks, warnings = advise_linear(req, cat, trace)
+    failed = [c for c in checks if not c.passed]
+    if failed:  # the rules should never let this happen; if they do, it is not a design
+        raise InfeasibleError(
+            "no feasible design: the chosen parts fail checks",
+            [f"{c.name}: margin {c.margin:.3f}" for c in failed],
+        )
     return Report.make(
         report=ReportHeader.make(
             advisor_version=__version__,
             application=req.application.kind,
             title=req.application.title,
-            status="feasible" if all(c.passed for c in checks) else "checks failed",
+            status="feasible",
         ),
         requirements=req.model_dump(exclude_none=True),
         design=design,

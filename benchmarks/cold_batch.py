@@ -7,15 +7,14 @@ prints medians and their ratio; writes benchmarks/results/cold_batch.json.
 """
 
 import argparse
-import json
 import shutil
 import statistics
 import subprocess
 import sys
 import time
-from pathlib import Path
 
-ROOT = Path(__file__).resolve().parent.parent
+from _results import examples, save
+
 FLOOR = [sys.executable, "-c", "import numpy, scipy, pydantic, tomli_w"]
 
 
@@ -30,7 +29,7 @@ def main() -> None:
     ap.add_argument("-n", type=int, default=21)
     n = ap.parse_args().n
     results = {}
-    for example in sorted((ROOT / "examples").glob("*.toml")):
+    for example in examples():
         exe = shutil.which("advisor")
         cmd = [exe] if exe else [sys.executable, "-m", "advisor"]
         batch = [*cmd, "--batch", str(example)]
@@ -43,9 +42,7 @@ def main() -> None:
         results[example.name] = {"floor_s": f, "batch_s": r, "ratio": r / f, "runs": n}
         line = f"{example.name:32s} floor {f * 1e3:6.1f} ms  batch {r * 1e3:6.1f} ms"
         print(f"{line}  ratio {r / f:.2f}")
-    out = ROOT / "benchmarks" / "results"
-    out.mkdir(exist_ok=True)
-    (out / "cold_batch.json").write_text(json.dumps(results, indent=2) + "\n")
+    save("cold_batch", results)
 
 
 if __name__ == "__main__":

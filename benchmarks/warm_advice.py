@@ -4,16 +4,14 @@ python benchmarks/warm_advice.py [-n 200]
 """
 
 import argparse
-import json
 import statistics
 import time
-from pathlib import Path
+
+from _results import examples, save
 
 from advisor.engine import advise
 from advisor.models import read_requirements
 from advisor.report import to_toml
-
-ROOT = Path(__file__).resolve().parent.parent
 
 
 def main() -> None:
@@ -21,7 +19,7 @@ def main() -> None:
     ap.add_argument("-n", type=int, default=200)
     n = ap.parse_args().n
     results = {}
-    for example in sorted((ROOT / "examples").glob("*.toml")):
+    for example in examples():
         req = read_requirements(example)
         to_toml(advise(req))  # warm: imports, catalog cache, first-call costs
         times = []
@@ -32,9 +30,7 @@ def main() -> None:
         med = statistics.median(times)
         results[example.name] = {"median_ms": med * 1e3, "runs": n}
         print(f"{example.name:32s} warm advice (read + advise + TOML) {med * 1e3:6.2f} ms")
-    out = ROOT / "benchmarks" / "results"
-    out.mkdir(exist_ok=True)
-    (out / "warm_advice.json").write_text(json.dumps(results, indent=2) + "\n")
+    save("warm_advice", results)
 
 
 if __name__ == "__main__":

@@ -219,6 +219,7 @@ class MotorEvaluation(NamedTuple):
     starting_torque_margin: float
     breakdown_torque_margin: float
     travel_time_s: float | None
+    required_speed_rpm: float
     slips: list[float]
     torques_Nm: list[float]
 
@@ -235,6 +236,13 @@ class MotorEvaluation(NamedTuple):
             out.append(f"starting torque {self.starting_torque_Nm:.3f} N·m cannot start the load")
         if self.working_slip is None:
             out.append("the load exceeds the maximum torque: the motor stalls")
+        elif (
+            self.working_speed_rpm is not None and self.working_speed_rpm < self.required_speed_rpm
+        ):
+            out.append(
+                f"runs at {self.working_speed_rpm:.0f} rpm under the load, below the required "
+                f"{self.required_speed_rpm:.0f} rpm"
+            )
         return out
 
     @property
@@ -274,6 +282,7 @@ def evaluate_motor(
         starting_torque_margin=curve.torque(1.0) / load_torque_Nm,
         breakdown_torque_margin=curve.max_torque_Nm / load_torque_Nm,
         travel_time_s=None if not n_work else 60.0 * revolutions / n_work,
+        required_speed_rpm=required_speed_rpm,
         slips=slips,
         torques_Nm=[curve.torque(x) for x in slips],
     )
