@@ -11,7 +11,7 @@ from pathlib import Path
 from typing import Any, NamedTuple
 
 from advisor.errors import CatalogError
-from catalogs.rows import FrictionPair, InductionMotor, Materials, ScrewSteel
+from catalogs.rows import ElectricalSteel, FrictionPair, InductionMotor, Materials, ScrewSteel
 from catalogs.threads import ThreadProfile, trapezoidal_profile
 
 HERE = Path(__file__).parent
@@ -20,6 +20,7 @@ THREADS_FILE = "gost_24738_81_trapezoidal.toml"
 POWERS_FILE = "gost_12139_84_powers.toml"
 MOTORS_FILE = "induction_4a.toml"
 MATERIALS_FILE = "screw_materials.toml"
+STEELS_FILE = "electrical_steels.toml"
 
 
 # ---------------------------------------------------------------- the bundle
@@ -31,6 +32,8 @@ class Catalogs(NamedTuple):
     motors: tuple[InductionMotor, ...]
     motor_sources: dict[str, str]
     materials: Materials
+    electrical_steels: tuple[ElectricalSteel, ...]
+    steel_sources: dict[str, str]
 
     def thread(self, name: str) -> ThreadProfile | None:
         key = name.replace(" ", "").replace("×", "x").lower()
@@ -44,6 +47,12 @@ class Catalogs(NamedTuple):
 
     def steel(self, name: str) -> ScrewSteel:
         return next(s for s in self.materials.steel if s.name == name)
+
+    def electrical_steel(self, grade: str, thickness_mm: float) -> ElectricalSteel | None:
+        for s in self.electrical_steels:
+            if s.grade == grade and math.isclose(s.thickness_mm, thickness_mm):
+                return s
+        return None
 
     def motors_with_poles(self, poles: int) -> list[InductionMotor]:
         return sorted((m for m in self.motors if m.poles == poles), key=lambda m: m.rated_power_kW)
@@ -186,9 +195,11 @@ def load_catalogs(user_dir: Path | None = None) -> Catalogs:
     Validated catalogs are cached as JSON in the user's cache directory, keyed by the size
     and modification time of every file read; any change to a file validates it again.
     """
-    files = [HERE / f for f in (THREADS_FILE, POWERS_FILE, MOTORS_FILE, MATERIALS_FILE)]
+    files = [
+        HERE / f for f in (THREADS_FILE, POWERS_FILE, MOTORS_FILE, MATERIALS_FILE, STEELS_FILE)
+    ]
     if user_dir is not None:
-        files += [user_dir / f for f in (THREADS_FILE, MOTORS_FILE, MATERIALS_FILE)]
+        files += [user_dir / f for f in (THREADS_FILE, MOTORS_FILE, MATERIALS_FILE, STEELS_FILE)]
     cache_file = _cache_file(files)
     if cache_file is not None:
         cached = _read_cache(cache_file)
@@ -205,6 +216,7 @@ def _load_and_validate(user_dir: Path | None) -> Catalogs:
     powers, powers_source = _load_powers(HERE / POWERS_FILE)
     motors, motor_sources = _load_motors(HERE / MOTORS_FILE)
     materials = _load_materials(HERE / MATERIALS_FILE)
+    steels, steel_sources = _load_steels(HERE / STEELS_FILE)
     if user_dir is not None:
         if not user_dir.is_dir():
             raise CatalogError(f"catalog directory {user_dir}: not a directory")
@@ -219,6 +231,11 @@ def _load_and_validate(user_dir: Path | None) -> Catalogs:
             _check_unique(user_dir / THREADS_FILE, [t.name for t in threads], "thread")
         if (user_dir / MATERIALS_FILE).exists():
             materials = _load_materials(user_dir / MATERIALS_FILE)
+        if (user_dir / STEELS_FILE).exists():
+            extra_steels, extra_sources = _load_steels(user_dir / STEELS_FILE)
+            steels = steels + extra_steels
+            steel_sources = {**steel_sources, **extra_sources}
+            _check_unique(user_dir / STEELS_FILE, [s.name for s in steels], "steel")
     return Catalogs(
         threads=tuple(sorted(threads, key=lambda t: (t.d_mm, -t.pitch_mm))),
         threads_source=threads_source,
@@ -227,7 +244,32 @@ def _load_and_validate(user_dir: Path | None) -> Catalogs:
         motors=tuple(motors),
         motor_sources=motor_sources,
         materials=materials,
+        electrical_steels=tuple(steels),
+        steel_sources=steel_sources,
     )
+
+
+def _load_steels(path: Path) -> tuple[list[ElectricalSteel], dict[str, str]]:
+    from pydantic import ValidationError
+
+    from catalogs.schema import ElectricalSteelRow
+
+    data = _read(path)
+    sources = data.get("sources", {})
+    out = []
+    for i, row in enumerate(_rows(path, data, "steel"), start=1):
+        where = f"row {i} (grade = {row.get('grade')!r})"
+        try:
+            s = ElectricalSteelRow.model_validate(row)
+        except ValidationError as exc:
+            raise _fail(path, where, exc) from None
+        missing = set(s.source) - set(sources)
+        if missing:
+            raise CatalogError(
+                f"catalog {path}, {where}: source names {sorted(missing)} not in [sources]"
+            )
+        out.append(ElectricalSteel(**{**s.model_dump(), "estimated": tuple(s.estimated)}))
+    return out, dict(sources)
 
 
 def _check_unique(path: Path, names: list[str], what: str) -> None:
@@ -239,7 +281,7 @@ def _check_unique(path: Path, names: list[str], what: str) -> None:
 
 
 # ---------------------------------------------------------------- cache of validated catalogs
-CACHE_VERSION = 1
+CACHE_VERSION = 2
 
 
 def _cache_file(files: list[Path]) -> Path | None:
@@ -269,6 +311,8 @@ def _read_cache(path: Path) -> Catalogs | None:
             motors=tuple(InductionMotor(**m) for m in data["motors"]),
             motor_sources=data["motor_sources"],
             materials=Materials.from_dict(mat),
+            electrical_steels=tuple(ElectricalSteel(**x) for x in data["electrical_steels"]),
+            steel_sources=data["steel_sources"],
         )
     except (OSError, ValueError, KeyError, TypeError):
         return None  # absent or stale format: validate the files again
@@ -283,6 +327,8 @@ def _write_cache(path: Path, cat: Catalogs) -> None:
         "motors": [m._asdict() for m in cat.motors],
         "motor_sources": cat.motor_sources,
         "materials": cat.materials.to_dict(),
+        "electrical_steels": [x._asdict() for x in cat.electrical_steels],
+        "steel_sources": cat.steel_sources,
     }
     try:
         path.parent.mkdir(parents=True, exist_ok=True)

@@ -101,3 +101,18 @@ class Materials(NamedTuple):
             nut=NutRules(**d["nut"]),
             strength=StrengthRules(**d["strength"]),
         )
+
+
+class ElectricalSteel(NamedTuple):
+    grade: str
+    thickness_mm: float
+    equivalent: str
+    p10_50_W_kg: float
+    p15_50_W_kg: float
+    p10_400_W_kg: float
+    source: list[str]
+    estimated: tuple[str, ...] = ()
+
+    @property
+    def name(self) -> str:
+        return f"{self.grade} {self.thickness_mm:g} mm"

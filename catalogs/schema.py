@@ -149,3 +149,31 @@ class MaterialsFile(_Row):
                 if missing:
                     raise ValueError(f"source names {sorted(missing)} not in [sources]")
         return self
+
+
+class ElectricalSteelRow(_Row):
+    grade: Annotated[str, Field(pattern=r"^\d{4}$")]
+    thickness_mm: Positive
+    equivalent: str
+    p10_50_W_kg: Positive
+    p15_50_W_kg: Positive
+    p10_400_W_kg: Positive
+    source: list[str]
+    estimated: list[str] = []
+
+    @model_validator(mode="after")
+    def _losses_consistent(self) -> "ElectricalSteelRow":
+        if not self.p10_50_W_kg < self.p15_50_W_kg:
+            raise ValueError(
+                f"p15_50_W_kg = {self.p15_50_W_kg} must exceed p10_50_W_kg = {self.p10_50_W_kg}"
+                " (losses rise with induction)"
+            )
+        if not self.p10_50_W_kg < self.p10_400_W_kg:
+            raise ValueError(
+                f"p10_400_W_kg = {self.p10_400_W_kg} must exceed p10_50_W_kg = "
+                f"{self.p10_50_W_kg} (losses rise with frequency)"
+            )
+        unknown = set(self.estimated) - {"p10_50_W_kg", "p15_50_W_kg", "p10_400_W_kg"}
+        if unknown:
+            raise ValueError(f"estimated names unknown fields {sorted(unknown)}")
+        return self

@@ -1,0 +1,195 @@
+"""PM brushless motor with concentrated windings: pole/slot sets and losses against speed.
+
+References
+----------
+[1] Seed 000 (000_e109c3d4c17eaf1c.txt): eq. (1) pole/slot relation; (4) ohmic losses fall
+    with the square of the total reduction; (5) iron losses; (9)–(10) the frequency of
+    minimum total loss; the worked example (74 mm stator, 500 Hz, 230 W vs 518 W).
+[2] Winding factor of tooth-coil windings: k_w = k_p·k_d with k_p = |sin(π·p/z)| and, for k
+    adjacent coils of alternating polarity per phase group, k_d = sin(k·γ/2)/(k·sin(γ/2)),
+    γ = π − 2π·p/z (e.g. Meier, «Theoretical design of surface-mounted PM machines with
+    non-overlapping windings», 2008). Known values: 12s/10p 0.933, 9s/8p 0.945, 12s/8p 0.866.
+"""
+
+import itertools
+import math
+from typing import NamedTuple
+
+
+class PoleSlot(NamedTuple):
+    slots: int
+    poles: int
+    teeth_per_group: int
+    winding_factor: float
+
+    @property
+    def pole_pairs(self) -> int:
+        return self.poles // 2
+
+
+def winding_factor(slots: int, pole_pairs: int, teeth_per_group: int) -> float:
+    """Fundamental winding factor of a tooth-coil winding [2].
+
+    >>> round(winding_factor(12, 5, 2), 3), round(winding_factor(9, 4, 3), 3)
+    (0.933, 0.945)
+    """
+    alpha = 2.0 * math.pi * pole_pairs / slots  # electrical angle between adjacent teeth
+    kp = abs(math.sin(alpha / 2.0))
+    k = teeth_per_group
+    gamma = math.pi - alpha
+    kd = 1.0 if k == 1 else abs(math.sin(k * gamma / 2.0) / (k * math.sin(gamma / 2.0)))
+    return kp * kd
+
+
+def pole_slot_combinations(phases: int = 3, max_slots: int = 36) -> list[PoleSlot]:
+    """Feasible sets of eq. (1), 2p = z/(m·k)·(k·m ± 1), seed 000.
+
+    z must hold a whole number of phase groups of k teeth (z divisible by m·k), 2p must be
+    even, and the winding must be balanced (z / gcd(z, p) divisible by m).
+    """
+    out = []
+    for z in range(phases, max_slots + 1, phases):
+        for k in range(1, z // phases + 1):
+            if z % (phases * k):
+                continue
+            groups = z // (phases * k)
+            for sign in (+1, -1):
+                two_p = groups * (k * phases + sign)
+                if two_p <= 0 or two_p % 2 or two_p == z:
+                    continue
+                p = two_p // 2
+                if (z // math.gcd(z, p)) % phases:
+                    continue
+                out.append(PoleSlot(z, two_p, k, winding_factor(z, p, k)))
+    return sorted(set(out), key=lambda c: (c.poles, c.slots))
+
+
+def flux_frequency_Hz(speed_rpm: float, pole_pairs: int) -> float:
+    """f = n·p/60. Seed 000: 5000 rpm, p = 6 → 500 Hz.
+
+    >>> flux_frequency_Hz(5000, 6)
+    500.0
+    """
+    return speed_rpm * pole_pairs / 60.0
+
+
+def stator_steel_mass(
+    area_mm2: float, stack_length_mm: float, fill: float, density_kg_m3: float
+) -> float:
+    """m = ρ·S·l·k_з. Seed 000: 7.8 g/cm³ × 12 cm² × 5 cm × 0.85 ≈ 0.4 kg.
+
+    >>> round(stator_steel_mass(1200, 50, 0.85, 7800), 4)
+    0.3978
+    """
+    return density_kg_m3 * area_mm2 * 1e-6 * stack_length_mm * 1e-3 * fill
+
+
+def iron_specific_loss_quadratic(p15_50_W_kg: float, frequency_Hz: float) -> float:
+    """Specific iron loss at 1.5 T scaled with the square of frequency — seed 000's
+    simplification of eq. (5) (hysteresis neglected, the excess term taken ∝ f²):
+    P = P1.5/50·(f/50)². Seed 000: 2.5 W/kg at 500 Hz → 250 W/kg.
+
+    >>> iron_specific_loss_quadratic(2.5, 500)
+    250.0
+    """
+    return p15_50_W_kg * (frequency_Hz / 50.0) ** 2
+
+
+class SteinmetzTerms(NamedTuple):
+    """Coefficients of eq. (5) with C_dc = 1: P = K_h·f·B² + K_c·(f·B)² + K_e·(f·B)^1.5."""
+
+    k_h: float
+    k_c: float
+    k_e: float
+
+    def specific_loss(self, frequency_Hz: float, induction_T: float) -> float:
+        fb = frequency_Hz * induction_T
+        return self.k_h * frequency_Hz * induction_T**2 + self.k_c * fb**2 + self.k_e * fb**1.5
+
+
+def fit_eq5(p10_50: float, p15_50: float, p10_400: float) -> SteinmetzTerms:
+    """Fit the three terms of seed 000 eq. (5) to the three catalog losses of a steel
+    (P1.0/50, P1.5/50, P1.0/400), solving the 3×3 linear system exactly.
+
+    >>> t = fit_eq5(1.0, 2.5, 17.0)
+    >>> round(t.specific_loss(50, 1.5), 6), round(t.specific_loss(400, 1.0), 6)
+    (2.5, 17.0)
+    """
+    rows = [(50.0, 1.0, p10_50), (50.0, 1.5, p15_50), (400.0, 1.0, p10_400)]
+    a = [[f * b * b, (f * b) ** 2, (f * b) ** 1.5] for f, b, _ in rows]
+    y = [p for _, _, p in rows]
+    return SteinmetzTerms(*_solve3(a, y))
+
+
+def _solve3(a: list[list[float]], y: list[float]) -> list[float]:
+    """Cramer's rule for a 3×3 system (no numpy needed for three unknowns)."""
+
+    def det(m: list[list[float]]) -> float:
+        return (
+            m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1])
+            - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])
+            + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0])
+        )
+
+    d = det(a)
+    out = []
+    for col in range(3):
+        m = [row[:] for row in a]
+        for r in range(3):
+            m[r][col] = y[r]
+        out.append(det(m) / d)
+    return out
+
+
+def ohmic_loss(
+    reference_loss_W: float, reference_speed_rpm: float, speed_rpm: float, load_ratio: float = 1.0
+) -> float:
+    """Copper loss of the same stator rewound for another speed, seed 000 eq. (4):
+    n times the speed with n times fewer turns of n times the cross-section gives the same
+    power at the same current with 1/n² of the loss. ``load_ratio`` = required torque over
+    the torque the rewound motor gives at the reference current (loss ∝ current²).
+
+    Seed 000: 70 W at 5000 rpm → 17.5 W at 10000 rpm (the paper rounds to 18 W).
+
+    >>> round(ohmic_loss(2 * 1.14 * 5.5**2, 5000, 10000), 2)
+    17.24
+    """
+    return reference_loss_W * (reference_speed_rpm / speed_rpm) ** 2 * load_ratio**2
+
+
+def magnet_loss(points: list[tuple[float, float]], speed_rpm: float) -> float:
+    """Eddy-current loss in the magnets at a speed, from the reference design's values.
+
+    Between two given points the loss follows the power law through them (log–log
+    interpolation); beyond the given points it grows with the square of speed, seed 000's
+    stated assumption. The seed's own FEM values (60 W at 5000 rpm, 100 W at 10000 rpm) grow
+    as n^0.74, not n², which is why they are data here and not a law.
+
+    >>> magnet_loss([(5000, 60), (10000, 100)], 10000), magnet_loss([(5000, 60)], 10000)
+    (100.0, 240.0)
+    """
+    pts = sorted(points)
+    if len(pts) == 1 or speed_rpm <= pts[0][0]:
+        n0, p0 = pts[0]
+        return p0 * (speed_rpm / n0) ** 2
+    if speed_rpm >= pts[-1][0]:
+        n0, p0 = pts[-1]
+        return p0 * (speed_rpm / n0) ** 2
+    for (n0, p0), (n1, p1) in itertools.pairwise(pts):
+        if n0 <= speed_rpm <= n1:
+            e = math.log(p1 / p0) / math.log(n1 / n0)
+            return p0 * (speed_rpm / n0) ** e
+    raise AssertionError("unreachable")
+
+
+def optimum_frequency_Hz(ohmic_W: float, core_W: float, frequency_Hz: float) -> float:
+    """Frequency of minimum total loss, f* = (K_ом/K_маг)^0.25, seed 000 eq. (10), with
+    K_ом = P_ом·f² (eq. 9) and K_маг = P_M/f² taken at one operating point. At f* the ohmic
+    and the core losses are equal.
+
+    >>> round(optimum_frequency_Hz(68.97, 160.0, 500.0), 1)
+    405.1
+    """
+    k_om = ohmic_W * frequency_Hz**2
+    k_mag = core_W / frequency_Hz**2
+    return (k_om / k_mag) ** 0.25

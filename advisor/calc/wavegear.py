@@ -1,0 +1,115 @@
+"""Wave gear stages with rolling bodies (ВПТК): geometry, volume and mass.
+
+Every function accepts scalars or numpy arrays (broadcast together), so a design space is
+swept in one call. Lengths are in **mm** for a torque in **N·m**, as in the seed's formulas;
+volumes in mm³, masses in kg.
+
+References
+----------
+[1] Seed 000: Baranov, Borisov, Korchagin, Krylov, Samsonovich, Stepanov, «О выборе скорости
+    электродвигателя и передаточного числа редуктора привода руля направления транспортного
+    самолёта» (000_e109c3d4c17eaf1c.txt), eqs. (11)–(19) and the row inequality after (19).
+"""
+
+import numpy as np
+from numpy.typing import ArrayLike
+
+#: k_тк of eq. (16): load capacity factor of the rolling body.
+ROLLING_BODY_FACTOR = {"ball": 1.0, "roller": 2.0}
+
+#: The smallest ratio for which eq. (14) leaves a bore: 2.06/sin(π/q) > 4.4 ⇔ q > 6.446.
+MIN_RATIO_FOR_BORE = float(np.pi / np.arcsin(2.06 / 4.4))
+
+
+def _a(q: ArrayLike) -> np.ndarray:
+    return 2.06 / np.sin(np.pi / np.asarray(q, dtype=float))
+
+
+def rolling_body_diameter(
+    torque_Nm: ArrayLike, q: ArrayLike, rows: ArrayLike, k_rb: ArrayLike = 1.0
+) -> np.ndarray:
+    """d_тк = ∛(241·M / (n_p·k_тк·(q − 1)) · sin(π/(q − 1)))  [mm]. Seed 000, eq. (16).
+
+    Hand check: ∛(241·1000/(3·19)·sin(π/19)) = ∛(4228.07·0.164595) = ∛695.92 = 8.862 mm.
+
+    >>> round(float(rolling_body_diameter(1000.0, 20, 3)), 3)
+    8.862
+    """
+    q = np.asarray(q, dtype=float)
+    return np.cbrt(
+        241.0
+        * np.asarray(torque_Nm, dtype=float)
+        / (np.asarray(rows) * np.asarray(k_rb) * (q - 1.0))
+        * np.sin(np.pi / (q - 1.0))
+    )
+
+
+def outer_diameter(q: ArrayLike, d_rb: ArrayLike) -> np.ndarray:
+    """D_н = (2.06/sin(π/q) + 1.8)·d_тк  [mm]. Seed 000, eq. (13)."""
+    return (_a(q) + 1.8) * np.asarray(d_rb, dtype=float)
+
+
+def inner_diameter(q: ArrayLike, d_rb: ArrayLike) -> np.ndarray:
+    """d_вн = (2.06/sin(π/q) − 4.4)·d_тк  [mm]. Seed 000, eq. (14); positive for q > 6.45."""
+    return (_a(q) - 4.4) * np.asarray(d_rb, dtype=float)
+
+
+def stage_length(rows: ArrayLike, d_rb: ArrayLike) -> np.ndarray:
+    """L = (1.2·n_p + 1.8)·d_тк  [mm]. Seed 000, eq. (15)."""
+    return (1.2 * np.asarray(rows, dtype=float) + 1.8) * np.asarray(d_rb, dtype=float)
+
+
+def hollow_cylinder_volume(D: ArrayLike, d: ArrayLike, L: ArrayLike) -> np.ndarray:
+    """W = π/4·(D² − d²)·L  [mm³]. Seed 000, eq. (12)."""
+    D, d = np.asarray(D, dtype=float), np.asarray(d, dtype=float)
+    return np.pi / 4.0 * (D**2 - d**2) * np.asarray(L, dtype=float)
+
+
+def volume_per_torque(q: ArrayLike, rows: ArrayLike, k_rb: ArrayLike = 1.0) -> np.ndarray:
+    """W/M of one stage  [mm³ per N·m], seed 000 eq. (18) divided by M (the curves of fig. 1):
+
+    W/M = 189·(1.2n + 1.8)/(n·k·(q − 1))·sin(π/(q − 1))·[(a + 1.8)² − (a − 4.4)²],
+    a = 2.06/sin(π/q), 189 ≈ 241·π/4.
+    """
+    q = np.asarray(q, dtype=float)
+    n = np.asarray(rows, dtype=float)
+    a = _a(q)
+    return (
+        241.0
+        * np.pi
+        / 4.0
+        * (1.2 * n + 1.8)
+        / (n * np.asarray(k_rb) * (q - 1.0))
+        * np.sin(np.pi / (q - 1.0))
+        * ((a + 1.8) ** 2 - (a - 4.4) ** 2)
+    )
+
+
+def rows_for_diameter(
+    torque_Nm: ArrayLike, q: ArrayLike, max_outer_diameter_mm: ArrayLike, k_rb: ArrayLike = 1.0
+) -> np.ndarray:
+    """Rows needed to fit a given outer diameter (the inequality after eq. (19), seed 000):
+
+    n_p ≥ 241·M / (D³·k·(q − 1))·sin(π/(q − 1))·(2.06/sin(π/q) + 1.8)³  — returned unrounded.
+    """
+    q = np.asarray(q, dtype=float)
+    return (
+        241.0
+        * np.asarray(torque_Nm, dtype=float)
+        / (np.asarray(max_outer_diameter_mm, dtype=float) ** 3 * np.asarray(k_rb) * (q - 1.0))
+        * np.sin(np.pi / (q - 1.0))
+        * (_a(q) + 1.8) ** 3
+    )
+
+
+def equal_diameter_lengths(output_length_mm: ArrayLike, ratios_to_output: list) -> list:
+    """Lengths of the stages of an equal-diameter reducer, seed 000 after eq. (19):
+    L2 = L_out·∛(1/q_out), L3 = L_out·∛(1/(q_out·q2)), … — ``ratios_to_output[i]`` is the
+    product of the ratios between stage i and the output (1 for the output stage)."""
+    L = np.asarray(output_length_mm, dtype=float)
+    return [L * np.cbrt(1.0 / np.asarray(r, dtype=float)) for r in ratios_to_output]
+
+
+def mass_kg(volume_mm3: ArrayLike, density_kg_m3: float, fill_factor: float) -> np.ndarray:
+    """m = ρ·k_з·W  (W in mm³ → m³). Seed 000, eq. (19)."""
+    return density_kg_m3 * fill_factor * np.asarray(volume_mm3, dtype=float) * 1e-9
