@@ -8,7 +8,6 @@ from pathlib import Path
 import rules  # noqa: F401  (registers every rule)
 from advisor import __version__
 from advisor.errors import InfeasibleError
-from advisor.linear import advise_linear
 from advisor.models import Requirements
 from advisor.report import CheckOut, DecisionOut, Report, ReportHeader
 from advisor.rulebook import Trace
@@ -24,7 +23,12 @@ def advise(req: Requirements, catalog_dir: Path | None = None) -> Report:
     """
     cat = load_catalogs(catalog_dir)
     trace = Trace()
-    design, checks, warnings = advise_linear(req, cat, trace)
+    # each application imports its own pipeline: the linear path stays free of numpy
+    if req.application.kind == "linear":
+        from advisor.linear import advise_linear as pipeline
+    else:
+        from advisor.rotary import advise_rotary as pipeline
+    design, checks, warnings = pipeline(req, cat, trace)
     failed = [c for c in checks if not c.passed]
     if failed:  # the rules should never let this happen; if they do, it is not a design
         raise InfeasibleError(
@@ -38,7 +42,7 @@ def advise(req: Requirements, catalog_dir: Path | None = None) -> Report:
             title=req.application.title,
             status="feasible",
         ),
-        requirements=req.model_dump(exclude_none=True),
+        requirements=req.model_dump(exclude_none=True, exclude=_UNUSED[req.application.kind]),
         design=design,
         checks=[
             CheckOut.make(
@@ -66,6 +70,10 @@ def advise(req: Requirements, catalog_dir: Path | None = None) -> Report:
             for d in trace.decisions
         ],
     )
+
+
+#: Requirement tables an application does not read: left out of the report's echo.
+_UNUSED = {"linear": {"rotary", "envelope", "gearbox"}, "rotary": {"linear", "screw"}}
 
 
 def _tomlable(inputs: dict) -> dict:

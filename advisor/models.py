@@ -25,7 +25,7 @@ def _num(gt: float | None = None, le: float | None = None, ge: float | None = No
 
 
 class ApplicationReq(_Strict):
-    kind: Annotated[Literal["linear"], Field(description="the application")]
+    kind: Annotated[Literal["linear", "rotary"], Field(description="the application")]
     hold_without_power: Annotated[
         bool, Field(description="the drive must hold the load with the motor off")
     ] = False
@@ -57,7 +57,7 @@ class LinearReq(_Strict):
         return self
 
 
-class MotorReq(_Strict):
+class InductionMotorReq(_Strict):
     kind: Annotated[Literal["induction"], Field(description="motor type")]
     supply_frequency_Hz: Annotated[float, _num(gt=0, desc="supply frequency, Hz")] = 50.0
 
@@ -67,6 +67,73 @@ class MotorReq(_Strict):
         if v != 50.0:
             raise ValueError("must be 50: the induction motor catalog holds 50 Hz ratings")
         return v
+
+
+class RotaryReq(_Strict):
+    torque_Nm: Annotated[float, _num(gt=0, le=1e6, desc="peak output torque, N·m")]
+    speed_rpm: Annotated[float, _num(gt=0, le=1e4, desc="maximum output speed, rpm")]
+
+
+class EnvelopeReq(_Strict):
+    max_outer_diameter_mm: Annotated[
+        float | None, _num(gt=0, le=1e4, desc="largest outer diameter of the reducer, mm")
+    ] = None
+    max_length_mm: Annotated[
+        float | None, _num(gt=0, le=1e5, desc="largest length of the reducer, mm")
+    ] = None
+
+
+class MagnetLossPoint(_Strict):
+    speed_rpm: Annotated[float, _num(gt=0, le=2e5, desc="motor speed, rpm")]
+    loss_W: Annotated[float, _num(ge=0, le=1e6, desc="eddy-current loss in the magnets, W")]
+
+
+class ReferenceMotor(_Strict):
+    """The design the loss model scales from; the defaults are the seed 000 motor."""
+
+    speed_rpm: Annotated[float, _num(gt=0, le=2e5, desc="speed of the reference design, rpm")] = (
+        5000.0
+    )
+    pole_pairs: Annotated[int, Field(ge=1, le=100, description="electrical reduction p")] = 6
+    phase_resistance_ohm: Annotated[float, _num(gt=0, le=1e3, desc="phase resistance, Ω")] = 1.14
+    current_A: Annotated[float, _num(gt=0, le=1e4, desc="phase current, A")] = 5.5
+    conducting_phases: Annotated[int, Field(ge=1, le=3, description="phases in series")] = 2
+    torque_Nm: Annotated[float, _num(gt=0, le=1e4, desc="torque at that current, N·m")] = 2.0
+    stator_steel_area_mm2: Annotated[float, _num(gt=0, le=1e7, desc="stator steel area, mm²")] = (
+        1200.0
+    )
+    stack_length_mm: Annotated[float, _num(gt=0, le=1e4, desc="stack length, mm")] = 50.0
+    stacking_factor: Annotated[float, _num(gt=0, le=1, desc="steel fill of the stack")] = 0.85
+    steel_density_kg_m3: Annotated[float, _num(gt=0, le=2e4, desc="steel density, kg/m³")] = 7800.0
+    steel_grade: Annotated[str, Field(description="GOST 21427.2-83 grade, e.g. 2413")] = "2413"
+    steel_thickness_mm: Annotated[float, _num(gt=0, le=2, desc="lamination thickness, mm")] = 0.35
+    induction_T: Annotated[float, _num(gt=0, le=2.5, desc="peak flux density, T")] = 1.5
+    iron_loss_model: Annotated[
+        Literal["quadratic", "three_term"], Field(description="form of eq. (5) used")
+    ] = "quadratic"
+    magnet_losses: Annotated[
+        list[MagnetLossPoint], Field(min_length=1, description="magnet losses at given speeds")
+    ] = [
+        MagnetLossPoint(speed_rpm=5000.0, loss_W=60.0),
+        MagnetLossPoint(speed_rpm=10000.0, loss_W=100.0),
+    ]
+
+
+class BldcMotorReq(_Strict):
+    kind: Annotated[Literal["bldc"], Field(description="motor type")]
+    candidate_speeds_rpm: Annotated[
+        list[Annotated[float, _num(gt=0, le=2e5)]],
+        Field(min_length=1, max_length=20, description="motor speeds to compare, rpm"),
+    ] = [5000.0, 10000.0]
+    phases: Annotated[int, Field(ge=3, le=3, description="number of phases")] = 3
+    reference: ReferenceMotor = ReferenceMotor()
+
+
+class GearboxReq(_Strict):
+    rolling_body: Annotated[Literal["ball", "roller"], Field(description="rolling bodies")] = "ball"
+    stage_efficiency: Annotated[float, _num(gt=0.3, le=1, desc="efficiency of one stage")] = 0.9
+    density_kg_m3: Annotated[float, _num(gt=0, le=2e4, desc="material density, kg/m³")] = 7800.0
+    fill_factor: Annotated[float, _num(gt=0, le=1, desc="k_з of eq. (19)")] = 0.75
 
 
 THREAD_RE = re.compile(r"^Tr\s*(\d+(?:\.\d+)?)\s*[x×]\s*(\d+(?:\.\d+)?)$", re.IGNORECASE)
@@ -99,16 +166,37 @@ class ScrewReq(_Strict):
         return f"Tr{float(m.group(1)):g}x{float(m.group(2)):g}"
 
 
+MotorReq = Annotated[InductionMotorReq | BldcMotorReq, Field(discriminator="kind")]
+MOTOR_FOR_KIND = {"linear": "induction", "rotary": "bldc"}
+
+
 class Requirements(_Strict):
     application: ApplicationReq
     linear: LinearReq | None = None
+    rotary: RotaryReq | None = None
+    envelope: EnvelopeReq = EnvelopeReq()
     motor: MotorReq
     screw: ScrewReq = ScrewReq()
+    gearbox: GearboxReq = GearboxReq()
 
     @model_validator(mode="after")
     def _tables_for_kind(self) -> "Requirements":
-        if self.application.kind == "linear" and self.linear is None:
-            raise ValueError("[linear] table is missing; it is required for kind = 'linear'")
+        kind = self.application.kind
+        if getattr(self, kind) is None:
+            raise ValueError(f"[{kind}] table is missing; it is required for kind = '{kind}'")
+        if self.motor.kind != MOTOR_FOR_KIND[kind]:
+            raise ValueError(
+                f"motor.kind = '{self.motor.kind}' does not drive kind = '{kind}': "
+                f"use motor.kind = '{MOTOR_FOR_KIND[kind]}'"
+            )
+        if kind == "rotary":
+            assert self.rotary is not None and isinstance(self.motor, BldcMotorReq)
+            slowest = min(self.motor.candidate_speeds_rpm)
+            if self.rotary.speed_rpm >= slowest:
+                raise ValueError(
+                    f"rotary.speed_rpm = {self.rotary.speed_rpm:g} is not below the slowest "
+                    f"motor.candidate_speeds_rpm ({slowest:g}): the reducer lowers the speed"
+                )
         return self
 
 
@@ -129,54 +217,72 @@ _FRIENDLY = {
 }
 
 
-def _field_info(loc: tuple[Any, ...]):
-    """The pydantic FieldInfo at a location, to quote its description (units)."""
+def _members(ann: Any) -> list[type[BaseModel]]:
+    args = getattr(ann, "__args__", ())
+    return [a for a in (ann, *args) if isinstance(a, type) and issubclass(a, BaseModel)]
+
+
+def _literal_kinds(model: type[BaseModel]) -> tuple[Any, ...]:
+    f = model.model_fields.get("kind")
+    return getattr(f.annotation, "__args__", ()) if f is not None else ()
+
+
+def _walk(loc: tuple[Any, ...]) -> tuple[tuple[Any, ...], Any, Any]:
+    """Follow a pydantic error location through the requirement models.
+
+    Returns the location without the discriminator tags pydantic inserts
+    (``motor.bldc.phases`` → ``motor.phases``), the FieldInfo at its end (for the
+    description with units) and the model that holds the last key (for the allowed keys).
+    """
     model: Any = Requirements
+    holder: Any = None
     info = None
-    for part in loc:
-        fields = getattr(model, "model_fields", None)
-        if not fields or part not in fields:
-            return None
+    out: list[Any] = []
+    parts = list(loc)
+    while parts:
+        part = parts.pop(0)
+        out.append(part)
+        fields = getattr(model, "model_fields", None) if model is not None else None
+        holder = model
+        if isinstance(part, int) or not fields or part not in fields:
+            info = None
+            if not isinstance(part, int):
+                model = None
+            continue
         info = fields[part]
-        ann = info.annotation
-        args = getattr(ann, "__args__", ())
-        model = next(
-            (a for a in (ann, *args) if isinstance(a, type) and issubclass(a, BaseModel)), None
-        )
-    return info
-
-
-def _allowed_keys(loc: tuple[Any, ...]) -> list[str]:
-    model: Any = Requirements
-    for part in loc[:-1]:
-        info = model.model_fields.get(part)
-        if info is None:
-            return []
-        ann = info.annotation
-        args = getattr(ann, "__args__", ())
-        model = next(
-            (a for a in (ann, *args) if isinstance(a, type) and issubclass(a, BaseModel)), None
-        )
-        if model is None:
-            return []
-    return list(model.model_fields)
+        members = _members(info.annotation)
+        if len(members) > 1:
+            tagged = [m for m in members if parts and parts[0] in _literal_kinds(m)]
+            model = tagged[0] if tagged else None
+            if tagged:
+                parts.pop(0)
+        else:
+            model = members[0] if members else None
+    return tuple(out), info, holder
 
 
 def format_validation_error(exc: ValidationError) -> list[str]:
     """One line per problem: the field, the value given and what is allowed."""
     lines = []
     for err in exc.errors():
-        loc = tuple(err["loc"])
+        raw_loc = tuple(err["loc"])
+        loc, info, holder = _walk(raw_loc)
         where = ".".join(str(p) for p in loc)
         typ = err["type"]
         ctx = err.get("ctx", {}) or {}
-        info = _field_info(loc)
+        if typ == "union_tag_invalid":
+            expected = ctx.get("expected_tags", "")
+            lines.append(f"{where}.kind = {ctx.get('tag')!r}: must be one of {expected}")
+            continue
+        if typ == "union_tag_not_found":
+            lines.append(f"{where}.kind: missing; required (one of 'induction', 'bldc')")
+            continue
         desc = f" ({info.description})" if info is not None and info.description else ""
         if typ == "missing":
             lines.append(f"{where}: missing; required{desc}")
             continue
         if typ == "extra_forbidden":
-            allowed = ", ".join(_allowed_keys(loc))
+            allowed = ", ".join(holder.model_fields) if holder is not None else ""
             lines.append(f"{where}: unknown key; allowed keys here: {allowed}")
             continue
         value = err.get("input")

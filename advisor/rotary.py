@@ -1,0 +1,399 @@
+"""The rotary actuator advice: PM brushless motor + wave-gear reducer with rolling bodies
+(seed 000). Orchestration only: rules choose, ``advisor/calc`` computes."""
+
+import math
+
+import numpy as np
+
+from advisor.calc import bldc
+from advisor.calc import reducer as rd
+from advisor.calc import wavegear as wg
+from advisor.calc.sizing import Check
+from advisor.errors import InfeasibleError, InputError
+from advisor.models import BldcMotorReq, Requirements
+from advisor.report import (
+    BldcMotorOut,
+    Fig1Out,
+    GearboxOut,
+    GearboxSummaryOut,
+    LossesOut,
+    PoleSlotOut,
+    RotaryDesignOut,
+    SpeedCandidateOut,
+    StageOut,
+    SteelOut,
+    SweepOut,
+)
+from advisor.rulebook import Trace
+from catalogs import Catalogs
+from rules import bldc as bl_rules
+from rules import wavegear as wg_rules
+
+SEED_000 = wg_rules.SEED_000
+MAX_ROWS = int(rd.ROW_GRID.max())
+FIG1_ROWS = [2, 3, 4, 6, 8, 10, 12]
+
+
+def _steel(req: Requirements, cat: Catalogs):
+    ref = req.motor.reference  # type: ignore[union-attr]
+    steel = cat.electrical_steel(ref.steel_grade, ref.steel_thickness_mm)
+    if steel is None:
+        known = ", ".join(s.name for s in cat.electrical_steels)
+        raise InputError(
+            f"motor.reference.steel_grade = {ref.steel_grade!r} at steel_thickness_mm = "
+            f"{ref.steel_thickness_mm:g}: not in the electrical steel catalog "
+            f"(GOST 21427.2-83: {known})"
+        )
+    return steel
+
+
+def _candidate(n: float, req: Requirements, steel, steel_mass: float, terms, params) -> dict:
+    """Losses and drive figures of the reference motor rewound for speed ``n``."""
+    rot = req.rotary
+    mot = req.motor
+    assert rot is not None and isinstance(mot, BldcMotorReq)
+    ref = mot.reference
+    q_total = n / rot.speed_rpm
+    split = wg_rules.split_ratio(q_total, rd.STAGE_RATIO_MIN, rd.STAGE_RATIO_MAX).value
+    stages = len(split) if split else 0
+    eta = params.stage_efficiency**stages if stages else math.nan
+    torque = rot.torque_Nm / (q_total * eta) if stages else math.nan
+    # rewound for n: the torque at the reference current falls as n_ref/n (seed 000, eq. (4))
+    torque_at_ref_current = ref.torque_Nm * ref.speed_rpm / n
+    load = torque / torque_at_ref_current
+    f = bldc.flux_frequency_Hz(n, ref.pole_pairs)
+    spec_quad = (
+        bldc.iron_specific_loss_quadratic(steel.p15_50_W_kg, f) * (ref.induction_T / 1.5) ** 2
+    )
+    spec_three = terms.specific_loss(f, ref.induction_T)
+    spec = spec_quad if ref.iron_loss_model == "quadratic" else spec_three
+    ohmic_ref = ref.conducting_phases * ref.phase_resistance_ohm * ref.current_A**2
+    losses = {
+        "ohmic": bldc.ohmic_loss(ohmic_ref, ref.speed_rpm, n, load),
+        "iron": steel_mass * spec,
+        "magnets": bldc.magnet_loss([(p.speed_rpm, p.loss_W) for p in ref.magnet_losses], n),
+    }
+    losses["total"] = sum(losses.values())
+    return {
+        "speed_rpm": n,
+        "frequency_Hz": f,
+        "q_total": q_total,
+        "split": split,
+        "eta": eta,
+        "torque_Nm": torque,
+        "current_A": ref.current_A * load,
+        "load": load,
+        "losses": losses,
+        "iron_three_term_W": steel_mass * spec_three,
+        "spec": spec,
+        "spec_three": spec_three,
+    }
+
+
+def advise_rotary(req: Requirements, cat: Catalogs, trace: Trace):
+    rot, mot, env, gb = req.rotary, req.motor, req.envelope, req.gearbox
+    assert rot is not None and isinstance(mot, BldcMotorReq)
+    ref = mot.reference
+    trace.apply(bl_rules.motor_type)
+    trace.apply(wg_rules.reducer_type, rot.torque_Nm)
+
+    steel = _steel(req, cat)
+    steel_mass = bldc.stator_steel_mass(
+        ref.stator_steel_area_mm2, ref.stack_length_mm, ref.stacking_factor, ref.steel_density_kg_m3
+    )
+    terms = bldc.fit_eq5(steel.p10_50_W_kg, steel.p15_50_W_kg, steel.p10_400_W_kg)
+    params = rd.ReducerParams(
+        torque_Nm=rot.torque_Nm,
+        k_rb=wg.ROLLING_BODY_FACTOR[gb.rolling_body],
+        stage_efficiency=gb.stage_efficiency,
+        density_kg_m3=gb.density_kg_m3,
+        fill_factor=gb.fill_factor,
+    )
+
+    cands = [
+        _candidate(n, req, steel, steel_mass, terms, params)
+        for n in sorted(set(mot.candidate_speeds_rpm))
+    ]
+    usable = [c for c in cands if c["split"]]
+    if not usable:
+        raise InfeasibleError(
+            "no feasible design: no candidate speed gives a ratio a wave-gear reducer can make",
+            [f"{c['speed_rpm']:g} rpm → q_Σ = {c['q_total']:.4g}" for c in cands],
+        )
+    # eq. (10) at the reference speed, with the losses of the model in use
+    at_ref = _candidate(ref.speed_rpm, req, steel, steel_mass, terms, params)
+    if at_ref["split"]:
+        core = at_ref["losses"]["iron"] + at_ref["losses"]["magnets"]
+        f_opt = bldc.optimum_frequency_Hz(at_ref["losses"]["ohmic"], core, at_ref["frequency_Hz"])
+    else:
+        f_opt = math.nan
+    n_opt = f_opt * 60.0 / ref.pole_pairs
+    speed = trace.apply(
+        bl_rules.choose_speed,
+        {c["speed_rpm"]: c["losses"]["total"] for c in usable},
+        n_opt,
+        ref.pole_pairs,
+    )
+    chosen = next(c for c in usable if c["speed_rpm"] == speed)
+
+    # ---- reducer
+    q_total = chosen["q_total"]
+    split = trace.apply(wg_rules.split_ratio, q_total, rd.STAGE_RATIO_MIN, rd.STAGE_RATIO_MAX)
+    needed = (
+        float(wg.rows_for_diameter(rot.torque_Nm, split[0], env.max_outer_diameter_mm, params.k_rb))
+        if env.max_outer_diameter_mm
+        else None
+    )
+    rows = trace.apply(wg_rules.choose_rows, len(split), needed, MAX_ROWS)
+    space = rd.sweep(q_total, params)
+    i_mass = rd.best(space, "mass", env.max_outer_diameter_mm, env.max_length_mm)
+    i_diam = rd.best(space, "diameter", env.max_outer_diameter_mm, env.max_length_mm)
+    if i_mass is None or i_diam is None:
+        raise _no_reducer(space, rot.torque_Nm, env)
+    optimum = _from_sweep(space, i_mass, params)
+    slimmest = _from_sweep(space, i_diam, params)
+    design = rd.evaluate(split, rows, params) if rows else None
+    warnings: list[str] = []
+    if design is None or not _fits(design, env):
+        why = (
+            "the envelope diameter needs more rows than the design space holds"
+            if design is None
+            else f"the rule design ({design.outer_diameter_mm:.4g} mm × {design.length_mm:.4g} mm) "
+            "does not fit the envelope"
+        )
+        warnings.append(
+            f"{why}; the lightest reducer of the design space that fits is used instead"
+        )
+        design = optimum
+    warnings += trace.apply(
+        wg_rules.compare_with_optimum,
+        design.mass_kg,
+        optimum.mass_kg,
+        design.outer_diameter_mm,
+        slimmest.outer_diameter_mm,
+    )
+
+    # the motor torque follows the reducer actually adopted (its efficiency)
+    motor_torque = rot.torque_Nm / (design.total_ratio * design.efficiency)
+    load = motor_torque / (ref.torque_Nm * ref.speed_rpm / speed)
+    checks = _checks(design, env, load, ref.current_A)
+    motor = _motor_out(chosen, usable, ref, steel, steel_mass, f_opt, n_opt, motor_torque, load)
+    gearbox = GearboxOut.make(
+        kind="wave gear with rolling bodies",
+        layout="equal-diameter",
+        rolling_body=gb.rolling_body,
+        **_summary_fields(design),
+        optimum=GearboxSummaryOut.make(**_summary_fields(optimum)),
+        optimum_min_diameter=GearboxSummaryOut.make(**_summary_fields(slimmest)),
+        sweep=SweepOut.make(
+            configurations=space.evaluated,
+            feasible=int(space.mass_kg.size),
+            objective_mass="least mass within the envelope",
+            objective_diameter="least outer diameter within the envelope",
+        ),
+        fig1=_fig1(params.k_rb),
+    )
+    return RotaryDesignOut.make(motor=motor, gearbox=gearbox), checks, warnings
+
+
+def _fits(r: rd.Reducer, env) -> bool:
+    return (
+        env.max_outer_diameter_mm is None or r.outer_diameter_mm <= env.max_outer_diameter_mm
+    ) and (env.max_length_mm is None or r.length_mm <= env.max_length_mm)
+
+
+def _from_sweep(space: rd.SweepResult, i: int, params: rd.ReducerParams) -> rd.Reducer:
+    ratios = space.ratios_out_to_in(i)
+    return rd.evaluate(ratios, [int(space.rows_out[i])] + [2] * (len(ratios) - 1), params)
+
+
+def _no_reducer(space: rd.SweepResult, torque: float, env) -> InfeasibleError:
+    reasons = []
+    if space.mass_kg.size == 0:
+        reasons.append("no stage count of up to four realises the ratio within the stage limits")
+    else:
+        k = int(np.argmin(space.outer_diameter_mm))
+        reasons.append(
+            f"the smallest outer diameter in the design space for {torque:g} N·m is "
+            f"{space.outer_diameter_mm[k]:.4g} mm ({int(space.rows_out[k])} rows, q_out = "
+            f"{space.q_out[k]:g})"
+            + (
+                f" against the envelope's {env.max_outer_diameter_mm:g} mm"
+                if env.max_outer_diameter_mm
+                else ""
+            )
+        )
+        if env.max_length_mm:
+            ok_d = (
+                space.outer_diameter_mm <= env.max_outer_diameter_mm
+                if env.max_outer_diameter_mm
+                else np.ones(space.mass_kg.size, bool)
+            )
+            if ok_d.any():
+                reasons.append(
+                    f"of those within the diameter the shortest is "
+                    f"{space.length_mm[ok_d].min():.4g} mm against the envelope's "
+                    f"{env.max_length_mm:g} mm"
+                )
+    return InfeasibleError(
+        "no feasible design: no reducer in the design space fits the envelope", reasons
+    )
+
+
+def _checks(design: rd.Reducer, env, load: float, ref_current: float) -> list[Check]:
+    checks = []
+    if env.max_outer_diameter_mm:
+        checks.append(
+            Check(
+                "envelope_diameter",
+                "reducer outer diameter within the envelope",
+                design.outer_diameter_mm,
+                env.max_outer_diameter_mm,
+                "mm",
+                env.max_outer_diameter_mm / design.outer_diameter_mm,
+                "requirement [envelope]",
+            )
+        )
+    if env.max_length_mm:
+        checks.append(
+            Check(
+                "envelope_length",
+                "reducer length within the envelope",
+                design.length_mm,
+                env.max_length_mm,
+                "mm",
+                env.max_length_mm / design.length_mm,
+                "requirement [envelope]",
+            )
+        )
+    for s in design.stages:
+        checks.append(
+            Check(
+                f"bore_{s.position}",
+                f"{s.position} stage ratio leaves a bore (eq. (14): "
+                f"q > {wg.MIN_RATIO_FOR_BORE:.3g})",
+                s.ratio,
+                wg.MIN_RATIO_FOR_BORE,
+                "",
+                s.ratio / wg.MIN_RATIO_FOR_BORE,
+                SEED_000 + ", eq. (14)",
+            )
+        )
+        checks.append(
+            Check(
+                f"fits_{s.position}",
+                f"{s.position} stage's own outer diameter within the common one",
+                s.own_outer_diameter_mm,
+                s.outer_diameter_mm,
+                "mm",
+                s.outer_diameter_mm / s.own_outer_diameter_mm,
+                SEED_000 + ", eqs. (13), (16)",
+            )
+        )
+    checks.append(
+        Check(
+            "motor_current",
+            "motor current against the reference design's current",
+            ref_current * load,
+            ref_current,
+            "A",
+            1.0 / load,
+            SEED_000 + ": the reference motor's thermal rating",
+        )
+    )
+    return checks
+
+
+def _stages_out(r: rd.Reducer) -> list[StageOut]:
+    return [
+        StageOut.make(
+            position=s.position,
+            ratio=s.ratio,
+            rows=s.rows,
+            torque_Nm=s.torque_Nm,
+            rolling_body_diameter_mm=s.rolling_body_diameter_mm,
+            own_outer_diameter_mm=s.own_outer_diameter_mm,
+            outer_diameter_mm=s.outer_diameter_mm,
+            inner_diameter_mm=s.inner_diameter_mm,
+            length_mm=s.length_mm,
+            mass_kg=s.mass_kg,
+        )
+        for s in r.stages
+    ]
+
+
+def _summary_fields(r: rd.Reducer) -> dict:
+    return {
+        "total_ratio": r.total_ratio,
+        "efficiency": r.efficiency,
+        "outer_diameter_mm": r.outer_diameter_mm,
+        "inner_diameter_mm": r.inner_diameter_mm,
+        "length_mm": r.length_mm,
+        "volume_cm3": r.volume_mm3 / 1e3,
+        "mass_kg": r.mass_kg,
+        "stages": _stages_out(r),
+    }
+
+
+def _fig1(k_rb: float) -> Fig1Out:
+    """Seed 000, fig. 1: one stage's volume per unit load torque against q, per row count."""
+    q = np.arange(7.0, 41.0)
+    table = wg.volume_per_torque(q[None, :], np.array(FIG1_ROWS)[:, None], k_rb) / 1e3
+    return Fig1Out.make(
+        q=[float(x) for x in q],
+        rows=FIG1_ROWS,
+        volume_per_torque_cm3_per_Nm=[[float(x) for x in row] for row in table],
+    )
+
+
+def _losses(d: dict) -> LossesOut:
+    return LossesOut.make(**{k: float(v) for k, v in d.items()})
+
+
+def _motor_out(chosen, usable, ref, steel, steel_mass, f_opt, n_opt, torque, load) -> BldcMotorOut:
+    options = [c for c in bldc.pole_slot_combinations(3, 36) if c.pole_pairs == ref.pole_pairs]
+    return BldcMotorOut.make(
+        kind="bldc",
+        speed_rpm=chosen["speed_rpm"],
+        pole_pairs=ref.pole_pairs,
+        electrical_frequency_Hz=chosen["frequency_Hz"],
+        torque_Nm=torque,
+        current_A=ref.current_A * load,
+        losses_W=_losses(chosen["losses"]),
+        optimum_frequency_Hz=f_opt,
+        optimum_speed_rpm=n_opt,
+        steel=SteelOut.make(
+            grade=steel.grade,
+            thickness_mm=steel.thickness_mm,
+            equivalent=steel.equivalent,
+            mass_kg=steel_mass,
+            p15_50_W_kg=steel.p15_50_W_kg,
+            specific_loss_W_kg=chosen["spec"],
+            specific_loss_three_term_W_kg=chosen["spec_three"],
+            iron_loss_model=ref.iron_loss_model,
+            estimated=list(steel.estimated),
+        ),
+        candidates=[
+            SpeedCandidateOut.make(
+                speed_rpm=c["speed_rpm"],
+                electrical_frequency_Hz=c["frequency_Hz"],
+                total_ratio=c["q_total"],
+                stages=len(c["split"]),
+                gearbox_efficiency=c["eta"],
+                torque_Nm=c["torque_Nm"],
+                current_A=c["current_A"],
+                losses_W=_losses(c["losses"]),
+                iron_loss_three_term_W=c["iron_three_term_W"],
+            )
+            for c in usable
+        ],
+        pole_slot_options=[
+            PoleSlotOut.make(
+                slots=o.slots,
+                poles=o.poles,
+                teeth_per_group=o.teeth_per_group,
+                winding_factor=o.winding_factor,
+            )
+            for o in options
+        ],
+    )

@@ -1,0 +1,142 @@
+"""Rules of the wave-gear reducer with rolling bodies (seed 000)."""
+
+import math
+
+from advisor.rulebook import Finding, rule
+
+SEED_000 = "000_e109c3d4c17eaf1c.txt"
+TEXTBOOK = "Gerashchenko, Postnikov, Samsonovich, textbook (2010), fig. 1.72, cited by seed 000"
+
+#: The output ratio the seed prefers, and its range (minimum outer diameter).
+Q_OUT_PREFERRED = 20.0
+Q_OUT_RANGE = (12.0, 20.0)
+#: The ratio the seed gives the stage next to the output in a three-stage reducer.
+Q_NEXT = 12.0
+
+
+@rule("WG-01", "Type of reducer", SEED_000)
+def reducer_type(torque_Nm: float) -> Finding[str]:
+    return Finding(
+        "wave gear with rolling bodies",
+        "A reducer of wave gear stages with rolling bodies (ВПТК) in series.",
+        "Seed 000, after its textbook [3]: of the mechanical transmissions compared by volume "
+        "per unit of load torque against ratio, wave gears with rolling bodies are the smallest "
+        "and lightest for the large ratios of an actuator.",
+        {"torque_Nm": torque_Nm},
+    )
+
+
+@rule("WG-02", "Stage count and split of the ratio", SEED_000 + "; " + TEXTBOOK)
+def split_ratio(total_ratio: float, q_min: float, q_max: float) -> Finding[list[float] | None]:
+    """Output stage q_out = 20 (12…20 gives the smallest outer diameter), the stage next to
+    it 12, the remainder to the input stage; the fewest stages whose ratios stay within the
+    per-stage limits. Ratios are listed from the output towards the motor."""
+    q = total_ratio
+    if q < q_min:
+        return Finding(
+            None,
+            f"No reducer: the total ratio {q:.3g} is below one stage's minimum {q_min:g}.",
+            "Eq. (14) leaves no bore below q ≈ 6.45.",
+        )
+    lo, hi = Q_OUT_RANGE
+    if q <= hi:
+        return Finding([q], f"One stage, q = {q:.4g}.", "The whole ratio fits one output stage.")
+    if q <= Q_OUT_PREFERRED * q_max:
+        q_out = Q_OUT_PREFERRED if q / Q_OUT_PREFERRED >= q_min else max(lo, q / q_min)
+        split = [q_out, q / q_out]
+        why = (
+            f"q_Σ = {q:.4g} needs two stages: the output stage takes q_out = {q_out:.4g} "
+            f"(seed 000: {lo:g}…{hi:g} gives the smallest outer diameter, 20 preferred), the "
+            f"input stage the remaining {q / q_out:.4g} (within {q_min:g}…{q_max:g})."
+        )
+        return Finding(split, f"Two stages: q_out = {q_out:.4g}, q1 = {q / q_out:.4g}.", why)
+    for n in (3, 4):
+        rest = q / (Q_OUT_PREFERRED * Q_NEXT ** (n - 2))
+        if rest <= q_max:
+            mids = [Q_NEXT] * (n - 2)
+            if rest < q_min:  # lower the stage next to the output to keep the input stage
+                mids[0] = Q_NEXT * rest / q_min
+                rest = q_min
+            split = [Q_OUT_PREFERRED, *mids, rest]
+            names = ", ".join(f"{x:.4g}" for x in split)
+            return Finding(
+                split,
+                f"{n} stages: q = {names} (output first).",
+                f"q_Σ = {q:.4g} exceeds what two stages give (20 × {q_max:g}); seed 000 takes "
+                f"q_out = 20, the next stage {Q_NEXT:g} and gives the remainder "
+                f"{rest:.4g} to the input stage.",
+            )
+    return Finding(
+        None,
+        f"No reducer of up to four stages reaches q_Σ = {q:.4g}.",
+        f"Four stages give at most 20 × 12² × {q_max:g}.",
+    )
+
+
+@rule("WG-03", "Rows of rolling bodies", SEED_000)
+def choose_rows(
+    stages: int,
+    needed_for_envelope: float | None,
+    max_rows: int,
+) -> Finding[list[int] | None]:
+    """Three rows at the output, two in the other stages (seed 000, conclusion 2); more rows
+    at the output where the envelope diameter demands (the n_p ≥ … inequality)."""
+    rows_out = 3
+    why = (
+        "Seed 000: the output stage holds most of the volume and mass; three rows of rolling "
+        "bodies give the smallest reducer, and the intermediate stages take two."
+    )
+    if needed_for_envelope is not None and needed_for_envelope > rows_out:
+        rows_out = math.ceil(needed_for_envelope - 1e-9)
+        if rows_out > max_rows:
+            return Finding(
+                None,
+                f"The envelope diameter needs {needed_for_envelope:.1f} rows at the output, "
+                f"more than {max_rows}.",
+                "By the n_p ≥ … inequality of seed 000 the rows grow with the cube of the "
+                "diameter shortfall.",
+            )
+        why += (
+            f" The envelope diameter needs n_p ≥ {needed_for_envelope:.2f} at the output "
+            f"(seed 000, inequality after eq. (19)): {rows_out} rows."
+        )
+    rows = [rows_out] + [2] * (stages - 1)
+    return Finding(rows, f"Rows (output first): {rows}.", why, {"max_rows": max_rows})
+
+
+@rule("WG-04", "Rule design against the computed optimum", SEED_000)
+def compare_with_optimum(
+    rule_mass_kg: float,
+    opt_mass_kg: float,
+    rule_diameter_mm: float,
+    min_diameter_mm: float,
+    tolerance: float = 0.05,
+) -> Finding[list[str]]:
+    warnings = []
+    if rule_mass_kg > opt_mass_kg * (1 + tolerance):
+        warnings.append(
+            f"the rule-based reducer ({rule_mass_kg:.3g} kg) is "
+            f"{rule_mass_kg / opt_mass_kg - 1:.0%} heavier than the lightest in the design "
+            f"space ({opt_mass_kg:.3g} kg): by eqs. (13)–(19) alone mass keeps falling with "
+            "more rows and a higher output ratio"
+        )
+    if rule_diameter_mm > min_diameter_mm * (1 + tolerance):
+        warnings.append(
+            f"the rule-based outer diameter ({rule_diameter_mm:.4g} mm) is "
+            f"{rule_diameter_mm / min_diameter_mm - 1:.0%} above the smallest in the design "
+            f"space ({min_diameter_mm:.4g} mm): with (13)+(16) alone the diameter is flat for "
+            "q ≈ 8…16 with its minimum near q ≈ 9; the seed's 12…20 comes from its fuller model"
+        )
+    decision = (
+        "The rule design is within 5 % of the computed optimum."
+        if not warnings
+        else "The rule design is kept (the seed's practice); the optimum is shown beside it."
+    )
+    return Finding(
+        warnings,
+        decision,
+        "The seed's heuristics (q_out = 20, three rows) come from the authors' fuller model and "
+        "experience; the sweep uses only eqs. (13)–(19). Both are reported so the engineer can "
+        "judge; differences above 5 % are flagged.",
+        {"tolerance": tolerance},
+    )
