@@ -175,7 +175,20 @@ def advise_rotary(req: Requirements, cat: Catalogs, trace: Trace):
 
     # the motor torque follows the reducer actually adopted (its efficiency)
     motor_torque = rot.torque_Nm / (design.total_ratio * design.efficiency)
-    load = motor_torque / (ref.torque_Nm * ref.speed_rpm / speed)
+    at_ref_current = ref.torque_Nm * ref.speed_rpm / speed
+    load = motor_torque / at_ref_current
+    if load > 1.0:
+        raise InfeasibleError(
+            "no feasible design: the reference motor cannot give the torque",
+            [
+                f"at {speed:g} rpm the reducer (q = {design.total_ratio:.4g}, η = "
+                f"{design.efficiency:.3g}) asks {motor_torque:.3g} N·m of the motor, which gives "
+                f"{at_ref_current:.3g} N·m at its rated {ref.current_A:g} A: it would need "
+                f"{ref.current_A * load:.3g} A",
+                "describe a larger motor in [motor.reference] (torque_Nm, current_A, "
+                "phase_resistance_ohm, stator size) or lower rotary.torque_Nm",
+            ],
+        )
     checks = _checks(design, env, load, ref.current_A)
     motor = _motor_out(chosen, usable, ref, steel, steel_mass, f_opt, n_opt, motor_torque, load)
     gearbox = GearboxOut.make(

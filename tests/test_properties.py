@@ -3,11 +3,12 @@ or in a clear infeasibility — never in any other exception."""
 
 import math
 
+import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from advisor.engine import advise
-from advisor.errors import InfeasibleError
+from advisor.errors import InfeasibleError, InputError
 from advisor.models import parse_requirements
 
 finite = dict(allow_nan=False, allow_infinity=False)
@@ -71,3 +72,54 @@ def test_design_or_clear_infeasibility(data):
     if data["application"]["hold_without_power"] and s.self_locking_at_low_friction:
         assert s.self_locking
     assert [c.role for c in m.candidates].count("selected") == 1
+
+
+@st.composite
+def rotary_requirements(draw):
+    speeds = draw(st.lists(st.floats(500.0, 30000.0, **finite), min_size=1, max_size=4))
+    req = {
+        "application": {"kind": "rotary"},
+        "rotary": {
+            "torque_Nm": draw(st.floats(1.0, 20000.0, **finite)),
+            "speed_rpm": draw(st.floats(0.2, 400.0, **finite)),
+        },
+        "motor": {"kind": "bldc", "candidate_speeds_rpm": speeds},
+        "gearbox": {
+            "rolling_body": draw(st.sampled_from(["ball", "roller"])),
+            "stage_efficiency": draw(st.floats(0.7, 0.98, **finite)),
+        },
+    }
+    env = {}
+    if draw(st.booleans()):
+        env["max_outer_diameter_mm"] = draw(st.floats(30.0, 600.0, **finite))
+    if draw(st.booleans()):
+        env["max_length_mm"] = draw(st.floats(20.0, 600.0, **finite))
+    if env:
+        req["envelope"] = env
+    return req
+
+
+@settings(max_examples=80, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(rotary_requirements())
+def test_rotary_design_or_clear_infeasibility(data):
+    try:
+        req = parse_requirements(data)
+    except InputError as exc:  # only the output-faster-than-motor rule may refuse
+        assert "is not below the slowest" in str(exc)
+        return
+    try:
+        rep = advise(req)
+    except InfeasibleError as exc:
+        assert exc.summary.startswith("no feasible design") and exc.reasons
+        return
+    g, m = rep.design.gearbox, rep.design.motor
+    assert all(c.passed for c in rep.checks)
+    assert math.prod(s.ratio for s in g.stages) == pytest.approx(g.total_ratio, rel=1e-9)
+    assert g.total_ratio == pytest.approx(m.speed_rpm / data["rotary"]["speed_rpm"], rel=1e-9)
+    for s in g.stages:
+        assert s.inner_diameter_mm > 0 and s.length_mm > 0 and s.mass_kg > 0
+        assert s.own_outer_diameter_mm <= s.outer_diameter_mm * (1 + 1e-9)
+    env = data.get("envelope", {})
+    assert g.outer_diameter_mm <= env.get("max_outer_diameter_mm", math.inf) * (1 + 1e-9)
+    assert g.length_mm <= env.get("max_length_mm", math.inf) * (1 + 1e-9)
+    assert m.losses_W.total == pytest.approx(min(c.losses_W.total for c in m.candidates))

@@ -17,7 +17,7 @@ from numpy.typing import ArrayLike
 #: k_тк of eq. (16): load capacity factor of the rolling body.
 ROLLING_BODY_FACTOR = {"ball": 1.0, "roller": 2.0}
 
-#: The smallest ratio for which eq. (14) leaves a bore: 2.06/sin(π/q) > 4.4 ⇔ q > 6.446.
+#: The smallest ratio for which eq. (14) leaves a bore: 2.06/sin(π/q) > 4.4 ⇔ q > 6.448.
 MIN_RATIO_FOR_BORE = float(np.pi / np.arcsin(2.06 / 4.4))
 
 
