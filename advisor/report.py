@@ -261,6 +261,7 @@ class SpeedCandidateOut(_Out):
     gearbox_efficiency: float
     torque_Nm: float
     current_A: float
+    within_rating: bool
     losses_W: LossesOut
     iron_loss_three_term_W: float
 

@@ -114,11 +114,28 @@ def advise_rotary(req: Requirements, cat: Catalogs, trace: Trace):
         _candidate(n, req, steel, steel_mass, terms, params)
         for n in sorted(set(mot.candidate_speeds_rpm))
     ]
-    usable = [c for c in cands if c["split"]]
-    if not usable:
+    reducible = [c for c in cands if c["split"]]
+    if not reducible:
         raise InfeasibleError(
             "no feasible design: no candidate speed gives a ratio a wave-gear reducer can make",
             [f"{c['speed_rpm']:g} rpm → q_Σ = {c['q_total']:.4g}" for c in cands],
+        )
+    # a speed is a candidate only if the rewound reference motor carries the torque there
+    usable = [c for c in reducible if c["load"] <= 1.0 + 1e-9]
+    if not usable:
+        raise InfeasibleError(
+            "no feasible design: the reference motor cannot give the torque",
+            [
+                f"at {c['speed_rpm']:g} rpm the reducer (q = {c['q_total']:.4g}, "
+                f"η = {c['eta']:.3g}) "
+                f"asks {c['torque_Nm']:.3g} N·m of the motor: it would need "
+                f"{c['current_A']:.3g} A against its rated {ref.current_A:g} A"
+                for c in reducible
+            ]
+            + [
+                "describe a larger motor in [motor.reference] (torque_Nm, current_A, "
+                "phase_resistance_ohm, stator size) or lower rotary.torque_Nm"
+            ],
         )
     # eq. (10) at the reference speed, with the losses of the model in use
     at_ref = _candidate(ref.speed_rpm, req, steel, steel_mass, terms, params)
@@ -130,9 +147,11 @@ def advise_rotary(req: Requirements, cat: Catalogs, trace: Trace):
     n_opt = f_opt * 60.0 / ref.pole_pairs
     speed = trace.apply(
         bl_rules.choose_speed,
-        {c["speed_rpm"]: c["losses"]["total"] for c in usable},
+        {c["speed_rpm"]: c["losses"]["total"] for c in reducible},
         n_opt,
         ref.pole_pairs,
+        {c["speed_rpm"]: c["current_A"] for c in reducible if c not in usable},
+        ref.current_A,
     )
     chosen = next(c for c in usable if c["speed_rpm"] == speed)
 
@@ -190,7 +209,7 @@ def advise_rotary(req: Requirements, cat: Catalogs, trace: Trace):
             ],
         )
     checks = _checks(design, env, load, ref.current_A)
-    motor = _motor_out(chosen, usable, ref, steel, steel_mass, f_opt, n_opt, motor_torque, load)
+    motor = _motor_out(chosen, reducible, ref, steel, steel_mass, f_opt, n_opt, motor_torque, load)
     gearbox = GearboxOut.make(
         kind="wave gear with rolling bodies",
         layout="equal-diameter",
@@ -363,7 +382,9 @@ def _losses(d: dict) -> LossesOut:
     return LossesOut.make(**{k: float(v) for k, v in d.items()})
 
 
-def _motor_out(chosen, usable, ref, steel, steel_mass, f_opt, n_opt, torque, load) -> BldcMotorOut:
+def _motor_out(
+    chosen, candidates, ref, steel, steel_mass, f_opt, n_opt, torque, load
+) -> BldcMotorOut:
     options = [c for c in bldc.pole_slot_combinations(3, 36) if c.pole_pairs == ref.pole_pairs]
     return BldcMotorOut.make(
         kind="bldc",
@@ -395,10 +416,11 @@ def _motor_out(chosen, usable, ref, steel, steel_mass, f_opt, n_opt, torque, loa
                 gearbox_efficiency=c["eta"],
                 torque_Nm=c["torque_Nm"],
                 current_A=c["current_A"],
+                within_rating=c["load"] <= 1.0 + 1e-9,
                 losses_W=_losses(c["losses"]),
                 iron_loss_three_term_W=c["iron_three_term_W"],
             )
-            for c in usable
+            for c in candidates
         ],
         pole_slot_options=[
             PoleSlotOut.make(

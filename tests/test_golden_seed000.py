@@ -174,10 +174,11 @@ def test_wrong_motor_for_the_application(tmp_path, capsys):
 
 
 def test_motor_too_small_for_the_torque():
-    # four times the torque needs 22 A from a motor rated for 5.5 A: the current check fails
+    # four times the torque: 5000 rpm needs 4 × 5.5 = 22 A, 10000 rpm 4 × 6.11 = 24.4 A, from
+    # a motor rated for 5.5 A
     with pytest.raises(InfeasibleError, match="reference motor cannot give the torque") as e:
         advise(parse_requirements(_req(torque_Nm=4 * 1620)))
-    assert "it would need 22 A" in str(e.value)
+    assert "it would need 22 A" in str(e.value) and "it would need 24.4 A" in str(e.value)
 
 
 def test_three_term_iron_model_still_prefers_5000():
