@@ -5,7 +5,6 @@ One entry point, :func:`advise`, used by the batch command and the terminal wiza
 
 from pathlib import Path
 
-import rules  # noqa: F401  (registers every rule)
 from advisor import __version__
 from advisor.errors import InfeasibleError
 from advisor.models import Requirements
@@ -42,7 +41,7 @@ def advise(req: Requirements, catalog_dir: Path | None = None) -> Report:
             title=req.application.title,
             status="feasible",
         ),
-        requirements=req.model_dump(exclude_none=True, exclude=_UNUSED[req.application.kind]),
+        requirements=req.model_dump(exclude_none=True),
         design=design,
         checks=[
             CheckOut.make(
@@ -70,10 +69,6 @@ def advise(req: Requirements, catalog_dir: Path | None = None) -> Report:
             for d in trace.decisions
         ],
     )
-
-
-#: Requirement tables an application does not read: left out of the report's echo.
-_UNUSED = {"linear": {"rotary", "envelope", "gearbox"}, "rotary": {"linear", "screw"}}
 
 
 def _tomlable(inputs: dict) -> dict:

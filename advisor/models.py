@@ -69,73 +69,6 @@ class InductionMotorReq(_Strict):
         return v
 
 
-class RotaryReq(_Strict):
-    torque_Nm: Annotated[float, _num(gt=0, le=1e6, desc="peak output torque, N·m")]
-    speed_rpm: Annotated[float, _num(gt=0, le=1e4, desc="maximum output speed, rpm")]
-
-
-class EnvelopeReq(_Strict):
-    max_outer_diameter_mm: Annotated[
-        float | None, _num(gt=0, le=1e4, desc="largest outer diameter of the reducer, mm")
-    ] = None
-    max_length_mm: Annotated[
-        float | None, _num(gt=0, le=1e5, desc="largest length of the reducer, mm")
-    ] = None
-
-
-class MagnetLossPoint(_Strict):
-    speed_rpm: Annotated[float, _num(gt=0, le=2e5, desc="motor speed, rpm")]
-    loss_W: Annotated[float, _num(ge=0, le=1e6, desc="eddy-current loss in the magnets, W")]
-
-
-class ReferenceMotor(_Strict):
-    """The design the loss model scales from; the defaults are the seed 000 motor."""
-
-    speed_rpm: Annotated[float, _num(gt=0, le=2e5, desc="speed of the reference design, rpm")] = (
-        5000.0
-    )
-    pole_pairs: Annotated[int, Field(ge=1, le=100, description="electrical reduction p")] = 6
-    phase_resistance_ohm: Annotated[float, _num(gt=0, le=1e3, desc="phase resistance, Ω")] = 1.14
-    current_A: Annotated[float, _num(gt=0, le=1e4, desc="phase current, A")] = 5.5
-    conducting_phases: Annotated[int, Field(ge=1, le=3, description="phases in series")] = 2
-    torque_Nm: Annotated[float, _num(gt=0, le=1e4, desc="torque at that current, N·m")] = 2.0
-    stator_steel_area_mm2: Annotated[float, _num(gt=0, le=1e7, desc="stator steel area, mm²")] = (
-        1200.0
-    )
-    stack_length_mm: Annotated[float, _num(gt=0, le=1e4, desc="stack length, mm")] = 50.0
-    stacking_factor: Annotated[float, _num(gt=0, le=1, desc="steel fill of the stack")] = 0.85
-    steel_density_kg_m3: Annotated[float, _num(gt=0, le=2e4, desc="steel density, kg/m³")] = 7800.0
-    steel_grade: Annotated[str, Field(description="GOST 21427.2-83 grade, e.g. 2413")] = "2413"
-    steel_thickness_mm: Annotated[float, _num(gt=0, le=2, desc="lamination thickness, mm")] = 0.35
-    induction_T: Annotated[float, _num(gt=0, le=2.5, desc="peak flux density, T")] = 1.5
-    iron_loss_model: Annotated[
-        Literal["quadratic", "three_term"], Field(description="form of eq. (5) used")
-    ] = "quadratic"
-    magnet_losses: Annotated[
-        list[MagnetLossPoint], Field(min_length=1, description="magnet losses at given speeds")
-    ] = [
-        MagnetLossPoint(speed_rpm=5000.0, loss_W=60.0),
-        MagnetLossPoint(speed_rpm=10000.0, loss_W=100.0),
-    ]
-
-
-class BldcMotorReq(_Strict):
-    kind: Annotated[Literal["bldc"], Field(description="motor type")]
-    candidate_speeds_rpm: Annotated[
-        list[Annotated[float, _num(gt=0, le=2e5)]],
-        Field(min_length=1, max_length=20, description="motor speeds to compare, rpm"),
-    ] = [5000.0, 10000.0]
-    phases: Annotated[int, Field(ge=3, le=3, description="number of phases")] = 3
-    reference: ReferenceMotor = ReferenceMotor()
-
-
-class GearboxReq(_Strict):
-    rolling_body: Annotated[Literal["ball", "roller"], Field(description="rolling bodies")] = "ball"
-    stage_efficiency: Annotated[float, _num(gt=0.3, le=1, desc="efficiency of one stage")] = 0.9
-    density_kg_m3: Annotated[float, _num(gt=0, le=2e4, desc="material density, kg/m³")] = 7800.0
-    fill_factor: Annotated[float, _num(gt=0, le=1, desc="k_з of eq. (19)")] = 0.75
-
-
 THREAD_RE = re.compile(r"^Tr\s*(\d+(?:\.\d+)?)\s*[x×]\s*(\d+(?:\.\d+)?)$", re.IGNORECASE)
 
 
@@ -166,38 +99,39 @@ class ScrewReq(_Strict):
         return f"Tr{float(m.group(1)):g}x{float(m.group(2)):g}"
 
 
-MotorReq = Annotated[InductionMotorReq | BldcMotorReq, Field(discriminator="kind")]
-MOTOR_FOR_KIND = {"linear": "induction", "rotary": "bldc"}
+class LinearRequirements(_Strict):
+    """A linear actuator: induction motor + sliding screw–nut (seed 001)."""
 
-
-class Requirements(_Strict):
     application: ApplicationReq
-    linear: LinearReq | None = None
-    rotary: RotaryReq | None = None
-    envelope: EnvelopeReq = EnvelopeReq()
-    motor: MotorReq
+    linear: Annotated[
+        LinearReq,
+        Field(description="the [linear] table: force_N, stroke_m, travel_time_s, support_span_m"),
+    ]
+    motor: Annotated[InductionMotorReq, Field(description="the [motor] table: kind = 'induction'")]
     screw: ScrewReq = ScrewReq()
-    gearbox: GearboxReq = GearboxReq()
 
-    @model_validator(mode="after")
-    def _tables_for_kind(self) -> "Requirements":
-        kind = self.application.kind
-        if getattr(self, kind) is None:
-            raise ValueError(f"[{kind}] table is missing; it is required for kind = '{kind}'")
-        if self.motor.kind != MOTOR_FOR_KIND[kind]:
-            raise ValueError(
-                f"motor.kind = '{self.motor.kind}' does not drive kind = '{kind}': "
-                f"use motor.kind = '{MOTOR_FOR_KIND[kind]}'"
-            )
-        if kind == "rotary":
-            assert self.rotary is not None and isinstance(self.motor, BldcMotorReq)
-            slowest = min(self.motor.candidate_speeds_rpm)
-            if self.rotary.speed_rpm >= slowest:
-                raise ValueError(
-                    f"rotary.speed_rpm = {self.rotary.speed_rpm:g} is not below the slowest "
-                    f"motor.candidate_speeds_rpm ({slowest:g}): the reducer lowers the speed"
-                )
-        return self
+
+class _Head(BaseModel):
+    """Only the [application] table, read first to know which model validates the file."""
+
+    model_config = ConfigDict(extra="allow", strict=True)
+    application: Annotated[
+        ApplicationReq, Field(description="the [application] table: kind = 'linear' or 'rotary'")
+    ]
+
+
+#: What ``parse_requirements`` returns: one model per application kind.
+Requirements = Any
+
+
+def requirements_model(kind: str) -> type[BaseModel]:
+    """The requirement model of an application kind (imported only when used: pydantic
+    builds a model's validator at import, and the linear batch path must stay light)."""
+    if kind == "linear":
+        return LinearRequirements
+    from advisor.models_rotary import RotaryRequirements
+
+    return RotaryRequirements
 
 
 # ------------------------------------------------------------------ reading and messages
@@ -227,14 +161,14 @@ def _literal_kinds(model: type[BaseModel]) -> tuple[Any, ...]:
     return getattr(f.annotation, "__args__", ()) if f is not None else ()
 
 
-def _walk(loc: tuple[Any, ...]) -> tuple[tuple[Any, ...], Any, Any]:
+def _walk(loc: tuple[Any, ...], root: Any) -> tuple[tuple[Any, ...], Any, Any]:
     """Follow a pydantic error location through the requirement models.
 
     Returns the location without the discriminator tags pydantic inserts
     (``motor.bldc.phases`` → ``motor.phases``), the FieldInfo at its end (for the
     description with units) and the model that holds the last key (for the allowed keys).
     """
-    model: Any = Requirements
+    model: Any = root
     holder: Any = None
     info = None
     out: list[Any] = []
@@ -261,22 +195,15 @@ def _walk(loc: tuple[Any, ...]) -> tuple[tuple[Any, ...], Any, Any]:
     return tuple(out), info, holder
 
 
-def format_validation_error(exc: ValidationError) -> list[str]:
+def format_validation_error(exc: ValidationError, root: Any) -> list[str]:
     """One line per problem: the field, the value given and what is allowed."""
     lines = []
     for err in exc.errors():
         raw_loc = tuple(err["loc"])
-        loc, info, holder = _walk(raw_loc)
+        loc, info, holder = _walk(raw_loc, root)
         where = ".".join(str(p) for p in loc)
         typ = err["type"]
         ctx = err.get("ctx", {}) or {}
-        if typ == "union_tag_invalid":
-            expected = ctx.get("expected_tags", "")
-            lines.append(f"{where}.kind = {ctx.get('tag')!r}: must be one of {expected}")
-            continue
-        if typ == "union_tag_not_found":
-            lines.append(f"{where}.kind: missing; required (one of 'induction', 'bldc')")
-            continue
         desc = f" ({info.description})" if info is not None and info.description else ""
         if typ == "missing":
             lines.append(f"{where}: missing; required{desc}")
@@ -317,10 +244,17 @@ def _show(value: Any) -> str:
 
 
 def parse_requirements(data: dict[str, Any]) -> Requirements:
+    """Validate a requirement document: [application] first, then the whole file against the
+    model of that application."""
     try:
-        return Requirements.model_validate(data)
+        kind = _Head.model_validate(data).application.kind
     except ValidationError as exc:
-        raise InputError(*format_validation_error(exc)) from None
+        raise InputError(*format_validation_error(exc, _Head)) from None
+    model = requirements_model(kind)
+    try:
+        return model.model_validate(data)
+    except ValidationError as exc:
+        raise InputError(*format_validation_error(exc, model)) from None
 
 
 def read_requirements(path: Path) -> Requirements:

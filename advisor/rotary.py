@@ -10,8 +10,9 @@ from advisor.calc import reducer as rd
 from advisor.calc import wavegear as wg
 from advisor.calc.sizing import Check
 from advisor.errors import InfeasibleError, InputError
-from advisor.models import BldcMotorReq, Requirements
-from advisor.report import (
+from advisor.models import Requirements
+from advisor.models_rotary import BldcMotorReq
+from advisor.rotary_report import (
     BldcMotorOut,
     Fig1Out,
     GearboxOut,

@@ -124,9 +124,13 @@ BAD_INPUTS = [
     ),
     (
         "[application]\nkind = 'linear'\n[motor]\nkind = 'induction'\n",
-        ["[linear] table is missing"],
+        ["linear: missing", "force_N, stroke_m"],
     ),
-    ("", ["application: missing", "motor: missing"]),
+    ("", ["application: missing"]),
+    (
+        "[application]\nkind = 'linear'\n[linear]\nforce_N = 1\nstroke_m = 0.1\ntravel_time_s = 1\nsupport_span_m = 1\n",
+        ["motor: missing"],
+    ),
 ]
 
 

@@ -170,7 +170,7 @@ def test_wrong_motor_for_the_application(tmp_path, capsys):
         .replace("candidate_speeds_rpm = [5000, 10000]\n", "")
     )
     assert main(["--batch", str(p)]) == ExitCode.INVALID_INPUT
-    assert "use motor.kind = 'bldc'" in capsys.readouterr().err
+    assert "motor.kind = 'induction': must be one of 'bldc'" in capsys.readouterr().err
 
 
 def test_motor_too_small_for_the_torque():

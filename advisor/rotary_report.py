@@ -1,0 +1,117 @@
+"""Report tables of the rotary application (imported only on the rotary path)."""
+
+from advisor.report import _Out
+
+
+class LossesOut(_Out):
+    ohmic: float
+    iron: float
+    magnets: float
+    total: float
+
+
+class SpeedCandidateOut(_Out):
+    speed_rpm: float
+    electrical_frequency_Hz: float
+    total_ratio: float
+    stages: int
+    gearbox_efficiency: float
+    torque_Nm: float
+    current_A: float
+    within_rating: bool
+    losses_W: LossesOut
+    iron_loss_three_term_W: float
+
+
+class PoleSlotOut(_Out):
+    slots: int
+    poles: int
+    teeth_per_group: int
+    winding_factor: float
+
+
+class SteelOut(_Out):
+    grade: str
+    thickness_mm: float
+    equivalent: str
+    mass_kg: float
+    p15_50_W_kg: float
+    specific_loss_W_kg: float
+    specific_loss_three_term_W_kg: float
+    iron_loss_model: str
+    estimated: list[str]
+
+
+class BldcMotorOut(_Out):
+    kind: str
+    speed_rpm: float
+    pole_pairs: int
+    electrical_frequency_Hz: float
+    torque_Nm: float
+    current_A: float
+    losses_W: LossesOut
+    optimum_frequency_Hz: float
+    optimum_speed_rpm: float
+    steel: SteelOut
+    candidates: list[SpeedCandidateOut]
+    pole_slot_options: list[PoleSlotOut]
+
+
+class StageOut(_Out):
+    position: str
+    ratio: float
+    rows: int
+    torque_Nm: float
+    rolling_body_diameter_mm: float
+    own_outer_diameter_mm: float
+    outer_diameter_mm: float
+    inner_diameter_mm: float
+    length_mm: float
+    mass_kg: float
+
+
+class GearboxSummaryOut(_Out):
+    total_ratio: float
+    efficiency: float
+    outer_diameter_mm: float
+    inner_diameter_mm: float
+    length_mm: float
+    volume_cm3: float
+    mass_kg: float
+    stages: list[StageOut]
+
+
+class SweepOut(_Out):
+    configurations: int
+    feasible: int
+    objective_mass: str
+    objective_diameter: str
+
+
+class Fig1Out(_Out):
+    q: list[float]
+    rows: list[int]
+    volume_per_torque_cm3_per_Nm: list[list[float]]
+
+
+class GearboxOut(_Out):
+    kind: str
+    layout: str
+    rolling_body: str
+    total_ratio: float
+    efficiency: float
+    outer_diameter_mm: float
+    inner_diameter_mm: float
+    length_mm: float
+    volume_cm3: float
+    mass_kg: float
+    stages: list[StageOut]
+    optimum: GearboxSummaryOut
+    optimum_min_diameter: GearboxSummaryOut
+    sweep: SweepOut
+    fig1: Fig1Out
+
+
+class RotaryDesignOut(_Out):
+    motor: BldcMotorOut
+    gearbox: GearboxOut
