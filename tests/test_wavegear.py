@@ -123,3 +123,25 @@ def test_sweep_agrees_with_a_finer_brute_force_grid():
         if rd.STAGE_RATIO_MIN <= q1 <= rd.STAGE_RATIO_MAX:
             fine.append(min(rd.evaluate([q_out, q1], [n, 2], p).mass_kg for n in range(2, 13)))
     assert coarse.mass_kg.min() <= min(fine) * 1.02
+
+
+def test_eq17_is_the_sum_of_stage_volumes_of_eq18():
+    # three stages of q = 16 and three rows each; torques M, M/16, M/256 (no losses, as in
+    # the seed); each stage's own volume by (18) is W/M·M_stage
+    q, n, m = 16.0, 3, 1200.0
+    stages = [m, m / q, m / q**2]
+    total = sum(float(wg.volume_per_torque(q, n)) * t for t in stages)
+    w_out = float(wg.volume_per_torque(q, n)) * m
+    assert float(wg.reducer_volume_eq17(w_out, [q, q, q])) == pytest.approx(total)
+    assert float(wg.reducer_volume_eq17(1.0, [20, 12, 8])) == pytest.approx(1 + 1 / 20 + 1 / 240)
+
+
+def test_equal_diameter_volume_estimate():
+    # seed 000: with equal diameters W_red = W_out + (0.4…0.5)·W_out + (0.15…0.2)·W_out, the
+    # smaller values for q = 20: the volumes go as the lengths, ∛(1/20) = 0.368 and
+    # ∛(1/240) = 0.161
+    p = rd.ReducerParams(1000.0, 1.0, 1.0, 7800.0, 0.75)
+    r = rd.evaluate([20.0, 12.0, 8.0], [3, 2, 2], p)
+    out = r.stages[-1].mass_kg
+    assert r.stages[1].mass_kg / out == pytest.approx(0.368, abs=1e-3)
+    assert r.stages[0].mass_kg / out == pytest.approx(0.161, abs=1e-3)

@@ -113,3 +113,18 @@ def equal_diameter_lengths(output_length_mm: ArrayLike, ratios_to_output: list) 
 def mass_kg(volume_mm3: ArrayLike, density_kg_m3: float, fill_factor: float) -> np.ndarray:
     """m = ρ·k_з·W  (W in mm³ → m³). Seed 000, eq. (19)."""
     return density_kg_m3 * fill_factor * np.asarray(volume_mm3, dtype=float) * 1e-9
+
+
+def reducer_volume_eq17(output_volume_mm3: ArrayLike, ratios_out_to_in: list) -> np.ndarray:
+    """W_ред = W_вых·(1 + 1/q_вых + 1/(q_вых·q2) + …)  [mm³]. Seed 000, eq. (17).
+
+    Each stage after the output carries the torque divided by the ratios between it and the
+    output (losses neglected, as in the seed) and, with the same q and rows, a volume in
+    proportion (W ∝ M by eq. (18)).
+    """
+    factor = 1.0
+    downstream = 1.0
+    for q in ratios_out_to_in[:-1]:
+        downstream = downstream * np.asarray(q, dtype=float)
+        factor = factor + 1.0 / downstream
+    return np.asarray(output_volume_mm3, dtype=float) * factor
