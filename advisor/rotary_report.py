@@ -94,18 +94,12 @@ class Fig1Out(_Out):
     volume_per_torque_cm3_per_Nm: list[list[float]]
 
 
-class GearboxOut(_Out):
+class GearboxOut(GearboxSummaryOut):
+    """The adopted reducer (the summary fields) and, beside it, the design space."""
+
     kind: str
     layout: str
     rolling_body: str
-    total_ratio: float
-    efficiency: float
-    outer_diameter_mm: float
-    inner_diameter_mm: float
-    length_mm: float
-    volume_cm3: float
-    mass_kg: float
-    stages: list[StageOut]
     optimum: GearboxSummaryOut
     optimum_min_diameter: GearboxSummaryOut
     sweep: SweepOut
