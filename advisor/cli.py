@@ -28,7 +28,25 @@ def build_parser() -> argparse.ArgumentParser:
     )
     p.add_argument("requirements", nargs="?", type=Path, help=argparse.SUPPRESS)
     p.add_argument(
-        "--batch", metavar="REQ.toml", type=Path, help="advise on a requirement file, no UI"
+        "--batch",
+        metavar="REQ.toml",
+        type=Path,
+        nargs="+",
+        help="advise on requirement files (or directories of them), no UI",
+    )
+    p.add_argument(
+        "--out-dir",
+        metavar="DIR",
+        type=Path,
+        help="with several inputs: write one NAME.report.toml per input here, then a summary",
+    )
+    p.add_argument(
+        "-j",
+        "--jobs",
+        metavar="N",
+        type=int,
+        default=1,
+        help="advise N files at a time in worker processes (with --out-dir)",
     )
     p.add_argument(
         "-o",
@@ -77,21 +95,57 @@ def run_batch(req_path: Path, output: Path | None, catalog_dir: Path | None) -> 
     return ExitCode.OK
 
 
+def run_many(inputs: list[Path], out_dir: Path, catalog_dir: Path | None, jobs: int) -> int:
+    os.environ.setdefault("PYDANTIC_DISABLE_PLUGINS", "__all__")
+    from advisor import many
+
+    missing = [p for p in inputs if not p.exists()]
+    if missing:
+        _err(f"{missing[0]}: no such file or directory")
+        return ExitCode.INVALID_INPUT
+    try:
+        worst, outcomes = many.run_many(inputs, out_dir, catalog_dir, jobs)
+    except OSError as exc:
+        _err(f"{out_dir}: cannot write reports there ({exc.strerror})")
+        return ExitCode.INVALID_INPUT
+    if not outcomes:
+        _err("no requirement files (*.toml) among the inputs")
+        return ExitCode.INVALID_INPUT
+    many.print_summary(outcomes, out_dir)
+    for o in outcomes:
+        if o.code != ExitCode.OK:
+            for line in (o.headline, *o.messages):
+                print(f"{PROG}: {o.source}: {line.strip()}", file=sys.stderr)
+    return worst
+
+
 def main(argv: list[str] | None = None) -> int:
     parser = build_parser()
     try:
         args = parser.parse_args(argv)
     except SystemExit as exc:  # argparse: --help, --version, or a usage error (code 2)
         return int(exc.code or 0)
-    req_path = args.batch
-    if req_path is None:
+    inputs = args.batch
+    if inputs is None:
         _err(
             "the terminal wizard is not part of this version yet; "
             "run `advisor --batch REQ.toml` (see `advisor --help`)"
         )
         return ExitCode.INVALID_INPUT
+    if args.jobs < 1:
+        _err(f"-j/--jobs = {args.jobs}: must be at least 1")
+        return ExitCode.INVALID_INPUT
+    many = len(inputs) > 1 or inputs[0].is_dir() or args.out_dir is not None
+    if many:
+        if args.output is not None:
+            _err("-o/--output takes one input; with several use --out-dir DIR")
+            return ExitCode.INVALID_INPUT
+        if args.out_dir is None:
+            _err("several inputs (or a directory) need --out-dir DIR for their reports")
+            return ExitCode.INVALID_INPUT
+        return run_many(inputs, args.out_dir, args.catalog_dir, args.jobs)
     try:
-        return run_batch(req_path, args.output, args.catalog_dir)
+        return run_batch(inputs[0], args.output, args.catalog_dir)
     except InfeasibleError as exc:
         _err(str(exc))
         return ExitCode.INFEASIBLE

@@ -1,0 +1,92 @@
+"""Many requirement files at once: one report each, summary, worst exit code, -j N."""
+
+import shutil
+import subprocess
+import sys
+
+from helpers import EXAMPLES
+
+from advisor.cli import main
+from advisor.errors import ExitCode
+from advisor.many import SEVERITY, expand, report_name
+
+
+def _corpus(tmp_path):
+    d = tmp_path / "reqs"
+    d.mkdir()
+    for f in EXAMPLES.glob("*.toml"):
+        shutil.copy(f, d / f.name)
+    (d / "broken.toml").write_text("[application\n")
+    (d / "notes.txt").write_text("not a requirement")
+    return d
+
+
+def test_directory_reports_and_worst_exit(tmp_path, capsys):
+    d = _corpus(tmp_path)
+    out = tmp_path / "out"
+    rc = main(["--batch", str(d), "--out-dir", str(out)])
+    captured = capsys.readouterr()
+    assert rc == ExitCode.INVALID_INPUT  # the broken file is the worst outcome
+    names = sorted(p.name for p in out.iterdir())
+    assert names == ["linear_screw_actuator.report.toml", "rudder_actuator.report.toml"]
+    # the same report as a single batch run, byte for byte
+    single = subprocess.run(
+        [sys.executable, "-m", "advisor", "--batch", str(EXAMPLES / "rudder_actuator.toml")],
+        capture_output=True,
+        text=True,
+    ).stdout
+    assert (out / "rudder_actuator.report.toml").read_text() == single
+    assert "broken.toml" in captured.out and "2 designs, 0 infeasible, 1 invalid" in captured.out
+    assert "broken TOML" in captured.err and "Traceback" not in captured.err
+
+
+def test_parallel_gives_the_same_reports(tmp_path, capsys):
+    d = _corpus(tmp_path)
+    rc1 = main(["--batch", str(d), "--out-dir", str(tmp_path / "o1"), "-j", "1"])
+    rc2 = main(["--batch", str(d), "--out-dir", str(tmp_path / "o2"), "-j", "2"])
+    capsys.readouterr()
+    assert rc1 == rc2
+    for f in (tmp_path / "o1").iterdir():
+        assert f.read_text() == (tmp_path / "o2" / f.name).read_text()
+
+
+def test_all_good_is_exit_0(tmp_path, capsys):
+    files = [str(f) for f in sorted(EXAMPLES.glob("*.toml"))]
+    assert main(["--batch", *files, "--out-dir", str(tmp_path / "o")]) == ExitCode.OK
+    assert "designs, 0 infeasible, 0 invalid" in capsys.readouterr().out
+
+
+def test_infeasible_beats_ok_and_invalid_beats_infeasible():
+    order = sorted(SEVERITY, key=SEVERITY.get)
+    assert order == [
+        ExitCode.OK,
+        ExitCode.INFEASIBLE,
+        ExitCode.INVALID_INPUT,
+        ExitCode.INTERNAL_ERROR,
+    ]
+
+
+def test_usage_errors(tmp_path, capsys):
+    a = str(EXAMPLES / "linear_screw_actuator.toml")
+    assert main(["--batch", a, a]) == ExitCode.INVALID_INPUT
+    assert "need --out-dir" in capsys.readouterr().err
+    assert (
+        main(["--batch", a, a, "--out-dir", str(tmp_path), "-o", "x.toml"])
+        == ExitCode.INVALID_INPUT
+    )
+    assert "-o/--output takes one input" in capsys.readouterr().err
+    assert main(["--batch", a, "--out-dir", str(tmp_path), "-j", "0"]) == ExitCode.INVALID_INPUT
+    assert main(["--batch", str(tmp_path / "none.toml"), a, "--out-dir", str(tmp_path)]) == 2
+    assert "no such file" in capsys.readouterr().err
+
+
+def test_same_name_twice_gets_two_reports(tmp_path):
+    taken: set[str] = set()
+    assert report_name(EXAMPLES / "a.toml", taken) == "a.report.toml"
+    assert report_name(tmp_path / "a.toml", taken) == "a-2.report.toml"
+
+
+def test_expand_keeps_files_and_sorts_directories(tmp_path):
+    d = _corpus(tmp_path)
+    got = [p.name for p in expand([d])]
+    assert got == ["broken.toml", "linear_screw_actuator.toml", "rudder_actuator.toml"]
