@@ -234,8 +234,9 @@ def _num_text(v: Any) -> str:
 
 
 def _show(value: Any) -> str:
-    if isinstance(value, float) and not math.isfinite(value):
-        return str(value)
+    if isinstance(value, float):  # as typed where short, else compact (1e+12, not 1000000000000.0)
+        r = repr(value)
+        return r if len(r) <= 10 or not math.isfinite(value) else format(value, ".6g")
     if isinstance(value, dict):
         return "{…}"
     if isinstance(value, bool):
