@@ -230,6 +230,13 @@ def write_atomic(path: Path, text: str) -> None:
 
     path = Path(path)
     directory = path.parent if str(path.parent) else Path(".")
+    # a writer killed outright (SIGKILL, power loss) cannot remove its temporary file; the
+    # next write of the same report does
+    for stale in directory.glob(f".{path.name}.*.tmp"):
+        try:
+            stale.unlink()
+        except OSError:
+            pass
     fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=directory)
     try:
         with os.fdopen(fd, "w", encoding="utf-8", newline="\n") as fh:

@@ -55,3 +55,33 @@ def test_round_sig():
     assert rp.round_sig(5.0848496) == 5.08485
     assert rp.round_sig(0.0) == 0.0
     assert rp.round_sig(-1234567.0) == -1234570.0
+
+
+def test_killed_writer_leaves_the_old_file_and_the_next_write_cleans_up(tmp_path):
+    import signal
+    import subprocess
+    import sys
+    import time
+
+    target = tmp_path / "r.toml"
+    target.write_text("old = true\n")
+    child = (
+        "import os, time, sys\n"
+        "from advisor import report as rp\n"
+        "real = os.fsync\n"
+        "def slow(fd):\n"
+        "    real(fd); print('written', flush=True); time.sleep(60)\n"
+        "rp.os.fsync = slow\n"
+        f"rp.write_atomic({str(target)!r}, 'new = true\\n' * 100000)\n"
+    )
+    proc = subprocess.Popen([sys.executable, "-c", child], stdout=subprocess.PIPE, text=True)
+    assert proc.stdout.readline().strip() == "written"  # the temp file is full, not renamed
+    proc.send_signal(signal.SIGKILL)
+    proc.wait(timeout=10)
+    assert target.read_text() == "old = true\n"
+    leftovers = [p for p in tmp_path.iterdir() if p != target]
+    assert len(leftovers) == 1 and leftovers[0].name.startswith(".r.toml.")
+    time.sleep(0.01)
+    rp.write_atomic(target, "next = true\n")
+    assert target.read_text() == "next = true\n"
+    assert list(tmp_path.iterdir()) == [target]
