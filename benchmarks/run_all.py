@@ -1,0 +1,173 @@
+"""Run every benchmark, write benchmarks/results/all.json and the table in benchmarks/README.md.
+
+    python benchmarks/run_all.py [--quick]
+
+Medians over repeated runs; ratios are measured within the same run (the machine is noisy).
+"""
+
+import argparse
+import json
+import shutil
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+import numpy as np
+from _results import ROOT, examples, save
+
+FLOOR = [sys.executable, "-c", "import numpy, scipy, pydantic, tomli_w"]
+ADVISOR = (
+    [shutil.which("advisor")] if shutil.which("advisor") else [sys.executable, "-m", "advisor"]
+)
+BEGIN, END = "<!-- results:begin -->", "<!-- results:end -->"
+
+
+def wall(cmd: list[str]) -> float:
+    t0 = time.perf_counter()
+    subprocess.run(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, check=False)
+    return time.perf_counter() - t0
+
+
+def cold(n: int) -> dict:
+    out = {}
+    for ex in examples():
+        batch = [*ADVISOR, "--batch", str(ex)]
+        wall(batch), wall(FLOOR)
+        f, b = [], []
+        for _ in range(n):
+            f.append(wall(FLOOR))
+            b.append(wall(batch))
+        out[ex.name] = {
+            "floor_ms": 1e3 * statistics.median(f),
+            "batch_ms": 1e3 * statistics.median(b),
+        }
+        out[ex.name]["ratio"] = out[ex.name]["batch_ms"] / out[ex.name]["floor_ms"]
+    return out
+
+
+def warm(n: int) -> dict:
+    from advisor.engine import advise
+    from advisor.models import read_requirements
+    from advisor.report import to_toml
+
+    out = {}
+    for ex in examples():
+        to_toml(advise(read_requirements(ex)))
+        ts = []
+        for _ in range(n):
+            t0 = time.perf_counter()
+            to_toml(advise(read_requirements(ex)))
+            ts.append(time.perf_counter() - t0)
+        out[ex.name] = {"median_ms": 1e3 * statistics.median(ts)}
+    return out
+
+
+def sweep(n: int) -> dict:
+    from advisor.calc import reducer as rd
+
+    p = rd.ReducerParams(1620.0, 1.0, 0.9, 7800.0, 0.75)
+    out = {}
+    for q in (1000.0, 2000.0):
+        rd.sweep(q, p)
+        ts = []
+        for _ in range(n):
+            t0 = time.perf_counter()
+            r = rd.sweep(q, p)
+            ts.append(time.perf_counter() - t0)
+        med = statistics.median(ts)
+        # quality: the coarse optimum against a brute-force grid 5× finer in q_out and 4× in
+        # the intermediate ratios (up to three stages, to keep the fine grid in memory)
+        coarse3 = rd.sweep(q, p, max_stages=3)
+        saved = rd.OUTPUT_RATIO_GRID, rd.INTERMEDIATE_RATIO_GRID
+        try:
+            rd.OUTPUT_RATIO_GRID = np.arange(7.0, 40.0 + 1e-9, 0.1)
+            rd.INTERMEDIATE_RATIO_GRID = np.geomspace(rd.STAGE_RATIO_MIN, rd.STAGE_RATIO_MAX, 96)
+            fine = rd.sweep(q, p, max_stages=3)
+        finally:
+            rd.OUTPUT_RATIO_GRID, rd.INTERMEDIATE_RATIO_GRID = saved
+        out[f"q={q:g}"] = {
+            "configurations": r.evaluated,
+            "median_ms": 1e3 * med,
+            "configs_per_s": r.evaluated / med,
+            "mass_ratio_vs_fine_grid": float(coarse3.mass_kg.min() / fine.mass_kg.min()),
+            "fine_configurations": fine.evaluated,
+        }
+    return out
+
+
+def many(repeats: int, files: int) -> dict:
+    out = {}
+    with tempfile.TemporaryDirectory() as tmp:
+        src = Path(tmp) / "reqs"
+        src.mkdir()
+        exs = examples()
+        for i in range(files):
+            shutil.copy(exs[i % len(exs)], src / f"req{i:03d}.toml")
+        for jobs in (1, 2):
+            ts = []
+            for r in range(repeats):
+                dest = Path(tmp) / f"out{jobs}-{r}"
+                ts.append(
+                    wall([*ADVISOR, "--batch", str(src), "--out-dir", str(dest), "-j", str(jobs)])
+                )
+            med = statistics.median(ts)
+            out[f"-j {jobs}"] = {"files": files, "median_s": med, "requirements_per_s": files / med}
+    return out
+
+
+def table(res: dict) -> str:
+    rows = ["| measurement | case | median |", "| --- | --- | --- |"]
+    for name, r in res["cold_batch"].items():
+        rows.append(
+            f"| cold `advisor --batch` vs import floor | {name} | {r['batch_ms']:.0f} ms vs "
+            f"{r['floor_ms']:.0f} ms = **{r['ratio']:.2f} ×** |"
+        )
+    for name, r in res["warm_advice"].items():
+        rows.append(f"| warm advice (read + advise + TOML) | {name} | {r['median_ms']:.2f} ms |")
+    for name, r in res["sweep"].items():
+        rows.append(
+            f"| design-space sweep | {name}: {r['configurations']:,} configurations | "
+            f"{r['median_ms']:.1f} ms, {r['configs_per_s'] / 1e6:.1f} M/s; optimum mass / "
+            f"fine-grid optimum = {r['mass_ratio_vs_fine_grid']:.4f} |"
+        )
+    for name, r in res["many"].items():
+        rows.append(
+            f"| many files, `{name}` | {r['files']} files | {r['median_s']:.2f} s, "
+            f"{r['requirements_per_s']:.1f} requirements/s |"
+        )
+    rows.append(
+        "| TUI recompute latency | — | not measured: the terminal wizard (issue 6) is not built |"
+    )
+    return "\n".join(rows)
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--quick", action="store_true", help="fewer repeats")
+    quick = ap.parse_args().quick
+    res = {
+        "cold_batch": cold(7 if quick else 21),
+        "warm_advice": warm(20 if quick else 100),
+        "sweep": sweep(5 if quick else 20),
+        "many": many(1 if quick else 3, 20 if quick else 60),
+        "python": sys.version.split()[0],
+        "date": time.strftime("%Y-%m-%d"),
+    }
+    save("all", res)
+    text = table(res)
+    print(text)
+    readme = ROOT / "benchmarks" / "README.md"
+    body = readme.read_text(encoding="utf-8")
+    if BEGIN in body and END in body:
+        head, rest = body.split(BEGIN, 1)
+        tail = rest.split(END, 1)[1]
+        stamp = f"\n_{res['date']}, Python {res['python']}, `python benchmarks/run_all.py`_\n\n"
+        readme.write_text(head + BEGIN + stamp + text + "\n" + END + tail, encoding="utf-8")
+    print(json.dumps({k: v for k, v in res.items() if k in ("python", "date")}))
+
+
+if __name__ == "__main__":
+    main()
