@@ -25,6 +25,8 @@ def advise(req: Requirements, catalog_dir: Path | None = None) -> Report:
     # each application imports its own pipeline: the linear path stays free of numpy
     if req.application.kind == "linear":
         from advisor.linear import advise_linear as pipeline
+    elif req.application.kind == "positioning":
+        from advisor.positioning import advise_positioning as pipeline
     else:
         from advisor.rotary import advise_rotary as pipeline
     design, checks, warnings = pipeline(req, cat, trace)

@@ -56,6 +56,12 @@ def headline(report) -> str:
     if report.report.application == "linear":
         s, m = d.screw, d.motor
         return f"{s.thread}, {m.model} {m.rated_power_kW:g} kW, p = {m.pole_pairs}"
+    if report.report.application == "positioning":
+        mo = d.motion
+        return (
+            f"motor {mo.motor}, i = {mo.optimal_ratio:.4g}, {mo.move_time_s:.4g} s "
+            f"({mo.profile_actual})"
+        )
     m, g = d.motor, d.gearbox
     return (
         f"{m.speed_rpm:g} rpm, {m.losses_W.total:.0f} W; {len(g.stages)} stages q = "

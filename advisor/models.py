@@ -25,7 +25,9 @@ def _num(gt: float | None = None, le: float | None = None, ge: float | None = No
 
 
 class ApplicationReq(_Strict):
-    kind: Annotated[Literal["linear", "rotary"], Field(description="the application")]
+    kind: Annotated[
+        Literal["linear", "rotary", "positioning"], Field(description="the application")
+    ]
     hold_without_power: Annotated[
         bool, Field(description="the drive must hold the load with the motor off")
     ] = False
@@ -116,7 +118,8 @@ class _Head(BaseModel):
 
     model_config = ConfigDict(extra="allow", strict=True)
     application: Annotated[
-        ApplicationReq, Field(description="the [application] table: kind = 'linear' or 'rotary'")
+        ApplicationReq,
+        Field(description="the [application] table: kind = 'linear', 'rotary' or 'positioning'"),
     ]
 
 
@@ -129,6 +132,10 @@ def requirements_model(kind: str) -> type[BaseModel]:
     builds a model's validator at import, and the linear batch path must stay light)."""
     if kind == "linear":
         return LinearRequirements
+    if kind == "positioning":
+        from advisor.models_positioning import PositioningRequirements
+
+        return PositioningRequirements
     from advisor.models_rotary import RotaryRequirements
 
     return RotaryRequirements

@@ -1,0 +1,202 @@
+"""Gear ratio for the fastest point-to-point move (seed 003, Trofimuk 1965).
+
+A motor (speed ω0, inertia J0, starting/braking torque M_λ) moves a load (inertia J_p,
+resisting torque M_p) through a path α [rad] of the load shaft via a reducer of ratio i.
+SI units throughout: rad, rad/s, kg·m², N·m, s.
+
+References
+----------
+[1] Seed 003 (003_9e41cc3901572aaa.txt): eqs. (1)–(4) move time of a trapezoidal speed graph,
+    (6)–(7) the optimum, (8)–(9a) the graphical method i = K·∛A with K = ∛(1/(1 − μ²)²)
+    (the OCR prints (I − μ²); it is (1 − μ²), from i⁴(1 − m²/i²)²), (12)–(13) engineering units.
+"""
+
+import math
+from typing import NamedTuple
+
+from advisor.calc.roots import bisect
+
+G = 9.80665  # kgf → N, for the engineering units of (12), (13)
+
+
+class Drive(NamedTuple):
+    speed_rad_s: float  # ω0
+    inertia_kgm2: float  # J0 (motor and coupling)
+    accel_torque_Nm: float  # M_λ, starting and braking
+    load_inertia_kgm2: float  # J_p
+    load_torque_Nm: float  # M_p
+
+    @property
+    def inertia_ratio(self) -> float:
+        """I = J_p/J0."""
+        return self.load_inertia_kgm2 / self.inertia_kgm2
+
+    @property
+    def torque_ratio(self) -> float:
+        """m = M_p/M_λ; a ratio must exceed m for the motor to move the load."""
+        return self.load_torque_Nm / self.accel_torque_Nm
+
+
+def transient_time(d: Drive, i: float) -> float:
+    """t_j = 2ω0·J0/M_λ · (i² + I)/(i² − m²): start plus stop. Seed 003, eq. (3)."""
+    m, big_i = d.torque_ratio, d.inertia_ratio
+    return (
+        2.0 * d.speed_rad_s * d.inertia_kgm2 / d.accel_torque_Nm * (i * i + big_i) / (i * i - m * m)
+    )
+
+
+def transient_path(d: Drive, i: float) -> float:
+    """Load-shaft path covered while starting and stopping, α_j = ω_p·t_j/2, ω_p = ω0/i."""
+    return d.speed_rad_s / i * transient_time(d, i) / 2.0
+
+
+def move_time_trapezoidal(d: Drive, path_rad: float, i: float) -> float:
+    """t_Σ = α·i/ω0 + ω0·J0/M_λ · (i² + I)/(i² − m²). Seed 003, eq. (4); valid while the
+    motor reaches ω0, i.e. α ≥ α_j."""
+    return path_rad * i / d.speed_rad_s + transient_time(d, i) / 2.0
+
+
+def move_time_triangular(d: Drive, path_rad: float, i: float) -> float:
+    """Move time when the motor accelerates with M_λ − M_p/i and brakes with M_λ + M_p/i
+    over the whole path and never reaches ω0:
+
+    θ = α·i = v²/(2a₁) + v²/(2a₂), t = v/a₁ + v/a₂ ⇒ t = √(2θ·(1/a₁ + 1/a₂)),
+    a₁,₂ = (M_λ ∓ M_p/i)/(J0 + J_p/i²).
+    """
+    j = d.inertia_kgm2 + d.load_inertia_kgm2 / (i * i)
+    a1 = (d.accel_torque_Nm - d.load_torque_Nm / i) / j
+    a2 = (d.accel_torque_Nm + d.load_torque_Nm / i) / j
+    return math.sqrt(2.0 * path_rad * i * (1.0 / a1 + 1.0 / a2))
+
+
+def triangular_peak_speed(d: Drive, path_rad: float, i: float) -> float:
+    """Motor speed reached at the middle of a triangular move, v = √(2θ·a₁a₂/(a₁ + a₂))."""
+    j = d.inertia_kgm2 + d.load_inertia_kgm2 / (i * i)
+    a1 = (d.accel_torque_Nm - d.load_torque_Nm / i) / j
+    a2 = (d.accel_torque_Nm + d.load_torque_Nm / i) / j
+    return math.sqrt(2.0 * path_rad * i * a1 * a2 / (a1 + a2))
+
+
+def move_time(d: Drive, path_rad: float, i: float) -> tuple[float, str]:
+    """The move time that actually happens at ratio i, and which profile it is."""
+    if path_rad >= transient_path(d, i):
+        return move_time_trapezoidal(d, path_rad, i), "trapezoidal"
+    return move_time_triangular(d, path_rad, i), "triangular"
+
+
+def coefficient_a(d: Drive, path_rad: float) -> float:
+    """A = 2ω0²·J0·(m² + I)/(α·M_λ). Seed 003, eq. (7)."""
+    m, big_i = d.torque_ratio, d.inertia_ratio
+    return (
+        2.0 * d.speed_rad_s**2 * d.inertia_kgm2 * (m * m + big_i) / (path_rad * d.accel_torque_Nm)
+    )
+
+
+def optimal_ratio_trapezoidal(d: Drive, path_rad: float) -> float:
+    """Exact root of A·i/(i² − m²)² = 1 (seed 003, eq. (6)) on i > m.
+
+    (i² − m²)²/i is strictly increasing for i > m (its derivative is (i² − m²)(3i² + m²)/i²),
+    so the root is unique; it is bracketed and found by bisection.
+    """
+    a, m = coefficient_a(d, path_rad), d.torque_ratio
+
+    def h(i: float) -> float:
+        return (i * i - m * m) ** 2 / i - a
+
+    lo = m * (1.0 + 1e-12) if m > 0 else 1e-9
+    hi = max(2.0 * m, 1.0)
+    while h(hi) < 0:
+        hi *= 2.0
+    return bisect(h, lo, hi)
+
+
+def k_factor(mu: float) -> float:
+    """K = ∛(1/(1 − μ²)²), μ = m/i. Seed 003, eq. (9a) (OCR: (I − μ²)); K = 1…1.35 for μ = 0…0.6.
+
+    >>> round(k_factor(0.0), 3), round(k_factor(0.6), 3)
+    (1.0, 1.346)
+    """
+    return (1.0 / (1.0 - mu * mu) ** 2) ** (1.0 / 3.0)
+
+
+def graphical_estimate(d: Drive, path_rad: float) -> tuple[float, float, float]:
+    """The seed's engineering estimate: i0 = ∛A, μ0 = m/i0, i ≈ K(μ0)·i0 (eq. (9)).
+
+    Returns ``(estimate, i0, K)``. The graphical construction of figs. 4–5 solves the fixed
+    point i = K(m/i)·∛A, which is the exact optimum; reading K at μ0 is its first step.
+    """
+    i0 = coefficient_a(d, path_rad) ** (1.0 / 3.0)
+    k = k_factor(d.torque_ratio / i0)
+    return k * i0, i0, k
+
+
+def fixed_point(d: Drive, path_rad: float, tol: float = 1e-12, max_iter: int = 500) -> float:
+    """Iterate i ← K(m/i)·∛A from i0: the graphical method carried to convergence."""
+    root_a = coefficient_a(d, path_rad) ** (1.0 / 3.0)
+    i = root_a
+    for _ in range(max_iter):
+        nxt = k_factor(d.torque_ratio / i) * root_a
+        if abs(nxt - i) <= tol * nxt:
+            return nxt
+        i = nxt
+    return i
+
+
+def optimal_ratio_triangular(d: Drive, path_rad: float) -> float:
+    """Minimum of the triangular time law over i > m (golden-section search on log i; the
+    law is unimodal: it grows without bound as i → m and as i → ∞). Without load torque the
+    optimum is the inertia match i = √(J_p/J0)."""
+    m = d.torque_ratio
+    lo = math.log(m * (1.0 + 1e-9) if m > 0 else 1e-6)
+    hi = math.log(max(1e3, 100.0 * max(m, math.sqrt(d.inertia_ratio))))
+    f = lambda x: move_time_triangular(d, path_rad, math.exp(x))  # noqa: E731
+    phi = (math.sqrt(5.0) - 1.0) / 2.0
+    a, b = lo, hi
+    c, e = b - phi * (b - a), a + phi * (b - a)
+    fc, fe = f(c), f(e)
+    for _ in range(200):
+        if fc < fe:
+            b, e, fe = e, c, fc
+            c = b - phi * (b - a)
+            fc = f(c)
+        else:
+            a, c, fc = c, e, fe
+            e = a + phi * (b - a)
+            fe = f(e)
+        if b - a < 1e-12:
+            break
+    return math.exp((a + b) / 2.0)
+
+
+def coefficient_a_engineering(
+    n_rpm: float,
+    gd2_kgfm2: float,
+    accel_torque_kgfm: float,
+    revolutions: float,
+    m: float,
+    big_i: float,
+    constant: float = 3600.0 * G / math.pi,
+) -> float:
+    """Eq. (12) in the paper's units: n [rpm], GD² [kgf·m²], M_λ [kgf·m], S [load-shaft
+    revolutions]: A = n²·GD²/(C·M_λ·S)·(m² + I). From (7), C = 3600·g/π = 11238; the paper
+    prints 11320 (0.73 % off; its eq. (13) uses the consistent 375 = 120·g/π)."""
+    return n_rpm**2 * gd2_kgfm2 / (constant * accel_torque_kgfm * revolutions) * (m * m + big_i)
+
+
+def move_time_engineering(
+    n_rpm: float,
+    gd2_kgfm2: float,
+    accel_torque_kgfm: float,
+    revolutions: float,
+    i: float,
+    m: float,
+    big_i: float,
+) -> float:
+    """Eq. (13): t_Σ = 60·S·i/n + n·GD²/(375·M_λ)·(i² + I)/(i² − m²) with 375 = 120·g/π.
+
+    (The paper's first term reads 60·S/n; S turns of the load shaft are S·i turns of the
+    motor, so the ratio belongs there, as in eq. (4).)
+    """
+    return 60.0 * revolutions * i / n_rpm + n_rpm * gd2_kgfm2 / (
+        120.0 * G / math.pi * accel_torque_kgfm
+    ) * (i * i + big_i) / (i * i - m * m)

@@ -1,0 +1,47 @@
+"""Requirements of the positioning drive (seed 003): the fastest move through a reducer."""
+
+from typing import Annotated, Literal
+
+from pydantic import Field, model_validator
+
+from advisor.models import ApplicationReq, _num, _Strict
+
+
+class CandidateMotor(_Strict):
+    name: Annotated[str, Field(min_length=1, max_length=60, description="a label for the motor")]
+    speed_rad_s: Annotated[float, _num(gt=0, le=1e5, desc="rated speed ω0, rad/s")]
+    inertia_kgm2: Annotated[float, _num(gt=0, le=1e4, desc="motor and coupling inertia J0, kg·m²")]
+    accel_torque_Nm: Annotated[
+        float, _num(gt=0, le=1e6, desc="starting and braking torque M_λ, N·m")
+    ]
+
+
+class PositioningReq(_Strict):
+    profile: Annotated[
+        Literal["trapezoidal", "triangular"], Field(description="speed graph expected")
+    ] = "trapezoidal"
+    travel_rad: Annotated[float, _num(gt=0, le=1e6, desc="path of the load shaft α, rad")]
+    load_inertia_kgm2: Annotated[float, _num(ge=0, le=1e7, desc="load inertia J_p, kg·m²")]
+    load_torque_Nm: Annotated[float, _num(ge=0, le=1e7, desc="load torque M_p, N·m")]
+    motors: Annotated[
+        list[CandidateMotor],
+        Field(max_length=200, description="candidate motors; none: the induction catalog"),
+    ] = []  # noqa: RUF012 - pydantic copies field defaults
+
+    @model_validator(mode="after")
+    def _unique_names(self) -> "PositioningReq":
+        names = [m.name for m in self.motors]
+        dup = {n for n in names if names.count(n) > 1}
+        if dup:
+            raise ValueError(f"positioning.motors: the name {sorted(dup)[0]!r} is used twice")
+        return self
+
+
+class PositioningRequirements(_Strict):
+    """A positioning drive: which motor and which ratio make the move fastest."""
+
+    application: ApplicationReq
+    positioning: Annotated[
+        PositioningReq,
+        Field(description="the [positioning] table: travel_rad, load_inertia_kgm2, load_torque_Nm"),
+    ]

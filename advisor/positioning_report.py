@@ -1,0 +1,40 @@
+"""Report tables of the positioning drive (imported only on that path)."""
+
+from advisor.report import _Out
+
+
+class MotionCandidateOut(_Out):
+    name: str
+    speed_rad_s: float
+    inertia_kgm2: float
+    accel_torque_Nm: float
+    optimal_ratio: float
+    estimated_ratio: float
+    move_time_s: float
+    profile: str
+
+
+class CurveOut(_Out):
+    ratio: list[float]
+    move_time_s: list[float]
+
+
+class MotionOut(_Out):
+    motor: str
+    optimal_ratio: float
+    estimated_ratio: float
+    ratio_i0: float
+    k_factor: float
+    coefficient_A: float
+    move_time_s: float
+    transient_time_s: float
+    profile_assumed: str
+    profile_actual: str
+    inertia_ratio: float
+    torque_ratio: float
+    candidates: list[MotionCandidateOut]
+    curve: CurveOut
+
+
+class PositioningDesignOut(_Out):
+    motion: MotionOut
