@@ -30,6 +30,11 @@ class PositioningReq(_Strict):
 
     @model_validator(mode="after")
     def _unique_names(self) -> "PositioningReq":
+        if self.load_inertia_kgm2 == 0 and self.load_torque_Nm == 0:
+            raise ValueError(
+                "positioning.load_inertia_kgm2 and positioning.load_torque_Nm are both 0: "
+                "with no load the fastest ratio tends to zero; give the load's inertia or torque"
+            )
         names = [m.name for m in self.motors]
         dup = {n for n in names if names.count(n) > 1}
         if dup:

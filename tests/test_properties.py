@@ -126,3 +126,58 @@ def test_rotary_design_or_clear_infeasibility(data):
     assert m.losses_W.total == pytest.approx(
         min(c.losses_W.total for c in m.candidates if c.within_rating)
     )
+
+
+@st.composite
+def positioning_requirements(draw):
+    motors = [
+        {
+            "name": f"M{k}",
+            "speed_rad_s": draw(st.floats(10.0, 1000.0, **finite)),
+            "inertia_kgm2": draw(st.floats(1e-4, 1.0, **finite)),
+            "accel_torque_Nm": draw(st.floats(0.5, 500.0, **finite)),
+        }
+        for k in range(draw(st.integers(1, 4)))
+    ]
+    return {
+        "application": {"kind": "positioning"},
+        "positioning": {
+            "profile": draw(st.sampled_from(["trapezoidal", "triangular"])),
+            "travel_rad": draw(st.floats(0.01, 1000.0, **finite)),
+            "load_inertia_kgm2": draw(st.floats(0.0, 100.0, **finite)),
+            "load_torque_Nm": draw(st.floats(0.0, 2000.0, **finite)),
+            "motors": motors,
+        },
+    }
+
+
+@settings(max_examples=100, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(positioning_requirements())
+def test_positioning_fastest_motor_at_its_best_ratio(data):
+    from advisor.calc import motion as mo
+
+    try:
+        req = parse_requirements(data)
+    except InputError as exc:
+        assert "are both 0" in str(exc)
+        return
+    rep = advise(req)
+    m = rep.design.motion
+    assert all(c.passed for c in rep.checks)
+    times = {c.name: c.move_time_s for c in m.candidates}
+    assert m.move_time_s == min(times.values()) and times[m.motor] == m.move_time_s
+    assert m.optimal_ratio > m.torque_ratio
+    # no ratio of the tabulated curve is faster than the chosen one
+    assert min(m.curve.move_time_s) >= m.move_time_s * (1 - 1e-6)
+    # the time reported is the one of the profile that happens
+    pos = data["positioning"]
+    c = next(x for x in pos["motors"] if x["name"] == m.motor)
+    d = mo.Drive(
+        c["speed_rad_s"],
+        c["inertia_kgm2"],
+        c["accel_torque_Nm"],
+        pos["load_inertia_kgm2"],
+        pos["load_torque_Nm"],
+    )
+    t, prof = mo.move_time(d, pos["travel_rad"], m.optimal_ratio)
+    assert prof == m.profile_actual and t == pytest.approx(m.move_time_s, rel=1e-5)
