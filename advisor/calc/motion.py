@@ -147,7 +147,8 @@ def optimal_ratio_triangular(d: Drive, path_rad: float) -> float:
     law is unimodal: it grows without bound as i → m and as i → ∞). Without load torque the
     optimum is the inertia match i = √(J_p/J0)."""
     m = d.torque_ratio
-    lo = math.log(m * (1.0 + 1e-9) if m > 0 else 1e-6)
+    # below 1e-6 no reducer exists, and exp(log(m)) of a vanishing m would underflow to 0
+    lo = math.log(max(m * (1.0 + 1e-9), 1e-6))
     hi = math.log(max(1e3, 100.0 * max(m, math.sqrt(d.inertia_ratio))))
     f = lambda x: move_time_triangular(d, path_rad, math.exp(x))  # noqa: E731
     phi = (math.sqrt(5.0) - 1.0) / 2.0
