@@ -5,6 +5,7 @@ import math
 
 from advisor.calc import motion as mo
 from advisor.calc.sizing import Check
+from advisor.errors import InfeasibleError
 from advisor.models import Requirements
 from advisor.positioning_report import CurveOut, MotionCandidateOut, MotionOut, PositioningDesignOut
 from advisor.rulebook import Trace
@@ -85,7 +86,18 @@ def advise_positioning(req: Requirements, cat: Catalogs, trace: Trace):
     pos = req.positioning
     path = pos.travel_rad
     drives, warnings = _candidates(req, cat)
-    solved = {name: (d, _solve(d, path, pos.profile)) for name, d in drives}
+    # A = 0 (eq. (7)) means a load so small against the motor that the time keeps falling as
+    # the ratio goes to zero: there is no finite optimum to give
+    finite = [(n, d) for n, d in drives if mo.coefficient_a(d, path) > 0]
+    if not finite:
+        raise InfeasibleError(
+            "no feasible design: the load is negligible against every motor",
+            [
+                f"A of eq. (7) is 0 for {', '.join(n for n, _ in drives)}: the move time falls "
+                "without limit as the ratio goes to zero; give the load's inertia and torque"
+            ],
+        )
+    solved = {name: (d, _solve(d, path, pos.profile)) for name, d in finite}
     best = trace.apply(mo_rules.fastest_motor, {n: s["time"] for n, (_, s) in solved.items()})
     d, s = solved[best]
     trace.apply(mo_rules.ratio_per_motor, best, s["ratio"], s["estimate"], s["actual"])

@@ -161,7 +161,11 @@ def test_positioning_fastest_motor_at_its_best_ratio(data):
     except InputError as exc:
         assert "are both 0" in str(exc)
         return
-    rep = advise(req)
+    try:
+        rep = advise(req)
+    except InfeasibleError as exc:
+        assert "load is negligible" in str(exc)
+        return
     m = rep.design.motion
     assert all(c.passed for c in rep.checks)
     times = {c.name: c.move_time_s for c in m.candidates}
