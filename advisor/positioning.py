@@ -109,8 +109,14 @@ def advise_positioning(req: Requirements, cat: Catalogs, trace: Trace):
             f"the move is {s['actual']}, not {pos.profile}: the ratio was re-optimised for the "
             f"{s['actual']} law ({s['exact']:.4g} → {s['ratio']:.4g})"
         )
-    lo = max(d.torque_ratio * 1.02, s["ratio"] / 6.0)
-    ratios = [lo * (s["ratio"] * 6.0 / lo) ** (k / 60) for k in range(61)]
+    if not mo.RATIO_MIN * 1.001 < s["ratio"] < mo.RATIO_MAX / 1.001:
+        warnings.append(
+            f"the fastest ratio lies at the edge of the range searched ({mo.RATIO_MIN:g} … "
+            f"{mo.RATIO_MAX:g}): the load is negligible or overwhelming against motor {best}"
+        )
+    lo = max(d.torque_ratio * 1.02, s["ratio"] / 6.0, mo.RATIO_MIN)
+    hi = min(max(s["ratio"] * 6.0, lo * 36.0), mo.RATIO_MAX)
+    ratios = [lo * (hi / lo) ** (k / 60) for k in range(61)]
     motion = MotionOut.make(
         motor=best,
         optimal_ratio=s["ratio"],

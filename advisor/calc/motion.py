@@ -18,6 +18,11 @@ from advisor.calc.roots import bisect
 
 G = 9.80665  # kgf → N, for the engineering units of (12), (13)
 
+#: The ratios searched: a step-up gear of 1000 to a reducer of 10⁶. An optimum outside means
+#: a load negligible (or overwhelming) against the motor; it is clamped and reported.
+RATIO_MIN = 1e-3
+RATIO_MAX = 1e6
+
 
 class Drive(NamedTuple):
     speed_rad_s: float  # ω0
@@ -103,11 +108,12 @@ def optimal_ratio_trapezoidal(d: Drive, path_rad: float) -> float:
     def h(i: float) -> float:
         return (i * i - m * m) ** 2 / i - a
 
-    lo = m * (1.0 + 1e-12) if m > 0 else 1e-9
-    hi = max(2.0 * m, 1.0)
-    while h(hi) < 0:
-        hi *= 2.0
-    return bisect(h, lo, hi)
+    lo = max(m * (1.0 + 1e-12), RATIO_MIN)
+    if h(lo) >= 0:  # the time rises over the whole range: the smallest ratio is fastest
+        return lo
+    if h(RATIO_MAX) <= 0:
+        return RATIO_MAX
+    return bisect(h, lo, RATIO_MAX)
 
 
 def k_factor(mu: float) -> float:
@@ -147,9 +153,8 @@ def optimal_ratio_triangular(d: Drive, path_rad: float) -> float:
     law is unimodal: it grows without bound as i → m and as i → ∞). Without load torque the
     optimum is the inertia match i = √(J_p/J0)."""
     m = d.torque_ratio
-    # below 1e-6 no reducer exists, and exp(log(m)) of a vanishing m would underflow to 0
-    lo = math.log(max(m * (1.0 + 1e-9), 1e-6))
-    hi = math.log(max(1e3, 100.0 * max(m, math.sqrt(d.inertia_ratio))))
+    lo = math.log(max(m * (1.0 + 1e-9), RATIO_MIN))
+    hi = math.log(RATIO_MAX)
     f = lambda x: move_time_triangular(d, path_rad, math.exp(x))  # noqa: E731
     phi = (math.sqrt(5.0) - 1.0) / 2.0
     a, b = lo, hi
