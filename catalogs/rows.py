@@ -4,8 +4,9 @@ The pydantic schemas that validate the files live in :mod:`catalogs.schema` and 
 only when a file has to be validated (not when the validated catalogs come from the cache).
 """
 
-import math
 from typing import NamedTuple
+
+from advisor.calc.induction import rated_torque
 
 
 class InductionMotor(NamedTuple):
@@ -40,7 +41,7 @@ class InductionMotor(NamedTuple):
 
     @property
     def rated_torque_Nm(self) -> float:
-        return self.rated_power_kW * 1e3 / (self.rated_speed_rpm * math.pi / 30.0)
+        return rated_torque(self.rated_power_kW * 1e3, self.rated_speed_rpm)
 
 
 class FrictionPair(NamedTuple):

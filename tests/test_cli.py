@@ -49,14 +49,14 @@ def test_version():
     assert r.returncode == 0 and r.stdout.startswith("advisor 0.")
 
 
-def test_batch_path_imports_neither_textual_nor_rich():
+def test_linear_batch_path_imports_no_textual_rich_numpy_or_optimize():
     code = (
         "import sys, io, contextlib\n"
         "from advisor.cli import main\n"
         "with contextlib.redirect_stdout(io.StringIO()):\n"
         f"    rc = main(['--batch', {str(EXAMPLE)!r}])\n"
         "assert rc == 0\n"
-        "bad = [m for m in ('textual', 'rich', 'scipy.optimize') if m in sys.modules]\n"
+        "bad = [m for m in ('textual', 'rich', 'scipy.optimize', 'numpy') if m in sys.modules]\n"
         "print(','.join(bad))\n"
     )
     r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)

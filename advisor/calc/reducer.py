@@ -10,7 +10,6 @@ with numpy broadcasting; :func:`evaluate` evaluates one configuration with the s
 the rule-based design and the optimum are computed alike.
 """
 
-import math
 from typing import NamedTuple
 
 import numpy as np
@@ -73,7 +72,7 @@ def evaluate(ratios_out_to_in: list[float], rows_out_to_in: list[int], p: Reduce
     downstream = 1.0  # product of the ratios between this stage and the output
     for i, (q, rows) in enumerate(zip(ratios_out_to_in, rows_out_to_in, strict=True)):
         d_rb = float(wg.rolling_body_diameter(torque, q, rows, p.k_rb))
-        length = L_out * math.cbrt(1.0 / downstream)
+        length = float(wg.equal_diameter_length(L_out, downstream))
         vol = float(wg.hollow_cylinder_volume(D, d, length))
         position = "output" if i == 0 else ("input" if i == n - 1 else "intermediate")
         stages.append(
@@ -167,7 +166,7 @@ def sweep(total_ratio: float, p: ReducerParams, max_stages: int = 4) -> SweepRes
         length = L_out.copy()
         downstream = qo.copy()
         for j in range(n - 1):
-            length = length + L_out * np.cbrt(1.0 / downstream)
+            length = length + wg.equal_diameter_length(L_out, downstream)
             nxt = mids[:, j] if j < n - 2 else q_in
             downstream = downstream * nxt
         mass = wg.mass_kg(wg.hollow_cylinder_volume(D, d, length), p.density_kg_m3, p.fill_factor)

@@ -102,12 +102,13 @@ def rows_for_diameter(
     )
 
 
-def equal_diameter_lengths(output_length_mm: ArrayLike, ratios_to_output: list) -> list:
-    """Lengths of the stages of an equal-diameter reducer, seed 000 after eq. (19):
-    L2 = L_out·∛(1/q_out), L3 = L_out·∛(1/(q_out·q2)), … — ``ratios_to_output[i]`` is the
-    product of the ratios between stage i and the output (1 for the output stage)."""
-    L = np.asarray(output_length_mm, dtype=float)
-    return [L * np.cbrt(1.0 / np.asarray(r, dtype=float)) for r in ratios_to_output]
+def equal_diameter_length(output_length_mm: ArrayLike, ratio_to_output: ArrayLike) -> np.ndarray:
+    """Length of a stage in the equal-diameter layout, seed 000 after eq. (19):
+    L2 = L_out·∛(1/q_out), L3 = L_out·∛(1/(q_out·q2)), … — ``ratio_to_output`` is the product
+    of the ratios between the stage and the output (1 for the output stage itself)."""
+    return np.asarray(output_length_mm, dtype=float) * np.cbrt(
+        1.0 / np.asarray(ratio_to_output, dtype=float)
+    )
 
 
 def mass_kg(volume_mm3: ArrayLike, density_kg_m3: float, fill_factor: float) -> np.ndarray:
