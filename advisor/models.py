@@ -202,13 +202,21 @@ def _walk(loc: tuple[Any, ...], root: Any) -> tuple[tuple[Any, ...], Any, Any]:
     return tuple(out), info, holder
 
 
+def _where(loc: tuple[Any, ...]) -> str:
+    """``positioning.motors[1].name``: list items counted from 1, as a reader counts them."""
+    out = ""
+    for part in loc:
+        out += f"[{part + 1}]" if isinstance(part, int) else (f".{part}" if out else str(part))
+    return out
+
+
 def format_validation_error(exc: ValidationError, root: Any) -> list[str]:
     """One line per problem: the field, the value given and what is allowed."""
     lines = []
     for err in exc.errors():
         raw_loc = tuple(err["loc"])
         loc, info, holder = _walk(raw_loc, root)
-        where = ".".join(str(p) for p in loc)
+        where = _where(loc)
         typ = err["type"]
         ctx = err.get("ctx", {}) or {}
         desc = f" ({info.description})" if info is not None and info.description else ""
