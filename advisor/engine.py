@@ -27,6 +27,8 @@ def advise(req: Requirements, catalog_dir: Path | None = None) -> Report:
         from advisor.linear import advise_linear as pipeline
     elif req.application.kind == "positioning":
         from advisor.positioning import advise_positioning as pipeline
+    elif req.application.kind == "spinning_rotor":
+        from advisor.spinning_rotor import advise_spinning_rotor as pipeline
     else:
         from advisor.rotary import advise_rotary as pipeline
     design, checks, warnings = pipeline(req, cat, trace)
@@ -34,7 +36,10 @@ def advise(req: Requirements, catalog_dir: Path | None = None) -> Report:
     if failed:  # the rules should never let this happen; if they do, it is not a design
         raise InfeasibleError(
             "no feasible design: the chosen parts fail checks",
-            [f"{c.name}: margin {c.margin:.3f}" for c in failed],
+            [
+                f"{c.name}: {c.value:.4g} against {c.limit:.4g} {c.unit} (margin {c.margin:.3f})"
+                for c in failed
+            ],
         )
     return Report.make(
         report=ReportHeader.make(

@@ -62,6 +62,13 @@ def headline(report) -> str:
             f"motor {mo.motor}, i = {mo.optimal_ratio:.4g}, {mo.move_time_s:.4g} s "
             f"({mo.profile_actual})"
         )
+    if report.report.application == "spinning_rotor":
+        r = d.rotor
+        return (
+            f"{r.required_torque_Nm:.4g} N·m drive, run-up {r.run_up_time_s:.3g} s, "
+            f"{r.steady_power_W.with_reaction:.4g} W with the gyroscopic load, "
+            f"{r.bearing.designation} L10h {r.bearing_life_h:.3g} h"
+        )
     m, g = d.motor, d.gearbox
     return (
         f"{m.speed_rpm:g} rpm, {m.losses_W.total:.0f} W; {len(g.stages)} stages q = "

@@ -26,7 +26,8 @@ def _num(gt: float | None = None, le: float | None = None, ge: float | None = No
 
 class ApplicationReq(_Strict):
     kind: Annotated[
-        Literal["linear", "rotary", "positioning"], Field(description="the application")
+        Literal["linear", "rotary", "positioning", "spinning_rotor"],
+        Field(description="the application"),
     ]
     hold_without_power: Annotated[
         bool, Field(description="the drive must hold the load with the motor off")
@@ -119,7 +120,10 @@ class _Head(BaseModel):
     model_config = ConfigDict(extra="allow", strict=True)
     application: Annotated[
         ApplicationReq,
-        Field(description="the [application] table: kind = 'linear', 'rotary' or 'positioning'"),
+        Field(
+            description="the [application] table: kind = 'linear', 'rotary', 'positioning' or "
+            "'spinning_rotor'"
+        ),
     ]
 
 
@@ -136,6 +140,10 @@ def requirements_model(kind: str) -> type[BaseModel]:
         from advisor.models_positioning import PositioningRequirements
 
         return PositioningRequirements
+    if kind == "spinning_rotor":
+        from advisor.models_rotor import SpinningRotorRequirements
+
+        return SpinningRotorRequirements
     from advisor.models_rotary import RotaryRequirements
 
     return RotaryRequirements

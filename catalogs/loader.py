@@ -11,7 +11,15 @@ from pathlib import Path
 from typing import Any, NamedTuple
 
 from advisor.errors import CatalogError
-from catalogs.rows import ElectricalSteel, FrictionPair, InductionMotor, Materials, ScrewSteel
+from catalogs.rows import (
+    Bearing,
+    ElectricalSteel,
+    FrictionConstants,
+    FrictionPair,
+    InductionMotor,
+    Materials,
+    ScrewSteel,
+)
 from catalogs.threads import ThreadProfile, trapezoidal_profile
 
 HERE = Path(__file__).parent
@@ -21,6 +29,7 @@ POWERS_FILE = "gost_12139_84_powers.toml"
 MOTORS_FILE = "induction_4a.toml"
 MATERIALS_FILE = "screw_materials.toml"
 STEELS_FILE = "electrical_steels.toml"
+BEARINGS_FILE = "skf_bearings.toml"
 
 
 # ---------------------------------------------------------------- the bundle
@@ -34,6 +43,13 @@ class Catalogs(NamedTuple):
     materials: Materials
     electrical_steels: tuple[ElectricalSteel, ...]
     steel_sources: dict[str, str]
+    bearings: tuple[Bearing, ...] = ()
+    bearing_friction: dict[str, FrictionConstants] = {}  # noqa: RUF012 - NamedTuple default
+    bearing_sources: dict[str, str] = {}  # noqa: RUF012
+
+    def bearing(self, designation: str) -> Bearing | None:
+        key = " ".join(designation.split()).upper()
+        return next((b for b in self.bearings if b.designation.upper() == key), None)
 
     def thread(self, name: str) -> ThreadProfile | None:
         key = name.replace(" ", "").replace("×", "x").lower()
@@ -196,10 +212,21 @@ def load_catalogs(user_dir: Path | None = None) -> Catalogs:
     and modification time of every file read; any change to a file validates it again.
     """
     files = [
-        HERE / f for f in (THREADS_FILE, POWERS_FILE, MOTORS_FILE, MATERIALS_FILE, STEELS_FILE)
+        HERE / f
+        for f in (
+            THREADS_FILE,
+            POWERS_FILE,
+            MOTORS_FILE,
+            MATERIALS_FILE,
+            STEELS_FILE,
+            BEARINGS_FILE,
+        )
     ]
     if user_dir is not None:
-        files += [user_dir / f for f in (THREADS_FILE, MOTORS_FILE, MATERIALS_FILE, STEELS_FILE)]
+        files += [
+            user_dir / f
+            for f in (THREADS_FILE, MOTORS_FILE, MATERIALS_FILE, STEELS_FILE, BEARINGS_FILE)
+        ]
     cache_file = _cache_file(files)
     if cache_file is not None:
         cached = _read_cache(cache_file)
@@ -217,6 +244,7 @@ def _load_and_validate(user_dir: Path | None) -> Catalogs:
     motors, motor_sources = _load_motors(HERE / MOTORS_FILE)
     materials = _load_materials(HERE / MATERIALS_FILE)
     steels, steel_sources = _load_steels(HERE / STEELS_FILE)
+    bearings, friction, bearing_sources = _load_bearings(HERE / BEARINGS_FILE)
     if user_dir is not None:
         if not user_dir.is_dir():
             raise CatalogError(f"catalog directory {user_dir}: not a directory")
@@ -236,6 +264,14 @@ def _load_and_validate(user_dir: Path | None) -> Catalogs:
             steels = steels + extra_steels
             steel_sources = {**steel_sources, **extra_sources}
             _check_unique(user_dir / STEELS_FILE, [s.name for s in steels], "steel")
+        if (user_dir / BEARINGS_FILE).exists():
+            extra_b, extra_f, extra_src = _load_bearings(user_dir / BEARINGS_FILE, friction)
+            bearings = bearings + extra_b
+            friction = {**friction, **extra_f}
+            bearing_sources = {**bearing_sources, **extra_src}
+            _check_unique(
+                user_dir / BEARINGS_FILE, [b.designation.upper() for b in bearings], "bearing"
+            )
     return Catalogs(
         threads=tuple(sorted(threads, key=lambda t: (t.d_mm, -t.pitch_mm))),
         threads_source=threads_source,
@@ -246,7 +282,76 @@ def _load_and_validate(user_dir: Path | None) -> Catalogs:
         materials=materials,
         electrical_steels=tuple(steels),
         steel_sources=steel_sources,
+        bearings=tuple(bearings),
+        bearing_friction=friction,
+        bearing_sources=bearing_sources,
     )
+
+
+#: Estimates of ball geometry where a catalog row does not publish it (see skf_bearings.toml).
+BALL_DIAMETER_SHARE = 0.3
+BALL_FILL = 0.67
+
+
+def _complete_bearing(row: dict[str, Any]) -> dict[str, Any]:
+    """Fill the ball geometry a row does not publish, and say so in ``estimated``."""
+    d, big_d = row["d_mm"], row["D_mm"]
+    est = list(row["estimated"])
+    if row["pitch_diameter_mm"] is None:
+        row["pitch_diameter_mm"] = (d + big_d) / 2.0
+        est.append("pitch_diameter_mm")
+    if row["ball_diameter_mm"] is None:
+        row["ball_diameter_mm"] = BALL_DIAMETER_SHARE * (big_d - d)
+        est.append("ball_diameter_mm")
+    if row["ball_count"] is None:
+        row["ball_count"] = round(
+            BALL_FILL * math.pi * row["pitch_diameter_mm"] / row["ball_diameter_mm"]
+        )
+        est.append("ball_count")
+    row["estimated"] = tuple(est)
+    return row
+
+
+def _load_bearings(
+    path: Path, known_friction: dict[str, FrictionConstants] | None = None
+) -> tuple[list[Bearing], dict[str, FrictionConstants], dict[str, str]]:
+    from pydantic import ValidationError
+
+    from catalogs.schema import BearingRow, FrictionRow
+
+    data = _read(path)
+    sources = data.get("sources", {})
+    friction: dict[str, FrictionConstants] = {}
+    table = data.get("friction", {})
+    if not isinstance(table, dict):
+        raise CatalogError(f"catalog {path}: [friction] must be a table of tables")
+    for name, row in table.items():
+        try:
+            f = FrictionRow.model_validate(row)
+        except ValidationError as exc:
+            raise _fail(path, f"[friction.{name}]", exc) from None
+        friction[name] = FrictionConstants(name=name, **f.model_dump())
+    usable = {**(known_friction or {}), **friction}
+    out = []
+    for i, row in enumerate(_rows(path, data, "bearing"), start=1):
+        where = f"row {i} (designation = {row.get('designation')!r})"
+        try:
+            b = BearingRow.model_validate(row)
+        except ValidationError as exc:
+            raise _fail(path, where, exc) from None
+        missing = set(b.source) - set(sources)
+        if missing:
+            raise CatalogError(
+                f"catalog {path}, {where}: source names {sorted(missing)} not in [sources]"
+            )
+        if b.friction not in usable:
+            raise CatalogError(
+                f"catalog {path}, {where}: field friction = {b.friction!r} is not a "
+                f"[friction.*] table; known: {', '.join(sorted(usable))}"
+            )
+        out.append(Bearing(**_complete_bearing(b.model_dump())))
+    _check_unique(path, [b.designation.upper() for b in out], "bearing")
+    return out, friction, dict(sources)
 
 
 def _load_steels(path: Path) -> tuple[list[ElectricalSteel], dict[str, str]]:
@@ -281,7 +386,7 @@ def _check_unique(path: Path, names: list[str], what: str) -> None:
 
 
 # ---------------------------------------------------------------- cache of validated catalogs
-CACHE_VERSION = 2
+CACHE_VERSION = 3
 
 
 def _cache_file(files: list[Path]) -> Path | None:
@@ -313,6 +418,11 @@ def _read_cache(path: Path) -> Catalogs | None:
             materials=Materials.from_dict(mat),
             electrical_steels=tuple(ElectricalSteel(**x) for x in data["electrical_steels"]),
             steel_sources=data["steel_sources"],
+            bearings=tuple(Bearing(**b) for b in data["bearings"]),
+            bearing_friction={
+                k: FrictionConstants(**v) for k, v in data["bearing_friction"].items()
+            },
+            bearing_sources=data["bearing_sources"],
         )
     except (OSError, ValueError, KeyError, TypeError):
         return None  # absent or stale format: validate the files again
@@ -329,6 +439,9 @@ def _write_cache(path: Path, cat: Catalogs) -> None:
         "materials": cat.materials.to_dict(),
         "electrical_steels": [x._asdict() for x in cat.electrical_steels],
         "steel_sources": cat.steel_sources,
+        "bearings": [b._asdict() for b in cat.bearings],
+        "bearing_friction": {k: v._asdict() for k, v in cat.bearing_friction.items()},
+        "bearing_sources": cat.bearing_sources,
     }
     try:
         path.parent.mkdir(parents=True, exist_ok=True)

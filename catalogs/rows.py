@@ -117,3 +117,47 @@ class ElectricalSteel(NamedTuple):
     @property
     def name(self) -> str:
         return f"{self.grade} {self.thickness_mm:g} mm"
+
+
+class FrictionConstants(NamedTuple):
+    """Geometric constants of the SKF friction model for one bearing series."""
+
+    name: str
+    R1: float
+    R2: float
+    S1: float
+    S2: float
+    R3: float = 0.0
+    S3: float = 0.0
+    source: str = ""
+
+
+class Bearing(NamedTuple):
+    designation: str
+    type: str  # "angular_contact" | "deep_groove"
+    friction: str
+    d_mm: float
+    D_mm: float
+    B_mm: float
+    contact_angle_deg: float
+    C_kN: float
+    C0_kN: float
+    ball_count: int
+    ball_diameter_mm: float
+    pitch_diameter_mm: float
+    limiting_speed_rpm: float
+    source: list[str]
+    estimated: tuple[str, ...] = ()
+    Pu_kN: float | None = None
+    reference_speed_rpm: float | None = None
+    mass_kg: float | None = None
+    f0: float | None = None
+
+    @property
+    def pitch_radius_mm(self) -> float:
+        return self.pitch_diameter_mm / 2.0
+
+    @property
+    def inner_raceway_radius_mm(self) -> float:
+        """r_B of seed 002, eq. (4): pitch radius less the ball radius."""
+        return (self.pitch_diameter_mm - self.ball_diameter_mm) / 2.0

@@ -1,6 +1,6 @@
 """Pydantic schemas that validate the catalog files (see :mod:`catalogs.loader`)."""
 
-from typing import Annotated
+from typing import Annotated, Literal
 
 from pydantic import BaseModel, ConfigDict, Field, model_validator
 
@@ -174,6 +174,69 @@ class ElectricalSteelRow(_Row):
                 f"{self.p10_50_W_kg} (losses rise with frequency)"
             )
         unknown = set(self.estimated) - {"p10_50_W_kg", "p15_50_W_kg", "p10_400_W_kg"}
+        if unknown:
+            raise ValueError(f"estimated names unknown fields {sorted(unknown)}")
+        return self
+
+
+# ---------------------------------------------------------------- rolling bearings
+class FrictionRow(_Row):
+    R1: Positive
+    R2: Positive
+    S1: Positive
+    S2: Positive
+    R3: Annotated[float, Field(ge=0, allow_inf_nan=False)] = 0.0
+    S3: Annotated[float, Field(ge=0, allow_inf_nan=False)] = 0.0
+    source: str
+
+
+BEARING_ESTIMABLE = {"C_kN", "C0_kN", "f0", "ball_count", "ball_diameter_mm", "pitch_diameter_mm"}
+
+
+class BearingRow(_Row):
+    designation: Annotated[str, Field(min_length=1, max_length=40)]
+    type: Literal["angular_contact", "deep_groove"]
+    friction: str
+    d_mm: Positive
+    D_mm: Positive
+    B_mm: Positive
+    contact_angle_deg: Annotated[float, Field(ge=0, lt=90, allow_inf_nan=False)]
+    C_kN: Positive
+    C0_kN: Positive
+    Pu_kN: Positive | None = None
+    reference_speed_rpm: Positive | None = None
+    limiting_speed_rpm: Positive
+    mass_kg: Positive | None = None
+    f0: Positive | None = None
+    ball_count: Annotated[int, Field(ge=3, le=200)] | None = None
+    ball_diameter_mm: Positive | None = None
+    pitch_diameter_mm: Positive | None = None
+    source: list[str]
+    estimated: list[str] = []
+
+    @model_validator(mode="after")
+    def _consistent(self) -> "BearingRow":
+        if not self.d_mm < self.D_mm:
+            raise ValueError(f"D_mm = {self.D_mm} must exceed the bore d_mm = {self.d_mm}")
+        if self.type == "angular_contact" and self.contact_angle_deg == 0:
+            raise ValueError("contact_angle_deg = 0: an angular contact bearing needs its angle")
+        if self.type == "deep_groove" and self.f0 is None:
+            raise ValueError("f0 is required for a deep groove bearing (ISO 281 factor e)")
+        if self.pitch_diameter_mm is not None and not (
+            self.d_mm < self.pitch_diameter_mm < self.D_mm
+        ):
+            raise ValueError(
+                f"pitch_diameter_mm = {self.pitch_diameter_mm} must lie between d and D"
+            )
+        if (
+            self.ball_diameter_mm is not None
+            and self.ball_diameter_mm >= (self.D_mm - self.d_mm) / 2
+        ):
+            raise ValueError(
+                f"ball_diameter_mm = {self.ball_diameter_mm} does not fit the ring section "
+                f"(D − d)/2 = {(self.D_mm - self.d_mm) / 2:g} mm"
+            )
+        unknown = set(self.estimated) - BEARING_ESTIMABLE
         if unknown:
             raise ValueError(f"estimated names unknown fields {sorted(unknown)}")
         return self

@@ -116,3 +116,59 @@ def test_cache_follows_file_changes(tmp_path, monkeypatch):
     with pytest.raises(CatalogError):
         load_catalogs(d)
     shutil.rmtree(tmp_path / "c")
+
+
+BEARING_ROW = """
+[sources]
+mine = "a test row"
+
+[[bearing]]
+designation = "7001 CD"
+type = "angular_contact"
+friction = "angular_single_row"
+d_mm = 12
+D_mm = {D}
+B_mm = 8
+contact_angle_deg = 15
+C_kN = 4.8
+C0_kN = 2.4
+limiting_speed_rpm = 60000
+source = ["mine"]
+"""
+
+
+def test_bearing_rows_and_estimated_ball_geometry():
+    cat = load_catalogs()
+    b = cat.bearing("7000  cd")  # spacing and case are forgiven
+    assert (b.d_mm, b.D_mm, b.B_mm, b.contact_angle_deg) == (10, 26, 8, 15)
+    assert (b.ball_count, b.ball_diameter_mm, b.pitch_radius_mm) == (8, 4.76, 6.6)
+    assert b.inner_raceway_radius_mm == pytest.approx(4.22)
+    assert set(b.estimated) == {"C_kN", "C0_kN"}
+    g = cat.bearing("6000")  # SKF table: 10×26×8, C 4.75 kN, C0 1.96 kN, 40000 rpm
+    assert (g.C_kN, g.C0_kN, g.limiting_speed_rpm, g.f0) == (4.75, 1.96, 40000, 12)
+    # ball geometry not published: D_w = 0.3·(26 − 10) = 4.8, Z = round(0.67·π·18/4.8) = 8
+    assert (g.ball_diameter_mm, g.ball_count) == (pytest.approx(4.8), 8)
+    assert {"ball_diameter_mm", "ball_count", "pitch_diameter_mm"} <= set(g.estimated)
+    for row in cat.bearings:
+        assert row.source and all(s in cat.bearing_sources for s in row.source)
+
+
+def test_user_bearing_is_added(tmp_path):
+    d = _user_dir(tmp_path, "skf_bearings.toml", BEARING_ROW.format(D=28))
+    assert load_catalogs(d).bearing("7001 CD").C_kN == 4.8
+
+
+def test_user_bearing_with_bore_above_outer_diameter_is_refused(tmp_path):
+    d = _user_dir(tmp_path, "skf_bearings.toml", BEARING_ROW.format(D=11))
+    with pytest.raises(CatalogError) as e:
+        load_catalogs(d)
+    msg = str(e.value)
+    assert "skf_bearings.toml" in msg and "row 1 (designation = '7001 CD')" in msg
+    assert "D_mm = 11" in msg
+
+
+def test_user_bearing_with_unknown_friction_series_is_refused(tmp_path):
+    text = BEARING_ROW.format(D=28).replace('"angular_single_row"', '"tapered"')
+    d = _user_dir(tmp_path, "skf_bearings.toml", text)
+    with pytest.raises(CatalogError, match="field friction = 'tapered'"):
+        load_catalogs(d)

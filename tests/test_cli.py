@@ -44,6 +44,22 @@ def test_output_file_and_summary(tmp_path):
     assert list(tmp_path.iterdir()) == [out]  # no temporary file left behind
 
 
+@pytest.mark.parametrize("example", sorted(p.name for p in EXAMPLES.glob("*.toml")))
+def test_every_example_to_stdout_and_to_a_file(tmp_path, capsys, example):
+    """Each application's report, printed and written with its summary, the same TOML, and
+    nothing on stderr (no numerical warnings leak out)."""
+    src = EXAMPLES / example
+    assert main(["--batch", str(src)]) == 0
+    printed = capsys.readouterr()
+    assert printed.err == ""
+    out = tmp_path / "r.toml"
+    assert main(["--batch", str(src), "-o", str(out)]) == 0
+    summary = capsys.readouterr()
+    assert summary.err == "" and "lowest margin" in summary.out
+    assert out.read_text(encoding="utf-8") == printed.out
+    assert tomllib.loads(printed.out)["report"]["status"] == "feasible"
+
+
 def test_version():
     r = run("--version")
     assert r.returncode == 0 and r.stdout.startswith("advisor 0.")

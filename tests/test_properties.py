@@ -185,3 +185,65 @@ def test_positioning_fastest_motor_at_its_best_ratio(data):
     )
     t, prof = mo.move_time(d, pos["travel_rad"], m.optimal_ratio)
     assert prof == m.profile_actual and t == pytest.approx(m.move_time_s, rel=1e-5)
+
+
+@st.composite
+def rotor_requirements(draw):
+    from catalogs import load_catalogs
+
+    names = [b.designation for b in load_catalogs().bearings]
+    bearing = draw(st.sampled_from(names))
+    rotor = {
+        "mass_kg": draw(st.floats(0.05, 20.0, **finite)),
+        "speed_rad_s": draw(st.floats(50.0, 8000.0, **finite)),
+        "bearing": bearing,
+        "bearing_count": draw(st.integers(2, 4)),
+        "ball_plane_to_cg_mm": draw(st.floats(1.0, 200.0, **finite)),
+        "slew_rate_rad_s": draw(st.floats(0.0, 5.0, **finite)),
+        "axis_angle_deg": draw(st.floats(0.0, 180.0, **finite)),
+        "slew_angle_deg": draw(st.floats(1.0, 360.0, **finite)),
+        "run_up_time_s": draw(st.floats(0.5, 600.0, **finite)),
+        "rolling_friction_mm": draw(st.floats(0.005, 0.1, **finite)),
+        "lubricant_viscosity_mm2_s": draw(st.floats(2.0, 200.0, **finite)),
+    }
+    if bearing[0] == "6":
+        rotor["contact_angle_deg"] = draw(st.floats(5.0, 25.0, **finite))
+    if draw(st.booleans()):
+        rotor["inertia_kgm2"] = draw(st.floats(1e-6, 0.1, **finite))
+    else:
+        rotor["angular_momentum_kgm2_s"] = draw(st.floats(1e-3, 100.0, **finite))
+    if draw(st.booleans()):
+        rotor["aero"] = {"loss_W": draw(st.floats(0.0, 500.0, **finite))}
+    else:
+        ro_mm = draw(st.floats(5.0, 100.0, **finite))
+        rotor["aero"] = {
+            "outer_radius_mm": ro_mm,
+            "outer_length_mm": draw(st.floats(0.0, 100.0, **finite)),
+            "inner_radius_mm": ro_mm * draw(st.floats(0.0, 0.95, **finite)),
+            "inner_length_mm": draw(st.floats(0.0, 100.0, **finite)),
+        }
+    return {"application": {"kind": "spinning_rotor"}, "rotor": rotor}
+
+
+@settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(rotor_requirements())
+def test_rotor_design_meets_its_run_up_time_and_holds_speed(data):
+    req = parse_requirements(data)
+    try:
+        rep = advise(req)
+    except InfeasibleError as exc:
+        assert "limiting speed" in str(exc) or "static safety" in str(exc)
+        return
+    r = rep.design.rotor
+    assert all(c.passed for c in rep.checks)
+    assert r.run_up_time_s <= data["rotor"]["run_up_time_s"] * (1 + 1e-6)
+    assert r.required_torque_Nm >= r.steady_torque_Nm.with_reaction * (1 - 1e-9)
+    assert r.steady_torque_Nm.with_reaction >= r.steady_torque_Nm.without_reaction
+    assert r.bearing_friction_Nm.with_reaction >= r.bearing_friction_Nm.without_reaction
+    assert r.bearing_life_h > 0 and r.preload_N > 0
+    assert r.run_up.speed_rad_s[-1] == pytest.approx(r.speed_rad_s, rel=1e-6)
+    assert all(
+        b >= a - 1e-9 * r.speed_rad_s
+        for a, b in zip(r.run_up.speed_rad_s, r.run_up.speed_rad_s[1:], strict=False)
+    )
+    assert 0 <= r.slew.balance_speed_rad_s <= r.speed_rad_s

@@ -1,0 +1,323 @@
+"""Drive of an idling high-speed rotor under gyroscopic load (seed 002).
+
+SI units throughout: N, m, rad/s, kg. The bearing friction follows eq. (4) with a rolling
+friction coefficient λ (a length); the run-up follows the motion equation (5).
+
+Numbers of the seed's example (7000 CD pair, h = 10 mm) are reproduced in
+``tests/test_golden_seed002.py``.
+"""
+
+import math
+from typing import NamedTuple
+
+G = 9.80665
+BALL_DENSITY_kg_m3 = 7850.0
+#: F_H ≈ 1.58·F_r·tan β: the recommended axial preload of a pair (seed 002, after eq. (4)).
+PRELOAD_FACTOR = 1.58
+
+
+class BallSet(NamedTuple):
+    """The geometry eq. (4) needs, in metres and radians."""
+
+    pitch_radius_m: float  # r of eq. (3): ball centre to the axis
+    ball_diameter_m: float  # D_ш
+    balls: int  # z
+    contact_angle_rad: float  # β
+
+    @property
+    def inner_raceway_radius_m(self) -> float:
+        """r_B of eq. (4)."""
+        return self.pitch_radius_m - self.ball_diameter_m / 2.0
+
+
+class Loads(NamedTuple):
+    """Forces on one bearing, N."""
+
+    radial_N: float
+    axial_N: float  # preload included
+    centrifugal_N: float  # per ball
+
+
+class FrictionParts(NamedTuple):
+    """The three terms of eq. (4) for one bearing, N·m."""
+
+    radial_Nm: float
+    axial_Nm: float
+    centrifugal_Nm: float
+
+    @property
+    def total_Nm(self) -> float:
+        return self.radial_Nm + self.axial_Nm + self.centrifugal_Nm
+
+
+def gyroscopic_moment(angular_momentum: float, slew_rate: float, axis_angle_rad: float) -> float:
+    """M = H·Ω·sin α (seed 002, the equation before (1))."""
+    return angular_momentum * slew_rate * math.sin(axis_angle_rad)
+
+
+def reaction_forces(
+    moment: float, pitch_radius: float, plane_to_cg: float, phase_rad: float = 0.0
+) -> tuple[float, float]:
+    """Axial and radial components of the gyroscopic reaction on a ball (seed 002, eq. (3)).
+
+    ``phase_rad`` is ωt of eq. (3); the design value is at ωt = 0, where the ball lies in the
+    plane normal to the moment.
+
+    >>> fa, fr = reaction_forces(10.0, 0.0066, 0.010)
+    >>> round(fa, 1), round(fr, 1)
+    (459.7, 696.6)
+    """
+    c = math.cos(phase_rad)
+    den = pitch_radius**2 * c * c + plane_to_cg**2
+    return moment * pitch_radius * c * c / den, moment * plane_to_cg * c / den
+
+
+def preload(radial_force: float, contact_angle_rad: float) -> float:
+    """Axial preload F_H ≈ 1.58·F_r·tan β, F_r with every radial component (seed 002)."""
+    return PRELOAD_FACTOR * radial_force * math.tan(contact_angle_rad)
+
+
+def ball_mass(ball_diameter: float, density: float = BALL_DENSITY_kg_m3) -> float:
+    return density * math.pi / 6.0 * ball_diameter**3
+
+
+def cage_speed(shaft_speed: float, balls: BallSet) -> float:
+    """Orbit speed of the balls with the inner ring turning, rad/s (rolling kinematics)."""
+    gamma = balls.ball_diameter_m * math.cos(balls.contact_angle_rad) / (2 * balls.pitch_radius_m)
+    return 0.5 * shaft_speed * (1.0 - gamma)
+
+
+def centrifugal_force(shaft_speed: float, balls: BallSet) -> float:
+    """F_ц on one ball, N: m_ball·ω_c²·r."""
+    wc = cage_speed(shaft_speed, balls)
+    return ball_mass(balls.ball_diameter_m) * wc * wc * balls.pitch_radius_m
+
+
+def friction_moment(loads: Loads, balls: BallSet, rolling_friction_m: float) -> FrictionParts:
+    """Friction moment of one bearing by eq. (4) of seed 002.
+
+    M = 1.4·F_r·λ·(1 + 2r_B/D) + F_a·λ/sin β·(2r_B/D + cos β) + z·F_ц·λ/cos β·r_B/D
+    """
+    lam, d = rolling_friction_m, balls.ball_diameter_m
+    rb, beta = balls.inner_raceway_radius_m, balls.contact_angle_rad
+    return FrictionParts(
+        1.4 * loads.radial_N * lam * (1.0 + 2.0 * rb / d),
+        loads.axial_N * lam / math.sin(beta) * (2.0 * rb / d + math.cos(beta)),
+        balls.balls * loads.centrifugal_N * lam / math.cos(beta) * rb / d,
+    )
+
+
+def bearing_loads(
+    rotor_weight_share: float, moment: float, balls: BallSet, plane_to_cg: float, speed: float
+) -> Loads:
+    """Loads on one bearing: its share of the weight plus the gyroscopic reaction at ωt = 0,
+    with the preload sized on all radial components (seed 002)."""
+    f_ax, f_rad = reaction_forces(moment, balls.pitch_radius_m, plane_to_cg)
+    radial = rotor_weight_share + f_rad
+    return Loads(
+        radial,
+        preload(radial, balls.contact_angle_rad) + f_ax,
+        centrifugal_force(speed, balls),
+    )
+
+
+# ------------------------------------------------------------------ aerodynamic drag
+class CupGeometry(NamedTuple):
+    """Rotor cup of eq. (5): outer and inner radii and lengths, m; air density and viscosity."""
+
+    outer_radius_m: float
+    outer_length_m: float
+    inner_radius_m: float
+    inner_length_m: float
+    air_density_kg_m3: float
+    air_viscosity_m2_s: float
+
+
+def aero_torque_cup(speed: float, cup: CupGeometry) -> float:
+    """Aerodynamic drag torque of the cup, N·m (seed 002, last term of eq. (5)).
+
+    1.06·π·ρ·ω²·(R_o⁴·l_o + R_i⁴·l_i + 0.4·R_o⁵)·√(ν/(ω·R_o²))
+    """
+    if speed <= 0.0:
+        return 0.0
+    ro = cup.outer_radius_m
+    shape = ro**4 * cup.outer_length_m + cup.inner_radius_m**4 * cup.inner_length_m + 0.4 * ro**5
+    return (
+        1.06
+        * math.pi
+        * cup.air_density_kg_m3
+        * speed**2
+        * shape
+        * math.sqrt(cup.air_viscosity_m2_s / (speed * ro * ro))
+    )
+
+
+def aero_coefficient(cup: CupGeometry) -> float:
+    """k of M_aero = k·ω^1.5: eq. (5)'s torque grows with ω² · ω^-½."""
+    return aero_torque_cup(1.0, cup)
+
+
+def aero_coefficient_from_loss(loss_W: float, speed: float) -> float:
+    """k from a known aerodynamic loss at one speed: P = k·ω^2.5 (same law as eq. (5))."""
+    return loss_W / speed**2.5
+
+
+# ------------------------------------------------------------------ the motion equation (5)
+class Rotor(NamedTuple):
+    """Everything the motion equation (5) needs; forces per bearing, torques in N·m."""
+
+    inertia_kgm2: float
+    bearings: int
+    balls: BallSet
+    rolling_friction_m: float
+    weight_share_N: float  # radial weight on one bearing
+    plane_to_cg_m: float
+    aero_k: float  # M_aero = aero_k·ω^1.5
+    slew_per_speed: float  # M_gyro = slew_per_speed·ω (H = J·ω, Ω·sin α fixed)
+
+
+def resisting_torque(rotor: Rotor, speed: float, slewing: bool) -> float:
+    """Bearing friction of all bearings plus aerodynamic drag at ``speed`` (eq. (5))."""
+    moment = rotor.slew_per_speed * speed if slewing else 0.0
+    loads = bearing_loads(rotor.weight_share_N, moment, rotor.balls, rotor.plane_to_cg_m, speed)
+    bearing = friction_moment(loads, rotor.balls, rotor.rolling_friction_m).total_Nm
+    return rotor.bearings * bearing + rotor.aero_k * max(speed, 0.0) ** 1.5
+
+
+def run_up_time(rotor: Rotor, drive_torque: float, speed: float, slewing: bool = False) -> float:
+    """Time to reach ``speed`` from rest at a constant drive torque, s; inf if it never does.
+
+    Eq. (5) is separable: t = ∫₀^ω J dω / (M − M_res(ω)) (the tests compare it with
+    solve_ivp). The resistance rises with speed, so the integrand peaks at the top, where it
+    nears 1/δ, δ = M − M_res(ω): the upper half is integrated in s = ln(ω − ω'), in which it is
+    smooth however small δ is, and the last sliver (M − M_res ≈ δ there) in closed form.
+    """
+    import warnings
+
+    from scipy.integrate import IntegrationWarning
+
+    resist_top = resisting_torque(rotor, speed, slewing)
+    delta = drive_torque - resist_top
+    if delta <= 0.0:
+        return math.inf
+    j = rotor.inertia_kgm2
+
+    def rate(w: float) -> float:
+        return j / (drive_torque - resisting_torque(rotor, w, slewing))
+
+    half = 0.5 * speed
+    with warnings.catch_warnings():
+        # near a torque that only just beats the resistance the integrand is steep; the
+        # log substitution keeps the result accurate, quad's roundoff notes are noise here
+        warnings.simplefilter("ignore", IntegrationWarning)
+        return _run_up_integral(rate, speed, half, resist_top, delta, rotor, slewing)
+
+
+def _run_up_integral(rate, speed, half, resist_top, delta, rotor, slewing) -> float:
+    from scipy.integrate import quad
+
+    j = rotor.inertia_kgm2
+    lower, _ = quad(rate, 0.0, half, limit=200)
+    step = speed * 1e-6
+    slope = max((resist_top - resisting_torque(rotor, speed - step, slewing)) / step, 0.0)
+    sliver = speed * 1e-3 if slope == 0.0 else min(speed * 1e-3, 1e-6 * delta / slope)
+    upper, _ = quad(
+        lambda x: rate(speed - math.exp(x)) * math.exp(x),
+        math.log(sliver),
+        math.log(half),
+        limit=200,
+    )
+    return lower + upper + j * sliver / delta
+
+
+def torque_for_run_up(rotor: Rotor, speed: float, time_s: float, slewing: bool = False) -> float:
+    """The constant drive torque that reaches ``speed`` in ``time_s`` (root finding on eq. (5)).
+
+    The time grows like ln(1/(M − M_res(ω))) as the torque nears the resistance at speed, so
+    the root is sought in x = ln(M − M_res(ω)), where the time is a smooth function.
+    """
+    from scipy.optimize import brentq
+
+    resist = resisting_torque(rotor, speed, slewing)
+
+    def excess(x: float) -> float:
+        return run_up_time(rotor, resist + math.exp(x), speed, slewing) - time_s
+
+    lo = math.log(resist * 1e-12 + 1e-300)
+    if excess(lo) <= 0.0:
+        # the time allows a torque within 1e-12 of the resistance at speed: that is the answer
+        return resist + math.exp(lo)
+    hi = math.log(max(resist, 2.0 * rotor.inertia_kgm2 * speed / time_s))
+    while excess(hi) > 0.0:
+        hi += math.log(2.0)
+    x = brentq(excess, lo, hi, xtol=1e-12, rtol=1e-12)
+    for _ in range(60):  # land on the side that meets the time
+        if excess(x) <= 0.0:
+            break
+        x += 1e-9 * max(1.0, abs(x))
+    return resist + math.exp(x)
+
+
+def run_up_curve(
+    rotor: Rotor, drive_torque: float, speed: float, points: int = 41
+) -> tuple[list[float], list[float]]:
+    """Speed against time from rest to ``speed`` at a constant torque (solve_ivp of eq. (5))."""
+    import numpy as np
+    from scipy.integrate import solve_ivp
+
+    def rhs(_t, y):
+        return [(drive_torque - resisting_torque(rotor, y[0], False)) / rotor.inertia_kgm2]
+
+    def reached(_t, y):
+        return y[0] - speed
+
+    reached.terminal = True
+    t_end = run_up_time(rotor, drive_torque, speed)
+    if not math.isfinite(t_end):
+        raise ValueError("the drive torque does not exceed the resistance at the target speed")
+    sol = solve_ivp(
+        rhs,
+        (0.0, t_end * 1.05),
+        [0.0],
+        events=reached,
+        dense_output=True,
+        rtol=1e-8,
+        atol=1e-9 * speed,
+    )
+    stop = float(sol.t_events[0][0]) if sol.t_events[0].size else t_end
+    times = np.linspace(0.0, stop, points)
+    # the speed only rises while M > M_res; keep the interpolant's last-digit noise out
+    speeds = np.maximum.accumulate(np.clip(sol.sol(times)[0], 0.0, speed))
+    speeds[-1] = speed
+    return times.tolist(), speeds.tolist()
+
+
+def slew_response(
+    rotor: Rotor, drive_torque: float, speed: float, duration_s: float, points: int = 41
+) -> tuple[list[float], list[float]]:
+    """Speed under a sustained slew from ``speed`` with the drive at ``drive_torque`` (its
+    limit, the stabiliser saturated): eq. (5) with the gyroscopic term, H = J·ω falling with ω."""
+    import numpy as np
+    from scipy.integrate import solve_ivp
+
+    def rhs(_t, y):
+        return [(drive_torque - resisting_torque(rotor, y[0], True)) / rotor.inertia_kgm2]
+
+    times = np.linspace(0.0, duration_s, points)
+    sol = solve_ivp(rhs, (0.0, duration_s), [speed], t_eval=times, rtol=1e-8, atol=1e-9 * speed)
+    return sol.t.tolist(), np.minimum(sol.y[0], speed).tolist()
+
+
+def balance_speed(rotor: Rotor, drive_torque: float, speed: float, slewing: bool) -> float:
+    """The speed at which the resistance equals the drive torque (≤ ``speed``): where the rotor
+    settles with the drive at its limit."""
+    from scipy.optimize import brentq
+
+    def excess(w: float) -> float:
+        return drive_torque - resisting_torque(rotor, w, slewing)
+
+    if excess(speed) >= 0.0:
+        return speed
+    if excess(0.0) <= 0.0:
+        return 0.0
+    return brentq(excess, 0.0, speed, xtol=1e-9 * speed)

@@ -1,0 +1,127 @@
+"""Requirements of the spinning-rotor drive (seed 002): an idling high-speed rotor whose
+bearings carry the gyroscopic reaction when its housing is turned."""
+
+from typing import Annotated
+
+from pydantic import Field, model_validator
+
+from advisor.models import ApplicationReq, _num, _Strict
+
+
+class AeroReq(_Strict):
+    """Aerodynamic drag of eq. (5): either the cup geometry or a known loss at the speed."""
+
+    loss_W: Annotated[
+        float | None, _num(ge=0, le=1e6, desc="aerodynamic loss at the design speed, W")
+    ] = None
+    outer_radius_mm: Annotated[
+        float | None, _num(gt=0, le=1e4, desc="outer radius of the rotor cup R_o, mm")
+    ] = None
+    outer_length_mm: Annotated[
+        float | None, _num(ge=0, le=1e4, desc="length of the cup's outer surface l_o, mm")
+    ] = None
+    inner_radius_mm: Annotated[
+        float, _num(ge=0, le=1e4, desc="inner radius of the cup R_i, mm")
+    ] = 0.0
+    inner_length_mm: Annotated[
+        float, _num(ge=0, le=1e4, desc="length of the cup's inner surface l_i, mm")
+    ] = 0.0
+    air_density_kg_m3: Annotated[float, _num(gt=0, le=100, desc="air density ρ, kg/m³")] = 1.204
+    air_viscosity_m2_s: Annotated[
+        float, _num(gt=0, le=1e-2, desc="kinematic viscosity of air ν, m²/s")
+    ] = 1.516e-5
+
+    @model_validator(mode="after")
+    def _one_way(self) -> "AeroReq":
+        geometry = self.outer_radius_mm is not None or self.outer_length_mm is not None
+        if self.loss_W is not None and geometry:
+            raise ValueError(
+                "rotor.aero: give either loss_W or the cup geometry (outer_radius_mm, "
+                "outer_length_mm), not both"
+            )
+        if self.loss_W is None and (self.outer_radius_mm is None or self.outer_length_mm is None):
+            raise ValueError(
+                "rotor.aero: give loss_W (W at the design speed) or both outer_radius_mm and "
+                "outer_length_mm"
+            )
+        if self.outer_radius_mm is not None and self.inner_radius_mm >= self.outer_radius_mm:
+            raise ValueError(
+                f"rotor.aero.inner_radius_mm = {self.inner_radius_mm:g} must be below "
+                f"outer_radius_mm = {self.outer_radius_mm:g}"
+            )
+        return self
+
+
+class RotorReq(_Strict):
+    mass_kg: Annotated[float, _num(gt=0, le=1e4, desc="rotor mass, kg")]
+    angular_momentum_kgm2_s: Annotated[
+        float | None, _num(gt=0, le=1e6, desc="kinetic moment H at speed, kg·m²/s")
+    ] = None
+    inertia_kgm2: Annotated[
+        float | None, _num(gt=0, le=1e4, desc="axial moment of inertia J, kg·m²")
+    ] = None
+    speed_rad_s: Annotated[float, _num(gt=0, le=2e4, desc="design speed ω, rad/s")]
+    bearing: Annotated[
+        str, Field(min_length=1, max_length=40, description="bearing designation, e.g. 7000 CD")
+    ]
+    bearing_count: Annotated[int, Field(ge=2, le=8, description="bearings carrying the rotor")] = 2
+    ball_plane_to_cg_mm: Annotated[
+        float, _num(gt=0, le=1e4, desc="distance h from the ball plane to the centre of mass, mm")
+    ]
+    slew_rate_rad_s: Annotated[
+        float, _num(ge=0, le=100, desc="external angular velocity Ω of the housing, rad/s")
+    ]
+    axis_angle_deg: Annotated[
+        float, _num(ge=0, le=180, desc="angle α between H and Ω, degrees")
+    ] = 90.0
+    slew_angle_deg: Annotated[
+        float, _num(gt=0, le=36000, desc="angle the housing turns through in one slew, degrees")
+    ] = 90.0
+    run_up_time_s: Annotated[float, _num(gt=0, le=1e5, desc="required time to reach speed, s")]
+    rolling_friction_mm: Annotated[
+        float, _num(gt=0, le=1, desc="rolling friction coefficient λ of eq. (4), mm")
+    ] = 0.028
+    contact_angle_deg: Annotated[
+        float | None,
+        _num(gt=0, le=60, desc="operating contact angle β under preload, degrees"),
+    ] = None
+    lubricant_viscosity_mm2_s: Annotated[
+        float, _num(gt=0, le=1e4, desc="oil viscosity at operating temperature, mm²/s")
+    ] = 10.0
+    required_life_h: Annotated[
+        float | None, _num(gt=0, le=1e7, desc="required basic rating life L10h, h")
+    ] = None
+    aero: Annotated[AeroReq, Field(description="the [rotor.aero] table: loss_W or cup geometry")]
+
+    @model_validator(mode="after")
+    def _momentum_or_inertia(self) -> "RotorReq":
+        if (self.angular_momentum_kgm2_s is None) == (self.inertia_kgm2 is None):
+            raise ValueError(
+                "rotor: give exactly one of angular_momentum_kgm2_s (H at speed) and "
+                "inertia_kgm2 (J); H = J·ω"
+            )
+        return self
+
+    @property
+    def inertia(self) -> float:
+        if self.inertia_kgm2 is not None:
+            return self.inertia_kgm2
+        return self.angular_momentum_kgm2_s / self.speed_rad_s
+
+    @property
+    def angular_momentum(self) -> float:
+        return self.inertia * self.speed_rad_s
+
+
+class SpinningRotorRequirements(_Strict):
+    """An idling high-speed rotor: bearing losses under the gyroscopic reaction and the drive
+    torque that brings it to speed in time."""
+
+    application: ApplicationReq
+    rotor: Annotated[
+        RotorReq,
+        Field(
+            description="the [rotor] table: mass_kg, speed_rad_s, bearing, "
+            "ball_plane_to_cg_mm, slew_rate_rad_s, run_up_time_s, [rotor.aero]"
+        ),
+    ]

@@ -1,0 +1,95 @@
+"""Report tables of the spinning-rotor drive (imported only on that path)."""
+
+from advisor.report import _Out
+
+
+class PairOut(_Out):
+    without_reaction: float
+    with_reaction: float
+
+
+class FrictionTermsOut(_Out):
+    radial_Nm: float
+    axial_Nm: float
+    centrifugal_Nm: float
+
+
+class FrictionPartsOut(_Out):
+    without_reaction: FrictionTermsOut
+    with_reaction: FrictionTermsOut
+
+
+class LoadsOut(_Out):
+    radial_N: float
+    axial_N: float
+    centrifugal_per_ball_N: float
+
+
+class BearingOut(_Out):
+    designation: str
+    type: str
+    d_mm: float
+    D_mm: float
+    B_mm: float
+    contact_angle_deg: float
+    ball_count: int
+    ball_diameter_mm: float
+    pitch_diameter_mm: float
+    C_kN: float
+    C0_kN: float
+    limiting_speed_rpm: float
+    speed_rpm: float
+    loads_without_reaction: LoadsOut
+    loads_with_reaction: LoadsOut
+    equivalent_load_N: float
+    factor_X: float
+    factor_Y: float
+    static_safety: float
+    source: list[str]
+    estimated: list[str]
+
+
+class CurveOut(_Out):
+    time_s: list[float]
+    speed_rad_s: list[float]
+
+
+class SlewOut(_Out):
+    drive_torque_Nm: float
+    duration_s: float
+    speed_after_slew_rad_s: float
+    speed_drop_pct: float
+    balance_speed_rad_s: float
+    curve: CurveOut
+
+
+class RotorOut(_Out):
+    inertia_kgm2: float
+    angular_momentum_kgm2_s: float
+    speed_rad_s: float
+    speed_rpm: float
+    gyroscopic_moment_Nm: float
+    reaction_axial_N: float
+    reaction_radial_N: float
+    preload_N: float
+    preload_without_reaction_N: float
+    bearing_friction_Nm: PairOut
+    bearing_friction_terms: FrictionPartsOut
+    bearing_loss_W: PairOut
+    skf_friction_Nm: PairOut
+    aero_loss_W: float
+    aero_torque_Nm: float
+    steady_torque_Nm: PairOut
+    steady_power_W: PairOut
+    run_up_torque_Nm: float
+    required_torque_Nm: float
+    run_up_time_s: float
+    run_up_time_at_steady_torque_s: float
+    bearing_life_h: float
+    bearing: BearingOut
+    slew: SlewOut
+    run_up: CurveOut
+
+
+class RotorDesignOut(_Out):
+    rotor: RotorOut
