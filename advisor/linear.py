@@ -136,6 +136,31 @@ def _material(
     )
 
 
+def _one_way(req, trace: Trace, ev, thread: str, friction_low: float):
+    """Seed 004 for a screw drive: no device when the screw holds with margin, otherwise one
+    at the motor side carrying the screw torque."""
+    from advisor.one_way import choose_device
+    from advisor.report import OneWayOut
+    from rules import one_way as ow_rules
+
+    holds = trace.apply(ow_rules.screw_holds, ev.self_locking_at_low_friction, thread, friction_low)
+    if holds:
+        return OneWayOut.make(
+            type="none",
+            location="none",
+            torque_Nm=ev.torque_Nm,
+            basis=f"{thread} is self-locking over the whole friction range of the pair",
+        ), []
+    power = ev.torque_Nm * ev.speed_rpm * math.pi / 30.0
+    device, _checks, warnings = choose_device(req.one_way, ev.torque_Nm, ev.torque_Nm, power, trace)
+    warnings.insert(
+        0,
+        f"{thread} is not self-locking at the low end of the friction range (f = "
+        f"{friction_low:g}): a {device.type.replace('_', ' ')} at the motor side holds the load",
+    )
+    return device.model_copy(update={"output_side": None}), warnings
+
+
 def advise_linear(
     req: Requirements, cat: Catalogs, trace: Trace
 ) -> tuple[LinearDesignOut, list[Check], list[str]]:
@@ -218,11 +243,10 @@ def advise_linear(
         )
 
     warnings: list[str] = []
-    if req.application.hold_without_power and not ev.self_locking_at_low_friction:
-        warnings.append(
-            f"{chosen} is not self-locking at the low end of the friction range "
-            f"(f = {material.friction_low:g}); holding without power needs a one-way device."
-        )
+    one_way = None
+    if req.application.hold_without_power:
+        one_way, dev_warnings = _one_way(req, trace, ev, chosen, material.friction_low)
+        warnings += dev_warnings
     if s.friction_model == "paper":
         warnings.append(
             "friction_model = 'paper' uses seed 001's f/cos(ψ/2); the standard f/cos(α/2) "
@@ -232,6 +256,7 @@ def advise_linear(
     design = LinearDesignOut.make(
         screw=_screw_out(ev, req, material, f_range, advisor_choice),
         motor=_motor_out(plan, ev, cat, freq),
+        one_way=one_way,
     )
     sel = plan.evaluations[plan.selected.rated_power_kW]
     assert sel is not None

@@ -102,6 +102,20 @@ class ScrewReq(_Strict):
         return f"Tr{float(m.group(1)):g}x{float(m.group(2)):g}"
 
 
+class OneWayReq(_Strict):
+    """The holding device of a drive with ``hold_without_power`` (seed 004)."""
+
+    type: Annotated[
+        Literal["auto", "roller_clutch", "em_clutch", "worm", "inverse_gear"],
+        Field(description="one-way device type"),
+    ] = "auto"
+    rollers: Annotated[int, Field(ge=3, le=12, description="rollers of a roller clutch")] = 6
+    priority: Annotated[
+        Literal["mass", "inertia", "power"],
+        Field(description="what the automatic choice minimises"),
+    ] = "mass"
+
+
 class LinearRequirements(_Strict):
     """A linear actuator: induction motor + sliding screw–nut (seed 001)."""
 
@@ -112,6 +126,7 @@ class LinearRequirements(_Strict):
     ]
     motor: Annotated[InductionMotorReq, Field(description="the [motor] table: kind = 'induction'")]
     screw: ScrewReq = ScrewReq()
+    one_way: OneWayReq = OneWayReq()
 
 
 class _Head(BaseModel):

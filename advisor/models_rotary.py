@@ -7,7 +7,7 @@ from typing import Annotated, Literal
 
 from pydantic import Field, model_validator
 
-from advisor.models import ApplicationReq, _num, _Strict
+from advisor.models import ApplicationReq, OneWayReq, _num, _Strict
 
 
 class RotaryReq(_Strict):
@@ -85,6 +85,7 @@ class RotaryRequirements(_Strict):
     envelope: EnvelopeReq = EnvelopeReq()
     motor: Annotated[BldcMotorReq, Field(description="the [motor] table: kind = 'bldc'")]
     gearbox: GearboxReq = GearboxReq()
+    one_way: OneWayReq = OneWayReq()
 
     @model_validator(mode="after")
     def _reducer_reduces(self) -> "RotaryRequirements":

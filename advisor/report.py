@@ -168,6 +168,7 @@ class InductionMotorOut(_Out):
 class LinearDesignOut(_Out):
     screw: ScrewOut
     motor: InductionMotorOut
+    one_way: "OneWayOut | None" = None
 
 
 class ReportHeader(_Out):
@@ -250,3 +251,32 @@ def write_atomic(path: Path, text: str) -> None:
         except FileNotFoundError:
             pass
         raise
+
+
+class DeviceOut(_Out):
+    type: str
+    location: str
+    torque_Nm: float
+    outer_diameter_mm: float
+    length_mm: float
+    mass_kg: float
+    inertia_kgm2: float
+    efficiency: float
+    power_W: float
+    basis: str
+
+
+class OneWayOut(_Out):
+    type: str
+    location: str
+    torque_Nm: float
+    outer_diameter_mm: float | None = None
+    length_mm: float | None = None
+    mass_kg: float | None = None
+    inertia_kgm2: float | None = None
+    efficiency: float | None = None
+    power_W: float | None = None
+    power_share: float | None = None
+    basis: str = ""
+    output_side: DeviceOut | None = None
+    alternatives: list[DeviceOut] = []

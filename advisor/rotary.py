@@ -226,7 +226,42 @@ def advise_rotary(req: Requirements, cat: Catalogs, trace: Trace):
         ),
         fig1=_fig1(params.k_rb),
     )
-    return RotaryDesignOut.make(motor=motor, gearbox=gearbox), checks, warnings
+    one_way = None
+    if req.application.hold_without_power:
+        one_way, dev_checks, dev_warnings = _one_way(
+            req, trace, design, motor_torque, speed, load, ref.current_A
+        )
+        checks += dev_checks
+        warnings += dev_warnings
+    return RotaryDesignOut.make(motor=motor, gearbox=gearbox, one_way=one_way), checks, warnings
+
+
+def _one_way(req, trace, design: rd.Reducer, motor_torque, speed, load, rated_current):
+    """Seed 004: the holding device at the motor side, and what it asks of the motor."""
+    from advisor.one_way import choose_device
+    from rules import one_way as ow_rules
+
+    at_motor = trace.apply(
+        ow_rules.placement, req.rotary.torque_Nm, design.total_ratio, design.efficiency
+    )
+    power = motor_torque * speed * math.pi / 30.0
+    device, checks, warnings = choose_device(
+        req.one_way, at_motor, req.rotary.torque_Nm, power, trace
+    )
+    if device.efficiency < 1.0:
+        with_device = load / device.efficiency
+        checks.append(
+            Check(
+                "motor_current_with_one_way",
+                "motor current with the one-way device's loss",
+                rated_current * with_device,
+                rated_current,
+                "A",
+                1.0 / with_device,
+                ow_rules.SEED_004,
+            )
+        )
+    return device, checks, warnings
 
 
 def _fits(r: rd.Reducer, env) -> bool:

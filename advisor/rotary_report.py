@@ -1,6 +1,6 @@
 """Report tables of the rotary application (imported only on the rotary path)."""
 
-from advisor.report import _Out
+from advisor.report import OneWayOut, _Out
 
 
 class LossesOut(_Out):
@@ -109,3 +109,4 @@ class GearboxOut(GearboxSummaryOut):
 class RotaryDesignOut(_Out):
     motor: BldcMotorOut
     gearbox: GearboxOut
+    one_way: OneWayOut | None = None

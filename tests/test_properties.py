@@ -78,7 +78,7 @@ def test_design_or_clear_infeasibility(data):
 def rotary_requirements(draw):
     speeds = draw(st.lists(st.floats(500.0, 30000.0, **finite), min_size=1, max_size=4))
     req = {
-        "application": {"kind": "rotary"},
+        "application": {"kind": "rotary", "hold_without_power": draw(st.booleans())},
         "rotary": {
             "torque_Nm": draw(st.floats(1.0, 20000.0, **finite)),
             "speed_rpm": draw(st.floats(0.2, 400.0, **finite)),
@@ -96,6 +96,12 @@ def rotary_requirements(draw):
         env["max_length_mm"] = draw(st.floats(20.0, 600.0, **finite))
     if env:
         req["envelope"] = env
+    if draw(st.booleans()):
+        req["one_way"] = {
+            "type": draw(st.sampled_from(["auto", "roller_clutch", "em_clutch"])),
+            "rollers": draw(st.integers(3, 12)),
+            "priority": draw(st.sampled_from(["mass", "inertia", "power"])),
+        }
     return req
 
 
@@ -126,6 +132,14 @@ def test_rotary_design_or_clear_infeasibility(data):
     assert m.losses_W.total == pytest.approx(
         min(c.losses_W.total for c in m.candidates if c.within_rating)
     )
+    ow = rep.design.one_way
+    assert (ow is not None) == data["application"]["hold_without_power"]
+    if ow is not None:  # at the motor side, carrying M_out/(q·η); smaller than at the output
+        out = data["rotary"]["torque_Nm"]
+        assert ow.torque_Nm == pytest.approx(out / (g.total_ratio * g.efficiency), rel=1e-9)
+        assert ow.outer_diameter_mm > 0 and ow.mass_kg > 0 and ow.inertia_kgm2 > 0
+        if ow.output_side is not None:
+            assert ow.output_side.mass_kg >= ow.mass_kg
 
 
 @st.composite

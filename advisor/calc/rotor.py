@@ -7,6 +7,7 @@ Numbers of the seed's example (7000 CD pair, h = 10 mm) are reproduced in
 ``tests/test_golden_seed002.py``.
 """
 
+import itertools
 import math
 from typing import NamedTuple
 
@@ -258,54 +259,78 @@ def torque_for_run_up(rotor: Rotor, speed: float, time_s: float, slewing: bool =
     return resist + math.exp(x)
 
 
+def _segment_time(rotor: Rotor, drive_torque: float, w0: float, w1: float, slewing: bool) -> float:
+    """∫ J dω/(M − M_res(ω)) from w0 to w1 (eq. (5)); positive for a run-up (w1 > w0, M above
+    the resistance) and for a run-down (w1 < w0, M below it)."""
+    import warnings
+
+    from scipy.integrate import IntegrationWarning, quad
+
+    j = rotor.inertia_kgm2
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", IntegrationWarning)
+        value, _ = quad(
+            lambda w: j / (drive_torque - resisting_torque(rotor, w, slewing)), w0, w1, limit=200
+        )
+    return value
+
+
 def run_up_curve(
     rotor: Rotor, drive_torque: float, speed: float, points: int = 41
 ) -> tuple[list[float], list[float]]:
-    """Speed against time from rest to ``speed`` at a constant torque (solve_ivp of eq. (5))."""
-    import numpy as np
-    from scipy.integrate import solve_ivp
+    """Speed against time from rest to ``speed`` at a constant torque (eq. (5)).
 
-    def rhs(_t, y):
-        return [(drive_torque - resisting_torque(rotor, y[0], False)) / rotor.inertia_kgm2]
-
-    def reached(_t, y):
-        return y[0] - speed
-
-    reached.terminal = True
-    t_end = run_up_time(rotor, drive_torque, speed)
-    if not math.isfinite(t_end):
+    The equation is separable, so the curve is its exact solution t(ω) at ``points`` speeds,
+    integrated piece by piece; the last piece is :func:`run_up_time`'s (tests compare the
+    curve with solve_ivp's integration in time).
+    """
+    total = run_up_time(rotor, drive_torque, speed)
+    if not math.isfinite(total):
         raise ValueError("the drive torque does not exceed the resistance at the target speed")
-    sol = solve_ivp(
-        rhs,
-        (0.0, t_end * 1.05),
-        [0.0],
-        events=reached,
-        dense_output=True,
-        rtol=1e-8,
-        atol=1e-9 * speed,
-    )
-    stop = float(sol.t_events[0][0]) if sol.t_events[0].size else t_end
-    times = np.linspace(0.0, stop, points)
-    # the speed only rises while M > M_res; keep the interpolant's last-digit noise out
-    speeds = np.maximum.accumulate(np.clip(sol.sol(times)[0], 0.0, speed))
-    speeds[-1] = speed
-    return times.tolist(), speeds.tolist()
+    speeds = [speed * k / (points - 1) for k in range(points)]
+    times = [0.0]
+    for w0, w1 in itertools.pairwise(speeds[:-1]):
+        times.append(times[-1] + _segment_time(rotor, drive_torque, w0, w1, False))
+    times.append(max(total, times[-1]))
+    return times, speeds
 
 
 def slew_response(
-    rotor: Rotor, drive_torque: float, speed: float, duration_s: float, points: int = 41
-) -> tuple[list[float], list[float]]:
-    """Speed under a sustained slew from ``speed`` with the drive at ``drive_torque`` (its
-    limit, the stabiliser saturated): eq. (5) with the gyroscopic term, H = J·ω falling with ω."""
-    import numpy as np
-    from scipy.integrate import solve_ivp
+    rotor: Rotor, drive_torque: float, speed: float, points: int = 41
+) -> tuple[list[float], list[float], float]:
+    """Speed against time under a sustained slew from ``speed`` with the drive at its limit
+    ``drive_torque`` (the stabiliser saturated): eq. (5) with the gyroscopic term, H = J·ω
+    falling with ω. Returns the curve down to within 0.1 % of the speed where the rotor
+    settles, and that speed."""
+    settle = balance_speed(rotor, drive_torque, speed, True)
+    if speed - settle <= 1e-9 * speed:  # the slew costs nothing measurable
+        return [0.0], [speed], settle
+    drop = speed - settle
+    speeds = [speed - drop * (1.0 - 10.0 ** (-3.0 * k / (points - 1))) for k in range(points)]
+    times = [0.0]
+    for w0, w1 in itertools.pairwise(speeds):
+        times.append(times[-1] + _segment_time(rotor, drive_torque, w0, w1, True))
+    return times, speeds, settle
 
-    def rhs(_t, y):
-        return [(drive_torque - resisting_torque(rotor, y[0], True)) / rotor.inertia_kgm2]
 
-    times = np.linspace(0.0, duration_s, points)
-    sol = solve_ivp(rhs, (0.0, duration_s), [speed], t_eval=times, rtol=1e-8, atol=1e-9 * speed)
-    return sol.t.tolist(), np.minimum(sol.y[0], speed).tolist()
+def speed_after(
+    times: list[float], speeds: list[float], rotor: Rotor, drive_torque: float, duration_s: float
+) -> float:
+    """The speed a slew of ``duration_s`` leaves, from the curve of :func:`slew_response`."""
+    from scipy.optimize import brentq
+
+    if duration_s <= 0.0 or len(times) == 1:
+        return speeds[0]
+    if duration_s >= times[-1]:
+        return speeds[-1]
+    k = next(i for i, t in enumerate(times) if t >= duration_s)
+    w_hi, t_hi = speeds[k - 1], times[k - 1]
+    return brentq(
+        lambda w: t_hi + _segment_time(rotor, drive_torque, w_hi, w, True) - duration_s,
+        speeds[k],
+        w_hi,
+        xtol=1e-12 * speeds[0],
+    )
 
 
 def balance_speed(rotor: Rotor, drive_torque: float, speed: float, slewing: bool) -> float:

@@ -1,0 +1,284 @@
+"""One-way (irreversible) mechanisms that hold a load with the motor off (seed 004).
+
+Each function sizes one device for a torque M (N·m) at its shaft and returns its outer
+diameter, length, mass, moment of inertia (about its own shaft), efficiency while driving and
+electrical power drawn while driving. SI inside; millimetres only where the seed's formulas
+are written in them (they say so).
+"""
+
+import math
+from typing import NamedTuple
+
+STEEL_DENSITY = 7800.0  # kg/m³, seed 004
+COPPER_RESISTIVITY = 1.75e-8  # Ω·m at 20 °C
+MU0 = 4e-7 * math.pi
+
+
+class Device(NamedTuple):
+    type: str
+    torque_Nm: float
+    outer_diameter_mm: float
+    length_mm: float
+    mass_kg: float
+    inertia_kgm2: float
+    efficiency: float
+    power_W: float
+    basis: str  # what the figures rest on
+
+
+# ------------------------------------------------------------------ roller clutch
+ROLLER_FILL = 0.8  # k_з of the mass formula (seed 004)
+
+
+class RollerGeometry(NamedTuple):
+    roller_diameter_mm: float
+    outer_diameter_mm: float
+    length_mm: float
+    support_height_mm: float  # c of eq. (9)
+    star_radius_mm: float  # R of eq. (8)
+    star_mass_kg: float
+    roller_mass_kg: float
+    star_inertia_kgm2: float
+    roller_inertia_kgm2: float
+
+
+def roller_geometry(torque_Nm: float, rollers: int, wedge_angle_deg: float) -> RollerGeometry:
+    """Seed 004, eqs. (1)–(9): d_p = 0.583·∛(M/z) (M in N·mm, d in mm), D = 12·d_p,
+    L = 1.5·d_p, c = d_p·(7·cos α − 1)/2, R = c + d_p/2, star and roller masses by (6), (7),
+    their inertias by (4), (5).
+
+    >>> g = roller_geometry(2.0, 6, 8.0)
+    >>> round(g.roller_diameter_mm, 3), round(g.outer_diameter_mm, 2)
+    (4.042, 48.51)
+    """
+    dp = 0.583 * (torque_Nm * 1e3 / rollers) ** (1.0 / 3.0)
+    big_d, length = 12.0 * dp, 1.5 * dp
+    c = dp * (7.0 * math.cos(math.radians(wedge_angle_deg)) - 1.0) / 2.0
+    r_star = c + dp / 2.0
+    rho = STEEL_DENSITY
+    r_m, l_m, rp_m = r_star * 1e-3, length * 1e-3, dp / 2.0 * 1e-3
+    m_star = rho * math.pi * r_m**2 * l_m  # (6)
+    m_roll = rho * math.pi * rp_m**2 * l_m  # (7)
+    return RollerGeometry(
+        dp,
+        big_d,
+        length,
+        c,
+        r_star,
+        m_star,
+        m_roll,
+        m_star * r_m**2 / 2.0,  # (4)
+        m_roll * r_m**2,  # (5)
+    )
+
+
+def roller_clutch(torque_Nm: float, rollers: int = 6, wedge_angle_deg: float = 8.0) -> Device:
+    """Roller irreversible clutch from its geometry (seed 004, eqs. (1)–(9)); the mass is
+    π·D²/4·L·ρ·k_з, the inertia J_star + z·J_roller of eq. (3). It transmits the torque
+    without slip and draws no power."""
+    g = roller_geometry(torque_Nm, rollers, wedge_angle_deg)
+    d_m, l_m = g.outer_diameter_mm * 1e-3, g.length_mm * 1e-3
+    mass = math.pi * d_m**2 / 4.0 * l_m * STEEL_DENSITY * ROLLER_FILL
+    return Device(
+        "roller_clutch",
+        torque_Nm,
+        g.outer_diameter_mm,
+        g.length_mm,
+        mass,
+        g.star_inertia_kgm2 + rollers * g.roller_inertia_kgm2,
+        1.0,
+        0.0,
+        f"seed 004 eqs. (1)–(9), {rollers} rollers, wedging angle {wedge_angle_deg:g}°",
+    )
+
+
+def roller_collapsed_inertia(torque_Nm: float, rollers: int) -> tuple[float, float]:
+    """The paper's collapsed coefficients (12), (13): J_star = 0.95·ρπ·(M/z)^(5/3),
+    J_roller = 15.63·ρπ·(M/z)^(5/3) with M in N·mm, lengths in mm, ρ in kg/mm³ → kg·mm².
+    Returned in kg·m². Kept only as a cross-check: they do not follow from (4)–(9)."""
+    k = STEEL_DENSITY * 1e-9 * math.pi * (torque_Nm * 1e3 / rollers) ** (5.0 / 3.0) * 1e-6
+    return 0.95 * k, 15.63 * k
+
+
+# ------------------------------------------------------------------ electromagnetic clutch
+class EmClutchDesign(NamedTuple):
+    """Proportions of an electromagnetic friction clutch (assumptions, stated in the report)."""
+
+    current_density_A_mm2: float = 3.0
+    air_gap_mm: float = 0.3  # δ, both gaps together
+    friction: float = 0.3  # f_тр of dry friction surfaces
+    reserve: float = 1.5  # k_з, torque reserve
+    saturation_T: float = 1.2  # flux density the pole area is sized to
+    diameters_mm: tuple[float, ...] = (80.0, 100.0, 120.0, 140.0)  # the seed's fig. 9 range
+    friction_radius_share: float = 0.35  # mean friction/coil radius as a share of D
+    friction_surfaces: int = 2  # the armature clamped between two faces
+    pole_area_share: float = 0.25  # pole area as a share of π·D²/4
+    length_share: float = 0.4  # axial length as a share of D
+    fill: float = 0.6  # steel and copper fill of the envelope
+    armature_share: float = 0.06  # armature disc thickness as a share of D
+
+
+EM_CLUTCH = EmClutchDesign()
+
+
+def em_clutch_power(
+    torque_Nm: float, diameter_mm: float, p: EmClutchDesign = EM_CLUTCH
+) -> tuple[float, float]:
+    """Power drawn to transmit the torque, W, and the flux density in the poles, T.
+
+    Seed 004, eqs. (14)–(19): F = k_з·M/(f·r·n), Φ = √(2·F·μ0·S), Iw = Φ·δ/(μ0·S),
+    P = I²R = ρ·2πr·(Iw)·j → P = 2π·j·ρ·δ·√(2·k_з·M·r/(n·f·μ0·S)) (n friction surfaces; the
+    seed writes n = 1).
+    """
+    d = diameter_mm * 1e-3
+    r = p.friction_radius_share * d
+    s = p.pole_area_share * math.pi * d * d / 4.0
+    j = p.current_density_A_mm2 * 1e6
+    power = (
+        2.0
+        * math.pi
+        * j
+        * COPPER_RESISTIVITY
+        * p.air_gap_mm
+        * 1e-3
+        * math.sqrt(2.0 * p.reserve * torque_Nm * r / (p.friction_surfaces * p.friction * MU0 * s))
+    )
+    force = p.reserve * torque_Nm / (p.friction_surfaces * p.friction * r)
+    flux_density = math.sqrt(2.0 * force * MU0 / s)
+    return power, flux_density
+
+
+def em_clutch(torque_Nm: float, p: EmClutchDesign = EM_CLUTCH) -> Device | None:
+    """The smallest clutch of the seed's 80…140 mm range whose poles stay below saturation;
+    None when even the largest saturates."""
+    for dia in p.diameters_mm:
+        power, b = em_clutch_power(torque_Nm, dia, p)
+        if b <= p.saturation_T:
+            d = dia * 1e-3
+            length = p.length_share * d
+            mass = math.pi * d * d / 4.0 * length * STEEL_DENSITY * p.fill
+            disc = math.pi * d * d / 4.0 * p.armature_share * d * STEEL_DENSITY
+            return Device(
+                "em_clutch",
+                torque_Nm,
+                dia,
+                length * 1e3,
+                mass,
+                disc * d * d / 8.0,  # the armature disc turns with the shaft
+                1.0,
+                power,
+                f"seed 004 eqs. (14)–(19), D = {dia:g} mm, j = {p.current_density_A_mm2:g} "
+                f"A/mm², δ = {p.air_gap_mm:g} mm, f = {p.friction:g}, k_з = {p.reserve:g}, "
+                f"B = {b:.2f} T; mass and inertia from assumed proportions",
+            )
+    return None
+
+
+# ------------------------------------------------------------------ self-locking worm
+def worm_efficiency(lead_angle_rad: float, friction_angle_rad: float) -> tuple[float, float]:
+    """Driving and back-driven efficiency: tan γ/tan(γ + φ) and tan(γ − φ)/tan γ (seed 004).
+    A back-driven efficiency ≤ 0 means the pair is self-locking.
+
+    >>> phi = math.atan(0.1)
+    >>> round(worm_efficiency(0.5 * phi, phi)[0], 3)
+    0.331
+    """
+    g, f = lead_angle_rad, friction_angle_rad
+    return math.tan(g) / math.tan(g + f), math.tan(g - f) / math.tan(g)
+
+
+class WormDesign(NamedTuple):
+    ratio: float = 40.0  # the seed: best efficiency with self-locking up to q = 40 per stage
+    friction: float = 0.1  # reduced friction coefficient, steel worm on bronze wheel
+    lead_share: float = 0.5  # γ = 0.5·φ, the aviation margin of the seed
+    allowable_contact_MPa: float = 200.0  # tin bronze wheel
+    load_factor: float = 1.2
+
+
+WORM = WormDesign()
+
+
+def worm(torque_Nm: float, p: WormDesign = WORM) -> Device:
+    """A single-start self-locking worm pair taking ``torque_Nm`` on the worm shaft.
+
+    Efficiency by seed 004; size by the textbook centre distance for worm gears
+    (Chernavsky et al., ref. [4] of the seed): a = (z2/q0 + 1)·∛((170/((z2/q0)·[σ_H]))²·T2·K)
+    in mm with T2 in N·mm and [σ_H] in MPa, q0 = 1/tan γ the diameter factor of a single-start worm.
+    """
+    phi = math.atan(p.friction)
+    gamma = p.lead_share * phi
+    eta, _ = worm_efficiency(gamma, phi)
+    q0 = 1.0 / math.tan(gamma)
+    z2 = p.ratio
+    t2 = torque_Nm * p.ratio * eta * 1e3
+    a = (z2 / q0 + 1.0) * (
+        (170.0 / (z2 / q0 * p.allowable_contact_MPa)) ** 2 * t2 * p.load_factor
+    ) ** (1.0 / 3.0)
+    m = 2.0 * a / (z2 + q0)
+    d2, da2 = m * z2, m * (z2 + 2.0)
+    d1 = m * q0
+    b2 = 0.75 * (d1 + 2.0 * m)
+    l1 = (11.0 + 0.06 * z2) * m
+    rho = STEEL_DENSITY
+    m_wheel = rho * math.pi * (d2 * 1e-3) ** 2 / 4.0 * b2 * 1e-3
+    m_worm = rho * math.pi * (d1 * 1e-3) ** 2 / 4.0 * l1 * 1e-3
+    j_wheel = m_wheel * (d2 * 1e-3) ** 2 / 8.0
+    j_worm = m_worm * (d1 * 1e-3) ** 2 / 8.0
+    return Device(
+        "worm",
+        torque_Nm,
+        da2,
+        b2 + d1 + 2.0 * m,
+        m_wheel + m_worm,
+        j_worm + j_wheel / z2**2,
+        eta,
+        0.0,
+        f"single start, q = {z2:g}, f = {p.friction:g}, γ = {math.degrees(gamma):.2f}° = "
+        f"{p.lead_share:g}·φ, q0 = {q0:.1f}, a = {a:.1f} mm, m = {m:.2f} mm",
+    )
+
+
+# ------------------------------------------------------------------ inverse-profile gear
+class InverseGearDesign(NamedTuple):
+    teeth: int = 20
+    yield_MPa: float = 400.0  # σ_t of the seed
+    width_modules: float = 10.0  # b = (8…15)·m
+    pair_efficiency: float = 0.45  # a self-braking pair drives with η < 0.5 (estimate)
+
+
+INVERSE_GEAR = InverseGearDesign()
+
+
+def inverse_gear(torque_Nm: float, p: InverseGearDesign = INVERSE_GEAR) -> Device:
+    """Cylindrical gear with a braking (inverse) profile, seed 004: m = ∛(M/(σ_t·z)) (M in
+    N·mm, σ in MPa → m in mm), d = m·z, b = (8…15)·m, mass π·d²/4·b·ρ, J = m_k·d²/8."""
+    module = (torque_Nm * 1e3 / (p.yield_MPa * p.teeth)) ** (1.0 / 3.0)
+    d = module * p.teeth
+    b = p.width_modules * module
+    mass = math.pi * (d * 1e-3) ** 2 / 4.0 * b * 1e-3 * STEEL_DENSITY
+    return Device(
+        "inverse_gear",
+        torque_Nm,
+        d,
+        b,
+        mass,
+        mass * (d * 1e-3) ** 2 / 8.0,
+        p.pair_efficiency,
+        0.0,
+        f"z = {p.teeth}, σ_t = {p.yield_MPa:g} MPa, b = {p.width_modules:g}·m, m = {module:.2f} "
+        f"mm; forward efficiency {p.pair_efficiency:g} estimated (below 0.5 when self-braking)",
+    )
+
+
+def size(kind: str, torque_Nm: float, rollers: int = 6) -> Device | None:
+    """One device of the given type for a torque."""
+    if kind == "roller_clutch":
+        return roller_clutch(torque_Nm, rollers)
+    if kind == "em_clutch":
+        return em_clutch(torque_Nm)
+    if kind == "worm":
+        return worm(torque_Nm)
+    return inverse_gear(torque_Nm)
+
+
+TYPES = ("roller_clutch", "em_clutch", "worm", "inverse_gear")

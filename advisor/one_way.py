@@ -1,0 +1,83 @@
+"""The one-way (holding) device of a drive that must hold its load with the motor off
+(seed 004): chosen, sized at the motor side, compared with the same device at the output and
+with the other types. Orchestration only; shared by the linear and rotary pipelines."""
+
+from advisor.calc import one_way as ow
+from advisor.calc.sizing import Check
+from advisor.report import DeviceOut, OneWayOut
+from advisor.rulebook import Trace
+from rules import one_way as rules
+
+
+def _out(d: ow.Device, location: str) -> DeviceOut:
+    return DeviceOut.make(location=location, **d._asdict())
+
+
+def _sized(torque_Nm: float, rollers: int) -> dict[str, ow.Device]:
+    out = {}
+    for kind in ow.TYPES:
+        d = ow.size(kind, torque_Nm, rollers)
+        if d is not None:
+            out[kind] = d
+    return out
+
+
+def choose_device(
+    req_one_way,
+    motor_torque_Nm: float,
+    output_torque_Nm: float,
+    motor_power_W: float,
+    trace: Trace,
+) -> tuple[OneWayOut, list[Check], list[str]]:
+    """Size every type at the motor-side torque, pick one by OW-02, and show it at the output."""
+    options = _sized(motor_torque_Nm, req_one_way.rollers)
+    chosen = trace.apply(
+        rules.device_type,
+        req_one_way.type,
+        req_one_way.priority,
+        {k: d._asdict() for k, d in options.items()},
+    )
+    warnings: list[str] = []
+    checks: list[Check] = []
+    if chosen not in options:  # only the electromagnetic clutch can fail to exist
+        raise_for = ow.EM_CLUTCH
+        return _impossible(chosen, motor_torque_Nm, raise_for)
+    d = options[chosen]
+    at_output = ow.size(chosen, output_torque_Nm, req_one_way.rollers)
+    if d.efficiency < 0.5:
+        warnings.append(
+            f"the {rules.NAMES[chosen]} drives with η = {d.efficiency:.2f}: the motor must give "
+            f"{1 / d.efficiency:.2f}× the torque, and seed 004 judges such devices not rational "
+            "in a new drive"
+        )
+    share = d.power_W / motor_power_W if motor_power_W > 0 else 0.0
+    out = OneWayOut.make(
+        type=chosen,
+        location="motor side",
+        torque_Nm=motor_torque_Nm,
+        outer_diameter_mm=d.outer_diameter_mm,
+        length_mm=d.length_mm,
+        mass_kg=d.mass_kg,
+        inertia_kgm2=d.inertia_kgm2,
+        efficiency=d.efficiency,
+        power_W=d.power_W,
+        power_share=share,
+        basis=d.basis,
+        output_side=None if at_output is None else _out(at_output, "output side"),
+        alternatives=[_out(x, "motor side") for k, x in options.items() if k != chosen],
+    )
+    return out, checks, warnings
+
+
+def _impossible(kind: str, torque: float, p: ow.EmClutchDesign):
+    from advisor.errors import InfeasibleError
+
+    _, b = ow.em_clutch_power(torque, max(p.diameters_mm), p)
+    raise InfeasibleError(
+        f"no feasible design: no {rules.NAMES[kind]} of the seed's range carries the torque",
+        [
+            f"{torque:.4g} N·m at the motor side needs {b:.2f} T in the poles of a "
+            f"{max(p.diameters_mm):g} mm clutch (limit {p.saturation_T:g} T)",
+            "choose one_way.type = 'roller_clutch' or 'auto'",
+        ],
+    )

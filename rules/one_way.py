@@ -1,0 +1,73 @@
+"""Rules of the one-way (holding) device (seed 004)."""
+
+from advisor.rulebook import Finding, rule
+
+SEED_004 = "004_ce1464ec9bc33bf8.txt"
+
+NAMES = {
+    "roller_clutch": "roller irreversible clutch",
+    "em_clutch": "electromagnetic clutch",
+    "worm": "self-locking worm",
+    "inverse_gear": "gear with braking (inverse) profile",
+}
+
+
+@rule("OW-01", "Place of the one-way device", SEED_004)
+def placement(output_torque_Nm: float, ratio: float, efficiency: float) -> Finding[float]:
+    at_motor = output_torque_Nm / (ratio * efficiency)
+    return Finding(
+        at_motor,
+        f"Between the motor and the first stage, where it carries M_out/(q·η) = "
+        f"{output_torque_Nm:.4g}/({ratio:.4g}·{efficiency:.3g}) = {at_motor:.4g} N·m.",
+        "Seed 004, conclusions 4 and 6: every one-way device grows with the torque it holds, "
+        "so it goes where the torque is least — at the motor, before the first stage. The "
+        "report shows the same device at the output side for comparison.",
+    )
+
+
+@rule("OW-02", "Type of the one-way device", SEED_004)
+def device_type(asked: str, priority: str, options: dict[str, dict]) -> Finding[str]:
+    """``options``: type → {mass_kg, inertia_kgm2, efficiency, power_W} of each device that
+    can be built for the torque."""
+    if asked != "auto":
+        return Finding(
+            asked,
+            f"{NAMES[asked]}, as asked.",
+            "The requirement names the type; the alternatives are shown beside it.",
+        )
+    clutches = {k: v for k, v in options.items() if k in ("roller_clutch", "em_clutch")}
+    key = {"mass": "mass_kg", "inertia": "inertia_kgm2", "power": "power_W"}[priority]
+    best = min(clutches, key=lambda k: (clutches[k][key], clutches[k]["mass_kg"]))
+    table = "; ".join(
+        f"{NAMES[k]}: {v['mass_kg']:.3g} kg, {v['inertia_kgm2']:.3g} kg·m², "
+        f"η {v['efficiency']:.2f}, {v['power_W']:.3g} W"
+        for k, v in options.items()
+    )
+    return Finding(
+        best,
+        f"{NAMES[best]} (least {priority.replace('_', ' ')} of the clutches).",
+        "Seed 004: self-locking gears (worm, spiroid, braking profile) drive with η < 0.5 "
+        "when self-locking, so they are not rational in a new drive; the roller clutch (no "
+        "power, no loss) and the electromagnetic clutch (a few watts, least inertia at the "
+        "larger torques) remain, and the one best on the stated priority is taken. "
+        f"Sized for this torque: {table}.",
+        {"priority": priority},
+    )
+
+
+@rule("OW-03", "Holding of a screw drive", SEED_004)
+def screw_holds(self_locking_with_margin: bool, thread: str, friction_low: float) -> Finding[bool]:
+    if self_locking_with_margin:
+        return Finding(
+            True,
+            f"No device: {thread} is self-locking even at the low end of the friction range "
+            f"(f = {friction_low:g}).",
+            "A sliding screw whose lead angle stays below the friction angle over the material "
+            "pair's whole friction range holds the load itself (seeds 001, 004).",
+        )
+    return Finding(
+        False,
+        f"A device at the motor side: {thread} is not self-locking at f = {friction_low:g}.",
+        "The screw could be back-driven by the load when the friction is low; a one-way "
+        "device at the motor side holds it (seed 004's placement rule).",
+    )
