@@ -26,7 +26,12 @@ def build_parser() -> argparse.ArgumentParser:
         description="Rules-based design advisor for electromechanical drives.",
         epilog="Exit codes: 0 design found, 2 invalid input, 3 no feasible design.",
     )
-    p.add_argument("requirements", nargs="?", type=Path, help=argparse.SUPPRESS)
+    p.add_argument(
+        "requirements",
+        nargs="?",
+        type=Path,
+        help="open the terminal wizard prefilled from this requirement file",
+    )
     p.add_argument(
         "--batch",
         metavar="REQ.toml",
@@ -119,6 +124,20 @@ def run_many(inputs: list[Path], out_dir: Path, catalog_dir: Path | None, jobs: 
     return worst
 
 
+def run_wizard(path: Path | None, catalog_dir: Path | None) -> int:
+    """``advisor`` / ``advisor REQ.toml``: the terminal wizard (textual is imported here only)."""
+    if path is not None and not path.is_file():
+        _err(f"{path}: no such file" if not path.exists() else f"{path}: not a file")
+        return ExitCode.INVALID_INPUT
+    from advisor.tui.app import run
+
+    try:
+        return run(path, catalog_dir)
+    except AdvisorError as exc:
+        _err(str(exc))
+        return exc.exit_code
+
+
 def main(argv: list[str] | None = None) -> int:
     parser = build_parser()
     try:
@@ -127,11 +146,7 @@ def main(argv: list[str] | None = None) -> int:
         return int(exc.code or 0)
     inputs = args.batch
     if inputs is None:
-        _err(
-            "the terminal wizard is not part of this version yet; "
-            "run `advisor --batch REQ.toml` (see `advisor --help`)"
-        )
-        return ExitCode.INVALID_INPUT
+        return run_wizard(args.requirements, args.catalog_dir)
     if args.jobs < 1:
         _err(f"-j/--jobs = {args.jobs}: must be at least 1")
         return ExitCode.INVALID_INPUT

@@ -1,0 +1,1 @@
+"""The terminal wizard (textual); imported only when the wizard runs."""

@@ -1,0 +1,188 @@
+"""The terminal wizard driven as a user would, through textual's Pilot: typing the seed 001
+values, loading every example and exporting its report, invalid input, the draft, a crash in
+a calculation, and replacing an existing file."""
+
+import subprocess
+import sys
+import tomllib
+
+import pytest
+from helpers import EXAMPLES
+from textual.widgets import Input, Label, Static
+
+from advisor.engine import advise
+from advisor.models import read_requirements
+from advisor.report import to_toml
+from advisor.tui import draft as drafts
+from advisor.tui.app import ConfirmScreen, DriveAdvisorApp, ExportScreen
+
+SIZE = (120, 40)
+
+
+@pytest.fixture(autouse=True)
+def _state_dir(tmp_path, monkeypatch):
+    monkeypatch.setenv("XDG_STATE_HOME", str(tmp_path / "state"))
+    monkeypatch.chdir(tmp_path)
+
+
+def _text(widget) -> str:
+    """What a Static or Label shows, as plain text."""
+    from rich.console import Console
+
+    console = Console(width=200, record=True, file=open(__import__("os").devnull, "w"))
+    console.print(widget.content)
+    return console.export_text()
+
+
+async def _computed(app, pilot) -> None:
+    start = app.results_version
+    await pilot.press("ctrl+r")
+    for _ in range(400):
+        await pilot.pause(0.02)
+        if app.results_version > start:
+            return
+    raise AssertionError("no result")
+
+
+async def _type(pilot, app, widget_id: str, text: str) -> None:
+    box = app.query_one(f"#{widget_id}", Input)
+    box.focus()
+    box.value = ""
+    await pilot.press(*text)
+
+
+async def test_typing_the_seed_001_values_finds_tr16x2_at_1200_rpm():
+    app = DriveAdvisorApp(save_drafts=False, offer_draft=False)
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.click("#kind-linear")
+        await pilot.press("ctrl+n")
+        assert app.step == 1
+        await _type(pilot, app, "f-linear-force-N", "3500")
+        await _type(pilot, app, "f-linear-stroke-m", "0.2")
+        await _type(pilot, app, "f-linear-travel-time-s", "5")
+        await _type(pilot, app, "f-linear-support-span-m", "0.4")
+        await pilot.press("ctrl+n")
+        assert app.step == 2
+        await _type(pilot, app, "f-screw-thread", "Tr16x2")
+        await pilot.press("ctrl+n", "ctrl+n")
+        assert app.step == 4
+        await _computed(app, pilot)
+        summary = _text(app.query_one("#view-summary", Static))
+        comps = _text(app.query_one("#view-components", Static))
+        assert "Tr16x2" in summary and "1200 rpm" in comps
+
+
+@pytest.mark.parametrize("example", sorted(p.name for p in EXAMPLES.glob("*.toml")))
+async def test_each_example_exports_the_batch_report(example, tmp_path):
+    src = EXAMPLES / example
+    app = DriveAdvisorApp(tomllib.loads(src.read_text(encoding="utf-8")), src, save_drafts=False)
+    async with app.run_test(size=SIZE) as pilot:
+        await _computed(app, pilot)
+        await pilot.press("ctrl+s")
+        await pilot.pause()
+        assert isinstance(app.screen, ExportScreen)
+        target = tmp_path / "out.report.toml"
+        app.screen.query_one("#export-path", Input).value = str(target)
+        await pilot.click("#save-report")
+        await pilot.pause()
+        assert not isinstance(app.screen, ExportScreen)
+    assert target.read_text(encoding="utf-8") == to_toml(advise(read_requirements(src)))
+
+
+async def test_invalid_input_is_shown_inline_and_next_waits():
+    src = EXAMPLES / "linear_screw_actuator.toml"
+    app = DriveAdvisorApp(tomllib.loads(src.read_text(encoding="utf-8")), src, save_drafts=False)
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("ctrl+n")
+        await _type(pilot, app, "f-linear-force-N", "-3500")
+        await pilot.press("ctrl+n")
+        assert app.step == 1  # Next waited
+        err = _text(app.query_one("#f-linear-force-N-err", Label))
+        assert "must be > 0" in err
+        await _type(pilot, app, "f-linear-stroke-m", "abc")
+        assert "not a number" in _text(app.query_one("#f-linear-stroke-m-err", Label))
+        # Back keeps what was typed
+        await pilot.press("ctrl+b", "ctrl+n")
+        assert app.query_one("#f-linear-stroke-m", Input).value == "abc"
+
+
+async def test_every_change_is_saved_and_offered_back():
+    app = DriveAdvisorApp(offer_draft=False)
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.click("#kind-rotary")
+        await pilot.press("ctrl+n")
+        await _type(pilot, app, "f-rotary-torque-Nm", "750")
+    saved = drafts.load_draft()
+    assert saved["application"]["kind"] == "rotary" and saved["rotary"]["torque_Nm"] == 750
+    again = DriveAdvisorApp()
+    async with again.run_test(size=SIZE) as pilot:
+        await pilot.pause()
+        assert isinstance(again.screen, ConfirmScreen)
+        await pilot.press("y")
+        await pilot.pause()
+        await pilot.press("ctrl+n")
+        assert again.query_one("#f-rotary-torque-Nm", Input).value == "750"
+
+
+async def test_a_crash_in_a_calculation_keeps_the_app_and_the_input(monkeypatch):
+    import advisor.engine
+
+    def boom(*_a, **_k):
+        raise ZeroDivisionError("float division by zero")
+
+    monkeypatch.setattr(advisor.engine, "advise", boom)
+    src = EXAMPLES / "positioning_drive.toml"
+    doc = tomllib.loads(src.read_text(encoding="utf-8"))
+    app = DriveAdvisorApp(doc, src, save_drafts=False)
+    async with app.run_test(size=SIZE) as pilot:
+        await _computed(app, pilot)
+        assert "internal error" in _text(app.query_one("#review-error", Static))
+        assert app.doc == doc and app.is_running
+
+
+async def test_infeasible_design_is_explained():
+    src = EXAMPLES / "rudder_actuator.toml"
+    doc = tomllib.loads(src.read_text(encoding="utf-8"))
+    doc["envelope"] = {"max_outer_diameter_mm": 20.0}
+    app = DriveAdvisorApp(doc, src, save_drafts=False)
+    async with app.run_test(size=SIZE) as pilot:
+        await _computed(app, pilot)
+        text = _text(app.query_one("#view-summary", Static))
+        assert "No feasible design" in text and "envelope" in text
+
+
+async def test_existing_file_asks_before_it_is_replaced(tmp_path):
+    src = EXAMPLES / "linear_screw_actuator.toml"
+    target = tmp_path / "req.toml"
+    target.write_text("keep me", encoding="utf-8")
+    app = DriveAdvisorApp(tomllib.loads(src.read_text(encoding="utf-8")), src, save_drafts=False)
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("ctrl+s")
+        await pilot.pause()
+        app.screen.query_one("#export-path", Input).value = str(target)
+        await pilot.click("#save-requirements")
+        await pilot.pause()
+        assert isinstance(app.screen, ConfirmScreen)
+        await pilot.press("n")
+        await pilot.pause()
+        assert target.read_text(encoding="utf-8") == "keep me"
+        await pilot.click("#save-requirements")
+        await pilot.pause()
+        await pilot.press("y")
+        await pilot.pause()
+    assert tomllib.loads(target.read_text(encoding="utf-8")) == tomllib.loads(
+        src.read_text(encoding="utf-8")
+    )
+
+
+def test_batch_path_imports_no_textual_for_any_example():
+    for src in sorted(EXAMPLES.glob("*.toml")):
+        code = (
+            "import sys, io, contextlib\n"
+            "from advisor.cli import main\n"
+            "with contextlib.redirect_stdout(io.StringIO()):\n"
+            f"    assert main(['--batch', {str(src)!r}]) == 0\n"
+            "assert 'textual' not in sys.modules, src\n"
+        )
+        r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
+        assert r.returncode == 0, (src, r.stderr)
