@@ -411,8 +411,10 @@ class DriveAdvisorApp(App[None]):
         for f in F.fields_for(kind, step):
             w = self.query_one(f"#{f.id}")
             if isinstance(w, Input):
-                _, err = F.parse_text(f, w.value)
+                value, err = F.parse_text(f, w.value)
                 self.query_one(f"#{f.id}-err", Label).update(err or "")
+                if err is None:  # what is on screen is what is checked
+                    F.put(self.doc, f.path, value)
                 ok = ok and err is None
         step_msgs: list[str] = []
         for line in self._engine_errors():
