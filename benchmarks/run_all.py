@@ -17,6 +17,7 @@ from pathlib import Path
 
 import numpy as np
 from _results import ROOT, examples, save
+from tui_latency import tui_latency
 
 FLOOR = [sys.executable, "-c", "import numpy, scipy, pydantic, tomli_w"]
 ADVISOR = (
@@ -138,9 +139,11 @@ def table(res: dict) -> str:
             f"| many files, `{name}` | {r['files']} files | {r['median_s']:.2f} s, "
             f"{r['requirements_per_s']:.1f} requirements/s |"
         )
-    rows.append(
-        "| TUI recompute latency | — | not measured: the terminal wizard (issue 6) is not built |"
-    )
+    for name, r in res["tui_latency"].items():
+        rows.append(
+            f"| TUI recompute latency (edit, ctrl+r → results on screen, Pilot) | {name} | "
+            f"{r['median_ms']:.0f} ms (max {r['max_ms']:.0f} ms) |"
+        )
     return "\n".join(rows)
 
 
@@ -153,6 +156,7 @@ def main() -> None:
         "warm_advice": warm(20 if quick else 100),
         "sweep": sweep(5 if quick else 20),
         "many": many(1 if quick else 3, 20 if quick else 60),
+        "tui_latency": tui_latency(5 if quick else 15),
         "python": sys.version.split()[0],
         "date": time.strftime("%Y-%m-%d"),
     }
