@@ -322,9 +322,8 @@ class DriveAdvisorApp(App[None]):
             for i, n in enumerate(F.STEPS)
         )
         on_results = self.query_one("#main", ContentSwitcher).current == "results"
-        self.query_one("#steps", Static).update(
-            "[reverse] Results [/] — ctrl+e edit, ctrl+s export" if on_results else names
-        )
+        results = "[reverse] Results [/] — ← → views, ctrl+e edit inputs, ctrl+s export"
+        self.query_one("#steps", Static).update(results if on_results else names)
         self.query_one("#wizard", ContentSwitcher).current = f"step-{self.step}"
         if self.step == 4:
             self.query_one("#review-text", Static).update(self._review_text())
@@ -554,6 +553,7 @@ class DriveAdvisorApp(App[None]):
         self.query_one("#review-error", Static).update("")
         self.query_one("#main", ContentSwitcher).current = "results"
         self.query_one("#results", TabbedContent).active = "tab-summary"
+        self.query_one("#results Tabs").focus()  # ← → move between the result views
         self._show_step()
 
     def _plot(self, report) -> None:
