@@ -196,9 +196,16 @@ def test_unwritable_output_is_reported(tmp_path, capsys):
     assert "cannot write the report" in capsys.readouterr().err
 
 
-def test_no_arguments_explains(capsys):
-    assert main([]) == ExitCode.INVALID_INPUT
-    assert "--batch" in capsys.readouterr().err
+def test_no_arguments_open_the_wizard_and_a_missing_file_is_refused(monkeypatch, capsys):
+    import advisor.tui.app as tui
+
+    opened = []
+    monkeypatch.setattr(tui, "run", lambda path, catalog_dir: opened.append(path) or 0)
+    assert main([]) == 0 and opened == [None]
+    assert main([str(EXAMPLE)]) == 0 and opened[-1] == EXAMPLE
+    assert main(["nowhere.toml"]) == ExitCode.INVALID_INPUT
+    assert "nowhere.toml: no such file" in capsys.readouterr().err
+    assert len(opened) == 2  # the wizard was not opened for a missing file
 
 
 def test_unknown_option_is_a_usage_error(capsys):
