@@ -186,3 +186,20 @@ def test_batch_path_imports_no_textual_for_any_example():
         )
         r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
         assert r.returncode == 0, (src, r.stderr)
+
+
+def test_each_application_has_its_plots():
+    from advisor.tui import views
+
+    titles = {}
+    for src in sorted(EXAMPLES.glob("*.toml")):
+        rep = advise(read_requirements(src))
+        figs = views.plots(rep)
+        titles[src.stem] = [f.title for f in figs]
+        for f in figs:
+            assert f.series and all(len(xs) == len(ys) > 0 for _, xs, ys in f.series)
+    assert "M(n)" in titles["linear_screw_actuator"][0]
+    assert titles["rudder_actuator"][0] == "Motor losses against speed"
+    assert "fig. 1" in titles["rudder_actuator"][1]
+    assert titles["positioning_drive"] == ["Move time against ratio"]
+    assert titles["gyro_compensator"] == ["Run-up of the rotor"]

@@ -559,21 +559,25 @@ class DriveAdvisorApp(App[None]):
     def _plot(self, report) -> None:
         from textual_plotext import PlotextPlot
 
-        data = views.plot_data(report)
         box = self.query_one("#plot-box", VerticalScroll)
         box.remove_children()
-        plot = PlotextPlot()
-        plt = plot.plt
-        plt.title(data.title)
-        plt.xlabel(data.xlabel)
-        plt.ylabel(data.ylabel)
-        for label, xs, ys in data.series:
-            if len(xs) == 1:
-                plt.scatter(xs, ys, label=label)
-            else:
-                plt.plot(xs, ys, label=label)
-        box.mount(plot)
-        self.query_one("#plot-note", Static).update(data.title)
+        figures = views.plots(report)
+        for data in figures:
+            plot = PlotextPlot()
+            plt = plot.plt
+            plt.title(data.title)
+            plt.xlabel(data.xlabel)
+            plt.ylabel(data.ylabel)
+            for label, xs, ys in data.series:
+                if len(xs) == 1:
+                    plt.scatter(xs, ys, label=label)
+                else:
+                    plt.plot(xs, ys, label=label)
+            box.mount(plot)
+        self.query_one("#plot-note", Static).update(
+            " · ".join(d.title for d in figures)
+            + ("  (scroll for more)" if len(figures) > 1 else "")
+        )
 
 
 def run(path: Path | None, catalog_dir: Path | None) -> int:

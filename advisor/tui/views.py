@@ -192,6 +192,26 @@ class PlotData(NamedTuple):
     series: list[tuple[str, list[float], list[float]]]
 
 
+def plots(report) -> list[PlotData]:
+    """Every plot of an application: the main one, and for the rotary actuator the seed's
+    fig. 1 (reducer volume per unit torque against q for several row counts)."""
+    out = [plot_data(report)]
+    if report.report.application in ("rotary",):
+        fig = report.design.gearbox.fig1
+        out.append(
+            PlotData(
+                "Reducer stage volume per unit torque against q (seed 000, fig. 1)",
+                "stage ratio q",
+                "cm³ per N·m",
+                [
+                    (f"{n} rows", fig.q, vols)
+                    for n, vols in zip(fig.rows, fig.volume_per_torque_cm3_per_Nm, strict=True)
+                ],
+            )
+        )
+    return out
+
+
 def plot_data(report) -> PlotData:
     """What an engineer would rather look at than read, for each application."""
     d = report.design
