@@ -152,7 +152,7 @@ def _one_way(req, trace: Trace, ev, thread: str, friction_low: float):
             basis=f"{thread} is self-locking over the whole friction range of the pair",
         ), []
     power = ev.torque_Nm * ev.speed_rpm * math.pi / 30.0
-    device, _checks, warnings = choose_device(req.one_way, ev.torque_Nm, ev.torque_Nm, power, trace)
+    device, warnings = choose_device(req.one_way, ev.torque_Nm, ev.torque_Nm, power, trace)
     warnings.insert(
         0,
         f"{thread} is not self-locking at the low end of the friction range (f = "

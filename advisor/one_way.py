@@ -3,7 +3,6 @@
 with the other types. Orchestration only; shared by the linear and rotary pipelines."""
 
 from advisor.calc import one_way as ow
-from advisor.calc.sizing import Check
 from advisor.report import DeviceOut, OneWayOut
 from advisor.rulebook import Trace
 from rules import one_way as rules
@@ -28,7 +27,7 @@ def choose_device(
     output_torque_Nm: float,
     motor_power_W: float,
     trace: Trace,
-) -> tuple[OneWayOut, list[Check], list[str]]:
+) -> tuple[OneWayOut, list[str]]:
     """Size every type at the motor-side torque, pick one by OW-02, and show it at the output."""
     options = _sized(motor_torque_Nm, req_one_way.rollers)
     chosen = trace.apply(
@@ -38,10 +37,8 @@ def choose_device(
         {k: d._asdict() for k, d in options.items()},
     )
     warnings: list[str] = []
-    checks: list[Check] = []
     if chosen not in options:  # only the electromagnetic clutch can fail to exist
-        raise_for = ow.EM_CLUTCH
-        return _impossible(chosen, motor_torque_Nm, raise_for)
+        raise _em_clutch_impossible(motor_torque_Nm)
     d = options[chosen]
     at_output = ow.size(chosen, output_torque_Nm, req_one_way.rollers)
     if d.efficiency < 0.5:
@@ -66,15 +63,16 @@ def choose_device(
         output_side=None if at_output is None else _out(at_output, "output side"),
         alternatives=[_out(x, "motor side") for k, x in options.items() if k != chosen],
     )
-    return out, checks, warnings
+    return out, warnings
 
 
-def _impossible(kind: str, torque: float, p: ow.EmClutchDesign):
+def _em_clutch_impossible(torque: float):
     from advisor.errors import InfeasibleError
 
+    p = ow.EM_CLUTCH
     _, b = ow.em_clutch_power(torque, max(p.diameters_mm), p)
-    raise InfeasibleError(
-        f"no feasible design: no {rules.NAMES[kind]} of the seed's range carries the torque",
+    return InfeasibleError(
+        "no feasible design: no electromagnetic clutch of the seed's range carries the torque",
         [
             f"{torque:.4g} N·m at the motor side needs {b:.2f} T in the poles of a "
             f"{max(p.diameters_mm):g} mm clutch (limit {p.saturation_T:g} T)",

@@ -245,9 +245,8 @@ def _one_way(req, trace, design: rd.Reducer, motor_torque, speed, load, rated_cu
         ow_rules.placement, req.rotary.torque_Nm, design.total_ratio, design.efficiency
     )
     power = motor_torque * speed * math.pi / 30.0
-    device, checks, warnings = choose_device(
-        req.one_way, at_motor, req.rotary.torque_Nm, power, trace
-    )
+    device, warnings = choose_device(req.one_way, at_motor, req.rotary.torque_Nm, power, trace)
+    checks = []
     if device.efficiency < 1.0:
         with_device = load / device.efficiency
         checks.append(
