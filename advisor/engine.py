@@ -7,6 +7,7 @@ from pathlib import Path
 
 from advisor import __version__
 from advisor.errors import InfeasibleError
+from advisor.ignored import ignored
 from advisor.models import Requirements
 from advisor.report import CheckOut, DecisionOut, Report, ReportHeader
 from advisor.rulebook import Trace
@@ -63,7 +64,7 @@ def advise(req: Requirements, catalog_dir: Path | None = None) -> Report:
             )
             for c in checks
         ],
-        warnings=warnings,
+        warnings=[*ignored(req), *warnings],
         decisions=[
             DecisionOut.make(
                 id=d.id,

@@ -7,13 +7,18 @@ application kind needs must be present.
 
 import math
 import re
-import tomllib
 from pathlib import Path
 from typing import Annotated, Any, Literal
 
 from pydantic import BaseModel, ConfigDict, Field, ValidationError, field_validator, model_validator
 
 from advisor.errors import InputError
+from advisor.io_safety import read_toml, show
+
+#: At most this many unknown keys are listed (50,000 typos are not 50,000 lines) ...
+MAX_UNKNOWN_SHOWN = 3
+#: ... and at most this many problems in all, the last line saying how many more.
+MAX_PROBLEMS_SHOWN = 5
 
 
 class _Strict(BaseModel):
@@ -99,7 +104,13 @@ class ScrewReq(_Strict):
         m = THREAD_RE.match(v.strip())
         if not m:
             raise ValueError("must be a trapezoidal thread written like Tr16x2 (d x P in mm)")
-        return f"Tr{float(m.group(1)):g}x{float(m.group(2)):g}"
+        d, pitch = float(m.group(1)), float(m.group(2))
+        if round(d, 2) != d or round(pitch, 2) != pitch:  # GOST 24738 sizes: 2 decimals at most
+            raise ValueError(
+                "is not a GOST 24738 size: diameter and pitch are whole millimetres or "
+                "halves (Tr16x2, Tr10x1.5)"
+            )
+        return f"Tr{d:g}x{pitch:g}"
 
 
 class OneWayReq(_Strict):
@@ -235,7 +246,8 @@ def _where(loc: tuple[Any, ...]) -> str:
 
 def format_validation_error(exc: ValidationError, root: Any) -> list[str]:
     """One line per problem: the field, the value given and what is allowed."""
-    lines = []
+    lines: list[str] = []
+    unknown: list[str] = []
     for err in exc.errors():
         raw_loc = tuple(err["loc"])
         loc, info, holder = _walk(raw_loc, root)
@@ -247,8 +259,10 @@ def format_validation_error(exc: ValidationError, root: Any) -> list[str]:
             lines.append(f"{where}: missing; required{desc}")
             continue
         if typ == "extra_forbidden":
-            allowed = ", ".join(holder.model_fields) if holder is not None else ""
-            lines.append(f"{where}: unknown key; allowed keys here: {allowed}")
+            unknown.append(where)
+            if len(unknown) <= MAX_UNKNOWN_SHOWN:
+                allowed = ", ".join(holder.model_fields) if holder is not None else ""
+                lines.append(f"{show(where)}: unknown key; allowed keys here: {allowed}")
             continue
         value = err.get("input")
         shown = _show(value)
@@ -264,6 +278,11 @@ def format_validation_error(exc: ValidationError, root: Any) -> list[str]:
             lines.append(what)
         else:
             lines.append(f"{where} = {shown}: {what}{desc}")
+    if len(unknown) > MAX_UNKNOWN_SHOWN:
+        lines.append(f"… and {len(unknown) - MAX_UNKNOWN_SHOWN:,} more unknown keys")
+    if len(lines) > MAX_PROBLEMS_SHOWN:
+        more = len(lines) - MAX_PROBLEMS_SHOWN + 1
+        lines = [*lines[: MAX_PROBLEMS_SHOWN - 1], f"… and {more:,} more problems"]
     return lines
 
 
@@ -272,14 +291,22 @@ def _num_text(v: Any) -> str:
 
 
 def _show(value: Any) -> str:
+    """A value as echoed in a message: short, escaped, and never rounded onto a limit."""
     if isinstance(value, float):  # as typed where short, else compact (1e+12, not 1000000000000.0)
         r = repr(value)
-        return r if len(r) <= 10 or not math.isfinite(value) else format(value, ".6g")
+        if len(r) <= 10 or not math.isfinite(value):
+            return r
+        compact = format(value, ".6g")  # only if it is the same number (50.000000000001 ≠ 50)
+        return compact if float(compact) == value else r
     if isinstance(value, dict):
         return "{…}"
     if isinstance(value, bool):
         return "true" if value else "false"
-    return repr(value)
+    if isinstance(value, str):
+        return repr(show(value))
+    if isinstance(value, list) and len(value) > 8:
+        return show(repr(value[:8])[:-1] + f", … {len(value):,} items]")
+    return show(repr(value))
 
 
 def parse_requirements(data: dict[str, Any]) -> Requirements:
@@ -290,26 +317,20 @@ def parse_requirements(data: dict[str, Any]) -> Requirements:
     except ValidationError as exc:
         raise InputError(*format_validation_error(exc, _Head)) from None
     model = requirements_model(kind)
+    from advisor.ignored import contradictions
+
+    conflicts = contradictions(data)
     try:
-        return model.model_validate(data)
+        req = model.model_validate(data)
     except ValidationError as exc:
-        raise InputError(*format_validation_error(exc, model)) from None
+        raise InputError(*conflicts, *format_validation_error(exc, model)) from None
+    if conflicts:
+        raise InputError(*conflicts)
+    return req
 
 
 def read_requirements(path: Path) -> Requirements:
-    """Read and validate a requirement file; every failure is an :class:`InputError`."""
-    try:
-        raw = path.read_bytes()
-    except FileNotFoundError:
-        raise InputError(f"{path}: no such file") from None
-    except IsADirectoryError:
-        raise InputError(f"{path}: is a directory, expected a requirement file (.toml)") from None
-    except OSError as exc:
-        raise InputError(f"{path}: cannot be read ({exc.strerror})") from None
-    try:
-        data = tomllib.loads(raw.decode("utf-8"))
-    except UnicodeDecodeError:
-        raise InputError(f"{path}: not a UTF-8 text file") from None
-    except tomllib.TOMLDecodeError as exc:
-        raise InputError(f"{path}: broken TOML: {exc}") from None
-    return parse_requirements(data)
+    """Read and validate a requirement file; every failure is an :class:`InputError`
+    (reading itself is :func:`advisor.io_safety.read_toml`: regular files of at most 1 MiB,
+    no deep nesting)."""
+    return parse_requirements(read_toml(path))

@@ -4,7 +4,9 @@ from pathlib import Path
 
 from rich.console import Console
 from rich.table import Table
+from rich.text import Text
 
+from advisor.io_safety import plain
 from advisor.report import Report
 
 
@@ -13,32 +15,48 @@ def print_summary(report: Report, path: Path, console: Console | None = None) ->
     from advisor.many import headline
 
     d = report.design
-    console.print(f"[bold]Drive Advisor[/] — {report.report.title or report.report.application}")
-    console.print(f"report written to [cyan]{path}[/]  ({report.report.status})")
+    # user and catalog text (title, path, names, messages) is data: plain Text, never markup
+    console.print(
+        Text.assemble(
+            ("Drive Advisor", "bold"),
+            " — ",
+            plain(report.report.title or report.report.application),
+        )
+    )
+    console.print(
+        Text.assemble("report written to ", plain(path, "cyan"), f"  ({report.report.status})")
+    )
     t = Table(show_header=False, box=None, pad_edge=False)
     t.add_column(style="bold")
     t.add_column()
     if report.report.application != "linear":
-        t.add_row("design", headline(report))
+        t.add_row("design", plain(headline(report)))
     else:
         _linear_rows(t, d)
-    worst = min(report.checks, key=lambda c: c.margin)
-    t.add_row("lowest margin", f"{worst.name}: {worst.margin:.3f}")
+    if report.checks:
+        worst = min(report.checks, key=lambda c: c.margin)
+        t.add_row("lowest margin", plain(f"{worst.name}: {worst.margin:.3f}"))
+    else:
+        t.add_row("lowest margin", "no checks")
     console.print(t)
     for w in report.warnings:
-        console.print(f"[yellow]warning:[/] {w}")
+        console.print(Text.assemble(("warning:", "yellow"), " ", plain(w)))
 
 
 def _linear_rows(t: Table, d) -> None:
     s, m = d.screw, d.motor
     t.add_row(
         "screw",
-        f"{s.thread}{' (imposed)' if s.imposed else ''}, {s.speed_rpm:.0f} rpm, "
-        f"{s.torque_Nm:.3f} N·m ({s.friction_model}; standard {s.torque_standard_Nm:.3f}), "
-        f"η = {s.efficiency:.3f}, {'self-locking' if s.self_locking else 'not self-locking'}",
+        plain(
+            f"{s.thread}{' (imposed)' if s.imposed else ''}, {s.speed_rpm:.0f} rpm, "
+            f"{s.torque_Nm:.3f} N·m ({s.friction_model}; standard {s.torque_standard_Nm:.3f}), "
+            f"η = {s.efficiency:.3f}, {'self-locking' if s.self_locking else 'not self-locking'}"
+        ),
     )
     t.add_row(
         "motor",
-        f"{m.model}, {m.rated_power_kW:g} kW, {2 * m.pole_pairs} poles (p = {m.pole_pairs}), "
-        f"runs at {m.working_speed_rpm:.0f} rpm, stroke in {m.travel_time_s:.2f} s",
+        plain(
+            f"{m.model}, {m.rated_power_kW:g} kW, {2 * m.pole_pairs} poles (p = {m.pole_pairs}), "
+            f"runs at {m.working_speed_rpm:.0f} rpm, stroke in {m.travel_time_s:.2f} s"
+        ),
     )
