@@ -151,8 +151,9 @@ def run_batch(req_path: Path, output: Path | None, catalog_dir: Path | None) -> 
     try:
         print_summary(report, output)
         sys.stdout.flush()
-    except BrokenPipeError:
-        raise
+    except (BrokenPipeError, SystemExit):  # rich exits on a closed pipe: the reader left
+        _silence_stdout()
+        return ExitCode.OK
     except OSError as exc:
         return _stdout_failed(exc, f"the summary (the report was written to {show(output)})")
     return ExitCode.OK
@@ -184,10 +185,11 @@ def run_many(inputs: list[Path], out_dir: Path, catalog_dir: Path | None, jobs: 
     try:
         many.print_summary(outcomes, out_dir)
         sys.stdout.flush()
-    except BrokenPipeError:
-        raise
+    except (BrokenPipeError, SystemExit):  # the reader left; the exit code still tells
+        _silence_stdout()
     except OSError as exc:
-        return _stdout_failed(exc, "the summary (the reports were written)")
+        _stdout_failed(exc, "the summary (the reports were written)")
+        worst = many.worse(worst, ExitCode.INVALID_INPUT)
     names = many.display_names([Path(o.source) for o in outcomes])
     for o, name in zip(outcomes, names, strict=True):
         if o.code != ExitCode.OK:

@@ -68,6 +68,15 @@ def show(text: Any, limit: int = ECHO_CHARS) -> str:
     return f"{head[: limit - 1]}… ({len(s):,} characters)"
 
 
+def show_repr(text: str, limit: int = ECHO_CHARS) -> str:
+    """A user string quoted as Python shows it (controls escaped by ``repr``), cut to about
+    ``limit`` characters with its real length said."""
+    r = repr(text[: limit * 2])
+    if len(text) <= limit * 2 and len(r) <= limit:
+        return r
+    return f"{r[: limit - 1]}…{r[0]} ({len(text):,} characters)"
+
+
 def plain(text: Any, style: str = "") -> Any:
     """A rich ``Text`` of user text: never parsed as markup or emoji, controls escaped."""
     from rich.text import Text

@@ -21,6 +21,11 @@ SEVERITY = {
 }
 
 
+def worse(a: int, b: int) -> int:
+    """The more severe of two exit codes."""
+    return max(a, b, key=lambda c: SEVERITY[ExitCode(c)])
+
+
 class Outcome(NamedTuple):
     source: str
     code: int
@@ -156,6 +161,18 @@ def advise_one(source: Path, target: Path, catalog_dir: Path | None) -> Outcome:
         )
 
 
+def _identities(paths: list[Path]) -> set[tuple[int, int]]:
+    """(device, inode) of the paths that exist, to recognise one file under two names."""
+    out = set()
+    for p in paths:
+        try:
+            st = os.stat(p)
+        except OSError:
+            continue
+        out.add((st.st_dev, st.st_ino))
+    return out
+
+
 def _died(source: Path) -> Outcome:
     return Outcome(
         str(source),
@@ -230,13 +247,28 @@ def run_many(
     each in a worker of its own, and a file whose own worker dies again is reported as failed.
     Ctrl-C raises :class:`Interrupted` with the count of reports written.
     """
+    from advisor.io_safety import show
+
     files = expand(inputs)
     out_dir.mkdir(parents=True, exist_ok=True)
     taken: set[str] = set()
     targets = [out_dir / report_name(f, taken) for f in files]
     jobs = max(1, min(jobs, len(files), usable_cpus()))
     outcomes: dict[int, Outcome] = {}
-    todo = [(i, f, t) for i, (f, t) in enumerate(zip(files, targets, strict=True))]
+    todo = []
+    given = _identities(files)
+    for i, (f, t) in enumerate(zip(files, targets, strict=True)):
+        clash = _identities([t]) & given
+        if clash:  # a.toml's report would replace an input named a.report.toml
+            outcomes[i] = Outcome(
+                str(f),
+                ExitCode.INVALID_INPUT,
+                None,
+                f"its report {show(t, 200)} would replace an input file; nothing was written",
+                (),
+            )
+        else:
+            todo.append((i, f, t))
     try:
         if jobs > 1:
             while todo:

@@ -13,7 +13,7 @@ from typing import Annotated, Any, Literal
 from pydantic import BaseModel, ConfigDict, Field, ValidationError, field_validator, model_validator
 
 from advisor.errors import InputError
-from advisor.io_safety import read_toml, show
+from advisor.io_safety import read_toml, show, show_repr
 
 #: At most this many unknown keys are listed (50,000 typos are not 50,000 lines) ...
 MAX_UNKNOWN_SHOWN = 3
@@ -303,7 +303,7 @@ def _show(value: Any) -> str:
     if isinstance(value, bool):
         return "true" if value else "false"
     if isinstance(value, str):
-        return repr(show(value))
+        return show_repr(value)
     if isinstance(value, list) and len(value) > 8:
         return show(repr(value[:8])[:-1] + f", … {len(value):,} items]")
     return show(repr(value))

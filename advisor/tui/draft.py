@@ -15,7 +15,7 @@ from typing import Any, NamedTuple
 import tomli_w
 
 from advisor.errors import InputError
-from advisor.io_safety import read_toml, show, write_atomic
+from advisor.io_safety import read_toml, show, show_repr, write_atomic
 from advisor.tui import fields as F
 
 
@@ -65,7 +65,7 @@ def _echo(value: Any) -> str:
         return "{…}"
     if isinstance(value, bool):
         return "true" if value else "false"
-    return show(repr(value) if isinstance(value, str) else value)
+    return show_repr(value) if isinstance(value, str) else show(value)
 
 
 def _leaf_ok(field: F.Field, value: Any) -> str | None:
