@@ -360,7 +360,7 @@ def test_ctrl_c_with_workers_ends_with_130_and_no_traceback(tmp_path):
             break
         time.sleep(0.05)
     os.killpg(proc.pid, signal.SIGINT)
-    out, err = proc.communicate(timeout=120)
+    _out, err = proc.communicate(timeout=120)
     assert proc.returncode == 130, err
     assert "Traceback" not in err and "KeyboardInterrupt" not in err
     assert "interrupted;" in err and "reports were written" in err

@@ -76,6 +76,10 @@ Numbers are SI with the unit shown beside each field.
 """
 
 
+#: At most this many loading problems are listed (then how many more).
+MAX_PROBLEMS = 8
+
+
 def _input(value: str, id: str) -> Input:
     """An input whose cursor does not blink (a steady screen, and steady snapshots)."""
     box = Input(value, id=id)
@@ -282,7 +286,10 @@ class DriveAdvisorApp(App[None]):
         notification, as plain text (never markup)."""
         if not problems:
             return
-        text = "\n".join(problems)
+        shown = problems[:MAX_PROBLEMS] + (
+            [f"… and {len(problems) - MAX_PROBLEMS:,} more"] if len(problems) > MAX_PROBLEMS else []
+        )
+        text = "\n".join(shown)
         self.query_one("#step-0-error", Static).update(plain(text))
         self.notify(text, title="Loaded with problems", severity="warning", markup=False)
 
