@@ -229,6 +229,12 @@ def _run_pool(
             if broken:
                 return list(flight.values()), list(reversed(pending))
         return [], []
+    except KeyboardInterrupt:  # let the files in progress finish, and count their reports
+        pool.shutdown(wait=True, cancel_futures=True)
+        for fut, item in flight.items():
+            if fut.done() and not fut.cancelled() and fut.exception() is None:
+                outcomes[item[0]] = fut.result()
+        raise
     finally:
         pool.shutdown(wait=True, cancel_futures=True)
 

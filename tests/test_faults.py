@@ -334,7 +334,7 @@ def test_ctrl_c_says_how_many_reports_were_written(tmp_path, monkeypatch, capsys
 
 def test_ctrl_c_with_workers_ends_with_130_and_no_traceback(tmp_path):
     d = tmp_path / "in"
-    for i in range(40):
+    for i in range(80):
         _linear(d, f"r{i:02}.toml")
     proc = subprocess.Popen(
         [
@@ -365,6 +365,10 @@ def test_ctrl_c_with_workers_ends_with_130_and_no_traceback(tmp_path):
     assert "Traceback" not in err and "KeyboardInterrupt" not in err
     assert "interrupted;" in err and "reports were written" in err
     assert len(_lines(err)) == 1
+    said = int(err.split("interrupted; ", 1)[1].split(" ", 1)[0])
+    written = list((tmp_path / "o").iterdir())
+    assert said == len(written) >= 1  # the count is true, and no temporary file is left
+    assert all(p.name.endswith(".report.toml") for p in written)
 
 
 def _killing_advise_one(source, target, catalog_dir):
