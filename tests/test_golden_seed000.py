@@ -44,6 +44,27 @@ def test_motor_torque_is_the_papers_2_Nm(report):
     assert report["design"]["motor"]["current_A"] == pytest.approx(5.5)
 
 
+def test_motor_is_checked_by_its_losses(report):
+    # the example runs the frame at its reference point: 68.97 + 99.45 + 60 = 228.42 W
+    # against the same 228.42 W; 10000 rpm loses 21.29 + 397.8 + 100 = 519.09 W, over it
+    m = report["design"]["motor"]
+    assert m["loss_limit_W"] == pytest.approx(228.42, rel=1e-5)
+    assert {c["speed_rpm"]: c["within_loss_limit"] for c in m["candidates"]} == {
+        5000: True,
+        10000: False,
+    }
+    assert {c["speed_rpm"]: c["current_A"] for c in m["candidates"]} == pytest.approx(
+        {5000: 5.5, 10000: 6.11111}
+    )
+    check = next(c for c in report["checks"] if c["id"] == "motor_losses")
+    assert check["value"] == pytest.approx(228.42, rel=1e-5)
+    assert check["limit"] == pytest.approx(228.42, rel=1e-5)
+    assert check["unit"] == "W" and check["passed"]
+    assert not any(c["id"] == "motor_current" for c in report["checks"])
+    speed = next(d for d in report["decisions"] if d["id"] == "BL-02")
+    assert "6.11 A" in speed["rationale"] and "not a limit" in speed["rationale"]
+
+
 def test_optimum_frequency_of_eq10(report):
     # K_om = 68.97·500², K_mag = 159.45/500² → f* = (K_om/K_mag)^¼ = 405.5 Hz
     k_om = 2 * 1.14 * 5.5**2 * 500**2

@@ -128,10 +128,11 @@ def test_rotary_design_or_clear_infeasibility(data):
     env = data.get("envelope", {})
     assert g.outer_diameter_mm <= env.get("max_outer_diameter_mm", math.inf) * (1 + 1e-9)
     assert g.length_mm <= env.get("max_length_mm", math.inf) * (1 + 1e-9)
-    # the least lossy speed among those the motor carries within its rated current
+    # the least lossy speed among those within the frame's loss limit
     assert m.losses_W.total == pytest.approx(
-        min(c.losses_W.total for c in m.candidates if c.within_rating)
+        min(c.losses_W.total for c in m.candidates if c.within_loss_limit)
     )
+    assert m.losses_W.total <= m.loss_limit_W * (1 + 1e-9)
     ow = rep.design.one_way
     assert (ow is not None) == data["application"]["hold_without_power"]
     if ow is not None:  # at the motor side, carrying M_out/(q·η); smaller than at the output
