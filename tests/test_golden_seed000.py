@@ -195,11 +195,15 @@ def test_wrong_motor_for_the_application(tmp_path, capsys):
 
 
 def test_motor_too_small_for_the_torque():
-    # four times the torque: 5000 rpm needs 4 × 5.5 = 22 A, 10000 rpm 4 × 6.11 = 24.4 A, from
-    # a motor rated for 5.5 A
-    with pytest.raises(InfeasibleError, match="reference motor cannot give the torque") as e:
+    # four times the torque: 8 N·m at 5000 rpm gives 16 × 68.97 = 1103.5 W of copper loss,
+    # 1263 W in all; 4.44 N·m at 10000 rpm 16 × 21.287 = 340.6 W, 838.4 W in all; the frame
+    # carries 228.42 W. The currents (22 A, 24.4 A) are reported beside the losses.
+    with pytest.raises(InfeasibleError, match="losses exceed what its frame's cooling") as e:
         advise(parse_requirements(_req(torque_Nm=4 * 1620)))
-    assert "it would need 22 A" in str(e.value) and "it would need 24.4 A" in str(e.value)
+    text = str(e.value)
+    assert "losses 1263 W" in text and "losses 838.4 W" in text
+    assert text.count("against the limit 228.4 W") == 2
+    assert "(22 A)" in text and "(24.4 A)" in text
 
 
 def test_three_term_iron_model_still_prefers_5000():
