@@ -86,22 +86,27 @@ def _loss_limit(mot: BldcMotorReq, steel, steel_mass: float, terms) -> tuple[flo
     )
 
 
+def _w(x: float) -> str:
+    """A power in W as an engineer writes it: four figures, no exponent."""
+    return f"{x:.4g}" if abs(x) < 1e4 else f"{x:.0f}"
+
+
 def _too_lossy(cands: list[dict], limit: float, basis: str, n_opt: float) -> InfeasibleError:
-    shown = sorted(cands, key=lambda c: c["losses"]["total"])[:4]
+    shown = sorted(cands, key=lambda c: c["losses"]["total"])[:3]
     reasons = [
         f"at {c['speed_rpm']:g} rpm the reducer (q = {c['q_total']:.4g}, η = {c['eta']:.3g}) "
         f"asks {c['torque_Nm']:.3g} N·m of the motor ({c['current_A']:.3g} A): losses "
-        f"{c['losses']['total']:.4g} W (ohmic {c['losses']['ohmic']:.4g}, iron "
-        f"{c['losses']['iron']:.4g}, magnets {c['losses']['magnets']:.4g}) against the limit "
-        f"{limit:.4g} W"
+        f"{_w(c['losses']['total'])} W (ohmic {_w(c['losses']['ohmic'])}, iron "
+        f"{_w(c['losses']['iron'])}, magnets {_w(c['losses']['magnets'])}) against the limit "
+        f"{_w(limit)} W"
         for c in shown
     ]
     if len(cands) > len(shown):
         reasons.append(f"and {len(cands) - len(shown)} more candidate speeds, lossier still")
     reasons.append(
-        f"the limit is {basis}; describe a larger frame in [motor.reference], state "
-        "motor.max_losses_W if its cooling carries more, or lower rotary.torque_Nm"
-        + (f" (eq. (10)'s least loss lies near {n_opt:.0f} rpm)" if math.isfinite(n_opt) else "")
+        f"the limit is {basis}; give a larger frame in [motor.reference], motor.max_losses_W "
+        "for a better cooling, or a lower rotary.torque_Nm"
+        + (f" (eq. (10): least loss near {n_opt:.0f} rpm)" if math.isfinite(n_opt) else "")
     )
     return InfeasibleError(
         "no feasible design: the motor's losses exceed what its frame's cooling carries", reasons

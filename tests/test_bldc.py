@@ -233,3 +233,13 @@ def test_magnet_loss_points_at_one_speed_are_refused():
     ref = {"magnet_losses": [{"speed_rpm": 5000, "loss_W": 60}, {"speed_rpm": 5000, "loss_W": 80}]}
     with pytest.raises(InputError, match="magnet_losses"):
         _advise(_rotary(1620, [5000], reference=ref))
+
+
+def test_too_lossy_message_stays_short():
+    # five candidates, all over the limit at four times the rudder torque: the three least
+    # lossy are shown, the rest counted (issue 13: at most six lines)
+    with pytest.raises(InfeasibleError) as e:
+        _advise(_rotary(4 * 1620, [3000, 4000, 5000, 7000, 10000]))
+    lines = str(e.value).splitlines()
+    assert len(lines) == 6 and all(len(x) <= 300 for x in lines)
+    assert "and 2 more candidate speeds" in lines[4]
