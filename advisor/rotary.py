@@ -5,6 +5,7 @@ import math
 
 import numpy as np
 
+from advisor import bldc_motor as bm
 from advisor.calc import bldc
 from advisor.calc import reducer as rd
 from advisor.calc import wavegear as wg
@@ -48,71 +49,6 @@ def _steel(req: Requirements, cat: Catalogs):
     return steel
 
 
-def _specific_iron_loss(ref, steel, terms, f: float) -> tuple[float, float]:
-    """Specific iron loss at f by the model in use, and by the three-term eq. (5) beside it."""
-    spec_quad = (
-        bldc.iron_specific_loss_quadratic(steel.p15_50_W_kg, f) * (ref.induction_T / 1.5) ** 2
-    )
-    spec_three = terms.specific_loss(f, ref.induction_T)
-    return (spec_quad if ref.iron_loss_model == "quadratic" else spec_three), spec_three
-
-
-def _losses_at(ref, iron_W: float, n: float, torque: float) -> dict[str, float]:
-    """Losses of the frame wound for speed n at a motor torque, seed 000 eqs. (4), (5), (9):
-    the copper loss depends on the torque alone, whatever the winding."""
-    ohmic_ref = ref.conducting_phases * ref.phase_resistance_ohm * ref.current_A**2
-    losses = {
-        "ohmic": bldc.ohmic_loss_at_torque(ohmic_ref, ref.torque_Nm, torque),
-        "iron": iron_W,
-        "magnets": bldc.magnet_loss([(p.speed_rpm, p.loss_W) for p in ref.magnet_losses], n),
-    }
-    losses["total"] = sum(losses.values())
-    return losses
-
-
-def _loss_limit(mot: BldcMotorReq, steel, steel_mass: float, terms) -> tuple[float, str]:
-    """What the frame's cooling carries: the requirement's own figure, or the reference
-    motor's total losses at its rated point (same frame, same cooling)."""
-    if mot.max_losses_W is not None:
-        return mot.max_losses_W, f"the requirement's motor.max_losses_W = {mot.max_losses_W:g} W"
-    ref = mot.reference
-    spec, _ = _specific_iron_loss(
-        ref, steel, terms, bldc.flux_frequency_Hz(ref.speed_rpm, ref.pole_pairs)
-    )
-    total = _losses_at(ref, steel_mass * spec, ref.speed_rpm, ref.torque_Nm)["total"]
-    return total, (
-        f"the reference motor's total losses at its rated point ({ref.speed_rpm:g} rpm, "
-        f"{ref.torque_Nm:g} N·m at {ref.current_A:g} A): {total:.4g} W, same frame, same cooling"
-    )
-
-
-def _w(x: float) -> str:
-    """A power in W as an engineer writes it: four figures, no exponent."""
-    return f"{x:.4g}" if abs(x) < 1e4 else f"{x:.0f}"
-
-
-def _too_lossy(cands: list[dict], limit: float, basis: str, n_opt: float) -> InfeasibleError:
-    shown = sorted(cands, key=lambda c: c["losses"]["total"])[:3]
-    reasons = [
-        f"at {c['speed_rpm']:g} rpm the reducer (q = {c['q_total']:.4g}, η = {c['eta']:.3g}) "
-        f"asks {c['torque_Nm']:.3g} N·m of the motor ({c['current_A']:.3g} A): losses "
-        f"{_w(c['losses']['total'])} W (ohmic {_w(c['losses']['ohmic'])}, iron "
-        f"{_w(c['losses']['iron'])}, magnets {_w(c['losses']['magnets'])}) against the limit "
-        f"{_w(limit)} W"
-        for c in shown
-    ]
-    if len(cands) > len(shown):
-        reasons.append(f"and {len(cands) - len(shown)} more candidate speeds, lossier still")
-    reasons.append(
-        f"the limit is {basis}; give a larger frame in [motor.reference], motor.max_losses_W "
-        "for a better cooling, or a lower rotary.torque_Nm"
-        + (f" (eq. (10): least loss near {n_opt:.0f} rpm)" if math.isfinite(n_opt) else "")
-    )
-    return InfeasibleError(
-        "no feasible design: the motor's losses exceed what its frame's cooling carries", reasons
-    )
-
-
 def _candidate(n: float, req: Requirements, steel, steel_mass: float, terms, params) -> dict:
     """Losses and drive figures of the reference motor rewound for speed ``n``."""
     rot = req.rotary
@@ -125,7 +61,7 @@ def _candidate(n: float, req: Requirements, steel, steel_mass: float, terms, par
     eta = params.stage_efficiency**stages if stages else math.nan
     torque = rot.torque_Nm / (q_total * eta) if stages else math.nan
     f = bldc.flux_frequency_Hz(n, ref.pole_pairs)
-    spec, spec_three = _specific_iron_loss(ref, steel, terms, f)
+    spec, spec_three = bm.specific_iron_loss(ref, steel, terms, f)
     return {
         "speed_rpm": n,
         "frequency_Hz": f,
@@ -135,7 +71,7 @@ def _candidate(n: float, req: Requirements, steel, steel_mass: float, terms, par
         "torque_Nm": torque,
         # the winding rewound for n: current ∝ torque·n (seed 000, eq. (4)); reported only
         "current_A": bldc.rewound_current_A(ref.current_A, ref.torque_Nm, ref.speed_rpm, torque, n),
-        "losses": _losses_at(ref, steel_mass * spec, n, torque),
+        "losses": bm.losses_at(ref, steel_mass * spec, n, torque),
         "iron_three_term_W": steel_mass * spec_three,
         "spec": spec,
         "spec_three": spec_three,
@@ -181,9 +117,9 @@ def advise_rotary(req: Requirements, cat: Catalogs, trace: Trace):
         f_opt = math.nan
     n_opt = f_opt * 60.0 / ref.pole_pairs
     # the frame's limit is thermal: a speed is a candidate only if its losses are carried
-    limit, basis = _loss_limit(mot, steel, steel_mass, terms)
+    limit, basis = bm.loss_limit(mot, steel, steel_mass, terms)
     if not any(bl_rules.within_limit(c["losses"]["total"], limit) for c in reducible):
-        raise _too_lossy(reducible, limit, basis, n_opt)
+        raise bm.too_lossy(reducible, limit, basis, n_opt)
     speed = trace.apply(
         bl_rules.choose_speed,
         {c["speed_rpm"]: c["losses"]["total"] for c in reducible},
@@ -242,10 +178,10 @@ def advise_rotary(req: Requirements, cat: Catalogs, trace: Trace):
         "current_A": bldc.rewound_current_A(
             ref.current_A, ref.torque_Nm, ref.speed_rpm, motor_torque, speed
         ),
-        "losses": _losses_at(ref, chosen["losses"]["iron"], speed, motor_torque),
+        "losses": bm.losses_at(ref, chosen["losses"]["iron"], speed, motor_torque),
     }
     if not bl_rules.within_limit(working["losses"]["total"], limit):
-        raise _too_lossy([working], limit, basis, n_opt)
+        raise bm.too_lossy([working], limit, basis, n_opt)
     checks = _checks(design, env, working["losses"]["total"], limit, basis)
     motor = _motor_out(working, reducible, ref, steel, steel_mass, f_opt, n_opt, limit, basis)
     gearbox = GearboxOut.make(
@@ -286,11 +222,11 @@ def _one_way(req, trace, design: rd.Reducer, working: dict, limit: float, basis:
     checks = []
     if device.efficiency < 1.0:
         ref = req.motor.reference
-        with_device = _losses_at(
+        with_device = bm.losses_at(
             ref, working["losses"]["iron"], speed, motor_torque / device.efficiency
         )["total"]
         checks.append(
-            _losses_check(
+            bm.losses_check(
                 "motor_losses_with_one_way",
                 "motor losses with the one-way device's loss",
                 with_device,
@@ -345,14 +281,6 @@ def _no_reducer(space: rd.SweepResult, torque: float, env) -> InfeasibleError:
     )
 
 
-def _losses_check(id: str, name: str, losses_W: float, limit_W: float, source: str) -> Check:
-    """Losses against the frame's limit; at the limit within rounding the margin is 1."""
-    margin = limit_W / losses_W if losses_W > 0 else math.inf
-    if bl_rules.within_limit(losses_W, limit_W):
-        margin = max(margin, 1.0)
-    return Check(id, name, losses_W, limit_W, "W", margin, source)
-
-
 def _checks(design: rd.Reducer, env, losses_W: float, limit_W: float, basis: str) -> list[Check]:
     checks = []
     if env.max_outer_diameter_mm:
@@ -404,7 +332,7 @@ def _checks(design: rd.Reducer, env, losses_W: float, limit_W: float, basis: str
             )
         )
     checks.append(
-        _losses_check(
+        bm.losses_check(
             "motor_losses",
             "motor total losses against what the frame's cooling carries",
             losses_W,
