@@ -95,9 +95,9 @@ def _silence_stdout() -> None:
         pass
 
 
-def _stdout_failed(exc: OSError, what: str) -> int:
+def _stdout_failed(exc: OSError, what: str, after: str = "it is incomplete") -> int:
     _silence_stdout()
-    _err(f"standard output: cannot write {what} ({exc.strerror or exc}); it is incomplete")
+    _err(f"standard output: cannot write {what} ({exc.strerror or exc}); {after}")
     return ExitCode.INVALID_INPUT
 
 
@@ -155,7 +155,7 @@ def run_batch(req_path: Path, output: Path | None, catalog_dir: Path | None) -> 
         _silence_stdout()
         return ExitCode.OK
     except OSError as exc:
-        return _stdout_failed(exc, f"the summary (the report was written to {show(output)})")
+        return _stdout_failed(exc, "the summary", f"the report was written to {show(output, 200)}")
     return ExitCode.OK
 
 
@@ -188,7 +188,7 @@ def run_many(inputs: list[Path], out_dir: Path, catalog_dir: Path | None, jobs: 
     except (BrokenPipeError, SystemExit):  # the reader left; the exit code still tells
         _silence_stdout()
     except OSError as exc:
-        _stdout_failed(exc, "the summary (the reports were written)")
+        _stdout_failed(exc, "the summary", f"the reports were written to {show(out_dir, 200)}")
         worst = many.worse(worst, ExitCode.INVALID_INPUT)
     names = many.display_names([Path(o.source) for o in outcomes])
     for o, name in zip(outcomes, names, strict=True):

@@ -39,14 +39,16 @@ class OutputError(InputError):
 
 
 # ------------------------------------------------------------------ showing user text
-def printable(text: str) -> str:
+def printable(text: str, newlines: bool = True) -> str:
     """``text`` with control characters (and bidirectional overrides) shown escaped, so an
-    ANSI escape in a title is printed as ``\\x1b[2J`` and never clears the terminal."""
+    ANSI escape in a title is printed as ``\\x1b[2J`` and never clears the terminal. Line
+    breaks and tabs are kept unless ``newlines`` is false (a one-line echo)."""
     if text.isprintable():
         return text
+    keep = "\n\t" if newlines else ""
     return "".join(
         ch.encode("unicode_escape").decode("ascii")
-        if unicodedata.category(ch) == "Cc" or ch in _BIDI
+        if (unicodedata.category(ch) == "Cc" and ch not in keep) or ch in _BIDI
         else ch
         for ch in text
     )
@@ -62,7 +64,7 @@ def clip(text: str, limit: int = ECHO_CHARS) -> str:
 def show(text: Any, limit: int = ECHO_CHARS) -> str:
     """A user string as it may be echoed in a message: controls escaped, then clipped."""
     s = str(text)
-    head = printable(s[: limit * 4])
+    head = printable(s[: limit * 4], newlines=False)
     if len(s) <= limit * 4 and len(head) <= limit:
         return head
     return f"{head[: limit - 1]}… ({len(s):,} characters)"

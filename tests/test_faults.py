@@ -493,7 +493,9 @@ def test_a_full_disk_for_the_summary_is_exit_2(tmp_path, monkeypatch, capsys):
     monkeypatch.setattr(sys, "stdout", _FullDisk())
     rc = main(["--batch", str(LINEAR), "-o", str(tmp_path / "r.toml")])
     assert rc == ExitCode.INVALID_INPUT
-    assert "the summary (the report was written to" in capsys.readouterr().err
+    err = capsys.readouterr().err
+    assert "cannot write the summary (No space left on device); the report was written to" in err
+    assert (tmp_path / "r.toml").exists()
 
 
 @pytest.mark.parametrize("many_files", [False, True])
@@ -600,3 +602,25 @@ def test_the_batch_path_still_imports_no_textual():
     )
     r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT)
     assert r.stdout.split() == ["0", "False", "False"], r.stderr
+
+
+def test_the_wizard_views_show_user_names_literally(tmp_path):
+    """A positioning motor is named by the user: its name reaches the components table,
+    the decisions and the summary of the wizard, never as markup or a control sequence."""
+    from rich.console import Console
+
+    from advisor.engine import advise
+    from advisor.models import parse_requirements
+    from advisor.tui import views
+
+    doc = tomllib.loads((EXAMPLES / "positioning_drive.toml").read_text())
+    name = "M[/]1 [b]\x1b[2J"
+    doc["positioning"]["motors"][0]["name"] = name
+    doc["application"]["title"] = "T[/i] [red]\x1b]0;x\x07"
+    report = advise(parse_requirements(doc))
+    console = Console(width=400, record=True, file=io.StringIO())
+    for render in (views.summary, views.components, views.decisions, views.checks):
+        console.print(render(report))
+    text = console.export_text()
+    assert "M[/]1 [b]\\x1b[2J" in text and "T[/i] [red]\\x1b]0;x\\x07" in text
+    assert "\x1b" not in text

@@ -153,3 +153,21 @@ def test_the_wizard_refuses_a_file_it_cannot_read_in_one_line(tmp_path, capsys):
     assert main([str(big)]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 2 and "not a file" in err[0] and "larger than 1024 KiB" in err[1]
+
+
+async def test_a_draft_that_cannot_be_saved_is_a_notice_not_a_crash():
+    import os
+
+    path = drafts.draft_path()
+    path.parent.mkdir(parents=True)
+    os.mkfifo(path)  # neither readable as a draft nor replaceable by one
+    app = DriveAdvisorApp()
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.pause()
+        assert "set aside as" in _text(app.query_one("#step-0-error", Static))
+        os.mkfifo(path)  # and again, for the saves
+        await pilot.click("#kind-linear")
+        await pilot.pause()
+        notes = [n.message for n in app._notifications]
+        assert any("the draft cannot be saved" in m and "FIFO" in m for m in notes)
+    assert app.return_code in (None, 0)

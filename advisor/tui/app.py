@@ -381,6 +381,8 @@ class DriveAdvisorApp(App[None]):
                 self.notify(
                     f"the draft cannot be saved ({exc.strerror})", severity="warning", markup=False
                 )
+            except InputError as exc:  # the draft's place is a directory, a FIFO, a device
+                self.notify(f"the draft cannot be saved: {exc}", severity="warning", markup=False)
 
     @on(RadioSet.Changed, "#kind")
     async def _kind_changed(self, event: RadioSet.Changed) -> None:
