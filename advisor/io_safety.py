@@ -99,13 +99,13 @@ def _kind_of(mode: int) -> str:
     return "not a regular file"
 
 
-def read_input(path: Path, limit: int = MAX_INPUT_BYTES) -> bytes:
+def read_input(path: Path, limit: int = MAX_INPUT_BYTES, what: str = "") -> bytes:
     """The bytes of a requirement file; an :class:`InputError` naming the problem otherwise.
 
     Opened without blocking (a FIFO with no writer must not hang the run) and refused unless
     it is a regular file; at most ``limit`` bytes are read (``/dev/zero`` never ends).
     """
-    where = show(path, 200)
+    where = what + show(path, 200)
     flags = os.O_RDONLY | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_NOCTTY", 0)
     try:
         fd = os.open(path, flags | getattr(os, "O_CLOEXEC", 0))
@@ -125,7 +125,8 @@ def read_input(path: Path, limit: int = MAX_INPUT_BYTES) -> bytes:
                 "give a requirement file (.toml)"
             )
         too_big = InputError(
-            f"{where}: larger than {limit // 1024} KiB; a requirement file is a few kilobytes"
+            f"{where}: larger than {limit // 1024} KiB"
+            + ("" if what else "; a requirement file is a few kilobytes")
         )
         if st.st_size > limit:
             raise too_big
@@ -173,7 +174,7 @@ def parse_toml(raw: bytes, where: str) -> dict[str, Any]:
         raise InputError(f"{where}: not a UTF-8 text file") from None
     nested = InputError(
         f"{where}: tables or arrays nested more than {MAX_DEPTH} levels deep; "
-        "a requirement file needs three at most"
+        "a requirement file or catalog needs three at most"
     )
     try:
         data = tomllib.loads(text)

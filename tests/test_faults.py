@@ -624,3 +624,19 @@ def test_the_wizard_views_show_user_names_literally(tmp_path):
     text = console.export_text()
     assert "M[/]1 [b]\\x1b[2J" in text and "T[/i] [red]\\x1b]0;x\\x07" in text
     assert "\x1b" not in text
+
+
+def test_a_user_catalog_that_is_a_fifo_or_too_deep_is_refused_in_one_line(tmp_path):
+    from advisor.errors import CatalogError
+    from catalogs import load_catalogs
+    from catalogs.loader import MOTORS_FILE
+
+    d = tmp_path / "cat"
+    d.mkdir()
+    os.mkfifo(d / MOTORS_FILE)  # no writer: reading it would block forever
+    with pytest.raises(CatalogError, match="is a FIFO, not a regular file"):
+        load_catalogs(d)
+    (d / MOTORS_FILE).unlink()
+    (d / MOTORS_FILE).write_text("x = " + "[" * 5000 + "]" * 5000 + "\n")
+    with pytest.raises(CatalogError, match=r"^catalog .*nested more than 32 levels deep"):
+        load_catalogs(d)
