@@ -57,7 +57,8 @@ def _toml_files(directory: Path) -> list[Path]:
     return sorted(
         directory / n
         for n in names
-        if n.endswith(".toml") and not n.endswith(".report.toml") and (directory / n).is_file()
+        # a FIFO or device named *.toml is listed, and refused without being read
+        if n.endswith(".toml") and not n.endswith(".report.toml") and not (directory / n).is_dir()
     )
 
 

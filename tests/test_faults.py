@@ -245,6 +245,11 @@ def test_fifo_and_device_inputs_are_refused_without_blocking(tmp_path):
         assert r.returncode == ExitCode.INVALID_INPUT, r.stderr
         assert "not a regular file" in r.stderr and "Traceback" not in r.stderr
     assert (tmp_path / "out" / "ok.report.toml").exists()  # the good file was advised
+    os.mkfifo(ok.parent / "pipe.toml")  # in a directory: listed as refused, not skipped
+    r = _run("--batch", str(ok.parent), "--out-dir", str(tmp_path / "out2"), timeout=60)
+    assert r.returncode == ExitCode.INVALID_INPUT
+    assert "pipe.toml: " in r.stderr and "is a FIFO, not a regular file" in r.stderr
+    assert (tmp_path / "out2" / "ok.report.toml").exists()
 
 
 def test_input_larger_than_1_mib_is_refused(tmp_path, capsys):
