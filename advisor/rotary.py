@@ -36,7 +36,7 @@ SEED_000 = wg_rules.SEED_000
 MAX_ROWS = int(rd.ROW_GRID.max())
 FIG1_ROWS = [2, 3, 4, 6, 8, 10, 12]
 #: At most this many designs of the Pareto front in the report, evenly spaced along it.
-PARETO_POINTS = 24
+PARETO_POINTS = 16
 
 
 def _steel(req: Requirements, cat: Catalogs):

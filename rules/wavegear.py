@@ -98,7 +98,11 @@ def split_ratio(total_ratio: float, q_min: float, q_max: float) -> Finding[list[
             "(eqs. (13), (16), three rows at the output) is taken: "
             + "; ".join(alternatives)
             + ".",
-            {"outer_diameter_per_cbrt_torque": {"one": d_one, "two": d_two}},
+            {
+                "outer_diameter_per_cbrt_torque": {
+                    k: v for k, v in (("one", d_one), ("two", d_two)) if math.isfinite(v)
+                }
+            },
         )
     if q <= Q_OUT_PREFERRED * q_max:
         q_out = Q_OUT_PREFERRED if q / Q_OUT_PREFERRED >= q_min else q / q_min

@@ -401,15 +401,22 @@ def pareto(
             )
         )
     ]
-    m, D, L = result.mass_kg[cand], result.outer_diameter_mm[cand], result.length_mm[cand]
-    s = result.stages[cand]  # fewer stages: higher efficiency (η^n) and lower losses
+    # rows: mass, diameter, length, stages (fewer: higher efficiency η^n, lower losses)
+    obj = np.stack(
+        [
+            result.mass_kg[cand],
+            result.outer_diameter_mm[cand],
+            result.length_mm[cand],
+            result.stages[cand].astype(float),
+        ]
+    )
+    idx = cand
     front = []
-    while cand.size:  # the first remaining point is non-dominated: what dominates it is gone
-        front.append(cand[0])
-        weak = (D[1:] >= D[0]) & (L[1:] >= L[0]) & (s[1:] >= s[0])
-        strict = (m[1:] > m[0]) | (D[1:] > D[0]) | (L[1:] > L[0]) | (s[1:] > s[0])
-        alive = ~(weak & strict)
-        cand, m, D, L, s = (x[1:][alive] for x in (cand, m, D, L, s))
+    while idx.size:  # the first remaining point is non-dominated: what dominates it is gone
+        front.append(idx[0])
+        head, rest = obj[:, :1], obj[:, 1:]
+        dominated = (rest >= head).all(axis=0) & (rest > head).any(axis=0)
+        obj, idx = rest[:, ~dominated], idx[1:][~dominated]
     return np.array(front, dtype=int)
 
 
