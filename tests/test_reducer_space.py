@@ -66,7 +66,8 @@ def test_rule_between_20_and_78_takes_the_smaller_diameter():
 def test_every_ratio_gets_a_design_where_the_space_holds_one():
     # property over q: hundreds of log-spaced ratios from below one stage's minimum to 1e5,
     # with and without an envelope; exit 3 only where the design space holds nothing
-    out_rpm = 1.0
+    # the motor at 3000 rpm (its losses well within the frame's), the output speed sets q
+    motor_rpm = 3000.0
     for k, q in enumerate(np.geomspace(5.0, 1e5, 300)):
         env = None if k % 3 else {"max_outer_diameter_mm": 60.0 + (k % 7) * 10.0}
         space = rd.sweep(q, rd.ReducerParams(5.0, 1.0, 0.9, 7800.0, 0.75))
@@ -76,7 +77,7 @@ def test_every_ratio_gets_a_design_where_the_space_holds_one():
             else bool(np.any(space.outer_diameter_mm <= env["max_outer_diameter_mm"]))
         )
         try:
-            rep = advise(_rotary(5.0, out_rpm, q * out_rpm, env))
+            rep = advise(_rotary(5.0, motor_rpm / q, motor_rpm, env))
         except InfeasibleError as exc:
             assert not fits, f"q = {q:.5g}: refused although the space holds a design: {exc}"
             continue

@@ -356,6 +356,10 @@ def _within(
     return ok
 
 
+#: Points checked at once by :func:`pareto`.
+_BLOCK = 64
+
+
 def pareto(
     result: SweepResult,
     stage_efficiency: float,
@@ -410,14 +414,28 @@ def pareto(
             result.stages[cand].astype(float),
         ]
     )
-    idx = cand
+    # in this order whatever dominates a point comes before it, and (dominance being
+    # transitive) so does a non-dominated point that dominates it: each block is checked
+    # against the front so far and against the points before it within the block
+    front_obj = obj[:, :0]
     front = []
-    while idx.size:  # the first remaining point is non-dominated: what dominates it is gone
-        front.append(idx[0])
-        head, rest = obj[:, :1], obj[:, 1:]
-        dominated = (rest >= head).all(axis=0) & (rest > head).any(axis=0)
-        obj, idx = rest[:, ~dominated], idx[1:][~dominated]
-    return np.array(front, dtype=int)
+    later = np.triu(np.ones((_BLOCK, _BLOCK), bool), 1)  # [i, j]: i before j
+    for start in range(0, cand.size, _BLOCK):
+        blk = obj[:, start : start + _BLOCK]
+        b = blk.shape[1]
+        dominated = (
+            (blk[:, None, :] >= front_obj[:, :, None]).all(axis=0)
+            & (blk[:, None, :] > front_obj[:, :, None]).any(axis=0)
+        ).any(axis=0)
+        within = (
+            (blk[:, :, None] <= blk[:, None, :]).all(axis=0)
+            & (blk[:, :, None] < blk[:, None, :]).any(axis=0)
+            & later[:b, :b]
+        )
+        keep = ~(dominated | within.any(axis=0))
+        front_obj = np.concatenate([front_obj, blk[:, keep]], axis=1)
+        front.append(cand[start : start + _BLOCK][keep])
+    return np.concatenate(front) if front else cand[:0]
 
 
 def thin(front: np.ndarray, at_most: int) -> np.ndarray:
