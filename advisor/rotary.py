@@ -293,7 +293,13 @@ def _pareto(space, design: rd.Reducer, params, env, trace) -> ParetoOut:
         front_size=int(front.size),
         adopted="on the front" if point is None else "dominated",
         dominated_by=point,
-        points=[_pareto_point(space, int(i), eta) for i in shown],
+        stages=[int(space.stages[i]) for i in shown],
+        ratios=[space.ratios_out_to_in(int(i)) for i in shown],
+        rows_out=[int(space.rows_out[i]) for i in shown],
+        mass_kg=[float(space.mass_kg[i]) for i in shown],
+        outer_diameter_mm=[float(space.outer_diameter_mm[i]) for i in shown],
+        length_mm=[float(space.length_mm[i]) for i in shown],
+        efficiency=[eta ** int(space.stages[i]) for i in shown],
     )
 
 

@@ -108,11 +108,19 @@ class ParetoPointOut(_Out):
 
 
 class ParetoOut(_Out):
+    """The front as columns (one entry per design shown, lightest first), like ``fig1``."""
+
     objectives: list[str]
     front_size: int
     adopted: str  # "on the front" | "dominated"
     dominated_by: ParetoPointOut | None = None
-    points: list[ParetoPointOut]
+    stages: list[int]
+    ratios: list[list[float]]  # output first
+    rows_out: list[int]
+    mass_kg: list[float]
+    outer_diameter_mm: list[float]
+    length_mm: list[float]
+    efficiency: list[float]
 
 
 class GearboxOut(GearboxSummaryOut):

@@ -394,6 +394,11 @@ def pareto(
     first_in_group = np.r_[True, grp_of[1:] != grp_of[:-1]]
     pick[cand_pos[first_in_group]] = True
     cand = ok[order[pick]]
+    # the same output stage (q_out, rows: the same diameters) with fewer stages is shorter,
+    # lighter and more efficient: keep the fewest stages of each
+    by_stage = cand[np.lexsort((result.stages[cand], result.rows_out[cand], result.q_out[cand]))]
+    qo, rw = result.q_out[by_stage], result.rows_out[by_stage]
+    cand = by_stage[np.r_[True, (qo[1:] != qo[:-1]) | (rw[1:] != rw[:-1])]]
     # by mass, ties by diameter, length, stages: a point can only be dominated by earlier ones
     cand = cand[
         np.lexsort(
