@@ -410,35 +410,34 @@ def pareto(
             )
         )
     ]
-    # rows: mass, diameter, length, stages (fewer: higher efficiency η^n, lower losses)
-    obj = np.stack(
-        [
-            result.mass_kg[cand],
-            result.outer_diameter_mm[cand],
-            result.length_mm[cand],
-            result.stages[cand].astype(float),
-        ]
-    )
+    # mass, diameter, length, stages (fewer: higher efficiency η^n, lower losses)
+    obj = [
+        result.mass_kg[cand],
+        result.outer_diameter_mm[cand],
+        result.length_mm[cand],
+        result.stages[cand].astype(float),
+    ]
     # in this order whatever dominates a point comes before it, and (dominance being
     # transitive) so does a non-dominated point that dominates it: each block is checked
-    # against the front so far and against the points before it within the block
-    front_obj = obj[:, :0]
+    # against the front so far and against the points before it within the block. A point
+    # equal in every objective to an earlier one goes too (duplicates are kept once).
+    front_obj = [x[:0] for x in obj]
     front = []
-    later = np.triu(np.ones((_BLOCK, _BLOCK), bool), 1)  # [i, j]: i before j
+    before = np.triu(np.ones((_BLOCK, _BLOCK), bool), 1)  # [i, j]: i before j
     for start in range(0, cand.size, _BLOCK):
-        blk = obj[:, start : start + _BLOCK]
-        b = blk.shape[1]
-        dominated = (
-            (blk[:, None, :] >= front_obj[:, :, None]).all(axis=0)
-            & (blk[:, None, :] > front_obj[:, :, None]).any(axis=0)
-        ).any(axis=0)
-        within = (
-            (blk[:, :, None] <= blk[:, None, :]).all(axis=0)
-            & (blk[:, :, None] < blk[:, None, :]).any(axis=0)
-            & later[:b, :b]
-        )
-        keep = ~(dominated | within.any(axis=0))
-        front_obj = np.concatenate([front_obj, blk[:, keep]], axis=1)
+        blk = [x[start : start + _BLOCK] for x in obj]
+        b = blk[0].size
+        covered = before[:b, :b].copy()
+        for x in blk:
+            covered &= x[:, None] <= x[None, :]
+        dominated = covered.any(axis=0)
+        if front_obj[0].size:
+            covered = front_obj[0][:, None] <= blk[0][None, :]
+            for f, x in zip(front_obj[1:], blk[1:], strict=True):
+                covered &= f[:, None] <= x[None, :]
+            dominated |= covered.any(axis=0)
+        keep = ~dominated
+        front_obj = [np.concatenate([f, x[keep]]) for f, x in zip(front_obj, blk, strict=True)]
         front.append(cand[start : start + _BLOCK][keep])
     return np.concatenate(front) if front else cand[:0]
 
