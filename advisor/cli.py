@@ -2,7 +2,7 @@
 
 ``advisor --batch REQ.toml`` prints the report TOML on stdout; with ``-o OUT.toml`` it writes
 the report atomically and prints a short summary instead. Exit codes: see
-:class:`advisor.errors.ExitCode`. Never a traceback: every failure is one line per problem on
+:class:`advisor.core.errors.ExitCode`. Never a traceback: every failure is one line per problem on
 stderr.
 
 The batch path must stay light: it imports neither textual nor rich (rich only for the
@@ -15,7 +15,7 @@ import sys
 from pathlib import Path
 
 from advisor import __version__
-from advisor.errors import AdvisorError, ExitCode, InfeasibleError
+from advisor.core.errors import AdvisorError, ExitCode, InfeasibleError
 
 PROG = "advisor"
 
@@ -79,9 +79,9 @@ def run_batch(req_path: Path, output: Path | None, catalog_dir: Path | None) -> 
     # pydantic scans every installed package's entry points for plugins on its first model
     # (about 7 ms of importlib.metadata); the advisor uses none.
     os.environ.setdefault("PYDANTIC_DISABLE_PLUGINS", "__all__")
-    from advisor.engine import advise
-    from advisor.models import read_requirements
-    from advisor.report import to_toml, write_atomic
+    from advisor.core.engine import advise
+    from advisor.core.report import to_toml, write_atomic
+    from advisor.core.requirements import read_requirements
 
     req = read_requirements(req_path)
     report = advise(req, catalog_dir)

@@ -10,7 +10,7 @@ from concurrent.futures import ProcessPoolExecutor
 from pathlib import Path
 from typing import NamedTuple
 
-from advisor.errors import AdvisorError, ExitCode, InfeasibleError
+from advisor.core.errors import AdvisorError, ExitCode, InfeasibleError
 
 #: Severity order for "the worst outcome": a bug, then bad input, then infeasibility.
 SEVERITY = {
@@ -78,9 +78,9 @@ def headline(report) -> str:
 
 def advise_one(source: Path, target: Path, catalog_dir: Path | None) -> Outcome:
     """Advise one file and write its report; every failure becomes an Outcome."""
-    from advisor.engine import advise
-    from advisor.models import read_requirements
-    from advisor.report import to_toml, write_atomic
+    from advisor.core.engine import advise
+    from advisor.core.report import to_toml, write_atomic
+    from advisor.core.requirements import read_requirements
 
     try:
         report = advise(read_requirements(source), catalog_dir)

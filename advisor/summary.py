@@ -5,7 +5,7 @@ from pathlib import Path
 from rich.console import Console
 from rich.table import Table
 
-from advisor.report import Report
+from advisor.core.report import Report
 
 
 def print_summary(report: Report, path: Path, console: Console | None = None) -> None:

@@ -1,6 +1,6 @@
 """The terminal wizard: requirements step by step, an explained design, export.
 
-It calls exactly the engine the batch uses (:func:`advisor.engine.advise`), in a worker
+It calls exactly the engine the batch uses (:func:`advisor.core.engine.advise`), in a worker
 thread so the screen never freezes. Every change is saved to a draft in the user's state
 directory and offered back at the next start.
 """
@@ -32,7 +32,7 @@ from textual.widgets import (
     TabPane,
 )
 
-from advisor.errors import InfeasibleError, InputError
+from advisor.core.errors import InfeasibleError, InputError
 from advisor.tui import draft as drafts
 from advisor.tui import fields as F
 from advisor.tui import views
@@ -433,7 +433,7 @@ class DriveAdvisorApp(App[None]):
         return ok
 
     def _engine_errors(self) -> list[str]:
-        from advisor.models import parse_requirements
+        from advisor.core.requirements import parse_requirements
 
         try:
             parse_requirements(F.prune(self.doc))
@@ -474,7 +474,7 @@ class DriveAdvisorApp(App[None]):
         self.push_screen(ExportScreen(Path.cwd() / f"{stem}.report.toml", self.report is not None))
 
     def write_export(self, path: Path, what: str) -> None:
-        from advisor.report import to_toml, write_atomic
+        from advisor.core.report import to_toml, write_atomic
 
         if what == "report":
             text = to_toml(self.report)
@@ -491,8 +491,8 @@ class DriveAdvisorApp(App[None]):
         self.run_worker(self._advise, thread=True, exclusive=True, group="advise")
 
     def _advise(self) -> None:
-        from advisor.engine import advise
-        from advisor.models import parse_requirements
+        from advisor.core.engine import advise
+        from advisor.core.requirements import parse_requirements
 
         doc = copy.deepcopy(F.prune(self.doc))
         try:

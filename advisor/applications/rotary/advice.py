@@ -5,14 +5,7 @@ import math
 
 import numpy as np
 
-from advisor.calc import bldc
-from advisor.calc import reducer as rd
-from advisor.calc import wavegear as wg
-from advisor.calc.sizing import Check
-from advisor.errors import InfeasibleError, InputError
-from advisor.models import Requirements
-from advisor.models_rotary import BldcMotorReq
-from advisor.rotary_report import (
+from advisor.applications.rotary.report import (
     BldcMotorOut,
     Fig1Out,
     GearboxOut,
@@ -25,7 +18,14 @@ from advisor.rotary_report import (
     SteelOut,
     SweepOut,
 )
-from advisor.rulebook import Trace
+from advisor.applications.rotary.requirements import BldcMotorReq
+from advisor.calc import bldc
+from advisor.calc import reducer as rd
+from advisor.calc import wavegear as wg
+from advisor.calc.sizing import Check
+from advisor.core.errors import InfeasibleError, InputError
+from advisor.core.requirements import Requirements
+from advisor.core.rulebook import Trace
 from catalogs import Catalogs
 from rules import bldc as bl_rules
 from rules import wavegear as wg_rules
@@ -238,7 +238,7 @@ def advise_rotary(req: Requirements, cat: Catalogs, trace: Trace):
 
 def _one_way(req, trace, design: rd.Reducer, motor_torque, speed, load, rated_current):
     """Seed 004: the holding device at the motor side, and what it asks of the motor."""
-    from advisor.one_way import choose_device
+    from advisor.one_way.advice import choose_device
     from rules import one_way as ow_rules
 
     at_motor = trace.apply(

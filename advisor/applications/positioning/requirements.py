@@ -4,7 +4,7 @@ from typing import Annotated, Literal
 
 from pydantic import Field, model_validator
 
-from advisor.models import ApplicationReq, _num, _Strict
+from advisor.core.requirements import ApplicationReq, _num, _Strict
 
 
 class CandidateMotor(_Strict):

@@ -1,6 +1,7 @@
 """Report tables of the rotary application (imported only on the rotary path)."""
 
-from advisor.report import OneWayOut, _Out
+from advisor.core.report import _Out
+from advisor.one_way.report import OneWayOut
 
 
 class LossesOut(_Out):

@@ -6,14 +6,13 @@ application kind needs must be present.
 """
 
 import math
-import re
 import tomllib
 from pathlib import Path
 from typing import Annotated, Any, Literal
 
-from pydantic import BaseModel, ConfigDict, Field, ValidationError, field_validator, model_validator
+from pydantic import BaseModel, ConfigDict, Field, ValidationError
 
-from advisor.errors import InputError
+from advisor.core.errors import InputError
 
 
 class _Strict(BaseModel):
@@ -35,73 +34,6 @@ class ApplicationReq(_Strict):
     title: Annotated[str, Field(max_length=200, description="a label for the report")] = ""
 
 
-class LinearReq(_Strict):
-    force_N: Annotated[float, _num(gt=0, le=5e6, desc="rated axial force, N")]
-    stroke_m: Annotated[float, _num(gt=0, le=20, desc="stroke, m")]
-    travel_time_s: Annotated[float, _num(gt=0, le=1e5, desc="time for the full stroke, s")]
-    support_span_m: Annotated[
-        float, _num(gt=0, le=20, desc="distance between the screw supports, m")
-    ]
-    end_fixity: Annotated[
-        Literal["pinned-pinned", "fixed-pinned", "fixed-fixed", "fixed-free"],
-        Field(description="how the screw ends are held, for buckling"),
-    ] = "pinned-pinned"
-    buckling_safety_factor: Annotated[
-        float, _num(ge=1, le=20, desc="required margin against buckling")
-    ] = 3.0
-
-    @model_validator(mode="after")
-    def _stroke_fits(self) -> "LinearReq":
-        if self.stroke_m > self.support_span_m:
-            raise ValueError(
-                f"linear.stroke_m = {self.stroke_m:g} is longer than linear.support_span_m = "
-                f"{self.support_span_m:g}: the nut must travel between the supports"
-            )
-        return self
-
-
-class InductionMotorReq(_Strict):
-    kind: Annotated[Literal["induction"], Field(description="motor type")]
-    supply_frequency_Hz: Annotated[float, _num(gt=0, desc="supply frequency, Hz")] = 50.0
-
-    @field_validator("supply_frequency_Hz")
-    @classmethod
-    def _fifty(cls, v: float) -> float:
-        if v != 50.0:
-            raise ValueError("must be 50: the induction motor catalog holds 50 Hz ratings")
-        return v
-
-
-THREAD_RE = re.compile(r"^Tr\s*(\d+(?:\.\d+)?)\s*[x×]\s*(\d+(?:\.\d+)?)$", re.IGNORECASE)
-
-
-class ScrewReq(_Strict):
-    friction_coefficient: Annotated[
-        float | None, _num(gt=0, le=0.6, desc="thread friction coefficient f")
-    ] = None
-    starts: Annotated[int, Field(ge=1, le=4, description="number of thread starts")] = 1
-    friction_model: Annotated[
-        Literal["standard", "paper"], Field(description="reduced friction formula")
-    ] = "standard"
-    thread: Annotated[str | None, Field(description="imposed thread, e.g. Tr16x2")] = None
-    material_pair: Annotated[
-        Literal["steel_bronze", "hardened_steel_bronze", "steel_cast_iron", "steel_steel"],
-        Field(description="screw and nut materials"),
-    ] = "steel_bronze"
-    lubrication: Annotated[Literal["oil", "dry"], Field(description="thread lubrication")] = "oil"
-    screw_steel: Annotated[Literal["45", "40X"], Field(description="screw steel grade")] = "45"
-
-    @field_validator("thread")
-    @classmethod
-    def _thread_form(cls, v: str | None) -> str | None:
-        if v is None:
-            return v
-        m = THREAD_RE.match(v.strip())
-        if not m:
-            raise ValueError("must be a trapezoidal thread written like Tr16x2 (d x P in mm)")
-        return f"Tr{float(m.group(1)):g}x{float(m.group(2)):g}"
-
-
 class OneWayReq(_Strict):
     """The holding device of a drive with ``hold_without_power`` (seed 004)."""
 
@@ -114,19 +46,6 @@ class OneWayReq(_Strict):
         Literal["mass", "inertia", "power"],
         Field(description="what the automatic choice minimises"),
     ] = "mass"
-
-
-class LinearRequirements(_Strict):
-    """A linear actuator: induction motor + sliding screw–nut (seed 001)."""
-
-    application: ApplicationReq
-    linear: Annotated[
-        LinearReq,
-        Field(description="the [linear] table: force_N, stroke_m, travel_time_s, support_span_m"),
-    ]
-    motor: Annotated[InductionMotorReq, Field(description="the [motor] table: kind = 'induction'")]
-    screw: ScrewReq = ScrewReq()
-    one_way: OneWayReq = OneWayReq()
 
 
 class _Head(BaseModel):
@@ -150,16 +69,18 @@ def requirements_model(kind: str) -> type[BaseModel]:
     """The requirement model of an application kind (imported only when used: pydantic
     builds a model's validator at import, and the linear batch path must stay light)."""
     if kind == "linear":
+        from advisor.applications.linear.requirements import LinearRequirements
+
         return LinearRequirements
     if kind == "positioning":
-        from advisor.models_positioning import PositioningRequirements
+        from advisor.applications.positioning.requirements import PositioningRequirements
 
         return PositioningRequirements
     if kind == "spinning_rotor":
-        from advisor.models_rotor import SpinningRotorRequirements
+        from advisor.applications.spinning_rotor.requirements import SpinningRotorRequirements
 
         return SpinningRotorRequirements
-    from advisor.models_rotary import RotaryRequirements
+    from advisor.applications.rotary.requirements import RotaryRequirements
 
     return RotaryRequirements
 

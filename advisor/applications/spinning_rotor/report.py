@@ -1,6 +1,6 @@
 """Report tables of the spinning-rotor drive (imported only on that path)."""
 
-from advisor.report import _Out
+from advisor.core.report import _Out
 
 
 class PairOut(_Out):

@@ -5,7 +5,7 @@ from typing import Annotated
 
 from pydantic import Field, model_validator
 
-from advisor.models import ApplicationReq, _num, _Strict
+from advisor.core.requirements import ApplicationReq, _num, _Strict
 
 
 class AeroReq(_Strict):

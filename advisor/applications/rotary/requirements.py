@@ -1,13 +1,14 @@
 """Requirements of the rotary actuator (seed 000): PM brushless motor + wave-gear reducer.
 
-Kept apart from :mod:`advisor.models` so the linear batch path never builds these validators.
+Kept apart from :mod:`advisor.core.requirements` so the linear batch path never builds these
+validators.
 """
 
 from typing import Annotated, Literal
 
 from pydantic import Field, model_validator
 
-from advisor.models import ApplicationReq, OneWayReq, _num, _Strict
+from advisor.core.requirements import ApplicationReq, OneWayReq, _num, _Strict
 
 
 class RotaryReq(_Strict):

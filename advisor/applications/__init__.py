@@ -1,0 +1,1 @@
+"""One package per application: requirements.py, advice.py, report.py, each registered once."""
