@@ -6,6 +6,7 @@ One entry point, :func:`advise`, used by the batch command and the terminal wiza
 from pathlib import Path
 
 from advisor import __version__
+from advisor.core import registry
 from advisor.core.errors import InfeasibleError
 from advisor.core.report import CheckOut, DecisionOut, Report, ReportHeader
 from advisor.core.requirements import Requirements
@@ -22,16 +23,8 @@ def advise(req: Requirements, catalog_dir: Path | None = None) -> Report:
     """
     cat = load_catalogs(catalog_dir)
     trace = Trace()
-    # each application imports its own pipeline: the linear path stays free of numpy
-    if req.application.kind == "linear":
-        from advisor.applications.linear.advice import advise_linear as pipeline
-    elif req.application.kind == "positioning":
-        from advisor.applications.positioning.advice import advise_positioning as pipeline
-    elif req.application.kind == "spinning_rotor":
-        from advisor.applications.spinning_rotor.advice import advise_spinning_rotor as pipeline
-    else:
-        from advisor.applications.rotary.advice import advise_rotary as pipeline
-    design, checks, warnings = pipeline(req, cat, trace)
+    # the registry imports only this application's pipeline: the linear path stays numpy-free
+    design, checks, warnings = registry.pipeline(req.application.kind)(req, cat, trace)
     failed = [c for c in checks if not c.passed]
     if failed:  # the rules should never let this happen; if they do, it is not a design
         raise InfeasibleError(

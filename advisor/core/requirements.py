@@ -10,28 +10,100 @@ import tomllib
 from pathlib import Path
 from typing import Annotated, Any, Literal
 
-from pydantic import BaseModel, ConfigDict, Field, ValidationError
+from pydantic import BaseModel, ConfigDict, Field, ValidationError, field_validator
+from pydantic_core import PydanticCustomError
 
 from advisor.core.errors import InputError
+
+#: Stands for the registered kinds in a description (filled in when a message is written).
+_KINDS = "{kinds}"
 
 
 class _Strict(BaseModel):
     model_config = ConfigDict(extra="forbid", strict=True, frozen=True, allow_inf_nan=False)
 
 
-def _num(gt: float | None = None, le: float | None = None, ge: float | None = None, desc: str = ""):
-    return Field(gt=gt, le=le, ge=ge, allow_inf_nan=False, description=desc)
+def _extra(
+    label: str | None, unit: str | None, step: int | None, example: Any, extra: dict[str, Any]
+) -> dict[str, Any] | None:
+    """The question metadata of a field, kept in its JSON Schema as ``x-`` keywords (editors
+    ignore them; :mod:`advisor.core.questions` reads them)."""
+    out = {f"x-{k}": v for k, v in extra.items()}
+    if label is not None:
+        out["x-label"] = label
+    if unit is not None:
+        out["x-unit"] = unit
+    if step is not None:
+        out["x-step"] = step
+    if example is not None:
+        out["examples"] = [example]
+    return out or None
+
+
+def ask(
+    desc: str = "",
+    *,
+    label: str | None = None,
+    unit: str | None = None,
+    step: int | None = None,
+    example: Any = None,
+    extra: dict[str, Any] | None = None,
+    **constraints: Any,
+) -> Any:
+    """A requirement field declared once: ``desc`` is the help text (and the words of its
+    error messages), ``label`` the wizard's name for it, ``unit`` its unit (by default the
+    one its key's suffix names, see :mod:`advisor.core.questions`), ``step`` the wizard step
+    that asks it (none: the file only), ``example`` a value shown where there is no default;
+    ``constraints`` are pydantic's (``gt``, ``le``, ``max_length`` …), the valid range."""
+    return Field(
+        description=desc,
+        json_schema_extra=_extra(label, unit, step, example, extra or {}),
+        **constraints,
+    )
+
+
+def _num(
+    gt: float | None = None,
+    le: float | None = None,
+    ge: float | None = None,
+    desc: str = "",
+    **question: Any,
+) -> Any:
+    """A finite number field; ``question`` as for :func:`ask`."""
+    return ask(desc, gt=gt, le=le, ge=ge, allow_inf_nan=False, **question)
+
+
+def _kind_schema(schema: dict[str, Any]) -> None:
+    from advisor.core.registry import kinds
+
+    schema["enum"] = list(kinds())
 
 
 class ApplicationReq(_Strict):
-    kind: Annotated[
-        Literal["linear", "rotary", "positioning", "spinning_rotor"],
-        Field(description="the application"),
-    ]
+    kind: Annotated[str, Field(description="the application", json_schema_extra=_kind_schema)]
     hold_without_power: Annotated[
-        bool, Field(description="the drive must hold the load with the motor off")
+        bool,
+        ask(
+            "the drive must hold the load with the motor off",
+            label="Hold the load with the motor off",
+            step=2,
+            extra={"with": "one_way"},  # asked where the application has a one-way device
+        ),
     ] = False
-    title: Annotated[str, Field(max_length=200, description="a label for the report")] = ""
+    title: Annotated[
+        str, ask("a label for the report", label="Title for the report", max_length=200)
+    ] = ""
+
+    @field_validator("kind")
+    @classmethod
+    def _registered(cls, v: str) -> str:
+        from advisor.core.registry import expected_text, kinds
+
+        if v not in kinds():
+            raise PydanticCustomError(
+                "literal_error", "Input should be {expected}", {"expected": expected_text(kinds())}
+            )
+        return v
 
 
 class OneWayReq(_Strict):
@@ -39,12 +111,12 @@ class OneWayReq(_Strict):
 
     type: Annotated[
         Literal["auto", "roller_clutch", "em_clutch", "worm", "inverse_gear"],
-        Field(description="one-way device type"),
+        ask("one-way device type", label="One-way device", step=2),
     ] = "auto"
     rollers: Annotated[int, Field(ge=3, le=12, description="rollers of a roller clutch")] = 6
     priority: Annotated[
         Literal["mass", "inertia", "power"],
-        Field(description="what the automatic choice minimises"),
+        ask("what the automatic choice minimises", label="Automatic choice minimises", step=2),
     ] = "mass"
 
 
@@ -53,11 +125,7 @@ class _Head(BaseModel):
 
     model_config = ConfigDict(extra="allow", strict=True)
     application: Annotated[
-        ApplicationReq,
-        Field(
-            description="the [application] table: kind = 'linear', 'rotary', 'positioning' or "
-            "'spinning_rotor'"
-        ),
+        ApplicationReq, Field(description=f"the [application] table: kind = {_KINDS}")
     ]
 
 
@@ -66,23 +134,12 @@ Requirements = Any
 
 
 def requirements_model(kind: str) -> type[BaseModel]:
-    """The requirement model of an application kind (imported only when used: pydantic
-    builds a model's validator at import, and the linear batch path must stay light)."""
-    if kind == "linear":
-        from advisor.applications.linear.requirements import LinearRequirements
+    """The requirement model of a registered application kind (imported only when used:
+    pydantic builds a model's validator at import, and the linear batch path must stay
+    light)."""
+    from advisor.core.registry import requirements_model as model
 
-        return LinearRequirements
-    if kind == "positioning":
-        from advisor.applications.positioning.requirements import PositioningRequirements
-
-        return PositioningRequirements
-    if kind == "spinning_rotor":
-        from advisor.applications.spinning_rotor.requirements import SpinningRotorRequirements
-
-        return SpinningRotorRequirements
-    from advisor.applications.rotary.requirements import RotaryRequirements
-
-    return RotaryRequirements
+    return model(kind)
 
 
 # ------------------------------------------------------------------ reading and messages
@@ -164,6 +221,10 @@ def format_validation_error(exc: ValidationError, root: Any) -> list[str]:
         typ = err["type"]
         ctx = err.get("ctx", {}) or {}
         desc = f" ({info.description})" if info is not None and info.description else ""
+        if _KINDS in desc:
+            from advisor.core.registry import expected_text, kinds
+
+            desc = desc.replace(_KINDS, expected_text(kinds()))
         if typ == "missing":
             lines.append(f"{where}: missing; required{desc}")
             continue

@@ -119,3 +119,27 @@ class LinearDesignOut(_Out):
     screw: ScrewOut
     motor: InductionMotorOut
     one_way: "OneWayOut | None" = None
+
+
+def headline(report) -> str:
+    """The design in a few words: thread, motor, pole pairs."""
+    s, m = report.design.screw, report.design.motor
+    return f"{s.thread}, {m.model} {m.rated_power_kW:g} kW, p = {m.pole_pairs}"
+
+
+def summary_rows(report) -> list[tuple[str, str]]:
+    """The screw and the motor, one line each, for the summary after ``--batch -o``."""
+    s, m = report.design.screw, report.design.motor
+    return [
+        (
+            "screw",
+            f"{s.thread}{' (imposed)' if s.imposed else ''}, {s.speed_rpm:.0f} rpm, "
+            f"{s.torque_Nm:.3f} N·m ({s.friction_model}; standard {s.torque_standard_Nm:.3f}), "
+            f"η = {s.efficiency:.3f}, {'self-locking' if s.self_locking else 'not self-locking'}",
+        ),
+        (
+            "motor",
+            f"{m.model}, {m.rated_power_kW:g} kW, {2 * m.pole_pairs} poles (p = {m.pole_pairs}), "
+            f"runs at {m.working_speed_rpm:.0f} rpm, stroke in {m.travel_time_s:.2f} s",
+        ),
+    ]
