@@ -5,15 +5,27 @@ from typing import Annotated, Literal
 
 from pydantic import Field, field_validator, model_validator
 
-from advisor.core.requirements import ApplicationReq, OneWayReq, _num, _Strict
+from advisor.core.requirements import ApplicationReq, OneWayReq, _num, _Strict, ask
 
 
 class LinearReq(_Strict):
-    force_N: Annotated[float, _num(gt=0, le=5e6, desc="rated axial force, N")]
-    stroke_m: Annotated[float, _num(gt=0, le=20, desc="stroke, m")]
-    travel_time_s: Annotated[float, _num(gt=0, le=1e5, desc="time for the full stroke, s")]
+    force_N: Annotated[
+        float, _num(gt=0, le=5e6, desc="rated axial force, N", label="Axial force", step=1)
+    ]
+    stroke_m: Annotated[float, _num(gt=0, le=20, desc="stroke, m", label="Stroke", step=1)]
+    travel_time_s: Annotated[
+        float,
+        _num(gt=0, le=1e5, desc="time for the full stroke, s", label="Time for the stroke", step=1),
+    ]
     support_span_m: Annotated[
-        float, _num(gt=0, le=20, desc="distance between the screw supports, m")
+        float,
+        _num(
+            gt=0,
+            le=20,
+            desc="distance between the screw supports, m",
+            label="Unsupported screw length",
+            step=1,
+        ),
     ]
     end_fixity: Annotated[
         Literal["pinned-pinned", "fixed-pinned", "fixed-fixed", "fixed-free"],
@@ -35,7 +47,9 @@ class LinearReq(_Strict):
 
 class InductionMotorReq(_Strict):
     kind: Annotated[Literal["induction"], Field(description="motor type")]
-    supply_frequency_Hz: Annotated[float, _num(gt=0, desc="supply frequency, Hz")] = 50.0
+    supply_frequency_Hz: Annotated[
+        float, _num(gt=0, desc="supply frequency, Hz", label="Supply frequency", step=3)
+    ] = 50.0
 
     @field_validator("supply_frequency_Hz")
     @classmethod
@@ -50,16 +64,27 @@ THREAD_RE = re.compile(r"^Tr\s*(\d+(?:\.\d+)?)\s*[x×]\s*(\d+(?:\.\d+)?)$", re.I
 
 class ScrewReq(_Strict):
     friction_coefficient: Annotated[
-        float | None, _num(gt=0, le=0.6, desc="thread friction coefficient f")
+        float | None,
+        _num(
+            gt=0,
+            le=0.6,
+            desc="thread friction coefficient f",
+            label="Thread friction coefficient f",
+            step=3,
+        ),
     ] = None
     starts: Annotated[int, Field(ge=1, le=4, description="number of thread starts")] = 1
     friction_model: Annotated[
-        Literal["standard", "paper"], Field(description="reduced friction formula")
+        Literal["standard", "paper"],
+        ask("reduced friction formula", label="Friction formula", step=3),
     ] = "standard"
-    thread: Annotated[str | None, Field(description="imposed thread, e.g. Tr16x2")] = None
+    thread: Annotated[
+        str | None,
+        ask("imposed thread, e.g. Tr16x2", label="Impose a thread", step=2, example="Tr16x2"),
+    ] = None
     material_pair: Annotated[
         Literal["steel_bronze", "hardened_steel_bronze", "steel_cast_iron", "steel_steel"],
-        Field(description="screw and nut materials"),
+        ask("screw and nut materials", label="Screw–nut materials", step=2),
     ] = "steel_bronze"
     lubrication: Annotated[Literal["oil", "dry"], Field(description="thread lubrication")] = "oil"
     screw_steel: Annotated[Literal["45", "40X"], Field(description="screw steel grade")] = "45"
