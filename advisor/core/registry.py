@@ -18,11 +18,11 @@ class Application(NamedTuple):
 
     kind: str  # the value of application.kind
     title: str  # one line in the wizard's list of applications
-    requirements: str  # "module:Model", the pydantic model of the whole requirement file
-    pipeline: str  # "module:function" (req, catalogs, trace) -> (design, checks, warnings)
-    headline: str  # "module:function" (report) -> the design in a few words
-    summary_rows: str | None = None  # "module:function" (report) -> [(name, text)] for -o
-    views: str | None = None  # "module" with components(report) and plots(report), for the wizard
+    requirements: Any  # "module:Model", the pydantic model of the whole requirement file
+    pipeline: Any  # "module:function" (req, catalogs, trace) -> (design, checks, warnings)
+    headline: Any  # "module:function" (report) -> the design in a few words
+    summary_rows: Any = None  # "module:function" (report) -> [(name, text)] for -o
+    views: Any = None  # "module" with components(report) and plots(report), for the wizard
 
 
 _APPLICATIONS: dict[str, Application] = {}
@@ -62,8 +62,11 @@ def application(kind: str) -> Application:
     return _shipped()[kind]
 
 
-def load(path: str) -> Any:
-    """The object an import path names: ``"advisor.applications.linear.advice:advise"``."""
+def load(path: Any) -> Any:
+    """The object an import path names (``"advisor.applications.linear.advice:advise"``);
+    an entry may also hold the object itself (an application defined in a test)."""
+    if not isinstance(path, str):
+        return path
     module, _, name = path.partition(":")
     obj = import_module(module)
     return getattr(obj, name) if name else obj
@@ -97,6 +100,6 @@ def views(kind: str) -> Any:
 
 
 def expected_text(values: tuple[str, ...]) -> str:
-    """``'a', 'b' or 'c'``: the allowed values as pydantic words a literal error."""
+    """``'a', 'b' or 'c'``: the allowed values, worded as pydantic words a literal error."""
     quoted = [repr(v) for v in values]
     return quoted[0] if len(quoted) == 1 else ", ".join(quoted[:-1]) + " or " + quoted[-1]
