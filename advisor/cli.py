@@ -24,7 +24,8 @@ def build_parser() -> argparse.ArgumentParser:
     p = argparse.ArgumentParser(
         prog=PROG,
         description="Rules-based design advisor for electromechanical drives.",
-        epilog="Exit codes: 0 design found, 2 invalid input, 3 no feasible design.",
+        epilog="Exit codes: 0 design found, 2 invalid input, 3 no feasible design. "
+        "`advisor schema` prints the JSON Schema of requirement files.",
     )
     p.add_argument(
         "requirements",
@@ -138,7 +139,30 @@ def run_wizard(path: Path | None, catalog_dir: Path | None) -> int:
         return exc.exit_code
 
 
+def run_schema(argv: list[str]) -> int:
+    """``advisor schema``: the JSON Schema of requirement files (for editors with TOML schema
+    support); ``--markdown``: the README's tables of requirement keys."""
+    p = argparse.ArgumentParser(
+        prog=f"{PROG} schema",
+        description="Print the JSON Schema of requirement files, from the requirement models.",
+    )
+    p.add_argument(
+        "--markdown", action="store_true", help="print the tables of requirement keys instead"
+    )
+    try:
+        args = p.parse_args(argv)
+    except SystemExit as exc:
+        return int(exc.code or 0)
+    from advisor.core import schema
+
+    sys.stdout.write(schema.key_tables() if args.markdown else schema.schema_text())
+    return ExitCode.OK
+
+
 def main(argv: list[str] | None = None) -> int:
+    argv = sys.argv[1:] if argv is None else argv
+    if argv[:1] == ["schema"]:
+        return run_schema(argv[1:])
     parser = build_parser()
     try:
         args = parser.parse_args(argv)
