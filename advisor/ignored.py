@@ -13,17 +13,22 @@ A silently ignored option misleads a designer who checks the report by hand, so:
 
 from typing import Any
 
-#: The applications whose design includes a one-way holding device (seed 004).
-HOLDING_KINDS = ("linear", "rotary")
-
 IGNORED_PREFIX = "ignored: "
+
+
+def holds(kind: str) -> bool:
+    """Whether an application's design can include a one-way holding device (seed 004): its
+    requirement model has a ``[one_way]`` table (linear and rotary actuators)."""
+    from advisor.core.registry import requirements_model
+
+    return "one_way" in requirements_model(kind).model_fields
 
 
 def contradictions(data: dict[str, Any]) -> list[str]:
     """Refusals for a document whose [application] table is already valid."""
     app = data.get("application", {})
     kind = app.get("kind")
-    if app.get("hold_without_power") is True and kind not in HOLDING_KINDS:
+    if app.get("hold_without_power") is True and not holds(kind):
         return [
             f"application.hold_without_power = true: not available for a {kind} drive (a "
             "holding one-way device is chosen only for linear and rotary actuators, seed 004); "
@@ -35,8 +40,8 @@ def contradictions(data: dict[str, Any]) -> list[str]:
 def ignored(req: Any) -> list[str]:
     """Warnings for options of a valid requirement that the design does not use."""
     if (
-        req.application.kind in HOLDING_KINDS
-        and "one_way" in req.model_fields_set
+        "one_way" in req.model_fields_set
+        and holds(req.application.kind)
         and not req.application.hold_without_power
     ):
         return [

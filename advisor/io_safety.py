@@ -22,7 +22,7 @@ import unicodedata
 from pathlib import Path
 from typing import Any
 
-from advisor.errors import InputError
+from advisor.core.errors import InputError
 
 #: A requirement file is kilobytes; anything above this is not one.
 MAX_INPUT_BYTES = 1 << 20

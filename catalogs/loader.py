@@ -9,7 +9,7 @@ from functools import cache
 from pathlib import Path
 from typing import Any, NamedTuple
 
-from advisor.errors import CatalogError
+from advisor.core.errors import CatalogError
 from catalogs.rows import (
     Bearing,
     ElectricalSteel,
@@ -80,7 +80,7 @@ CATALOG_MAX_BYTES = 16 << 20
 def _read(path: Path) -> dict[str, Any]:
     """A catalog file read as safely as a requirement (regular file, bounded size, no deep
     nesting; see :mod:`advisor.io_safety`)."""
-    from advisor.errors import InputError
+    from advisor.core.errors import InputError
     from advisor.io_safety import parse_toml, read_input, show
 
     try:

@@ -17,7 +17,7 @@ from helpers import EXAMPLES, ROOT, seed001_requirement
 
 from advisor import io_safety, many
 from advisor.cli import main
-from advisor.errors import ExitCode, InputError
+from advisor.core.errors import ExitCode, InputError
 
 LINEAR = EXAMPLES / "linear_screw_actuator.toml"
 ROTARY = EXAMPLES / "rudder_actuator.toml"
@@ -90,7 +90,9 @@ def test_summary_shows_a_hostile_title_and_path_literally(tmp_path, monkeypatch,
 def test_summary_shows_names_and_messages_literally(tmp_path, monkeypatch, capsys):
     """Motor and bearing names reach the summary through the headline; table names like
     [one_way] through the warnings: none is read as markup."""
-    monkeypatch.setattr(many, "headline", lambda report: "motor [/]M1 [b]x, bearing 7000 [/i]")
+    from advisor.core import registry
+
+    monkeypatch.setattr(registry, "headline", lambda report: "motor [/]M1 [b]x, bearing 7000 [/i]")
     doc = seed001_requirement()
     doc["one_way"] = {"type": "worm"}  # ignored (hold_without_power = false): a warning
     import tomli_w
@@ -568,7 +570,7 @@ def test_a_bom_is_accepted(tmp_path, capsys):
     ],
 )
 def test_thread_sizes_are_taken_only_as_written_in_the_standard(thread, ok):
-    from advisor.models import ScrewReq
+    from advisor.applications.linear.requirements import ScrewReq
 
     if ok:
         assert ScrewReq(thread=thread).thread in ("Tr16x2", "Tr10x1.5")
@@ -578,7 +580,7 @@ def test_thread_sizes_are_taken_only_as_written_in_the_standard(thread, ok):
 
 
 def test_values_are_never_rounded_onto_the_limit():
-    from advisor.models import _show
+    from advisor.core.requirements import _show
 
     assert _show(50.000000000001) == "50.000000000001"
     assert _show(1e12) == "1e+12"
@@ -614,8 +616,8 @@ def test_the_wizard_views_show_user_names_literally(tmp_path):
     the decisions and the summary of the wizard, never as markup or a control sequence."""
     from rich.console import Console
 
-    from advisor.engine import advise
-    from advisor.models import parse_requirements
+    from advisor.core.engine import advise
+    from advisor.core.requirements import parse_requirements
     from advisor.tui import views
 
     doc = tomllib.loads((EXAMPLES / "positioning_drive.toml").read_text())
@@ -632,7 +634,7 @@ def test_the_wizard_views_show_user_names_literally(tmp_path):
 
 
 def test_a_user_catalog_that_is_a_fifo_or_too_deep_is_refused_in_one_line(tmp_path):
-    from advisor.errors import CatalogError
+    from advisor.core.errors import CatalogError
     from catalogs import load_catalogs
     from catalogs.loader import MOTORS_FILE
 

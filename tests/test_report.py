@@ -5,7 +5,7 @@ import os
 import pytest
 
 from advisor import io_safety
-from advisor import report as rp
+from advisor.core import report as rp
 
 
 def test_write_atomic_replaces(tmp_path):

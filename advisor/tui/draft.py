@@ -14,7 +14,7 @@ from typing import Any, NamedTuple
 
 import tomli_w
 
-from advisor.errors import InputError
+from advisor.core.errors import InputError
 from advisor.io_safety import read_toml, show, show_repr, write_atomic
 from advisor.tui import fields as F
 
@@ -72,6 +72,8 @@ def _leaf_ok(field: F.Field, value: Any) -> str | None:
     """Why ``value`` cannot be shown in ``field``'s widget, or None when it can. Numbers and
     text given with the wrong type stay: they appear in their input box and the field's own
     check says what to fix."""
+    if field.kind == "fixed":  # one allowed value, shown not edited: the engine checks it
+        return None
     if field.kind == "bool":
         return None if isinstance(value, bool) else "must be true or false"
     if field.kind == "choice":
@@ -86,10 +88,7 @@ def _leaf_ok(field: F.Field, value: Any) -> str | None:
     return None
 
 
-_APP_FIELDS = (
-    F.Field(("application", "kind"), "Application", kind="choice", choices=tuple(F.KINDS)),
-    F.Field(("application", "title"), "Title", kind="str", optional=True),
-)
+_APP_FIELDS = (F.Field(("application", "title"), "Title", kind="str", optional=True),)
 
 
 def shape(doc: Any) -> tuple[dict[str, Any], list[str]]:
@@ -109,7 +108,14 @@ def shape(doc: Any) -> tuple[dict[str, Any], list[str]]:
         )
         doc.pop("application")
     elif isinstance(app, dict):
-        kind = app.get("kind") if app.get("kind") in F.KINDS else None
+        kinds = tuple(F.titles())
+        kind = app.get("kind") if app.get("kind") in kinds else None
+        if "kind" in app and kind is None:
+            problems.append(
+                f"application.kind = {_echo(app['kind'])}: must be one of {', '.join(kinds)}; "
+                "choose the application again"
+            )
+            app = doc["application"] = {k: v for k, v in app.items() if k != "kind"}
     fields = [*_APP_FIELDS, *(F.all_fields(kind) if kind else [])]
     for field in fields:
         node: Any = doc
