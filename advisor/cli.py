@@ -5,8 +5,8 @@ the report atomically and prints a short summary instead. Exit codes: see
 :class:`advisor.core.errors.ExitCode`. Never a traceback: every failure is one line per problem on
 stderr.
 
-The batch path must stay light: it imports neither textual nor rich (rich only for the
-summary of ``-o``) nor scipy.optimize.
+The batch path must stay light: it imports neither textual nor rich (the summary of ``-o`` is
+plain text) nor scipy; each path imports only the application its file names.
 """
 
 import argparse
@@ -152,7 +152,7 @@ def run_batch(req_path: Path, output: Path | None, catalog_dir: Path | None) -> 
     try:
         print_summary(report, output)
         sys.stdout.flush()
-    except (BrokenPipeError, SystemExit):  # rich exits on a closed pipe: the reader left
+    except BrokenPipeError:  # the reader left
         _silence_stdout()
         return ExitCode.OK
     except OSError as exc:

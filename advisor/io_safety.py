@@ -15,7 +15,6 @@ This module imports nothing heavy: the batch path uses it.
 """
 
 import os
-import secrets
 import stat
 import tomllib
 import unicodedata
@@ -234,7 +233,7 @@ def write_atomic(path: Path, text: str) -> None:
     except FileNotFoundError:
         old_mode = None
     directory = target.parent
-    tmp = directory / f".{target.name[:100]}.{os.getpid()}-{secrets.token_hex(6)}.tmp"
+    tmp = directory / f".{target.name[:100]}.{os.getpid()}-{os.urandom(6).hex()}.tmp"
     flags = os.O_WRONLY | os.O_CREAT | os.O_EXCL | getattr(os, "O_CLOEXEC", 0)
     fd = os.open(tmp, flags, 0o666)  # the kernel applies the umask, as for an editor's file
     try:

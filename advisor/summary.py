@@ -1,40 +1,43 @@
-"""A short human summary of a report, printed with rich after ``advisor --batch -o``."""
+"""A short human summary of a report, printed as plain text after ``advisor --batch -o``.
 
+Plain text, not rich: the summary is a handful of lines, and importing and rendering rich
+would cost more than the whole advice on the batch path (issue 16). User and catalog text
+(title, path, names, messages) is shown with its control characters escaped.
+"""
+
+import sys
 from pathlib import Path
-
-from rich.console import Console
-from rich.table import Table
-from rich.text import Text
+from typing import TextIO
 
 from advisor.core.report import Report
-from advisor.io_safety import plain
+from advisor.io_safety import printable
 
 
-def print_summary(report: Report, path: Path, console: Console | None = None) -> None:
-    console = console or Console()
+def summary_lines(report: Report, path: Path) -> list[str]:
+    """The summary: a heading, where the report went, the design's rows (names aligned) with
+    the lowest check margin, then the warnings."""
     from advisor.core.registry import summary_rows
 
-    # user and catalog text (title, path, names, messages) is data: plain Text, never markup
-    console.print(
-        Text.assemble(
-            ("Drive Advisor", "bold"),
-            " — ",
-            plain(report.report.title or report.report.application),
-        )
-    )
-    console.print(
-        Text.assemble("report written to ", plain(path, "cyan"), f"  ({report.report.status})")
-    )
-    t = Table(show_header=False, box=None, pad_edge=False)
-    t.add_column(style="bold")
-    t.add_column()
-    for name, text in summary_rows(report):
-        t.add_row(plain(name), plain(text))
+    head = printable(str(report.report.title or report.report.application), newlines=False)
+    where = printable(str(path), newlines=False)
+    rows = [
+        (printable(name, newlines=False), printable(text, newlines=False))
+        for name, text in summary_rows(report)
+    ]
     if report.checks:
         worst = min(report.checks, key=lambda c: c.margin)
-        t.add_row("lowest margin", plain(f"{worst.name}: {worst.margin:.3f}"))
+        rows.append(("lowest margin", printable(f"{worst.name}: {worst.margin:.3f}")))
     else:
-        t.add_row("lowest margin", "no checks")
-    console.print(t)
-    for w in report.warnings:
-        console.print(Text.assemble(("warning:", "yellow"), " ", plain(w)))
+        rows.append(("lowest margin", "no checks"))
+    width = max(len(name) for name, _ in rows)
+    return [
+        f"Drive Advisor — {head}",
+        f"report written to {where}  ({report.report.status})",
+        *(f"{name:<{width}}  {text}" for name, text in rows),
+        *(f"warning: {printable(w)}" for w in report.warnings),
+    ]
+
+
+def print_summary(report: Report, path: Path, file: TextIO | None = None) -> None:
+    out = file or sys.stdout
+    out.write("".join(line + "\n" for line in summary_lines(report, path)))

@@ -1,6 +1,18 @@
 """Selection heuristics, one module per domain. Each rule decides and explains; none computes
-geometry. Importing this package registers every rule in :data:`advisor.core.rulebook.REGISTRY`."""
+geometry. A rule module registers its rules in :data:`advisor.core.rulebook.REGISTRY` when it
+is imported; the package itself imports none of them, so that a path imports only the rules
+of its application (issue 16). :func:`load_all` imports every module: the whole rule table."""
 
-from rules import bldc, induction, motion, one_way, rotor, screw, wavegear
+from importlib import import_module
 
-__all__ = ["bldc", "induction", "motion", "one_way", "rotor", "screw", "wavegear"]
+#: The rule modules, one per domain.
+MODULES = ("bldc", "induction", "motion", "one_way", "rotor", "screw", "wavegear")
+
+
+def load_all() -> dict:
+    """Import every rule module; the registry of all rules, by id."""
+    from advisor.core.rulebook import REGISTRY
+
+    for name in MODULES:
+        import_module(f"rules.{name}")
+    return REGISTRY

@@ -311,7 +311,7 @@ def refine(
     ok = _within(result, max_outer_diameter_mm, max_length_mm)
     key = result.mass_kg if objective == "mass" else result.outer_diameter_mm
     found: tuple[float, list[float], int] | None = None
-    for n in np.unique(result.stages[ok]):
+    for n in _unique(result.stages[ok]):
         masked = np.where(ok & (result.stages == n), key, np.inf)
         i = int(np.argmin(masked))
         cand = (float(key[i]), result.ratios_out_to_in(i), int(result.rows_out[i]))
@@ -321,7 +321,7 @@ def refine(
             out_grid = np.linspace(ratios[0] - span_out, ratios[0] + span_out, points)
             mids = ratios[1:-1]
             mid_grid = (
-                np.unique(
+                _unique(
                     np.concatenate([np.geomspace(m / span_mid, m * span_mid, points) for m in mids])
                 )
                 if mids
@@ -442,12 +442,20 @@ def pareto(
     return np.concatenate(front) if front else cand[:0]
 
 
+def _unique(a: np.ndarray) -> np.ndarray:
+    """The distinct values of ``a``, sorted: ``np.unique`` for finite values, without the
+    import of ``numpy.ma`` that ``np.unique`` makes on its first call (10–40 ms of a cold
+    run)."""
+    s = np.sort(a, axis=None)
+    return s[np.concatenate(([True], s[1:] != s[:-1]))] if s.size else s
+
+
 def thin(front: np.ndarray, at_most: int) -> np.ndarray:
     """At most ``at_most`` of the ``front`` (sorted by mass), evenly spaced along it, the
     lightest and the heaviest always kept."""
     if front.size <= at_most:
         return front
-    return front[np.unique(np.round(np.linspace(0, front.size - 1, at_most)).astype(int))]
+    return front[_unique(np.round(np.linspace(0, front.size - 1, at_most)).astype(int))]
 
 
 def dominator(

@@ -115,5 +115,7 @@ class LinearRequirements(_Strict):
         Field(description="the [linear] table: force_N, stroke_m, travel_time_s, support_span_m"),
     ]
     motor: Annotated[InductionMotorReq, Field(description="the [motor] table: kind = 'induction'")]
-    screw: ScrewReq = ScrewReq()
-    one_way: OneWayReq = OneWayReq()
+    # defaults made without validation (they are valid): a nested model builds no validator
+    # of its own (defer_build), and validating one here would build it at import (issue 16)
+    screw: ScrewReq = ScrewReq.model_construct()
+    one_way: OneWayReq = OneWayReq.model_construct()

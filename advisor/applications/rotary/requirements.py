@@ -74,8 +74,8 @@ class ReferenceMotor(_Strict):
     magnet_losses: Annotated[
         list[MagnetLossPoint], Field(min_length=1, description="magnet losses at given speeds")
     ] = [  # noqa: RUF012 - pydantic copies field defaults
-        MagnetLossPoint(speed_rpm=5000.0, loss_W=60.0),
-        MagnetLossPoint(speed_rpm=10000.0, loss_W=100.0),
+        MagnetLossPoint.model_construct(speed_rpm=5000.0, loss_W=60.0),
+        MagnetLossPoint.model_construct(speed_rpm=10000.0, loss_W=100.0),
     ]
 
     @model_validator(mode="after")
@@ -111,7 +111,7 @@ class BldcMotorReq(_Strict):
             "motor's own total losses at its rated point (same frame, same cooling)",
         ),
     ] = None
-    reference: ReferenceMotor = ReferenceMotor()
+    reference: ReferenceMotor = ReferenceMotor.model_construct()
 
 
 class GearboxReq(_Strict):
@@ -131,10 +131,12 @@ class RotaryRequirements(_Strict):
 
     application: ApplicationReq
     rotary: Annotated[RotaryReq, Field(description="the [rotary] table: torque_Nm, speed_rpm")]
-    envelope: EnvelopeReq = EnvelopeReq()
+    # defaults made without validation (they are valid): a nested model builds no validator
+    # of its own (defer_build), and validating one here would build it at import (issue 16)
+    envelope: EnvelopeReq = EnvelopeReq.model_construct()
     motor: Annotated[BldcMotorReq, Field(description="the [motor] table: kind = 'bldc'")]
-    gearbox: GearboxReq = GearboxReq()
-    one_way: OneWayReq = OneWayReq()
+    gearbox: GearboxReq = GearboxReq.model_construct()
+    one_way: OneWayReq = OneWayReq.model_construct()
 
     @model_validator(mode="after")
     def _reducer_reduces(self) -> "RotaryRequirements":
