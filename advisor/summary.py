@@ -22,8 +22,11 @@ def print_summary(report: Report, path: Path, console: Console | None = None) ->
         t.add_row("design", headline(report))
     else:
         _linear_rows(t, d)
-    worst = min(report.checks, key=lambda c: c.margin)
-    t.add_row("lowest margin", f"{worst.name}: {worst.margin:.3f}")
+    if report.checks:
+        worst = min(report.checks, key=lambda c: c.margin)
+        t.add_row("lowest margin", f"{worst.name}: {worst.margin:.3f}")
+    else:
+        t.add_row("lowest margin", "none: no check applies to this design")
     console.print(t)
     for w in report.warnings:
         console.print(f"[yellow]warning:[/] {w}")

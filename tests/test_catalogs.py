@@ -1,6 +1,7 @@
 """Catalogs: every row has a source; broken or inconsistent rows are refused with file, row
 and field named."""
 
+import itertools
 import math
 import shutil
 import tomllib
@@ -198,7 +199,7 @@ def test_estimated_4a_inertias_grow_with_the_frame():
     cat = load_catalogs()
     for poles in (2, 4, 6, 8):
         line = sorted(cat.motors_with_poles(poles), key=lambda m: m.rated_power_kW)
-        for a, b in zip(line, line[1:], strict=False):
+        for a, b in itertools.pairwise(line):
             assert a.inertia_kgm2 < b.inertia_kgm2, (a.model, b.model)
     by = {m.model: m for m in cat.motors}
 
