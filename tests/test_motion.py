@@ -291,3 +291,19 @@ def test_no_load_torque_has_no_checks_and_the_summary_says_so(tmp_path, capsys):
     # = 1125 → i = 10.400
     assert rep["design"]["motion"]["estimated_ratio"] == pytest.approx(1125 ** (1 / 3), rel=1e-5)
     assert rep["design"]["motion"]["optimal_ratio"] == pytest.approx(10.400, abs=1e-3)
+
+
+def test_fixed_point_with_a_negligible_load_torque():
+    # found by the whole-range property test: μ0 ≈ 4e-17, so 1 + μ0 rounds to 1 and the
+    # bracket was empty. Near x = 1, x⁴ − x ≈ 3·(x − 1), so K1 = x² ≈ 1 + 2μ0²/3 → 1 and the
+    # fixed point is i0 = ∛A.
+    d = mo.Drive(1e4, 1e-9, 1e6, 1e7, 1e-6)
+    fp = mo.graphical_fixed_point(d, 1e-4)
+    assert fp.k == 1.0
+    assert fp.ratio == pytest.approx(mo.coefficient_a(d, 1e-4) ** (1 / 3), rel=1e-15)
+    # μ0 = 1e-4: K1 − 1 = 2μ0²/3 = 6.6667e-9 to first order (the next term is O(μ0⁴))
+    m = 1e-4 * 1181.25 ** (1 / 3)  # motor A's i0 = ∛A with the torque ratio making μ0 = 1e-4
+    light = A._replace(load_torque_Nm=m * 20.0)
+    i0 = mo.coefficient_a(light, 10.0) ** (1 / 3)
+    mu0 = light.torque_ratio / i0
+    assert mo.graphical_fixed_point(light, 10.0).k - 1 == pytest.approx(2 * mu0**2 / 3, rel=1e-6)

@@ -160,17 +160,22 @@ def graphical_fixed_point(d: Drive, path_rad: float) -> FixedPoint:
         x⁴ − x − μ0² = 0,
 
     whose left side rises for x ≥ 1 (derivative 4x³ − 1 > 0) from −μ0² at x = 1 to
-    (1 + μ0)⁴ − 1 − μ0 − μ0² ≥ 0 at x = 1 + μ0: one root, bracketed and found by bisection.
+    (1 + μ0)⁴ − 1 − μ0 − μ0² ≥ 0 at x = 1 + μ0: one root, bracketed and found by bisection
+    (on y = x − 1, to keep the precision of a small μ0).
     It is the optimum of eq. (6): i³·(1 − μ²)² = A is (i² − m²)²/i = A.
     """
     i0 = coefficient_a(d, path_rad) ** (1.0 / 3.0)
     mu0 = d.torque_ratio / i0
     mu0_sq = mu0 * mu0
-    if mu0_sq == 0.0:
-        x = 1.0
-    else:
-        x = bisect(lambda x: x**4 - x - mu0_sq, 1.0, 1.0 + mu0, xtol=1e-15)
-    k = x * x
+    # solved for y = x − 1 ≥ 0, as y·(x³ + x² + x) = μ0², which keeps its precision when
+    # μ0 is small (then y ≈ μ0²/3 and x itself would round to 1)
+    y = bisect(
+        lambda y: y * ((1.0 + y) ** 3 + (1.0 + y) ** 2 + (1.0 + y)) - mu0_sq,
+        0.0,
+        mu0,
+        xtol=1e-16 * min(1.0, mu0_sq),
+    )
+    k = (1.0 + y) ** 2
     return FixedPoint(k * i0, k, mu0 / k)
 
 
