@@ -128,8 +128,13 @@ def advise_positioning(req: Requirements, cat: Catalogs, trace: Trace):
             "balance the load torque"
         )
     solved = {name: (d, _solve(d, path, pos.profile)) for name, d in usable}
-    best = trace.apply(mo_rules.fastest_motor, {n: s["time"] for n, (_, s) in solved.items()})
-    if best in estimated:
+    times = {n: s["time"] for n, (_, s) in solved.items()}
+    best = min(times, key=times.__getitem__)
+    if best not in estimated:
+        best = trace.apply(mo_rules.fastest_motor, times)
+    else:
+        # the estimate would decide: MO-04 takes the decision (it states the motor adopted,
+        # with the nominal fastest in its rationale)
         bands = {
             n: _inertia_band(d, path, pos.profile, mo_rules.INERTIA_BAND)
             if n in estimated
