@@ -8,7 +8,7 @@ import tomllib
 
 import pytest
 
-from advisor.errors import CatalogError
+from advisor.core.errors import CatalogError
 from catalogs import load_catalogs
 from catalogs.loader import HERE, MATERIALS_FILE, MOTORS_FILE
 

@@ -7,9 +7,9 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from advisor.engine import advise
-from advisor.errors import InfeasibleError, InputError
-from advisor.models import parse_requirements
+from advisor.core.engine import advise
+from advisor.core.errors import InfeasibleError, InputError
+from advisor.core.requirements import parse_requirements
 
 finite = dict(allow_nan=False, allow_infinity=False)
 
@@ -214,8 +214,9 @@ def _log_uniform(lo: float, hi: float):
 
 @st.composite
 def positioning_across_ranges(draw):
-    """Every numeric field drawn across its whole documented range (advisor/models_positioning.py),
-    edges included; the loads are 0 as often as not."""
+    """Every numeric field drawn across its whole documented range
+    (advisor/applications/positioning/requirements.py), edges included; the loads are 0 as
+    often as not."""
     motors = [
         {
             "name": f"M{k}",
@@ -258,7 +259,7 @@ def test_positioning_whole_ranges_end_in_a_finite_report_or_exit_3(data):
     """Issue 13: no crash, no nan or inf anywhere in the report, over every documented range."""
     import tomllib
 
-    from advisor.report import to_toml
+    from advisor.core.report import to_toml
 
     req = parse_requirements(data)
     try:

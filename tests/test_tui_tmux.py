@@ -12,9 +12,9 @@ import uuid
 import pytest
 from helpers import EXAMPLES
 
-from advisor.engine import advise
-from advisor.models import read_requirements
-from advisor.report import to_toml
+from advisor.core.engine import advise
+from advisor.core.report import to_toml
+from advisor.core.requirements import read_requirements
 
 pytestmark = pytest.mark.skipif(shutil.which("tmux") is None, reason="tmux is not installed")
 

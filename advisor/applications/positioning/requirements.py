@@ -8,7 +8,7 @@ from typing import Annotated, Literal
 
 from pydantic import Field, field_validator, model_validator
 
-from advisor.models import ApplicationReq, _num, _Strict
+from advisor.core.requirements import ApplicationReq, _num, _Strict, ask
 
 #: The smallest non-zero load inertia and load torque taken as a load; below them the value
 #: is either 0 (no such load) or a typing error.
@@ -17,24 +17,45 @@ LOAD_TORQUE_MIN_NM = 1e-6
 
 
 class CandidateMotor(_Strict):
-    name: Annotated[str, Field(min_length=1, max_length=60, description="a label for the motor")]
+    name: Annotated[
+        str, ask("a label for the motor", label="name", step=3, min_length=1, max_length=60)
+    ]
     speed_rad_s: Annotated[
         float,
-        _num(ge=0.1, le=1e4, desc="rated speed ω0, 0.1 … 10⁴ rad/s (about 1 … 95 000 rpm)"),
+        _num(
+            ge=0.1,
+            le=1e4,
+            desc="rated speed ω0, 0.1 … 10⁴ rad/s (about 1 … 95 000 rpm)",
+            label="speed ω0",
+            step=3,
+        ),
     ]
     inertia_kgm2: Annotated[
         float,
-        _num(ge=1e-9, le=1e3, desc="motor and coupling inertia J0, 10⁻⁹ … 10³ kg·m²"),
+        _num(
+            ge=1e-9,
+            le=1e3,
+            desc="motor and coupling inertia J0, 10⁻⁹ … 10³ kg·m²",
+            label="inertia J0",
+            step=3,
+        ),
     ]
     accel_torque_Nm: Annotated[
         float,
-        _num(ge=1e-5, le=1e6, desc="starting and braking torque M_λ, 10⁻⁵ … 10⁶ N·m"),
+        _num(
+            ge=1e-5,
+            le=1e6,
+            desc="starting and braking torque M_λ, 10⁻⁵ … 10⁶ N·m",
+            label="start/brake torque M_λ",
+            step=3,
+        ),
     ]
 
 
 class PositioningReq(_Strict):
     profile: Annotated[
-        Literal["trapezoidal", "triangular"], Field(description="speed graph expected")
+        Literal["trapezoidal", "triangular"],
+        ask("speed graph expected", label="Speed graph", step=1),
     ] = "trapezoidal"
     travel_rad: Annotated[
         float,
@@ -42,19 +63,37 @@ class PositioningReq(_Strict):
             ge=1e-4,
             le=1e5,
             desc="path of the load shaft α, 10⁻⁴ … 10⁵ rad (0.006° to about 16 000 turns)",
+            label="Path of the load shaft",
+            step=1,
         ),
     ]
     load_inertia_kgm2: Annotated[
         float,
-        _num(ge=0, le=1e7, desc="load inertia J_p, 0 (none) or 10⁻⁹ … 10⁷ kg·m²"),
+        _num(
+            ge=0,
+            le=1e7,
+            desc="load inertia J_p, 0 (none) or 10⁻⁹ … 10⁷ kg·m²",
+            label="Load inertia",
+            step=1,
+        ),
     ]
     load_torque_Nm: Annotated[
         float,
-        _num(ge=0, le=1e7, desc="load torque M_p, 0 (none) or 10⁻⁶ … 10⁷ N·m"),
+        _num(
+            ge=0,
+            le=1e7,
+            desc="load torque M_p, 0 (none) or 10⁻⁶ … 10⁷ N·m",
+            label="Load torque",
+            step=1,
+        ),
     ]
     motors: Annotated[
         list[CandidateMotor],
-        Field(max_length=200, description="candidate motors; none: the induction catalog"),
+        ask(
+            "candidate motors; none: the induction catalog",
+            max_length=200,
+            extra={"row-label": "Motor"},
+        ),
     ] = []  # noqa: RUF012 - pydantic copies field defaults
 
     @field_validator("load_inertia_kgm2")
