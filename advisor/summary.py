@@ -28,7 +28,7 @@ def summary_lines(report: Report, path: Path) -> list[str]:
         worst = min(report.checks, key=lambda c: c.margin)
         rows.append(("lowest margin", printable(f"{worst.name}: {worst.margin:.3f}")))
     else:
-        rows.append(("lowest margin", "no checks"))
+        rows.append(("lowest margin", "none: no check applies to this design"))
     width = max(len(name) for name, _ in rows)
     return [
         f"Drive Advisor — {head}",
