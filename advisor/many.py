@@ -174,6 +174,41 @@ def usable_cpus() -> int:
         return os.cpu_count() or 1
 
 
+def preload(catalog_dir: Path | None) -> None:
+    """Import every application's pipeline, requirement model and report, build the requirement
+    validators and load the catalogs, in the parent before the workers fork: each worker then
+    starts with them instead of importing and building them again (issue 16). A catalog that
+    cannot be read is left to the workers, which report it per file."""
+    from importlib import import_module
+
+    from advisor.core import registry, requirements
+
+    for module in ("advisor.core.engine", "advisor.core.report", "advisor.ignored"):
+        import_module(module)
+    requirements._Head.model_rebuild(force=True)
+    for app in registry.applications():
+        for path in (app.pipeline, app.headline):
+            registry.load(path)
+        registry.load(app.requirements).model_rebuild(force=True)
+    from catalogs import load_catalogs
+
+    try:
+        load_catalogs(catalog_dir)
+    except AdvisorError:
+        pass
+
+
+def _pool_context():
+    """Workers forked from the parent (where it can fork), so that they inherit what
+    :func:`preload` imported."""
+    import multiprocessing
+
+    try:
+        return multiprocessing.get_context("fork")
+    except ValueError:  # no fork on this platform: the default start method
+        return None
+
+
 def _run_pool(
     jobs: int,
     todo: list[tuple[int, Path, Path]],
@@ -187,7 +222,9 @@ def _run_pool(
     from concurrent.futures.process import BrokenProcessPool
 
     pending = list(reversed(todo))
-    pool = ProcessPoolExecutor(max_workers=jobs, initializer=_ignore_sigint)
+    pool = ProcessPoolExecutor(
+        max_workers=jobs, mp_context=_pool_context(), initializer=_ignore_sigint
+    )
     flight: dict = {}
     try:
         while pending or flight:
@@ -254,6 +291,7 @@ def run_many(
             todo.append((i, f, t))
     try:
         if jobs > 1:
+            preload(catalog_dir)
             while todo:
                 held, todo = _run_pool(jobs, todo, catalog_dir, outcomes)
                 if not held:

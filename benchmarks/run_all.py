@@ -2,53 +2,35 @@
 
     python benchmarks/run_all.py [--quick]
 
-Medians over repeated runs; ratios are measured within the same run (the machine is noisy).
+Comparisons are paired: the two commands compared run back to back, A B A B …, and each pair
+gives one ratio; the table shows the median ratio with its interquartile range (IQR) and its
+range over the pairs, so load that comes and goes cannot favour one side. The cold batch is
+timed on stdout, with ``-o`` and as a first run without the catalog cache (see
+``cold_batch.py``), in wall time and in CPU time (user + system, which does not count the
+time spent waiting for a core on a loaded machine). The sweep counts only the configurations
+it computed (see ``sweep.py``).
 """
 
 import argparse
 import json
+import os
+import platform
 import shutil
 import statistics
-import subprocess
 import sys
 import tempfile
 import time
 from pathlib import Path
 
 from _results import ROOT, examples, save
+from cold_batch import advisor_cmd, cold, spread, timed
 from tui_latency import tui_latency
 
-FLOOR = [sys.executable, "-c", "import numpy, scipy, pydantic, tomli_w"]
-ADVISOR = (
-    [shutil.which("advisor")] if shutil.which("advisor") else [sys.executable, "-m", "advisor"]
-)
 BEGIN, END = "<!-- results:begin -->", "<!-- results:end -->"
 
 
-def wall(cmd: list[str]) -> float:
-    t0 = time.perf_counter()
-    subprocess.run(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, check=False)
-    return time.perf_counter() - t0
-
-
-def cold(n: int) -> dict:
-    out = {}
-    for ex in examples():
-        batch = [*ADVISOR, "--batch", str(ex)]
-        wall(batch), wall(FLOOR)
-        f, b = [], []
-        for _ in range(n):
-            f.append(wall(FLOOR))
-            b.append(wall(batch))
-        out[ex.name] = {
-            "floor_ms": 1e3 * statistics.median(f),
-            "batch_ms": 1e3 * statistics.median(b),
-        }
-        out[ex.name]["ratio"] = out[ex.name]["batch_ms"] / out[ex.name]["floor_ms"]
-    return out
-
-
 def warm(n: int) -> dict:
+    """In-process read + advise + TOML per example, imports and catalogs already loaded."""
     from advisor.core.engine import advise
     from advisor.core.report import to_toml
     from advisor.core.requirements import read_requirements
@@ -60,8 +42,8 @@ def warm(n: int) -> dict:
         for _ in range(n):
             t0 = time.perf_counter()
             to_toml(advise(read_requirements(ex)))
-            ts.append(time.perf_counter() - t0)
-        out[ex.name] = {"median_ms": 1e3 * statistics.median(ts)}
+            ts.append(1e3 * (time.perf_counter() - t0))
+        out[ex.name] = spread(ts)
     return out
 
 
@@ -96,47 +78,81 @@ def sweep(n: int) -> dict:
     return out
 
 
-def many(repeats: int, files: int) -> dict:
-    out = {}
+def many(pairs: int, files: int) -> dict:
+    """``-j 1`` and ``-j 2`` on the same ``files`` requirement files (the examples in turn),
+    paired: the speed-up is ``-j 1`` time over ``-j 2`` time, pair by pair."""
+    adv = advisor_cmd()
+    j1, j2, j1_cpu, j2_cpu, speedup = [], [], [], [], []
     with tempfile.TemporaryDirectory() as tmp:
         src = Path(tmp) / "reqs"
         src.mkdir()
         exs = examples()
         for i in range(files):
             shutil.copy(exs[i % len(exs)], src / f"req{i:03d}.toml")
-        for jobs in (1, 2):
-            ts = []
-            for r in range(repeats):
-                dest = Path(tmp) / f"out{jobs}-{r}"
-                ts.append(
-                    wall([*ADVISOR, "--batch", str(src), "--out-dir", str(dest), "-j", str(jobs)])
-                )
-            med = statistics.median(ts)
-            out[f"-j {jobs}"] = {"files": files, "median_s": med, "requirements_per_s": files / med}
-    return out
+
+        def run(jobs: int, k: int) -> tuple[float, float]:
+            dest = Path(tmp) / f"out{jobs}-{k}"
+            return timed([*adv, "--batch", str(src), "--out-dir", str(dest), "-j", str(jobs)])
+
+        run(1, -1)
+        for k in range(pairs):
+            if k % 2 == 0:
+                a, b = run(1, k), run(2, k)
+            else:
+                b, a = run(2, k), run(1, k)
+            j1.append(a[0])
+            j2.append(b[0])
+            j1_cpu.append(a[1])
+            j2_cpu.append(b[1])
+            speedup.append(a[0] / b[0])
+    return {
+        "files": files,
+        "pairs": pairs,
+        "j1_s": spread(j1),
+        "j2_s": spread(j2),
+        "j1_cpu_s": spread(j1_cpu),
+        "j2_cpu_s": spread(j2_cpu),
+        "speedup": spread(speedup),
+    }
+
+
+def _iqr(s: dict, fmt: str = ".2f") -> str:
+    return f"IQR {s['q1']:{fmt}}–{s['q3']:{fmt}}, range {s['min']:{fmt}}–{s['max']:{fmt}}"
 
 
 def table(res: dict) -> str:
-    rows = ["| measurement | case | median |", "| --- | --- | --- |"]
-    for name, r in res["cold_batch"].items():
-        rows.append(
-            f"| cold `advisor --batch` vs import floor | {name} | {r['batch_ms']:.0f} ms vs "
-            f"{r['floor_ms']:.0f} ms = **{r['ratio']:.2f} ×** |"
-        )
+    rows = [
+        "| measurement | case | median (spread over the pairs or runs) |",
+        "| --- | --- | --- |",
+    ]
+    for name, per_path in res["cold_batch"].items():
+        for path, r in per_path.items():
+            w, c = r["ratio"], r["cpu_ratio"]
+            rows.append(
+                f"| cold `advisor --batch` ({path}) / import floor | {name} | "
+                f"**{w['median']:.2f} ×** wall ({_iqr(w)}); **{c['median']:.2f} ×** CPU "
+                f"({_iqr(c)}); {r['batch_ms']['median']:.0f} ms vs "
+                f"{r['floor_ms']['median']:.0f} ms wall |"
+            )
     for name, r in res["warm_advice"].items():
-        rows.append(f"| warm advice (read + advise + TOML) | {name} | {r['median_ms']:.2f} ms |")
+        rows.append(
+            f"| warm advice (read + advise + TOML) | {name} | {r['median']:.2f} ms ({_iqr(r)} ms) |"
+        )
     for name, r in res["sweep"].items():
         rows.append(
             f"| design-space sweep | {name}: {r['configurations']:,} computed, "
             f"{r['feasible']:,} feasible | {r['median_ms']:.2f} ms, "
+            f"{r['configs_per_s'] / 1e6:.2f} M computed/s, "
             f"{r['feasible_per_s'] / 1e6:.2f} M feasible/s; optimum mass / "
             f"fine brute force = {r['mass_ratio_vs_fine_grid']:.4f} |"
         )
-    for name, r in res["many"].items():
-        rows.append(
-            f"| many files, `{name}` | {r['files']} files | {r['median_s']:.2f} s, "
-            f"{r['requirements_per_s']:.1f} requirements/s |"
-        )
+    m = res["many"]
+    rows.append(
+        f"| many files, `-j 1` / `-j 2` | {m['files']} files, {m['pairs']} pairs | "
+        f"**{m['speedup']['median']:.2f} ×** faster with `-j 2` ({_iqr(m['speedup'])}); "
+        f"{m['j1_s']['median']:.2f} s vs {m['j2_s']['median']:.2f} s wall, "
+        f"{m['j1_cpu_s']['median']:.2f} s vs {m['j2_cpu_s']['median']:.2f} s CPU |"
+    )
     for name, r in res["tui_latency"].items():
         rows.append(
             f"| TUI recompute latency (edit, ctrl+r → results on screen, Pilot) | {name} | "
@@ -145,19 +161,26 @@ def table(res: dict) -> str:
     return "\n".join(rows)
 
 
+def machine() -> str:
+    load = ", ".join(f"{x:.1f}" for x in os.getloadavg())
+    return (
+        f"{platform.machine()}, {os.cpu_count()} CPUs, {platform.system()} "
+        f"{platform.release()}, Python {platform.python_version()}; load average {load}"
+    )
+
+
 def main() -> None:
     ap = argparse.ArgumentParser()
     ap.add_argument("--quick", action="store_true", help="fewer repeats")
     quick = ap.parse_args().quick
-    res = {
-        "cold_batch": cold(7 if quick else 21),
-        "warm_advice": warm(20 if quick else 100),
-        "sweep": sweep(5 if quick else 20),
-        "many": many(1 if quick else 3, 20 if quick else 60),
-        "tui_latency": tui_latency(5 if quick else 15),
-        "python": sys.version.split()[0],
-        "date": time.strftime("%Y-%m-%d"),
-    }
+    res = {"machine_before": machine()}
+    res["cold_batch"] = cold(7 if quick else 21)
+    res["warm_advice"] = warm(20 if quick else 100)
+    res["sweep"] = sweep(5 if quick else 20)
+    res["many"] = many(1 if quick else 3, 100 if quick else 400)
+    res["tui_latency"] = tui_latency(5 if quick else 15)
+    res["machine_after"] = machine()
+    res["date"] = time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime())
     save("all", res)
     text = table(res)
     print(text)
@@ -166,9 +189,13 @@ def main() -> None:
     if BEGIN in body and END in body:
         head, rest = body.split(BEGIN, 1)
         tail = rest.split(END, 1)[1]
-        stamp = f"\n_{res['date']}, Python {res['python']}, `python benchmarks/run_all.py`_\n\n"
+        stamp = (
+            f"\n_{res['date']}, `python benchmarks/run_all.py{' --quick' if quick else ''}`; "
+            f"machine: {res['machine_before']} (before) / "
+            f"{res['machine_after'].rsplit('; ', 1)[1]} (after)_\n\n"
+        )
         readme.write_text(head + BEGIN + stamp + text + "\n" + END + tail, encoding="utf-8")
-    print(json.dumps({k: v for k, v in res.items() if k in ("python", "date")}))
+    print(json.dumps({k: res[k] for k in ("date", "machine_before", "machine_after")}))
 
 
 if __name__ == "__main__":
