@@ -3,6 +3,8 @@
 import os
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from advisor import io_safety
 from advisor.core import report as rp
@@ -76,3 +78,48 @@ def test_killed_writer_leaves_the_old_file_and_no_one_deletes_its_temp(tmp_path)
     rp.write_atomic(target, "next = true\n")
     assert target.read_text() == "next = true\n"
     assert sorted(tmp_path.iterdir()) == sorted([target, leftovers[0]])
+
+
+# ------------------------------------------------------------------ TOML text (issue 16)
+def _examples():
+    from helpers import EXAMPLES
+
+    return sorted(EXAMPLES.glob("*.toml"))
+
+
+@pytest.mark.parametrize("example", _examples(), ids=lambda p: p.name)
+def test_toml_text_writes_what_tomli_w_writes_for_every_example(example):
+    """The report's own writer against tomli-w, byte for byte, on each example's report."""
+    import tomli_w
+
+    from advisor.core.engine import advise
+    from advisor.core.requirements import read_requirements
+
+    plain = rp._plain(advise(read_requirements(example)))
+    assert rp.to_toml(advise(read_requirements(example))) == tomli_w.dumps(plain)
+
+
+_KEYS = st.text(alphabet=st.sampled_from('ab_-Z9 ."\\\x01é\t'), max_size=6)
+_SCALARS = (
+    st.booleans()
+    | st.integers(-(10**12), 10**12)
+    | st.floats(allow_nan=False)
+    | st.text(alphabet=st.characters(codec="utf-8", exclude_categories=("Cs",)), max_size=30)
+)
+_VALUES = st.recursive(
+    _SCALARS,
+    lambda inner: st.lists(inner, max_size=4) | st.dictionaries(_KEYS, inner, max_size=4),
+    max_leaves=25,
+)
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.dictionaries(_KEYS, _VALUES, max_size=6))
+def test_toml_text_writes_what_tomli_w_writes(doc):
+    """Any plain document: tables, arrays of tables (inline when they fit on 100 characters,
+    else [[...]]), nested arrays, quoted keys, escapes, long and short floats."""
+    import tomli_w
+
+    from advisor.core import toml_text
+
+    assert toml_text.dumps(doc) == tomli_w.dumps(doc)
