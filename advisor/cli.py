@@ -24,7 +24,8 @@ def build_parser() -> argparse.ArgumentParser:
     p = argparse.ArgumentParser(
         prog=PROG,
         description="Rules-based design advisor for electromechanical drives.",
-        epilog="Exit codes: 0 design found, 2 invalid input, 3 no feasible design.",
+        epilog="Exit codes: 0 design found, 2 invalid input, 3 no feasible design. "
+        "Product-family studies: advisor family FAMILY.toml --out DIR (see advisor family -h).",
     )
     p.add_argument(
         "requirements",
@@ -139,6 +140,11 @@ def run_wizard(path: Path | None, catalog_dir: Path | None) -> int:
 
 
 def main(argv: list[str] | None = None) -> int:
+    argv = sys.argv[1:] if argv is None else argv
+    if argv[:1] == ["family"]:  # product-family studies (Dask): imported only on this path
+        from advisor.family.cli import main as family_main
+
+        return family_main(argv[1:])
     parser = build_parser()
     try:
         args = parser.parse_args(argv)
