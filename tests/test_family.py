@@ -102,6 +102,11 @@ def test_family_of_504_variants_over_three_applications(family, reference):
     doc = summarize(family, rows, {})
     assert sum(doc["counts"].values()) == N_VARIANTS
     assert [m["variants"] for m in doc["members"]] == [375, 120, 9]
+    # the invalid region of the rudder member: exactly the 6000 rpm column, every torque
+    invalid = [g for g in doc["members"][2]["without_design"] if g["status"] == "invalid"]
+    assert len(invalid) == 1 and invalid[0]["variants"] == 3
+    assert invalid[0]["axes"] == {"rotary.torque_Nm": [200, 1620, 3000], "rotary.speed_rpm": [6000]}
+    assert "is not below the slowest motor.candidate_speeds_rpm" in invalid[0]["example"]
 
 
 def _batch(tmp_path, requirement):

@@ -5,15 +5,27 @@ functions as ``advisor --batch``: :func:`advisor.models.parse_requirements` (the
 of the batch path minus the file), :func:`advisor.engine.advise` and the report's TOML
 conversion. A row of ``designs.csv`` therefore equals what the batch command gives for that
 variant alone.
+
+It is also the one module of the family package that knows where the engine's modules live:
+the rest imports the errors and the report helpers from here.
 """
 
-import os
 from typing import Any, NamedTuple
 
-from advisor.errors import AdvisorError, ExitCode, InfeasibleError
+from advisor.errors import AdvisorError, ExitCode, InfeasibleError, InputError
+from advisor.report import round_sig, write_atomic
 
-# as on the batch path: pydantic need not scan the installed packages for plugins
-os.environ.setdefault("PYDANTIC_DISABLE_PLUGINS", "__all__")
+__all__ = [
+    "AdvisorError",
+    "ExitCode",
+    "InfeasibleError",
+    "InputError",
+    "Outcome",
+    "advise_one",
+    "field_problems",
+    "round_sig",
+    "write_atomic",
+]
 
 STATUS = {
     ExitCode.OK: "design",

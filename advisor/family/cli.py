@@ -12,7 +12,7 @@ import time
 from pathlib import Path
 from typing import Any
 
-from advisor.errors import AdvisorError, ExitCode
+from advisor.family.adapter import AdvisorError, ExitCode
 
 PROG = "advisor family"
 
@@ -98,12 +98,16 @@ def main(argv: list[str]) -> int:
 
 
 def _run(args: argparse.Namespace) -> int:
-    from advisor.errors import InputError
+    from advisor.family.adapter import InputError
     from advisor.family.spec import read_family
 
     for flag, v in (("--workers", args.workers), ("--chunk-size", args.chunk_size)):
         if v is not None and v < 1:
             raise InputError(f"{flag} = {v}: must be at least 1")
+    if args.scheduler is not None and args.workers is not None:
+        raise InputError(
+            "--workers sizes the local cluster; with --scheduler the cluster has its own"
+        )
     if args.scheduler is not None and not args.scheduler.strip():
         raise InputError("--scheduler: empty address; give tcp://HOST:PORT")
     family = read_family(args.family)  # every input error is raised here, before any work
@@ -130,9 +134,10 @@ def run(family: Any, out: Path, args: argparse.Namespace) -> int:
     try:
         client, cluster = make_client(args.scheduler, args.workers)
     except (OSError, TimeoutError) as exc:
-        from advisor.errors import InputError
+        from advisor.family.adapter import InputError
 
-        raise InputError(f"--scheduler {args.scheduler}: cannot connect ({exc})") from None
+        why = (str(exc).splitlines() or [type(exc).__name__])[0]
+        raise InputError(f"--scheduler {args.scheduler}: cannot connect ({why})") from None
     try:
         workers = len(client.scheduler_info()["workers"]) or 1
         size = (

@@ -270,6 +270,6 @@ def render(family: Family, rows: list[dict[str, str]], doc: dict[str, Any]) -> s
 
 
 def write_html(path: Path, family: Family, rows: list[dict[str, str]], doc: dict[str, Any]) -> None:
-    from advisor.report import write_atomic
+    from advisor.family.adapter import write_atomic
 
     write_atomic(path, render(family, rows, doc))

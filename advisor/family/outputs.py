@@ -9,7 +9,7 @@ where the quantity does not exist for it); what each column means per applicatio
 from collections.abc import Callable
 from typing import Any
 
-from advisor.report import round_sig
+from advisor.family.adapter import round_sig
 
 Row = dict[str, Any]
 
@@ -35,7 +35,7 @@ NUMERIC = ("motor_speed_rpm", "ratio", "mass_kg", "outer_diameter_mm", "losses_W
 
 MEANING = {
     "rotary": {
-        "motor": "'bldc' (the seed 000 motor scaled to the speed)",
+        "motor": "'bldc N rpm': the candidate speed chosen (the seed 000 motor scaled to it)",
         "mass_kg": "wave-gear reducer + one-way device (the motor is not sized by mass)",
         "outer_diameter_mm": "reducer outer diameter",
         "losses_W": "motor losses (ohmic + iron + magnets)",
@@ -73,7 +73,7 @@ def rotary_outputs(report: dict[str, Any]) -> Row:
     d = report["design"]
     m, g = d["motor"], d["gearbox"]
     return {
-        "motor": "bldc",
+        "motor": f"bldc {m['speed_rpm']:g} rpm",  # the choice among the candidate speeds
         "pole_pairs": m["pole_pairs"],
         "motor_speed_rpm": m["speed_rpm"],
         "ratio": g["total_ratio"],

@@ -35,8 +35,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from advisor.errors import InputError
-from advisor.family.adapter import field_problems
+from advisor.family.adapter import InputError, field_problems
 
 FAMILY_KEYS = ("name", "axes", "base", "members", "chunk_size")
 MEMBER_KEYS = ("name", "base", "axes")

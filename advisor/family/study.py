@@ -19,10 +19,9 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import Any, NamedTuple
 
-from advisor.errors import InputError
+from advisor.family.adapter import InputError, write_atomic
 from advisor.family.chunks import ChunkResult, columns, rows_csv, run_chunk
 from advisor.family.spec import Family
-from advisor.report import write_atomic
 
 MANIFEST = "study.json"
 

@@ -147,6 +147,6 @@ def summarize(family: Family, rows: list[dict[str, str]], extra: dict[str, Any])
 def write_summary(path: Path, doc: dict[str, Any]) -> None:
     import tomli_w
 
-    from advisor.report import write_atomic
+    from advisor.family.adapter import write_atomic
 
     write_atomic(path, tomli_w.dumps(doc))
