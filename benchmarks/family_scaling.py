@@ -4,7 +4,7 @@
 
 Measures, on this machine:
 - t_v, the advice of one variant in a worker (run_chunk in-process, no Dask), for the rotary
-  valve family of examples/family_valve_actuators.toml (finer torque steps) and a cheap
+  valve family of examples/families/valve_actuators.toml (finer torque steps) and a cheap
   positioning family;
 - t_task, the scheduler's round trip for one task (empty tasks on one worker);
 - t_chunk, the client's serial work per chunk (receive, write the chunk's CSV with fsync);
@@ -31,7 +31,7 @@ from advisor.family.summary import read_rows, summarize
 
 
 def valve_family(steps: int):
-    path = ROOT / "examples" / "family_valve_actuators.toml"
+    path = ROOT / "examples" / "families" / "valve_actuators.toml"
     doc = tomllib.loads(path.read_text())
     doc["family"]["axes"]["rotary.torque_Nm"]["steps"] = steps
     return parse_family(doc, path)
