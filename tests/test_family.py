@@ -344,3 +344,26 @@ def test_batch_path_imports_no_dask_or_matplotlib():
     r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
     assert r.returncode == 0, r.stderr
     assert r.stdout.strip() == ""
+
+
+def test_key_outputs_of_the_valve_example_by_hand():
+    out = io.StringIO()
+    with contextlib.redirect_stdout(out):
+        assert main(["--batch", str(EXAMPLES / "valve_actuator_hold.toml")]) == 0
+    row = key_outputs(tomllib.loads(out.getvalue()))
+    # the report: reducer 3.47718 kg, roller clutch 0.0728396 kg → 3.5500196 → 3.55002 kg
+    assert row["mass_kg"] == 3.55002
+    assert (row["motor"], row["pole_pairs"], row["ratio"], row["stages"]) == (
+        "bldc 3000 rpm",
+        6,
+        600.0,
+        2,
+    )
+    assert (row["outer_diameter_mm"], row["losses_W"]) == (132.647, 132.248)
+    assert row["one_way"] == "roller_clutch (motor side)" and row["screw_thread"] is None
+
+
+def test_the_example_family_file():
+    fam = read_family(EXAMPLES / "families" / "valve_actuators.toml")
+    assert fam.size == 60 and fam.members[0].application == "rotary"
+    assert [a.key for a in fam.members[0].axes] == ["rotary.torque_Nm", "rotary.speed_rpm"]
