@@ -3,8 +3,8 @@
 Everything a family study needs from the engine goes through this module, built on the same
 functions as ``advisor --batch``: ``parse_requirements`` (the TOML reading of the batch path
 minus the file), the engine's ``advise`` and the report's TOML conversion — in
-advisor/core/ after the layout move of issue 11, in advisor/ before it (:func:`_core`). A row of ``designs.csv`` therefore equals what the batch command gives for that
-variant alone.
+advisor/core/ after the layout move of issue 11, in advisor/ before it (:func:`_core`). A
+row of ``designs.csv`` therefore equals what the batch command gives for that variant alone.
 
 It is also the one module of the family package that knows where the engine's modules live:
 the rest imports the errors and the report helpers from here.
