@@ -47,8 +47,11 @@ def auto_chunk_size(variants: int, workers: int) -> int:
     """The chunk size recommended by the cost model of benchmarks/README.md.
 
     At least 8 chunks per worker keep the workers busy to the end and make a retried chunk
-    cheap; at most 500 variants (about 5 s of work) per chunk; at least 20 variants, so the
-    per-task cost of the scheduler (about 2 ms) stays under 1 % of a chunk's work.
+    cheap; at most 500 variants (about 4 s of rotary advice) per chunk, which keeps the
+    scheduler's and client's serial work per chunk (about 8 ms) under a quarter of the
+    workers' work up to 64 workers; at least 20 variants, so that even on a few workers a
+    chunk is mostly advice. Families of very cheap variants on many workers want larger
+    chunks (``--chunk-size``): see the cost model.
 
     >>> auto_chunk_size(1_000_000, 64), auto_chunk_size(600, 2), auto_chunk_size(50, 2)
     (500, 38, 20)
