@@ -178,7 +178,7 @@ def test_resume_after_interruption(client, family, reference, tmp_path):
 
 
 def test_a_different_study_in_the_same_folder_is_refused(client, family, reference):
-    from advisor.errors import InputError
+    from advisor.core.errors import InputError
 
     with pytest.raises(InputError, match="holds chunks of another study"):
         run_study(family, reference, client, CHUNK + 1, reports=True)

@@ -1,10 +1,10 @@
 """The one call from a family study into the engine, and requirement validation for axes.
 
 Everything a family study needs from the engine goes through this module, built on the same
-functions as ``advisor --batch``: ``parse_requirements`` (the TOML reading of the batch path
-minus the file), the engine's ``advise`` and the report's TOML conversion — in
-advisor/core/ after the layout move of issue 11, in advisor/ before it (:func:`_core`). A
-row of ``designs.csv`` therefore equals what the batch command gives for that variant alone.
+functions as ``advisor --batch``: :func:`advisor.core.requirements.parse_requirements` (the
+TOML reading of the batch path minus the file), :func:`advisor.core.engine.advise` and the
+report's TOML conversion. A row of ``designs.csv`` therefore equals what the batch command
+gives for that variant alone.
 
 It is also the one module of the family package that knows where the engine's modules live:
 the rest imports the errors and the report helpers from here.
@@ -12,12 +12,8 @@ the rest imports the errors and the report helpers from here.
 
 from typing import Any, NamedTuple
 
-try:  # the layout of issue 11: the engine in advisor/core/
-    from advisor.core.errors import AdvisorError, ExitCode, InfeasibleError, InputError
-    from advisor.core.report import round_sig, write_atomic
-except ImportError:  # the flat layout before it
-    from advisor.errors import AdvisorError, ExitCode, InfeasibleError, InputError
-    from advisor.report import round_sig, write_atomic
+from advisor.core.errors import AdvisorError, ExitCode, InfeasibleError, InputError
+from advisor.core.report import round_sig, write_atomic
 
 __all__ = [
     "AdvisorError",
@@ -47,16 +43,6 @@ class Outcome(NamedTuple):
     text: str | None  # the report TOML, byte for byte the batch output (when asked for)
 
 
-def _core() -> tuple[Any, Any, Any]:
-    """The engine, requirement and report modules, wherever the layout puts them."""
-    try:
-        from advisor.core import engine, report, requirements
-    except ImportError:
-        from advisor import engine, report
-        from advisor import models as requirements
-    return engine, requirements, report
-
-
 def one_line(message: str) -> str:
     """A multi-line message (headline, then ``  - reason`` lines) as one CSV-friendly line."""
     parts = [p.strip().removeprefix("- ") for p in message.splitlines() if p.strip()]
@@ -71,11 +57,14 @@ def advise_one(
 
     import tomli_w
 
-    engine, requirements, report_module = _core()
+    from advisor.core.engine import advise
+    from advisor.core.report import _plain
+    from advisor.core.requirements import parse_requirements
+
     try:
-        req = requirements.parse_requirements(requirement)
-        report = engine.advise(req, Path(catalog_dir) if catalog_dir else None)
-        data = report_module._plain(report)  # exactly what the report's to_toml dumps
+        req = parse_requirements(requirement)
+        report = advise(req, Path(catalog_dir) if catalog_dir else None)
+        data = _plain(report)  # exactly what advisor.core.report.to_toml dumps
         text = tomli_w.dumps(data) if with_text else None
         return Outcome(ExitCode.OK, STATUS[ExitCode.OK], "", data, text)
     except InfeasibleError as exc:
@@ -103,9 +92,13 @@ def field_problems(requirement: dict[str, Any]) -> list[FieldProblem]:
     """Validation problems of a requirement, located, as the batch command words them."""
     from pydantic import ValidationError
 
-    _, r, _ = _core()
-    _Head, _walk, _where = r._Head, r._walk, r._where
-    format_validation_error, requirements_model = r.format_validation_error, r.requirements_model
+    from advisor.core.requirements import (
+        _Head,
+        _walk,
+        _where,
+        format_validation_error,
+        requirements_model,
+    )
 
     try:
         kind = _Head.model_validate(requirement).application.kind
