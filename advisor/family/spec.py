@@ -30,7 +30,6 @@ starts: an unknown key, an empty range, a value outside its field's range.
 import hashlib
 import json
 import math
-import tomllib
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -237,19 +236,12 @@ def _member(name: str, base: dict[str, Any], axes: tuple[Axis, ...]) -> Member:
     return m
 
 
-def _read_toml(path: Path, what: str) -> dict[str, Any]:
-    try:
-        return tomllib.loads(path.read_text(encoding="utf-8"))
-    except FileNotFoundError:
-        raise InputError(f"{path}: no such file ({what})") from None
-    except IsADirectoryError:
-        raise InputError(f"{path}: is a directory, expected a {what}") from None
-    except UnicodeDecodeError:
-        raise InputError(f"{path}: not a UTF-8 text file") from None
-    except tomllib.TOMLDecodeError as exc:
-        raise InputError(f"{path}: broken TOML: {exc}") from None
-    except OSError as exc:
-        raise InputError(f"{path}: cannot be read ({exc.strerror})") from None
+def _read_toml(path: Path) -> dict[str, Any]:
+    """A family or base file, read with the batch command's care (a regular file of at most
+    1 MiB, UTF-8, not nested deeper than TOML needs); every problem an InputError."""
+    from advisor.io_safety import read_toml
+
+    return read_toml(path)
 
 
 def parse_family(doc: dict[str, Any], source: Path) -> Family:
@@ -294,7 +286,7 @@ def parse_family(doc: dict[str, Any], source: Path) -> Family:
                 )
             if not isinstance(m.get("base"), str):
                 raise InputError(f"{where}.base: missing; the requirement file of this member")
-            base = _read_toml(here / m["base"], "requirement file")
+            base = _read_toml(here / m["base"])
             members.append(_member(str(m.get("name", "")), base, _axes(m.get("axes"), where)))
         names = [m.name for m in members]
         dup = next((x for x in names if names.count(x) > 1), None)
@@ -307,7 +299,7 @@ def parse_family(doc: dict[str, Any], source: Path) -> Family:
                 raise InputError(
                     "family.base: give the base requirement in the file or as family.base, not both"
                 )
-            base = _read_toml(here / str(fam["base"]), "requirement file")
+            base = _read_toml(here / str(fam["base"]))
         else:
             base = inline
         members_t = (_member("", base, _axes(fam.get("axes"), "family.axes")),)
@@ -315,4 +307,4 @@ def parse_family(doc: dict[str, Any], source: Path) -> Family:
 
 
 def read_family(path: Path) -> Family:
-    return parse_family(_read_toml(path, "family file"), path)
+    return parse_family(_read_toml(path), path)
