@@ -25,13 +25,27 @@ class _Out(BaseModel):
 
     @classmethod
     def make(cls, **values: Any):
-        unknown = set(values) - set(cls.model_fields)
-        if unknown:
-            raise TypeError(f"{cls.__name__}: unknown fields {sorted(unknown)}")
-        missing = {n for n, f in cls.model_fields.items() if f.is_required() and n not in values}
-        if missing:
-            raise TypeError(f"{cls.__name__}: missing fields {sorted(missing)}")
+        names, required = _field_sets(cls)
+        if not names.issuperset(values):
+            raise TypeError(f"{cls.__name__}: unknown fields {sorted(set(values) - names)}")
+        if not required.issubset(values):
+            raise TypeError(f"{cls.__name__}: missing fields {sorted(required - set(values))}")
         return cls.model_construct(**values)
+
+
+_SETS: dict[type, tuple[frozenset[str], frozenset[str]]] = {}
+
+
+def _field_sets(cls: type[BaseModel]) -> tuple[frozenset[str], frozenset[str]]:
+    """The field names of a report table and the required ones (asked once per class)."""
+    sets = _SETS.get(cls)
+    if sets is None:
+        fields = cls.model_fields
+        sets = _SETS[cls] = (
+            frozenset(fields),
+            frozenset(n for n, f in fields.items() if f.is_required()),
+        )
+    return sets
 
 
 class CheckOut(_Out):
