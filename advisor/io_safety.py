@@ -17,7 +17,6 @@ This module imports nothing heavy: the batch path uses it.
 import os
 import stat
 import tomllib
-import unicodedata
 from pathlib import Path
 from typing import Any
 
@@ -44,6 +43,8 @@ def printable(text: str, newlines: bool = True) -> str:
     breaks and tabs are kept unless ``newlines`` is false (a one-line echo)."""
     if text.isprintable():
         return text
+    import unicodedata  # only for text that is not printable (rare): not on every run
+
     keep = "\n\t" if newlines else ""
     return "".join(
         ch.encode("unicode_escape").decode("ascii")
