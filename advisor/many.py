@@ -196,6 +196,12 @@ def preload(catalog_dir: Path | None) -> None:
         load_catalogs(catalog_dir)
     except AdvisorError:
         pass
+    # what is loaded now lives as long as the run: out of the collector's sight, a worker's
+    # collections do not walk it, and so do not copy its pages after the fork (gc.freeze)
+    import gc
+
+    gc.collect()
+    gc.freeze()
 
 
 def _pool_context():
