@@ -161,6 +161,18 @@ def table(res: dict) -> str:
     return "\n".join(rows)
 
 
+def commit() -> str:
+    """The commit measured (``+`` when the work tree has changes)."""
+    import subprocess
+
+    def git(*args: str) -> str:
+        r = subprocess.run(["git", *args], cwd=ROOT, capture_output=True, text=True)
+        return r.stdout.strip()
+
+    head = git("rev-parse", "--short", "HEAD") or "unknown"
+    return head + ("+" if git("status", "--porcelain", "--untracked-files=no") else "")
+
+
 def machine() -> str:
     load = ", ".join(f"{x:.1f}" for x in os.getloadavg())
     return (
@@ -173,7 +185,7 @@ def main() -> None:
     ap = argparse.ArgumentParser()
     ap.add_argument("--quick", action="store_true", help="fewer repeats")
     quick = ap.parse_args().quick
-    res = {"machine_before": machine()}
+    res = {"machine_before": machine(), "commit": commit()}
     res["cold_batch"] = cold(7 if quick else 21)
     res["warm_advice"] = warm(20 if quick else 100)
     res["sweep"] = sweep(5 if quick else 20)
@@ -190,7 +202,8 @@ def main() -> None:
         head, rest = body.split(BEGIN, 1)
         tail = rest.split(END, 1)[1]
         stamp = (
-            f"\n_{res['date']}, `python benchmarks/run_all.py{' --quick' if quick else ''}`; "
+            f"\n_{res['date']}, commit {res['commit']}, "
+            f"`python benchmarks/run_all.py{' --quick' if quick else ''}`; "
             f"machine: {res['machine_before']} (before) / "
             f"{res['machine_after'].rsplit('; ', 1)[1]} (after)_\n\n"
         )
