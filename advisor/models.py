@@ -36,18 +36,24 @@ class ApplicationReq(_Strict):
 
 
 class LinearReq(_Strict):
-    force_N: Annotated[float, _num(gt=0, le=5e6, desc="rated axial force, N")]
-    stroke_m: Annotated[float, _num(gt=0, le=20, desc="stroke, m")]
-    travel_time_s: Annotated[float, _num(gt=0, le=1e5, desc="time for the full stroke, s")]
+    """The linear stage. Every number has a physically meaningful range (issue 13): a screw
+    actuator of this advisor pushes 1 N … 5 MN over 1 mm … 20 m in 10 ms … about 28 h."""
+
+    force_N: Annotated[float, _num(ge=1, le=5e6, desc="rated axial force, N; 1 N … 5 MN")]
+    stroke_m: Annotated[float, _num(ge=1e-3, le=20, desc="stroke, m; 1 mm … 20 m")]
+    travel_time_s: Annotated[
+        float, _num(ge=0.01, le=1e5, desc="time for the full stroke, s; 0.01 … 100000 s")
+    ]
     support_span_m: Annotated[
-        float, _num(gt=0, le=20, desc="distance between the screw supports, m")
+        float,
+        _num(ge=1e-3, le=20, desc="distance between the screw supports, m; 1 mm … 20 m"),
     ]
     end_fixity: Annotated[
         Literal["pinned-pinned", "fixed-pinned", "fixed-fixed", "fixed-free"],
         Field(description="how the screw ends are held, for buckling"),
     ] = "pinned-pinned"
     buckling_safety_factor: Annotated[
-        float, _num(ge=1, le=20, desc="required margin against buckling")
+        float, _num(ge=1, le=20, desc="required margin against buckling; 1 … 20")
     ] = 3.0
 
     @model_validator(mode="after")
@@ -77,9 +83,16 @@ THREAD_RE = re.compile(r"^Tr\s*(\d+(?:\.\d+)?)\s*[x×]\s*(\d+(?:\.\d+)?)$", re.I
 
 class ScrewReq(_Strict):
     friction_coefficient: Annotated[
-        float | None, _num(gt=0, le=0.6, desc="thread friction coefficient f")
+        float | None, _num(ge=0.01, le=0.6, desc="thread friction coefficient f; 0.01 … 0.6")
     ] = None
-    starts: Annotated[int, Field(ge=1, le=4, description="number of thread starts")] = 1
+    starts: Annotated[
+        int | None,
+        Field(
+            ge=1,
+            le=4,
+            description="number of thread starts, 1 … 4; left out, the advisor chooses it",
+        ),
+    ] = None
     friction_model: Annotated[
         Literal["standard", "paper"], Field(description="reduced friction formula")
     ] = "standard"
