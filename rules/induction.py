@@ -34,6 +34,7 @@ def choose_pole_pairs(
         )
         for o in options
     }
+    table["pole_pairs"] = chosen
     best = next(o for o in options if o.pole_pairs == chosen)
     others = [o for o in options if o.motor_model and o.pole_pairs != chosen]
     return Finding(
@@ -109,6 +110,11 @@ def choose_motor(options: list[MotorOption]) -> Finding[str | None]:
                 "under load and runs on the stable branch of its characteristic"
                 + (f"; skipped: {', '.join(skipped)}" if skipped else "")
                 + ".",
+                {
+                    "model": o.model,
+                    "rated_power_kW": o.rated_power_kW,
+                    "rated_torque_margin": o.rated_torque_margin,
+                },
             )
     return Finding(
         None,

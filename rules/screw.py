@@ -36,7 +36,7 @@ def friction_coefficient(
             f"f = {given:g}, as given in the requirement.",
             f"The catalog range for {pair} ({lubrication}) is {low:g}…{high:g}; the given value "
             f"is {note}.",
-            {"given": given, "range": [low, high]},
+            {"friction_coefficient": given, "range": [low, high]},
         )
     mid = round((low + high) / 2.0, 4)
     return Finding(
@@ -45,7 +45,12 @@ def friction_coefficient(
         f"for {pair} ({lubrication}).",
         "No coefficient was given; the middle of the published range is the expected value, "
         "and the low end is kept for the self-locking check.",
-        {"pair": pair, "lubrication": lubrication, "range": [low, high]},
+        {
+            "friction_coefficient": mid,
+            "pair": pair,
+            "lubrication": lubrication,
+            "range": [low, high],
+        },
     )
 
 
@@ -58,12 +63,14 @@ def friction_model(asked: str) -> Finding[str]:
             "Asked for in the requirement, to reproduce the paper. The seed's formula halves the "
             "lead angle where the half flank angle belongs; it underestimates the torque of a "
             "trapezoidal thread by about 3 %. The standard-model torque is reported beside it.",
+            {"friction_model": "paper"},
         )
     return Finding(
         "standard",
         "Reduced friction tan φ' = f / cos(α/2) with α = 30° (trapezoidal flank angle).",
         "The friction force on a flank inclined at α/2 is raised by 1/cos(α/2); this is the "
         "textbook form for trapezoidal threads. Seed 001 prints cos(ψ/2), a slip.",
+        {"friction_model": "standard"},
     )
 
 
@@ -227,6 +234,7 @@ def holding(
             + ("self-locking." if self_locking else "not self-locking."),
             "Reported for information: a self-locking screw stops the load from back-driving "
             "the motor when it is switched off.",
+            {"hold_without_power": False, "self_locking": self_locking},
         )
     if self_locking_at_low:
         return Finding(
@@ -235,6 +243,7 @@ def holding(
             "friction range.",
             "The lead angle stays below the reduced friction angle for every friction "
             "coefficient the material pair may show, so no one-way device is needed.",
+            {"hold_without_power": True, "self_locking_at_low_friction": True},
         )
     return Finding(
         False,
@@ -242,4 +251,5 @@ def holding(
         "At the low end of the friction range the lead angle exceeds the friction angle: "
         "the load may back-drive the screw. A one-way device (brake or irreversible clutch) is "
         "needed at the motor side.",
+        {"hold_without_power": True, "self_locking_at_low_friction": False},
     )
