@@ -30,7 +30,8 @@ def choose_pole_pairs(
             f"{o.synchronous_speed_rpm:g} rpm sync: {o.thread} + {o.motor_model} "
             f"({o.rated_power_kW:g} kW, stroke in {o.travel_time_s:.3g} s)"
             if o.motor_model
-            else f"{o.synchronous_speed_rpm:g} rpm sync: no motor of it drives a passing thread"
+            else f"{o.synchronous_speed_rpm:g} rpm sync: no motor of this speed drives a "
+            "passing thread"
         )
         for o in options
     }

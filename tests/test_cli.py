@@ -94,7 +94,10 @@ def _replace(old: str, new: str) -> str:
 BAD_INPUTS = [
     # (requirement text, words the one-line message must contain)
     ("[application\nkind = 'linear'", ["broken TOML", "line 1"]),
-    (_replace("force_N = 3500", "force_N = -3500"), ["linear.force_N = -3500", "must be ≥ 1", "1 N … 5 MN"]),
+    (
+        _replace("force_N = 3500", "force_N = -3500"),
+        ["linear.force_N = -3500", "must be ≥ 1", "1 N … 5 MN"],
+    ),
     (_replace("force_N = 3500", "force_N = 0"), ["linear.force_N = 0", "must be ≥ 1"]),
     (_replace("force_N = 3500", "force_N = nan"), ["linear.force_N = nan", "finite"]),
     (_replace("stroke_m = 0.2", "stroke_m = inf"), ["linear.stroke_m = inf", "finite"]),

@@ -121,9 +121,8 @@ def test_motor_speed_under_the_load_uses_the_slip():
     # 4A71B4: 0.75 kW, rated 1390 rpm, s_n = 1 - 1390/1500 = 0.0733. At its rated torque
     # (5.1525 N·m) it cannot reach 1450 rpm; at 2 N·m the slip is about s_n·2/5.1525 = 0.028
     # on the near-linear part of the curve, i.e. ≈ 1457 rpm (the refined curve: 1470 rpm).
-    from catalogs import load_catalogs
-
     from advisor.calc.sizing import drive_working_speed, fit_motor
+    from catalogs import load_catalogs
 
     m = next(m for m in load_catalogs().motors if m.model == "4A71B4")
     fit = fit_motor(m)

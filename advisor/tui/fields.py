@@ -94,6 +94,12 @@ FIELDS: dict[str, dict[int, tuple[Field, ...]]] = {
             *ONE_WAY,
             Field(("screw", "thread"), "Impose a thread (e.g. Tr16x2)", kind="str", optional=True),
             Field(
+                ("screw", "starts"),
+                "Thread starts (1 … 4; empty: chosen)",
+                kind="int",
+                optional=True,
+            ),
+            Field(
                 ("screw", "material_pair"),
                 "Screw–nut materials",
                 kind="choice",
