@@ -33,7 +33,9 @@ def _linear_rows(t: Table, d) -> None:
     s, m = d.screw, d.motor
     t.add_row(
         "screw",
-        f"{s.thread}{' (imposed)' if s.imposed else ''}, {s.speed_rpm:.0f} rpm, "
+        f"{s.thread}{' (imposed)' if s.imposed else ''}"
+        f"{f', {s.starts} starts, lead {s.lead_mm:g} mm' if s.starts > 1 else ''}, "
+        f"{s.speed_rpm:.0f} rpm, "
         f"{s.torque_Nm:.3f} N·m ({s.friction_model}; standard {s.torque_standard_Nm:.3f}), "
         f"η = {s.efficiency:.3f}, {'self-locking' if s.self_locking else 'not self-locking'}",
     )
