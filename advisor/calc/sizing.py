@@ -2,6 +2,7 @@
 evaluated on its load. Pure functions of numbers and catalog rows; no decisions here."""
 
 import math
+from functools import lru_cache
 from typing import NamedTuple, Protocol
 
 from advisor.calc import induction as im
@@ -317,18 +318,26 @@ class MotorFit(NamedTuple):
 
     motor: MotorRow
     curve: im.KlossCurve
+    rated_torque_Nm: float
     starting_torque_Nm: float
+    synchronous_speed_rpm: float
 
 
 def fit_motor(motor: MotorRow) -> MotorFit:
-    """The refined Kloss curve of a catalog motor (see :func:`evaluate_motor`)."""
-    curve = im.fit_kloss(
+    """The refined Kloss curve of a catalog motor (see :func:`evaluate_motor`); the fit (a
+    bisection) is cached by the ratings it depends on."""
+    curve = _fit(
         motor.rated_torque_Nm,
         motor.rated_slip,
         motor.breakdown_torque_ratio,
         motor.starting_torque_ratio,
     )
-    return MotorFit(motor, curve, curve.torque(1.0))
+    return MotorFit(
+        motor, curve, motor.rated_torque_Nm, curve.torque(1.0), motor.synchronous_speed_rpm
+    )
+
+
+_fit = lru_cache(maxsize=1024)(im.fit_kloss)
 
 
 def drive_working_speed(
@@ -349,11 +358,10 @@ def drive_working_speed(
     >>> drive_working_speed(fit_motor(m), 5.2, 1200.0) is None
     True
     """
-    m = fit.motor
-    if m.rated_torque_Nm / load_torque_Nm < 1.0 or fit.starting_torque_Nm / load_torque_Nm < 1.0:
+    if fit.rated_torque_Nm / load_torque_Nm < 1.0 or fit.starting_torque_Nm / load_torque_Nm < 1.0:
         return None
     s = fit.curve.stable_slip(load_torque_Nm)
     if s is None:
         return None
-    n = m.synchronous_speed_rpm * (1.0 - s)
+    n = fit.synchronous_speed_rpm * (1.0 - s)
     return n if n >= required_speed_rpm else None
