@@ -10,10 +10,10 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from advisor.calc.sizing import ScrewMaterial, evaluate_thread
-from advisor.engine import advise
-from advisor.errors import InfeasibleError
-from advisor.models import parse_requirements
-from advisor.report import to_toml
+from advisor.core.engine import advise
+from advisor.core.errors import InfeasibleError
+from advisor.core.report import to_toml
+from advisor.core.requirements import parse_requirements
 from catalogs import load_catalogs
 from rules import screw as screw_rules
 
@@ -270,3 +270,23 @@ def test_a_requirement_perturbed_by_1e_9_gives_the_same_design(data, field, fact
         return
     assert moved is not None
     assert _drive(moved) == _drive(rep)
+
+
+def test_a_multi_start_screw_is_named_so_in_the_summary_and_the_wizard():
+    # the case above: Tr28x8 with 3 starts, lead 3 × 8 = 24 mm (single start: no label)
+    from rich.console import Console
+
+    from advisor.applications.linear.report import headline, summary_rows
+    from advisor.applications.linear.views import components
+
+    rep = advise(parse_requirements(_req(2000, 1.0, 3, 1.2)))
+    s = rep.design.screw
+    assert (s.thread, s.starts, s.lead_mm) == ("Tr28x8", 3, 24.0)
+    assert headline(rep).startswith("Tr28x8 (3 starts), ")
+    assert dict(summary_rows(rep))["screw"].startswith("Tr28x8, 3 starts, lead 24 mm, ")
+    console = Console(width=100, record=True)
+    for part in components(rep):
+        console.print(part)
+    assert "3 (lead 24 mm)" in console.export_text()
+    one = advise(parse_requirements(_req(2000, 1.0, 3, 1.2, starts=1)))
+    assert "starts" not in headline(one) + dict(summary_rows(one))["screw"]

@@ -5,20 +5,41 @@ from typing import Annotated
 
 from pydantic import Field, model_validator
 
-from advisor.models import ApplicationReq, _num, _Strict
+from advisor.core.requirements import ApplicationReq, _num, _Strict, ask
 
 
 class AeroReq(_Strict):
     """Aerodynamic drag of eq. (5): either the cup geometry or a known loss at the speed."""
 
     loss_W: Annotated[
-        float | None, _num(ge=0, le=1e6, desc="aerodynamic loss at the design speed, W")
+        float | None,
+        _num(
+            ge=0,
+            le=1e6,
+            desc="aerodynamic loss at the design speed, W",
+            label="Aerodynamic loss at speed",
+            step=2,
+        ),
     ] = None
     outer_radius_mm: Annotated[
-        float | None, _num(gt=0, le=1e4, desc="outer radius of the rotor cup R_o, mm")
+        float | None,
+        _num(
+            gt=0,
+            le=1e4,
+            desc="outer radius of the rotor cup R_o, mm",
+            label="…or cup outer radius",
+            step=2,
+        ),
     ] = None
     outer_length_mm: Annotated[
-        float | None, _num(ge=0, le=1e4, desc="length of the cup's outer surface l_o, mm")
+        float | None,
+        _num(
+            ge=0,
+            le=1e4,
+            desc="length of the cup's outer surface l_o, mm",
+            label="…and cup outer length",
+            step=2,
+        ),
     ] = None
     inner_radius_mm: Annotated[
         float, _num(ge=0, le=1e4, desc="inner radius of the cup R_i, mm")
@@ -53,43 +74,119 @@ class AeroReq(_Strict):
 
 
 class RotorReq(_Strict):
-    mass_kg: Annotated[float, _num(gt=0, le=1e4, desc="rotor mass, kg")]
+    mass_kg: Annotated[float, _num(gt=0, le=1e4, desc="rotor mass, kg", label="Rotor mass", step=1)]
     angular_momentum_kgm2_s: Annotated[
-        float | None, _num(gt=0, le=1e6, desc="kinetic moment H at speed, kg·m²/s")
+        float | None,
+        _num(
+            gt=0,
+            le=1e6,
+            desc="kinetic moment H at speed, kg·m²/s",
+            label="Kinetic moment H",
+            step=1,
+        ),
     ] = None
     inertia_kgm2: Annotated[
-        float | None, _num(gt=0, le=1e4, desc="axial moment of inertia J, kg·m²")
+        float | None,
+        _num(
+            gt=0,
+            le=1e4,
+            desc="axial moment of inertia J, kg·m²",
+            label="…or axial inertia J",
+            step=1,
+        ),
     ] = None
-    speed_rad_s: Annotated[float, _num(gt=0, le=2e4, desc="design speed ω, rad/s")]
-    bearing: Annotated[
-        str, Field(min_length=1, max_length=40, description="bearing designation, e.g. 7000 CD")
+    speed_rad_s: Annotated[
+        float, _num(gt=0, le=2e4, desc="design speed ω, rad/s", label="Design speed", step=1)
     ]
-    bearing_count: Annotated[int, Field(ge=2, le=8, description="bearings carrying the rotor")] = 2
+    bearing: Annotated[
+        str,
+        ask(
+            "bearing designation, e.g. 7000 CD",
+            label="Bearing (SKF designation)",
+            step=3,
+            example="7000 CD",
+            min_length=1,
+            max_length=40,
+        ),
+    ]
+    bearing_count: Annotated[
+        int, ask("bearings carrying the rotor", label="Bearings", step=3, ge=2, le=8)
+    ] = 2
     ball_plane_to_cg_mm: Annotated[
-        float, _num(gt=0, le=1e4, desc="distance h from the ball plane to the centre of mass, mm")
+        float,
+        _num(
+            gt=0,
+            le=1e4,
+            desc="distance h from the ball plane to the centre of mass, mm",
+            label="Ball plane to centre of mass h",
+            step=1,
+        ),
     ]
     slew_rate_rad_s: Annotated[
-        float, _num(ge=0, le=100, desc="external angular velocity Ω of the housing, rad/s")
+        float,
+        _num(
+            ge=0,
+            le=100,
+            desc="external angular velocity Ω of the housing, rad/s",
+            label="Slew rate of the housing Ω",
+            step=1,
+        ),
     ]
     axis_angle_deg: Annotated[
         float, _num(ge=0, le=180, desc="angle α between H and Ω, degrees")
     ] = 90.0
     slew_angle_deg: Annotated[
-        float, _num(gt=0, le=36000, desc="angle the housing turns through in one slew, degrees")
+        float,
+        _num(
+            gt=0,
+            le=36000,
+            desc="angle the housing turns through in one slew, degrees",
+            label="Angle of one slew",
+            step=1,
+        ),
     ] = 90.0
-    run_up_time_s: Annotated[float, _num(gt=0, le=1e5, desc="required time to reach speed, s")]
+    run_up_time_s: Annotated[
+        float,
+        _num(
+            gt=0,
+            le=1e5,
+            desc="required time to reach speed, s",
+            label="Required run-up time",
+            step=1,
+        ),
+    ]
     rolling_friction_mm: Annotated[
-        float, _num(gt=0, le=1, desc="rolling friction coefficient λ of eq. (4), mm")
+        float,
+        _num(
+            gt=0,
+            le=1,
+            desc="rolling friction coefficient λ of eq. (4), mm",
+            label="Rolling friction λ",
+            step=3,
+        ),
     ] = 0.028
     contact_angle_deg: Annotated[
         float | None,
-        _num(gt=0, le=60, desc="operating contact angle β under preload, degrees"),
+        _num(
+            gt=0,
+            le=60,
+            desc="operating contact angle β under preload, degrees",
+            label="Operating contact angle (deep groove)",
+            step=3,
+        ),
     ] = None
     lubricant_viscosity_mm2_s: Annotated[
         float, _num(gt=0, le=1e4, desc="oil viscosity at operating temperature, mm²/s")
     ] = 10.0
     required_life_h: Annotated[
-        float | None, _num(gt=0, le=1e7, desc="required basic rating life L10h, h")
+        float | None,
+        _num(
+            gt=0,
+            le=1e7,
+            desc="required basic rating life L10h, h",
+            label="Required life L10h",
+            step=3,
+        ),
     ] = None
     aero: Annotated[AeroReq, Field(description="the [rotor.aero] table: loss_W or cup geometry")]
 
