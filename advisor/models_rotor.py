@@ -3,32 +3,43 @@ bearings carry the gyroscopic reaction when its housing is turned."""
 
 from typing import Annotated
 
-from pydantic import Field, model_validator
+from pydantic import Field, field_validator, model_validator
 
 from advisor.models import ApplicationReq, _num, _Strict
+
+
+def _rng(lo: float, hi: float, desc: str, *, open_lo: bool = False):
+    """A number in [lo, hi] (or (lo, hi] with ``open_lo``), the range stated in the description
+    so that an error names it: the ranges bound what the advisor treats as a physical rotor."""
+    low = f"above {lo:g}" if open_lo else f"from {lo:g}"
+    if open_lo:
+        return _num(gt=lo, le=hi, desc=f"{desc}; {low} to {hi:g}")
+    return _num(ge=lo, le=hi, desc=f"{desc}; {low} to {hi:g}")
+
+
+#: The slowest slew taken as one (Earth's rate is 7.3e-5 rad/s); below it give 0, no slew.
+MIN_SLEW_RATE_rad_s = 1e-6
 
 
 class AeroReq(_Strict):
     """Aerodynamic drag of eq. (5): either the cup geometry or a known loss at the speed."""
 
-    loss_W: Annotated[
-        float | None, _num(ge=0, le=1e6, desc="aerodynamic loss at the design speed, W")
-    ] = None
+    loss_W: Annotated[float | None, _rng(0, 1e6, "aerodynamic loss at the design speed, W")] = None
     outer_radius_mm: Annotated[
-        float | None, _num(gt=0, le=1e4, desc="outer radius of the rotor cup R_o, mm")
+        float | None, _rng(1, 2000, "outer radius of the rotor cup R_o, mm")
     ] = None
     outer_length_mm: Annotated[
-        float | None, _num(ge=0, le=1e4, desc="length of the cup's outer surface l_o, mm")
+        float | None, _rng(0, 5000, "length of the cup's outer surface l_o, mm")
     ] = None
-    inner_radius_mm: Annotated[
-        float, _num(ge=0, le=1e4, desc="inner radius of the cup R_i, mm")
-    ] = 0.0
+    inner_radius_mm: Annotated[float, _rng(0, 2000, "inner radius of the cup R_i, mm")] = 0.0
     inner_length_mm: Annotated[
-        float, _num(ge=0, le=1e4, desc="length of the cup's inner surface l_i, mm")
+        float, _rng(0, 5000, "length of the cup's inner surface l_i, mm")
     ] = 0.0
-    air_density_kg_m3: Annotated[float, _num(gt=0, le=100, desc="air density ρ, kg/m³")] = 1.204
+    air_density_kg_m3: Annotated[
+        float, _rng(1e-3, 50, "density of the gas around the rotor ρ, kg/m³")
+    ] = 1.204
     air_viscosity_m2_s: Annotated[
-        float, _num(gt=0, le=1e-2, desc="kinematic viscosity of air ν, m²/s")
+        float, _rng(1e-6, 0.1, "kinematic viscosity of that gas ν, m²/s")
     ] = 1.516e-5
 
     @model_validator(mode="after")
@@ -53,45 +64,59 @@ class AeroReq(_Strict):
 
 
 class RotorReq(_Strict):
-    mass_kg: Annotated[float, _num(gt=0, le=1e4, desc="rotor mass, kg")]
+    mass_kg: Annotated[float, _rng(1e-3, 1e4, "rotor mass, kg")]
     angular_momentum_kgm2_s: Annotated[
-        float | None, _num(gt=0, le=1e6, desc="kinetic moment H at speed, kg·m²/s")
+        float | None, _rng(1e-6, 1e6, "kinetic moment H at speed, kg·m²/s")
     ] = None
-    inertia_kgm2: Annotated[
-        float | None, _num(gt=0, le=1e4, desc="axial moment of inertia J, kg·m²")
-    ] = None
-    speed_rad_s: Annotated[float, _num(gt=0, le=2e4, desc="design speed ω, rad/s")]
+    inertia_kgm2: Annotated[float | None, _rng(1e-9, 1e4, "axial moment of inertia J, kg·m²")] = (
+        None
+    )
+    speed_rad_s: Annotated[float, _rng(10, 2e4, "design speed ω, rad/s")]
     bearing: Annotated[
         str, Field(min_length=1, max_length=40, description="bearing designation, e.g. 7000 CD")
     ]
-    bearing_count: Annotated[int, Field(ge=2, le=8, description="bearings carrying the rotor")] = 2
+    bearing_count: Annotated[
+        int, Field(ge=2, le=8, description="bearings carrying the rotor; from 2 to 8")
+    ] = 2
     ball_plane_to_cg_mm: Annotated[
-        float, _num(gt=0, le=1e4, desc="distance h from the ball plane to the centre of mass, mm")
+        float, _rng(0.1, 2000, "distance h from the ball plane to the centre of mass, mm")
     ]
     slew_rate_rad_s: Annotated[
-        float, _num(ge=0, le=100, desc="external angular velocity Ω of the housing, rad/s")
+        float,
+        _num(
+            ge=0,
+            le=100,
+            desc="external angular velocity Ω of the housing, rad/s; 0 (no slew) or from "
+            f"{MIN_SLEW_RATE_rad_s:g} to 100",
+        ),
     ]
-    axis_angle_deg: Annotated[
-        float, _num(ge=0, le=180, desc="angle α between H and Ω, degrees")
-    ] = 90.0
+    axis_angle_deg: Annotated[float, _rng(0, 180, "angle α between H and Ω, degrees")] = 90.0
     slew_angle_deg: Annotated[
-        float, _num(gt=0, le=36000, desc="angle the housing turns through in one slew, degrees")
+        float, _rng(0.01, 36000, "angle the housing turns through in one slew, degrees")
     ] = 90.0
-    run_up_time_s: Annotated[float, _num(gt=0, le=1e5, desc="required time to reach speed, s")]
+    run_up_time_s: Annotated[float, _rng(0.1, 1e5, "required time to reach speed, s")]
     rolling_friction_mm: Annotated[
-        float, _num(gt=0, le=1, desc="rolling friction coefficient λ of eq. (4), mm")
+        float, _rng(1e-3, 1, "rolling friction coefficient λ of eq. (4), mm")
     ] = 0.028
     contact_angle_deg: Annotated[
-        float | None,
-        _num(gt=0, le=60, desc="operating contact angle β under preload, degrees"),
+        float | None, _rng(5, 45, "operating contact angle β under preload, degrees")
     ] = None
     lubricant_viscosity_mm2_s: Annotated[
-        float, _num(gt=0, le=1e4, desc="oil viscosity at operating temperature, mm²/s")
+        float, _rng(0.5, 5000, "oil viscosity at operating temperature, mm²/s")
     ] = 10.0
-    required_life_h: Annotated[
-        float | None, _num(gt=0, le=1e7, desc="required basic rating life L10h, h")
-    ] = None
+    required_life_h: Annotated[float | None, _rng(1, 1e7, "required basic rating life L10h, h")] = (
+        None
+    )
     aero: Annotated[AeroReq, Field(description="the [rotor.aero] table: loss_W or cup geometry")]
+
+    @field_validator("slew_rate_rad_s")
+    @classmethod
+    def _slew_or_none(cls, v: float) -> float:
+        if 0.0 < v < MIN_SLEW_RATE_rad_s:
+            raise ValueError(
+                f"must be 0 (no slew) or at least {MIN_SLEW_RATE_rad_s:g} (Earth's rate is 7.3e-05)"
+            )
+        return v
 
     @model_validator(mode="after")
     def _momentum_or_inertia(self) -> "RotorReq":

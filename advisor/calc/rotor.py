@@ -382,12 +382,17 @@ def slew_response(
     ``drive_torque`` (the stabiliser saturated): eq. (5) with the gyroscopic term, H = J·ω
     falling with ω. Returns the curve down to within 0.1 % of the speed where the rotor
     settles, and that speed."""
+    res = resistance(rotor, True)
+    if res(speed) - drive_torque <= 1e-9 * drive_torque:
+        # the slew costs nothing measurable: the torque it lacks is within rounding of the
+        # resistance (where the balance speed itself would be rounding noise)
+        return [0.0], [speed], speed
     settle = balance_speed(rotor, drive_torque, speed, True)
-    if speed - settle <= 1e-9 * speed:  # the slew costs nothing measurable
+    if speed - settle <= 1e-9 * speed:
         return [0.0], [speed], settle
     drop = speed - settle
     speeds = [speed - drop * (1.0 - 10.0 ** (-3.0 * k / (points - 1))) for k in range(points)]
-    times = _cumulative_times(resistance(rotor, True), rotor.inertia_kgm2, drive_torque, speeds)
+    times = _cumulative_times(res, rotor.inertia_kgm2, drive_torque, speeds)
     return times, speeds, settle
 
 
