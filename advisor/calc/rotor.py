@@ -210,6 +210,16 @@ class Resistance(NamedTuple):
         v2 = v * v
         return self.a0 + v2 * (self.a1 + self.a2 * v2) + self.k * v2 * v
 
+    def drop(self, speed: float, u):
+        """M_res(speed) − M_res(speed − u) for 0 ≤ u ≤ speed (u a float or a numpy array),
+        without the cancellation of the plain difference: ω^1.5 − (ω − u)^1.5 =
+        u·(3ω² − 3ωu + u²)/(ω^1.5 + (ω − u)^1.5)."""
+        rest = speed - u
+        cubes = u * (3.0 * speed * (speed - u) + u * u)
+        return u * (self.a1 + self.a2 * (speed + rest)) + self.k * cubes / (
+            speed * speed**0.5 + rest * rest**0.5
+        )
+
     def slope(self, speed: float) -> float:
         """dM_res/dω at ``speed``."""
         return self.a1 + 2.0 * self.a2 * speed + 1.5 * self.k * math.sqrt(speed)
@@ -286,7 +296,7 @@ def _run_up_integral(res: Resistance, j: float, drive_torque: float, speed: floa
     edges = np.linspace(s0, s1, panels + 1)
     s, wt = _segments(edges[:-1], edges[1:])
     u = np.exp(s)
-    upper = float((wt * j * u / (drive_torque - res(speed - u))).sum())
+    upper = float((wt * j * u / (delta + res.drop(speed, u))).sum())
     # the last sliver, where M − M_res ≈ δ + slope·(ω − ω'), in closed form
     last = j * sliver / delta if slope <= 0.0 else j / slope * math.log1p(slope * sliver / delta)
     return float(lower.sum()) + upper + last
