@@ -262,6 +262,23 @@ def _gauss_legendre() -> tuple:
     return x, w
 
 
+@functools.cache
+def _unit_panels(panels: int, first: float = 0.0) -> tuple:
+    """Nodes and weights on [0, 1] of ``panels`` Gauss–Legendre panels, flat: equal panels, or
+    with ``first`` > 0 a first panel [0, first] and one more up to 1. Read only."""
+    import numpy as np
+
+    x, w = _gauss_legendre()
+    edges = np.array([0.0, first, 1.0]) if first else np.linspace(0.0, 1.0, panels + 1)
+    half = 0.5 * np.diff(edges)[:, None]
+    nodes, weights = (
+        (0.5 * (edges[:-1] + edges[1:])[:, None] + half * x).ravel(),
+        (half * w).ravel(),
+    )
+    nodes.flags.writeable = weights.flags.writeable = False
+    return nodes, weights
+
+
 def _segments(lo, hi):
     """Nodes and weights of one Gauss–Legendre panel on each [lo[i], hi[i]] (arrays)."""
     x, w = _gauss_legendre()
@@ -284,22 +301,23 @@ def _run_up_integral(res: Resistance, j: float, drive_torque: float, speed: floa
 
     delta = drive_torque - res(speed)
     half = 0.5 * speed
-    # lower half in v = √ω' (two panels): the integrand varies by at most a factor of two
-    lower = _time_between(
-        res, j, drive_torque, np.array([0.0, half / 4]), np.array([half / 4, half])
-    )
+    # lower half in v = √ω' on two panels, [0, ½√(ω/2)] and up to √(ω/2): the integrand
+    # varies by at most a factor of two there
+    top = math.sqrt(half)
+    nodes, weights = _unit_panels(2, 0.5)
+    v = top * nodes
+    lower = float(np.dot(weights, v / (drive_torque - res.at_root(v)))) * 2.0 * j * top
     slope = res.slope(speed)
     sliver = speed * 1e-3 if slope <= 0.0 else min(speed * 1e-3, 1e-6 * delta / slope)
-    # upper half in s = ln(ω − ω'): J·e^s/(M − M_res(ω − e^s)), smooth however small δ is
+    # upper half in s = ln(ω − ω'): J·e^s/(M − M_res(ω − e^s)), smooth however small δ is;
+    # M − M_res(ω − u) taken as δ + (M_res(ω) − M_res(ω − u)) against cancellation
     s0, s1 = math.log(sliver), math.log(half)
-    panels = max(1, math.ceil((s1 - s0) / LOG_PANEL))
-    edges = np.linspace(s0, s1, panels + 1)
-    s, wt = _segments(edges[:-1], edges[1:])
-    u = np.exp(s)
-    upper = float((wt * j * u / (delta + res.drop(speed, u))).sum())
+    nodes, weights = _unit_panels(max(1, math.ceil((s1 - s0) / LOG_PANEL)))
+    u = np.exp(s0 + (s1 - s0) * nodes)
+    upper = float(np.dot(weights, u / (delta + res.drop(speed, u)))) * j * (s1 - s0)
     # the last sliver, where M − M_res ≈ δ + slope·(ω − ω'), in closed form
     last = j * sliver / delta if slope <= 0.0 else j / slope * math.log1p(slope * sliver / delta)
-    return float(lower.sum()) + upper + last
+    return lower + upper + last
 
 
 def run_up_time(rotor: Rotor, drive_torque: float, speed: float, slewing: bool = False) -> float:
