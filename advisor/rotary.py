@@ -5,6 +5,7 @@ import math
 
 import numpy as np
 
+from advisor import bldc_motor as bm
 from advisor.calc import bldc
 from advisor.calc import reducer as rd
 from advisor.calc import wavegear as wg
@@ -59,22 +60,8 @@ def _candidate(n: float, req: Requirements, steel, steel_mass: float, terms, par
     stages = len(split) if split else 0
     eta = params.stage_efficiency**stages if stages else math.nan
     torque = rot.torque_Nm / (q_total * eta) if stages else math.nan
-    # rewound for n: the torque at the reference current falls as n_ref/n (seed 000, eq. (4))
-    torque_at_ref_current = ref.torque_Nm * ref.speed_rpm / n
-    load = torque / torque_at_ref_current
     f = bldc.flux_frequency_Hz(n, ref.pole_pairs)
-    spec_quad = (
-        bldc.iron_specific_loss_quadratic(steel.p15_50_W_kg, f) * (ref.induction_T / 1.5) ** 2
-    )
-    spec_three = terms.specific_loss(f, ref.induction_T)
-    spec = spec_quad if ref.iron_loss_model == "quadratic" else spec_three
-    ohmic_ref = ref.conducting_phases * ref.phase_resistance_ohm * ref.current_A**2
-    losses = {
-        "ohmic": bldc.ohmic_loss(ohmic_ref, ref.speed_rpm, n, load),
-        "iron": steel_mass * spec,
-        "magnets": bldc.magnet_loss([(p.speed_rpm, p.loss_W) for p in ref.magnet_losses], n),
-    }
-    losses["total"] = sum(losses.values())
+    spec, spec_three = bm.specific_iron_loss(ref, steel, terms, f)
     return {
         "speed_rpm": n,
         "frequency_Hz": f,
@@ -82,9 +69,9 @@ def _candidate(n: float, req: Requirements, steel, steel_mass: float, terms, par
         "split": split,
         "eta": eta,
         "torque_Nm": torque,
-        "current_A": ref.current_A * load,
-        "load": load,
-        "losses": losses,
+        # the winding rewound for n: current ∝ torque·n (seed 000, eq. (4)); reported only
+        "current_A": bldc.rewound_current_A(ref.current_A, ref.torque_Nm, ref.speed_rpm, torque, n),
+        "losses": bm.losses_at(ref, steel_mass * spec, n, torque),
         "iron_three_term_W": steel_mass * spec_three,
         "spec": spec,
         "spec_three": spec_three,
@@ -121,23 +108,6 @@ def advise_rotary(req: Requirements, cat: Catalogs, trace: Trace):
             "no feasible design: no candidate speed gives a ratio a wave-gear reducer can make",
             [f"{c['speed_rpm']:g} rpm → q_Σ = {c['q_total']:.4g}" for c in cands],
         )
-    # a speed is a candidate only if the rewound reference motor carries the torque there
-    usable = [c for c in reducible if c["load"] <= 1.0 + 1e-9]
-    if not usable:
-        raise InfeasibleError(
-            "no feasible design: the reference motor cannot give the torque",
-            [
-                f"at {c['speed_rpm']:g} rpm the reducer (q = {c['q_total']:.4g}, "
-                f"η = {c['eta']:.3g}) "
-                f"asks {c['torque_Nm']:.3g} N·m of the motor: it would need "
-                f"{c['current_A']:.3g} A against its rated {ref.current_A:g} A"
-                for c in reducible
-            ]
-            + [
-                "describe a larger motor in [motor.reference] (torque_Nm, current_A, "
-                "phase_resistance_ohm, stator size) or lower rotary.torque_Nm"
-            ],
-        )
     # eq. (10) at the reference speed, with the losses of the model in use
     at_ref = _candidate(ref.speed_rpm, req, steel, steel_mass, terms, params)
     if at_ref["split"]:
@@ -146,15 +116,20 @@ def advise_rotary(req: Requirements, cat: Catalogs, trace: Trace):
     else:
         f_opt = math.nan
     n_opt = f_opt * 60.0 / ref.pole_pairs
+    # the frame's limit is thermal: a speed is a candidate only if its losses are carried
+    limit, basis = bm.loss_limit(mot, steel, steel_mass, terms)
+    if not any(bl_rules.within_limit(c["losses"]["total"], limit) for c in reducible):
+        raise bm.too_lossy(reducible, limit, basis, n_opt)
     speed = trace.apply(
         bl_rules.choose_speed,
         {c["speed_rpm"]: c["losses"]["total"] for c in reducible},
         n_opt,
         ref.pole_pairs,
-        {c["speed_rpm"]: c["current_A"] for c in reducible if c not in usable},
-        ref.current_A,
+        limit,
+        basis,
+        {c["speed_rpm"]: c["current_A"] for c in reducible},
     )
-    chosen = next(c for c in usable if c["speed_rpm"] == speed)
+    chosen = next(c for c in reducible if c["speed_rpm"] == speed)
 
     # ---- reducer
     q_total = chosen["q_total"]
@@ -195,22 +170,20 @@ def advise_rotary(req: Requirements, cat: Catalogs, trace: Trace):
 
     # the motor torque follows the reducer actually adopted (its efficiency)
     motor_torque = rot.torque_Nm / (design.total_ratio * design.efficiency)
-    at_ref_current = ref.torque_Nm * ref.speed_rpm / speed
-    load = motor_torque / at_ref_current
-    if load > 1.0:
-        raise InfeasibleError(
-            "no feasible design: the reference motor cannot give the torque",
-            [
-                f"at {speed:g} rpm the reducer (q = {design.total_ratio:.4g}, η = "
-                f"{design.efficiency:.3g}) asks {motor_torque:.3g} N·m of the motor, which gives "
-                f"{at_ref_current:.3g} N·m at its rated {ref.current_A:g} A: it would need "
-                f"{ref.current_A * load:.3g} A",
-                "describe a larger motor in [motor.reference] (torque_Nm, current_A, "
-                "phase_resistance_ohm, stator size) or lower rotary.torque_Nm",
-            ],
-        )
-    checks = _checks(design, env, load, ref.current_A)
-    motor = _motor_out(chosen, reducible, ref, steel, steel_mass, f_opt, n_opt, motor_torque, load)
+    working = {
+        **chosen,
+        "q_total": design.total_ratio,
+        "eta": design.efficiency,
+        "torque_Nm": motor_torque,
+        "current_A": bldc.rewound_current_A(
+            ref.current_A, ref.torque_Nm, ref.speed_rpm, motor_torque, speed
+        ),
+        "losses": bm.losses_at(ref, chosen["losses"]["iron"], speed, motor_torque),
+    }
+    if not bl_rules.within_limit(working["losses"]["total"], limit):
+        raise bm.too_lossy([working], limit, basis, n_opt)
+    checks = _checks(design, env, working["losses"]["total"], limit, basis)
+    motor = _motor_out(working, reducible, ref, steel, steel_mass, f_opt, n_opt, limit, basis)
     gearbox = GearboxOut.make(
         kind="wave gear with rolling bodies",
         layout="equal-diameter",
@@ -228,36 +201,37 @@ def advise_rotary(req: Requirements, cat: Catalogs, trace: Trace):
     )
     one_way = None
     if req.application.hold_without_power:
-        one_way, dev_checks, dev_warnings = _one_way(
-            req, trace, design, motor_torque, speed, load, ref.current_A
-        )
+        one_way, dev_checks, dev_warnings = _one_way(req, trace, design, working, limit, basis)
         checks += dev_checks
         warnings += dev_warnings
     return RotaryDesignOut.make(motor=motor, gearbox=gearbox, one_way=one_way), checks, warnings
 
 
-def _one_way(req, trace, design: rd.Reducer, motor_torque, speed, load, rated_current):
-    """Seed 004: the holding device at the motor side, and what it asks of the motor."""
+def _one_way(req, trace, design: rd.Reducer, working: dict, limit: float, basis: str):
+    """Seed 004: the holding device at the motor side, and what it asks of the motor: its
+    driving loss raises the motor torque, hence the copper loss, at the same speed."""
     from advisor.one_way import choose_device
     from rules import one_way as ow_rules
 
     at_motor = trace.apply(
         ow_rules.placement, req.rotary.torque_Nm, design.total_ratio, design.efficiency
     )
+    motor_torque, speed = working["torque_Nm"], working["speed_rpm"]
     power = motor_torque * speed * math.pi / 30.0
     device, warnings = choose_device(req.one_way, at_motor, req.rotary.torque_Nm, power, trace)
     checks = []
     if device.efficiency < 1.0:
-        with_device = load / device.efficiency
+        ref = req.motor.reference
+        with_device = bm.losses_at(
+            ref, working["losses"]["iron"], speed, motor_torque / device.efficiency
+        )["total"]
         checks.append(
-            Check(
-                "motor_current_with_one_way",
-                "motor current with the one-way device's loss",
-                rated_current * with_device,
-                rated_current,
-                "A",
-                1.0 / with_device,
-                ow_rules.SEED_004,
+            bm.losses_check(
+                "motor_losses_with_one_way",
+                "motor losses with the one-way device's loss",
+                with_device,
+                limit,
+                f"{ow_rules.SEED_004}; {SEED_000}, eq. (4): {basis}",
             )
         )
     return device, checks, warnings
@@ -307,7 +281,7 @@ def _no_reducer(space: rd.SweepResult, torque: float, env) -> InfeasibleError:
     )
 
 
-def _checks(design: rd.Reducer, env, load: float, ref_current: float) -> list[Check]:
+def _checks(design: rd.Reducer, env, losses_W: float, limit_W: float, basis: str) -> list[Check]:
     checks = []
     if env.max_outer_diameter_mm:
         checks.append(
@@ -358,14 +332,12 @@ def _checks(design: rd.Reducer, env, load: float, ref_current: float) -> list[Ch
             )
         )
     checks.append(
-        Check(
-            "motor_current",
-            "motor current against the reference design's current",
-            ref_current * load,
-            ref_current,
-            "A",
-            1.0 / load,
-            SEED_000 + ": the reference motor's thermal rating",
+        bm.losses_check(
+            "motor_losses",
+            "motor total losses against what the frame's cooling carries",
+            losses_W,
+            limit_W,
+            f"{SEED_000}, eqs. (4), (5), (9): {basis}",
         )
     )
     return checks
@@ -418,7 +390,7 @@ def _losses(d: dict) -> LossesOut:
 
 
 def _motor_out(
-    chosen, candidates, ref, steel, steel_mass, f_opt, n_opt, torque, load
+    chosen, candidates, ref, steel, steel_mass, f_opt, n_opt, limit, basis
 ) -> BldcMotorOut:
     options = [c for c in bldc.pole_slot_combinations(3, 36) if c.pole_pairs == ref.pole_pairs]
     return BldcMotorOut.make(
@@ -426,9 +398,11 @@ def _motor_out(
         speed_rpm=chosen["speed_rpm"],
         pole_pairs=ref.pole_pairs,
         electrical_frequency_Hz=chosen["frequency_Hz"],
-        torque_Nm=torque,
-        current_A=ref.current_A * load,
+        torque_Nm=chosen["torque_Nm"],
+        current_A=chosen["current_A"],
         losses_W=_losses(chosen["losses"]),
+        loss_limit_W=limit,
+        loss_limit_basis=basis,
         optimum_frequency_Hz=f_opt,
         optimum_speed_rpm=n_opt,
         steel=SteelOut.make(
@@ -451,7 +425,7 @@ def _motor_out(
                 gearbox_efficiency=c["eta"],
                 torque_Nm=c["torque_Nm"],
                 current_A=c["current_A"],
-                within_rating=c["load"] <= 1.0 + 1e-9,
+                within_loss_limit=bl_rules.within_limit(c["losses"]["total"], limit),
                 losses_W=_losses(c["losses"]),
                 iron_loss_three_term_W=c["iron_three_term_W"],
             )

@@ -18,7 +18,7 @@ class SpeedCandidateOut(_Out):
     gearbox_efficiency: float
     torque_Nm: float
     current_A: float
-    within_rating: bool
+    within_loss_limit: bool
     losses_W: LossesOut
     iron_loss_three_term_W: float
 
@@ -50,6 +50,8 @@ class BldcMotorOut(_Out):
     torque_Nm: float
     current_A: float
     losses_W: LossesOut
+    loss_limit_W: float
+    loss_limit_basis: str
     optimum_frequency_Hz: float
     optimum_speed_rpm: float
     steel: SteelOut

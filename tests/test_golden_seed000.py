@@ -44,6 +44,27 @@ def test_motor_torque_is_the_papers_2_Nm(report):
     assert report["design"]["motor"]["current_A"] == pytest.approx(5.5)
 
 
+def test_motor_is_checked_by_its_losses(report):
+    # the example runs the frame at its reference point: 68.97 + 99.45 + 60 = 228.42 W
+    # against the same 228.42 W; 10000 rpm loses 21.29 + 397.8 + 100 = 519.09 W, over it
+    m = report["design"]["motor"]
+    assert m["loss_limit_W"] == pytest.approx(228.42, rel=1e-5)
+    assert {c["speed_rpm"]: c["within_loss_limit"] for c in m["candidates"]} == {
+        5000: True,
+        10000: False,
+    }
+    assert {c["speed_rpm"]: c["current_A"] for c in m["candidates"]} == pytest.approx(
+        {5000: 5.5, 10000: 6.11111}
+    )
+    check = next(c for c in report["checks"] if c["id"] == "motor_losses")
+    assert check["value"] == pytest.approx(228.42, rel=1e-5)
+    assert check["limit"] == pytest.approx(228.42, rel=1e-5)
+    assert check["unit"] == "W" and check["passed"]
+    assert not any(c["id"] == "motor_current" for c in report["checks"])
+    speed = next(d for d in report["decisions"] if d["id"] == "BL-02")
+    assert "6.11 A" in speed["rationale"] and "not a limit" in speed["rationale"]
+
+
 def test_optimum_frequency_of_eq10(report):
     # K_om = 68.97·500², K_mag = 159.45/500² → f* = (K_om/K_mag)^¼ = 405.5 Hz
     k_om = 2 * 1.14 * 5.5**2 * 500**2
@@ -174,11 +195,15 @@ def test_wrong_motor_for_the_application(tmp_path, capsys):
 
 
 def test_motor_too_small_for_the_torque():
-    # four times the torque: 5000 rpm needs 4 × 5.5 = 22 A, 10000 rpm 4 × 6.11 = 24.4 A, from
-    # a motor rated for 5.5 A
-    with pytest.raises(InfeasibleError, match="reference motor cannot give the torque") as e:
+    # four times the torque: 8 N·m at 5000 rpm gives 16 × 68.97 = 1103.5 W of copper loss,
+    # 1263 W in all; 4.44 N·m at 10000 rpm 16 × 21.287 = 340.6 W, 838.4 W in all; the frame
+    # carries 228.42 W. The currents (22 A, 24.4 A) are reported beside the losses.
+    with pytest.raises(InfeasibleError, match="losses exceed what its frame's cooling") as e:
         advise(parse_requirements(_req(torque_Nm=4 * 1620)))
-    assert "it would need 22 A" in str(e.value) and "it would need 24.4 A" in str(e.value)
+    text = str(e.value)
+    assert "losses 1263 W" in text and "losses 838.4 W" in text
+    assert text.count("against the limit 228.4 W") == 2
+    assert "(22 A)" in text and "(24.4 A)" in text
 
 
 def test_three_term_iron_model_still_prefers_5000():
