@@ -19,6 +19,8 @@ from advisor.rotary_report import (
     GearboxOut,
     GearboxSummaryOut,
     LossesOut,
+    ParetoOut,
+    ParetoPointOut,
     PoleSlotOut,
     RotaryDesignOut,
     SpeedCandidateOut,
@@ -34,6 +36,8 @@ from rules import wavegear as wg_rules
 SEED_000 = wg_rules.SEED_000
 MAX_ROWS = int(rd.ROW_GRID.max())
 FIG1_ROWS = [2, 3, 4, 6, 8, 10, 12]
+#: At most this many designs of the Pareto front in the report, evenly spaced along it.
+PARETO_POINTS = 16
 
 
 def _steel(req: Requirements, cat: Catalogs):
@@ -141,12 +145,10 @@ def advise_rotary(req: Requirements, cat: Catalogs, trace: Trace):
     )
     rows = trace.apply(wg_rules.choose_rows, len(split), needed, MAX_ROWS)
     space = rd.sweep(q_total, params)
-    i_mass = rd.best(space, "mass", env.max_outer_diameter_mm, env.max_length_mm)
-    i_diam = rd.best(space, "diameter", env.max_outer_diameter_mm, env.max_length_mm)
-    if i_mass is None or i_diam is None:
+    optimum = _optimum(space, q_total, "mass", params, env)
+    slimmest = _optimum(space, q_total, "diameter", params, env)
+    if optimum is None or slimmest is None:
         raise _no_reducer(space, rot.torque_Nm, env)
-    optimum = _from_sweep(space, i_mass, params)
-    slimmest = _from_sweep(space, i_diam, params)
     design = rd.evaluate(split, rows, params) if rows else None
     warnings: list[str] = []
     if design is None or not _fits(design, env):
@@ -167,6 +169,7 @@ def advise_rotary(req: Requirements, cat: Catalogs, trace: Trace):
         design.outer_diameter_mm,
         slimmest.outer_diameter_mm,
     )
+    pareto = _pareto(space, design, params, env, trace)
 
     # the motor torque follows the reducer actually adopted (its efficiency)
     motor_torque = rot.torque_Nm / (design.total_ratio * design.efficiency)
@@ -193,10 +196,12 @@ def advise_rotary(req: Requirements, cat: Catalogs, trace: Trace):
         optimum_min_diameter=GearboxSummaryOut.make(**_summary_fields(slimmest)),
         sweep=SweepOut.make(
             configurations=space.evaluated,
-            feasible=int(space.mass_kg.size),
+            feasible=space.feasible,
+            stage_counts=[int(n) for n in rd.stage_count_bounds(q_total)],
             objective_mass="least mass within the envelope",
             objective_diameter="least outer diameter within the envelope",
         ),
+        pareto=pareto,
         fig1=_fig1(params.k_rb),
     )
     one_way = None
@@ -246,6 +251,68 @@ def _fits(r: rd.Reducer, env) -> bool:
 def _from_sweep(space: rd.SweepResult, i: int, params: rd.ReducerParams) -> rd.Reducer:
     ratios = space.ratios_out_to_in(i)
     return rd.evaluate(ratios, [int(space.rows_out[i])] + [2] * (len(ratios) - 1), params)
+
+
+def _optimum(space, q_total, objective, params, env) -> rd.Reducer | None:
+    """The best of the design space; within an envelope the optimum lies on it, between
+    grid points, and the best grid point is polished (without one the boundary points the
+    sweep adds hold the mass optimum)."""
+    d_max, l_max = env.max_outer_diameter_mm, env.max_length_mm
+    if d_max is None and l_max is None:
+        i = rd.best(space, objective)
+        return None if i is None else _from_sweep(space, i, params)
+    found = rd.refine(q_total, params, space, objective, d_max, l_max)
+    if found is None:
+        return None
+    ratios, rows = found
+    return rd.evaluate(ratios, [rows] + [2] * (len(ratios) - 1), params)
+
+
+def _pareto(space, design: rd.Reducer, params, env, trace) -> ParetoOut:
+    """The non-dominated set of the design space (thinned) and where ``design`` stands."""
+    d_max, l_max = env.max_outer_diameter_mm, env.max_length_mm
+    eta = params.stage_efficiency
+    front = rd.pareto(space, eta, d_max, l_max)
+    shown = rd.thin(front, PARETO_POINTS)
+    j = rd.dominator(space, design, d_max, l_max)
+    point = _pareto_point(space, j, eta) if j is not None else None
+    trace.apply(
+        wg_rules.compare_with_front,
+        int(front.size),
+        int(shown.size),
+        {
+            "mass_kg": design.mass_kg,
+            "outer_diameter_mm": design.outer_diameter_mm,
+            "length_mm": design.length_mm,
+            "stages": len(design.stages),
+        },
+        None if point is None else point.model_dump(),
+    )
+    return ParetoOut.make(
+        objectives=["least mass", "least outer diameter", "least length", "highest efficiency"],
+        front_size=int(front.size),
+        adopted="on the front" if point is None else "dominated",
+        dominated_by=point,
+        stages=[int(space.stages[i]) for i in shown],
+        ratios=[space.ratios_out_to_in(int(i)) for i in shown],
+        rows_out=[int(space.rows_out[i]) for i in shown],
+        mass_kg=[float(space.mass_kg[i]) for i in shown],
+        outer_diameter_mm=[float(space.outer_diameter_mm[i]) for i in shown],
+        length_mm=[float(space.length_mm[i]) for i in shown],
+        efficiency=[eta ** int(space.stages[i]) for i in shown],
+    )
+
+
+def _pareto_point(space: rd.SweepResult, i: int, eta: float) -> ParetoPointOut:
+    return ParetoPointOut.make(
+        stages=int(space.stages[i]),
+        ratios=space.ratios_out_to_in(i),
+        rows_out=int(space.rows_out[i]),
+        mass_kg=float(space.mass_kg[i]),
+        outer_diameter_mm=float(space.outer_diameter_mm[i]),
+        length_mm=float(space.length_mm[i]),
+        efficiency=eta ** int(space.stages[i]),
+    )
 
 
 def _no_reducer(space: rd.SweepResult, torque: float, env) -> InfeasibleError:

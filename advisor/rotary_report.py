@@ -84,8 +84,9 @@ class GearboxSummaryOut(_Out):
 
 
 class SweepOut(_Out):
-    configurations: int
-    feasible: int
+    configurations: int  # built and computed: each realises the ratio within the stage limits
+    feasible: int  # of those, the ones whose every stage fits the common diameter
+    stage_counts: list[int]
     objective_mass: str
     objective_diameter: str
 
@@ -94,6 +95,32 @@ class Fig1Out(_Out):
     q: list[float]
     rows: list[int]
     volume_per_torque_cm3_per_Nm: list[list[float]]
+
+
+class ParetoPointOut(_Out):
+    stages: int
+    ratios: list[float]  # output first
+    rows_out: int
+    mass_kg: float
+    outer_diameter_mm: float
+    length_mm: float
+    efficiency: float
+
+
+class ParetoOut(_Out):
+    """The front as columns (one entry per design shown, lightest first), like ``fig1``."""
+
+    objectives: list[str]
+    front_size: int
+    adopted: str  # "on the front" | "dominated"
+    dominated_by: ParetoPointOut | None = None
+    stages: list[int]
+    ratios: list[list[float]]  # output first
+    rows_out: list[int]
+    mass_kg: list[float]
+    outer_diameter_mm: list[float]
+    length_mm: list[float]
+    efficiency: list[float]
 
 
 class GearboxOut(GearboxSummaryOut):
@@ -105,6 +132,7 @@ class GearboxOut(GearboxSummaryOut):
     optimum: GearboxSummaryOut
     optimum_min_diameter: GearboxSummaryOut
     sweep: SweepOut
+    pareto: ParetoOut
     fig1: Fig1Out
 
 

@@ -107,7 +107,11 @@ def test_optimum_side_by_side_with_warnings(report):
     }
     # more than 5 % apart → flagged
     assert any("heavier than the lightest" in w for w in report["warnings"])
-    assert g["sweep"]["configurations"] > 100_000
+    # counted honestly (issue 16): only combinations within the stage limits are built, four
+    # stages (at least 6.5⁴ = 1785) are not for q = 1000
+    sw = g["sweep"]
+    assert sw["stage_counts"] == [2, 3]
+    assert 1000 < sw["feasible"] <= sw["configurations"] < 10_000
 
 
 def test_fig1_data(report):
@@ -122,7 +126,7 @@ def test_fig1_data(report):
 
 def test_decisions(report):
     ids = [d["id"] for d in report["decisions"]]
-    assert ids == ["BL-01", "WG-01", "BL-02", "WG-02", "WG-03", "WG-04"]
+    assert ids == ["BL-01", "WG-01", "BL-02", "WG-02", "WG-03", "WG-04", "WG-05"]
     speed = next(d for d in report["decisions"] if d["id"] == "BL-02")
     assert "Faster is not better" in speed["rationale"]
 
@@ -213,3 +217,22 @@ def test_three_term_iron_model_still_prefers_5000():
     m = rep.design.motor
     assert m.speed_rpm == 5000
     assert m.losses_W.iron == pytest.approx(m.steel.mass_kg * m.steel.specific_loss_three_term_W_kg)
+
+
+def test_pareto_front_in_the_report(report):
+    # issue 16: the non-dominated set under design.gearbox.pareto, thinned, and where the
+    # rule design (q_out = 20, three rows, 5.633 kg) stands: dominated, by a named design
+    g = report["design"]["gearbox"]
+    pf = g["pareto"]
+    n = len(pf["mass_kg"])
+    assert 0 < n <= 16 <= pf["front_size"]
+    for col in ("stages", "ratios", "rows_out", "outer_diameter_mm", "length_mm", "efficiency"):
+        assert len(pf[col]) == n
+    assert pf["adopted"] == "dominated"
+    by = pf["dominated_by"]
+    assert by["mass_kg"] < g["mass_kg"] and by["outer_diameter_mm"] <= g["outer_diameter_mm"]
+    assert by["length_mm"] <= g["length_mm"] and by["efficiency"] >= g["efficiency"]
+    masses = pf["mass_kg"]
+    assert masses == sorted(masses) and masses[0] == g["optimum"]["mass_kg"]
+    wg05 = next(d for d in report["decisions"] if d["id"] == "WG-05")
+    assert "dominated by [40.0, 25.0]" in wg05["decision"]
