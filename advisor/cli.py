@@ -2,7 +2,7 @@
 
 ``advisor --batch REQ.toml`` prints the report TOML on stdout; with ``-o OUT.toml`` it writes
 the report atomically and prints a short summary instead. Exit codes: see
-:class:`advisor.errors.ExitCode`. Never a traceback: every failure is one line per problem on
+:class:`advisor.core.errors.ExitCode`. Never a traceback: every failure is one line per problem on
 stderr.
 
 The batch path must stay light: it imports neither textual nor rich (rich only for the
@@ -15,7 +15,7 @@ import sys
 from pathlib import Path
 
 from advisor import __version__
-from advisor.errors import AdvisorError, ExitCode, InfeasibleError
+from advisor.core.errors import AdvisorError, ExitCode, InfeasibleError
 
 PROG = "advisor"
 
@@ -24,7 +24,8 @@ def build_parser() -> argparse.ArgumentParser:
     p = argparse.ArgumentParser(
         prog=PROG,
         description="Rules-based design advisor for electromechanical drives.",
-        epilog="Exit codes: 0 design found, 2 invalid input, 3 no feasible design.",
+        epilog="Exit codes: 0 design found, 2 invalid input, 3 no feasible design. "
+        "`advisor schema` prints the JSON Schema of requirement files.",
     )
     p.add_argument(
         "requirements",
@@ -79,9 +80,9 @@ def run_batch(req_path: Path, output: Path | None, catalog_dir: Path | None) -> 
     # pydantic scans every installed package's entry points for plugins on its first model
     # (about 7 ms of importlib.metadata); the advisor uses none.
     os.environ.setdefault("PYDANTIC_DISABLE_PLUGINS", "__all__")
-    from advisor.engine import advise
-    from advisor.models import read_requirements
-    from advisor.report import to_toml, write_atomic
+    from advisor.core.engine import advise
+    from advisor.core.report import to_toml, write_atomic
+    from advisor.core.requirements import read_requirements
 
     req = read_requirements(req_path)
     report = advise(req, catalog_dir)
@@ -138,7 +139,30 @@ def run_wizard(path: Path | None, catalog_dir: Path | None) -> int:
         return exc.exit_code
 
 
+def run_schema(argv: list[str]) -> int:
+    """``advisor schema``: the JSON Schema of requirement files (for editors with TOML schema
+    support); ``--markdown``: the README's tables of requirement keys."""
+    p = argparse.ArgumentParser(
+        prog=f"{PROG} schema",
+        description="Print the JSON Schema of requirement files, from the requirement models.",
+    )
+    p.add_argument(
+        "--markdown", action="store_true", help="print the tables of requirement keys instead"
+    )
+    try:
+        args = p.parse_args(argv)
+    except SystemExit as exc:
+        return int(exc.code or 0)
+    from advisor.core import schema
+
+    sys.stdout.write(schema.key_tables() if args.markdown else schema.schema_text())
+    return ExitCode.OK
+
+
 def main(argv: list[str] | None = None) -> int:
+    argv = sys.argv[1:] if argv is None else argv
+    if argv[:1] == ["schema"]:
+        return run_schema(argv[1:])
     parser = build_parser()
     try:
         args = parser.parse_args(argv)

@@ -10,7 +10,7 @@ from concurrent.futures import ProcessPoolExecutor
 from pathlib import Path
 from typing import NamedTuple
 
-from advisor.errors import AdvisorError, ExitCode, InfeasibleError
+from advisor.core.errors import AdvisorError, ExitCode, InfeasibleError
 
 #: Severity order for "the worst outcome": a bug, then bad input, then infeasibility.
 SEVERITY = {
@@ -51,36 +51,12 @@ def report_name(source: Path, taken: set[str]) -> str:
     return name
 
 
-def headline(report) -> str:
-    d = report.design
-    if report.report.application == "linear":
-        s, m = d.screw, d.motor
-        return f"{s.thread}, {m.model} {m.rated_power_kW:g} kW, p = {m.pole_pairs}"
-    if report.report.application == "positioning":
-        mo = d.motion
-        return (
-            f"motor {mo.motor}, i = {mo.optimal_ratio:.4g}, {mo.move_time_s:.4g} s "
-            f"({mo.profile_actual})"
-        )
-    if report.report.application == "spinning_rotor":
-        r = d.rotor
-        return (
-            f"{r.required_torque_Nm:.4g} N·m drive, run-up {r.run_up_time_s:.3g} s, "
-            f"{r.steady_power_W.with_reaction:.4g} W with the gyroscopic load, "
-            f"{r.bearing.designation} L10h {r.bearing_life_h:.3g} h"
-        )
-    m, g = d.motor, d.gearbox
-    return (
-        f"{m.speed_rpm:g} rpm, {m.losses_W.total:.0f} W; {len(g.stages)} stages q = "
-        f"{g.total_ratio:.4g}, Ø{g.outer_diameter_mm:.0f} mm, {g.mass_kg:.2f} kg"
-    )
-
-
 def advise_one(source: Path, target: Path, catalog_dir: Path | None) -> Outcome:
     """Advise one file and write its report; every failure becomes an Outcome."""
-    from advisor.engine import advise
-    from advisor.models import read_requirements
-    from advisor.report import to_toml, write_atomic
+    from advisor.core.engine import advise
+    from advisor.core.registry import headline
+    from advisor.core.report import to_toml, write_atomic
+    from advisor.core.requirements import read_requirements
 
     try:
         report = advise(read_requirements(source), catalog_dir)

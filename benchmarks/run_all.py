@@ -49,9 +49,9 @@ def cold(n: int) -> dict:
 
 
 def warm(n: int) -> dict:
-    from advisor.engine import advise
-    from advisor.models import read_requirements
-    from advisor.report import to_toml
+    from advisor.core.engine import advise
+    from advisor.core.report import to_toml
+    from advisor.core.requirements import read_requirements
 
     out = {}
     for ex in examples():

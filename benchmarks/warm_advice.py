@@ -9,9 +9,9 @@ import time
 
 from _results import examples, save
 
-from advisor.engine import advise
-from advisor.models import read_requirements
-from advisor.report import to_toml
+from advisor.core.engine import advise
+from advisor.core.report import to_toml
+from advisor.core.requirements import read_requirements
 
 
 def main() -> None:

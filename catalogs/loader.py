@@ -10,7 +10,7 @@ from functools import cache
 from pathlib import Path
 from typing import Any, NamedTuple
 
-from advisor.errors import CatalogError
+from advisor.core.errors import CatalogError
 from catalogs.rows import (
     Bearing,
     ElectricalSteel,

@@ -1,5 +1,5 @@
 """Selection heuristics, one module per domain. Each rule decides and explains; none computes
-geometry. Importing this package registers every rule in :data:`advisor.rulebook.REGISTRY`."""
+geometry. Importing this package registers every rule in :data:`advisor.core.rulebook.REGISTRY`."""
 
 from rules import bldc, induction, motion, one_way, rotor, screw, wavegear
 

@@ -1,6 +1,6 @@
 """Rules of the brushless motor choice (seed 000)."""
 
-from advisor.rulebook import Finding, rule
+from advisor.core.rulebook import Finding, rule
 
 SEED_000 = "000_e109c3d4c17eaf1c.txt"
 

@@ -1,6 +1,6 @@
 """Rules of the positioning drive (seed 003)."""
 
-from advisor.rulebook import Finding, rule
+from advisor.core.rulebook import Finding, rule
 
 SEED_003 = "003_9e41cc3901572aaa.txt"
 

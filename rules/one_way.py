@@ -1,6 +1,6 @@
 """Rules of the one-way (holding) device (seed 004)."""
 
-from advisor.rulebook import Finding, rule
+from advisor.core.rulebook import Finding, rule
 
 SEED_004 = "004_ce1464ec9bc33bf8.txt"
 

@@ -1,6 +1,6 @@
 """Rules of the spinning-rotor drive (seed 002)."""
 
-from advisor.rulebook import Finding, rule
+from advisor.core.rulebook import Finding, rule
 
 SEED_002 = "002_4f513db63d3429ac.txt"
 

@@ -2,7 +2,7 @@
 
 from typing import NamedTuple
 
-from advisor.rulebook import Finding, rule
+from advisor.core.rulebook import Finding, rule
 
 SEED_001 = "001_085658f38eaaea54.txt"
 

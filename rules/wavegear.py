@@ -2,7 +2,7 @@
 
 import math
 
-from advisor.rulebook import Finding, rule
+from advisor.core.rulebook import Finding, rule
 
 SEED_000 = "000_e109c3d4c17eaf1c.txt"
 TEXTBOOK = "Gerashchenko, Postnikov, Samsonovich, textbook (2010), fig. 1.72, cited by seed 000"

@@ -5,7 +5,7 @@ import math
 import pytest
 
 from advisor.calc import bldc
-from advisor.errors import InfeasibleError
+from advisor.core.errors import InfeasibleError
 
 
 def test_pole_slot_relation_eq1():
@@ -134,8 +134,8 @@ def _rotary(torque_Nm: float, speeds: list[float], **motor) -> dict:
 
 
 def _advise(data: dict):
-    from advisor.engine import advise
-    from advisor.models import parse_requirements
+    from advisor.core.engine import advise
+    from advisor.core.requirements import parse_requirements
 
     return advise(parse_requirements(data))
 
@@ -228,7 +228,7 @@ def test_zero_magnet_loss_runs_end_to_end():
 
 
 def test_magnet_loss_points_at_one_speed_are_refused():
-    from advisor.errors import InputError
+    from advisor.core.errors import InputError
 
     ref = {"magnet_losses": [{"speed_rpm": 5000, "loss_W": 60}, {"speed_rpm": 5000, "loss_W": 80}]}
     with pytest.raises(InputError, match="magnet_losses"):

@@ -5,7 +5,7 @@ import shutil
 
 import pytest
 
-from advisor.errors import CatalogError
+from advisor.core.errors import CatalogError
 from catalogs import load_catalogs
 from catalogs.loader import HERE, MATERIALS_FILE, MOTORS_FILE
 

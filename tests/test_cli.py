@@ -10,7 +10,7 @@ import pytest
 from helpers import EXAMPLES
 
 from advisor.cli import main
-from advisor.errors import ExitCode
+from advisor.core.errors import ExitCode
 
 EXAMPLE = EXAMPLES / "linear_screw_actuator.toml"
 GOOD = EXAMPLE.read_text(encoding="utf-8")
@@ -213,12 +213,12 @@ def test_unknown_option_is_a_usage_error(capsys):
 
 
 def test_a_bug_is_one_line_not_a_traceback(monkeypatch, capsys):
-    import advisor.engine
+    import advisor.core.engine
 
     def broken(*a, **k):
         raise ZeroDivisionError("float division by zero")
 
-    monkeypatch.setattr(advisor.engine, "advise", broken)
+    monkeypatch.setattr(advisor.core.engine, "advise", broken)
     assert main(["--batch", str(EXAMPLE)]) == ExitCode.INTERNAL_ERROR
     err = capsys.readouterr().err
     assert "internal error (ZeroDivisionError" in err and "Traceback" not in err

@@ -6,9 +6,9 @@ import tomllib
 import pytest
 from helpers import EXAMPLES, seed001_requirement
 
-from advisor.engine import advise
-from advisor.models import parse_requirements, read_requirements
-from advisor.report import to_toml
+from advisor.core.engine import advise
+from advisor.core.report import to_toml
+from advisor.core.requirements import parse_requirements, read_requirements
 from rules import induction as im_rules
 
 

@@ -7,7 +7,7 @@ import sys
 from helpers import EXAMPLES
 
 from advisor.cli import main
-from advisor.errors import ExitCode
+from advisor.core.errors import ExitCode
 from advisor.many import SEVERITY, expand, report_name
 
 

@@ -7,9 +7,9 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from advisor.engine import advise
-from advisor.errors import InfeasibleError, InputError
-from advisor.models import parse_requirements
+from advisor.core.engine import advise
+from advisor.core.errors import InfeasibleError, InputError
+from advisor.core.requirements import parse_requirements
 
 finite = dict(allow_nan=False, allow_infinity=False)
 

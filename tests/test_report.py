@@ -4,7 +4,7 @@ import os
 
 import pytest
 
-from advisor import report as rp
+from advisor.core import report as rp
 
 
 def test_write_atomic_replaces(tmp_path):
@@ -67,7 +67,7 @@ def test_killed_writer_leaves_the_old_file_and_the_next_write_cleans_up(tmp_path
     target.write_text("old = true\n")
     child = (
         "import os, time, sys\n"
-        "from advisor import report as rp\n"
+        "from advisor.core import report as rp\n"
         "real = os.fsync\n"
         "def slow(fd):\n"
         "    real(fd); print('written', flush=True); time.sleep(60)\n"

@@ -1,7 +1,8 @@
-"""Every spinning-rotor requirement inside the documented ranges of advisor/models_rotor.py ends
-in a report (exit 0) or a stated infeasibility (exit 3), never in exit 1, and no report holds
-nan or inf (issue 13). The ranges are read from the model, so the test follows them; each
-number is drawn at an edge, uniformly, or log-uniformly across the range."""
+"""Every spinning-rotor requirement inside the documented ranges of
+advisor/applications/spinning_rotor/requirements.py ends in a report (exit 0) or a stated
+infeasibility (exit 3), never in exit 1, and no report holds nan or inf (issue 13). The ranges
+are read from the model, so the test follows them; each number is drawn at an edge,
+uniformly, or log-uniformly across the range."""
 
 import math
 import tomllib
@@ -11,8 +12,12 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
+from advisor.applications.spinning_rotor.requirements import (
+    AeroReq,
+    MIN_SLEW_RATE_rad_s,
+    RotorReq,
+)
 from advisor.cli import main
-from advisor.models_rotor import AeroReq, MIN_SLEW_RATE_rad_s, RotorReq
 
 
 def _bounds(model, name: str) -> tuple[float, float]:

@@ -10,9 +10,9 @@ import pytest
 from helpers import EXAMPLES
 from textual.widgets import Input, Label, Static
 
-from advisor.engine import advise
-from advisor.models import read_requirements
-from advisor.report import to_toml
+from advisor.core.engine import advise
+from advisor.core.report import to_toml
+from advisor.core.requirements import read_requirements
 from advisor.tui import draft as drafts
 from advisor.tui.app import ConfirmScreen, DriveAdvisorApp, ExportScreen
 
@@ -125,12 +125,12 @@ async def test_every_change_is_saved_and_offered_back():
 
 
 async def test_a_crash_in_a_calculation_keeps_the_app_and_the_input(monkeypatch):
-    import advisor.engine
+    import advisor.core.engine
 
     def boom(*_a, **_k):
         raise ZeroDivisionError("float division by zero")
 
-    monkeypatch.setattr(advisor.engine, "advise", boom)
+    monkeypatch.setattr(advisor.core.engine, "advise", boom)
     src = EXAMPLES / "positioning_drive.toml"
     doc = tomllib.loads(src.read_text(encoding="utf-8"))
     app = DriveAdvisorApp(doc, src, save_drafts=False)

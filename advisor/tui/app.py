@@ -1,6 +1,6 @@
 """The terminal wizard: requirements step by step, an explained design, export.
 
-It calls exactly the engine the batch uses (:func:`advisor.engine.advise`), in a worker
+It calls exactly the engine the batch uses (:func:`advisor.core.engine.advise`), in a worker
 thread so the screen never freezes. Every change is saved to a draft in the user's state
 directory and offered back at the next start.
 """
@@ -32,7 +32,7 @@ from textual.widgets import (
     TabPane,
 )
 
-from advisor.errors import InfeasibleError, InputError
+from advisor.core.errors import InfeasibleError, InputError
 from advisor.tui import draft as drafts
 from advisor.tui import fields as F
 from advisor.tui import views
@@ -217,13 +217,13 @@ class DriveAdvisorApp(App[None]):
                 with VerticalScroll(id="step-0", classes="step"):
                     yield Label("What must the drive do?")
                     with RadioSet(id="kind"):
-                        for k, text in F.KINDS.items():
+                        for k, text in F.titles().items():
                             yield RadioButton(
                                 text,
                                 id=f"kind-{k}",
                                 value=self.doc.get("application", {}).get("kind") == k,
                             )
-                    yield Label("Title for the report", classes="name")
+                    yield Label(F.title_field().label, classes="name")
                     yield _input(
                         self.doc.get("application", {}).get("title", ""), "f-application-title"
                     )
@@ -268,7 +268,7 @@ class DriveAdvisorApp(App[None]):
             saved = drafts.load_draft() or {}
             self.doc = saved
             kind = saved.get("application", {}).get("kind")
-            for k in F.KINDS:
+            for k in F.titles():
                 self.query_one(f"#kind-{k}", RadioButton).value = k == kind
             self.query_one("#f-application-title", Input).value = saved.get("application", {}).get(
                 "title", ""
@@ -295,6 +295,9 @@ class DriveAdvisorApp(App[None]):
                     widgets.append(
                         Static("Nothing to set for this application here.", classes="note")
                     )
+                note = F.row_note(kind, s)
+                if note:
+                    widgets.append(Static(note, classes="note"))
                 for f in specs:
                     widgets.append(self._field_widget(f))
             widgets.append(Static("", id=f"step-{s}-error", classes="error"))
@@ -304,17 +307,23 @@ class DriveAdvisorApp(App[None]):
         value = F.get(self.doc, f.path)
         label = f.label + (f" [{f.unit}]" if f.unit else "") + (" (optional)" if f.optional else "")
         if f.kind == "bool":
-            control: Any = Switch(bool(value), id=f.id)
+            control: Any = Switch(bool(f.default if value is None else value), id=f.id)
         elif f.kind == "choice":
-            current = value if value in f.choices else f.choices[0]
+            current = value if value in f.choices else self._shown_choice(f)
             control = Select([(c, c) for c in f.choices], value=current, allow_blank=False, id=f.id)
         else:
             control = _input(F.to_text(f, value), f.id)
+            control.placeholder = f.shown_default
         return Horizontal(
             Label(label, classes="name", markup=False),
             Vertical(control, Label("", id=f"{f.id}-err", classes="error")),
             classes="field",
         )
+
+    @staticmethod
+    def _shown_choice(f: F.Field) -> str:
+        """The choice shown while the file has none: the model's default."""
+        return f.default if f.default in f.choices else f.choices[0]
 
     def _show_step(self) -> None:
         names = " › ".join(
@@ -337,7 +346,7 @@ class DriveAdvisorApp(App[None]):
     # ------------------------------------------------------------------ editing
     def _field_by_id(self, wid: str | None) -> F.Field | None:
         if wid == "f-application-title":
-            return F.Field(("application", "title"), "Title", kind="str", optional=True)
+            return F.title_field()
         kind = self.kind
         if kind is None or wid is None:
             return None
@@ -356,9 +365,7 @@ class DriveAdvisorApp(App[None]):
         if kind == self.kind:
             return
         keep = {k: v for k, v in self.doc.get("application", {}).items() if k != "kind"}
-        self.doc = {"application": {"kind": kind, **keep}}
-        for key, value in F.DEFAULTS.get(kind, {}).items():
-            self.doc[key] = copy.deepcopy(value)
+        self.doc = {"application": {"kind": kind, **keep}, **F.starting_doc(kind)}
         await self._build_steps()
         self.query_one("#step-0-error", Static).update("")
         self._changed()
@@ -381,7 +388,7 @@ class DriveAdvisorApp(App[None]):
         f = self._field_by_id(event.select.id)
         if f is None or not isinstance(event.value, str):
             return
-        if F.get(self.doc, f.path) is None and event.value == f.choices[0]:
+        if F.get(self.doc, f.path) is None and event.value == self._shown_choice(f):
             return  # the shown default, not a choice the user made: keep the file as it was
         F.put(self.doc, f.path, event.value)
         self._changed()
@@ -433,7 +440,7 @@ class DriveAdvisorApp(App[None]):
         return ok
 
     def _engine_errors(self) -> list[str]:
-        from advisor.models import parse_requirements
+        from advisor.core.requirements import parse_requirements
 
         try:
             parse_requirements(F.prune(self.doc))
@@ -474,7 +481,7 @@ class DriveAdvisorApp(App[None]):
         self.push_screen(ExportScreen(Path.cwd() / f"{stem}.report.toml", self.report is not None))
 
     def write_export(self, path: Path, what: str) -> None:
-        from advisor.report import to_toml, write_atomic
+        from advisor.core.report import to_toml, write_atomic
 
         if what == "report":
             text = to_toml(self.report)
@@ -491,8 +498,8 @@ class DriveAdvisorApp(App[None]):
         self.run_worker(self._advise, thread=True, exclusive=True, group="advise")
 
     def _advise(self) -> None:
-        from advisor.engine import advise
-        from advisor.models import parse_requirements
+        from advisor.core.engine import advise
+        from advisor.core.requirements import parse_requirements
 
         doc = copy.deepcopy(F.prune(self.doc))
         try:

@@ -8,7 +8,7 @@ from typing import Any
 
 import tomli_w
 
-from advisor.report import write_atomic
+from advisor.core.report import write_atomic
 
 
 def state_dir() -> Path:

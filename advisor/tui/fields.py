@@ -1,28 +1,23 @@
-"""What the wizard asks, step by step, for each application: a field is a path into the
-requirement document, a label, a unit and how its text is read. Pure data and functions;
-no textual here, so the tests and the batch path can use it cheaply."""
+"""What the wizard asks, step by step, for each application. Nothing is restated here: the
+applications come from the registry, and each question (label, unit, help, step, default,
+valid range, optional or not) from its field in the application's requirement model (see
+:mod:`advisor.core.questions`). Pure data and functions; no textual here, so the tests can
+use it cheaply."""
 
 import math
-from typing import Any, NamedTuple
+from functools import cache
+from typing import Any
 
-KINDS = {
-    "linear": "Linear actuator — induction motor + sliding screw–nut (seed 001)",
-    "rotary": "Rotary actuator — PM brushless motor + wave-gear reducer (seed 000)",
-    "positioning": "Positioning drive — ratio for the fastest move (seed 003)",
-    "spinning_rotor": "High-speed rotor under gyroscopic load (seed 002)",
-}
+from advisor.core import registry
+from advisor.core.questions import Question, fixed_values, wizard_questions
 
 STEPS = ("Application", "Loads and motion", "Envelope and holding", "Motor preferences", "Review")
 
 
-class Field(NamedTuple):
-    path: tuple[str, ...]
-    label: str
-    unit: str = ""
-    kind: str = "float"  # float | int | str | bool | choice | floats
-    choices: tuple[str, ...] = ()
-    optional: bool = False
-    help: str = ""
+class Field(Question):
+    """A question as the wizard shows it: a widget id and a dotted path."""
+
+    __slots__ = ()
 
     @property
     def id(self) -> str:
@@ -32,178 +27,63 @@ class Field(NamedTuple):
     def dotted(self) -> str:
         return ".".join(self.path)
 
-
-ONE_WAY = (
-    Field(("application", "hold_without_power"), "Hold the load with the motor off", kind="bool"),
-    Field(
-        ("one_way", "type"),
-        "One-way device",
-        kind="choice",
-        choices=("auto", "roller_clutch", "em_clutch", "worm", "inverse_gear"),
-    ),
-    Field(
-        ("one_way", "priority"),
-        "Automatic choice minimises",
-        kind="choice",
-        choices=("mass", "inertia", "power"),
-    ),
-)
+    @property
+    def shown_default(self) -> str:
+        """What an empty box stands for: the model's default, or an example of a value."""
+        if self.optional and self.default not in (None, [], ""):
+            return f"default {to_text(self, self.default)}"
+        if self.example is not None:
+            return f"e.g. {self.example}"
+        return ""
 
 
-def _motors() -> tuple[Field, ...]:
-    out = []
-    for k in range(3):
-        out += [
-            Field(
-                ("positioning", "motors", str(k), "name"),
-                f"Motor {k + 1}: name",
-                kind="str",
-                optional=True,
-            ),
-            Field(
-                ("positioning", "motors", str(k), "speed_rad_s"),
-                f"Motor {k + 1}: speed ω0",
-                "rad/s",
-                optional=True,
-            ),
-            Field(
-                ("positioning", "motors", str(k), "inertia_kgm2"),
-                f"Motor {k + 1}: inertia J0",
-                "kg·m²",
-                optional=True,
-            ),
-            Field(
-                ("positioning", "motors", str(k), "accel_torque_Nm"),
-                f"Motor {k + 1}: start/brake torque M_λ",
-                "N·m",
-                optional=True,
-            ),
-        ]
-    return tuple(out)
+def titles() -> dict[str, str]:
+    """The applications the wizard offers, kind → title, in registration order."""
+    return {a.kind: a.title for a in registry.applications()}
 
 
-FIELDS: dict[str, dict[int, tuple[Field, ...]]] = {
-    "linear": {
-        1: (
-            Field(("linear", "force_N"), "Axial force", "N"),
-            Field(("linear", "stroke_m"), "Stroke", "m"),
-            Field(("linear", "travel_time_s"), "Time for the stroke", "s"),
-            Field(("linear", "support_span_m"), "Unsupported screw length", "m", optional=True),
-        ),
-        2: (
-            *ONE_WAY,
-            Field(("screw", "thread"), "Impose a thread (e.g. Tr16x2)", kind="str", optional=True),
-            Field(
-                ("screw", "material_pair"),
-                "Screw–nut materials",
-                kind="choice",
-                choices=("steel_bronze", "hardened_steel_bronze", "steel_cast_iron", "steel_steel"),
-            ),
-        ),
-        3: (
-            Field(("motor", "supply_frequency_Hz"), "Supply frequency", "Hz"),
-            Field(
-                ("screw", "friction_model"),
-                "Friction formula",
-                kind="choice",
-                choices=("standard", "paper"),
-            ),
-            Field(
-                ("screw", "friction_coefficient"), "Thread friction coefficient f", optional=True
-            ),
-        ),
-    },
-    "rotary": {
-        1: (
-            Field(("rotary", "torque_Nm"), "Output torque", "N·m"),
-            Field(("rotary", "speed_rpm"), "Output speed", "rpm"),
-        ),
-        2: (
-            Field(
-                ("envelope", "max_outer_diameter_mm"),
-                "Largest reducer diameter",
-                "mm",
-                optional=True,
-            ),
-            Field(("envelope", "max_length_mm"), "Largest reducer length", "mm", optional=True),
-            *ONE_WAY,
-        ),
-        3: (
-            Field(
-                ("motor", "candidate_speeds_rpm"), "Motor speeds to compare", "rpm", kind="floats"
-            ),
-            Field(
-                ("gearbox", "rolling_body"),
-                "Rolling bodies",
-                kind="choice",
-                choices=("ball", "roller"),
-            ),
-            Field(("gearbox", "stage_efficiency"), "Efficiency of one stage"),
-        ),
-    },
-    "positioning": {
-        1: (
-            Field(("positioning", "travel_rad"), "Path of the load shaft", "rad"),
-            Field(("positioning", "load_inertia_kgm2"), "Load inertia", "kg·m²"),
-            Field(("positioning", "load_torque_Nm"), "Load torque", "N·m"),
-            Field(
-                ("positioning", "profile"),
-                "Speed graph",
-                kind="choice",
-                choices=("trapezoidal", "triangular"),
-            ),
-        ),
-        2: (),
-        3: _motors(),
-    },
-    "spinning_rotor": {
-        1: (
-            Field(("rotor", "mass_kg"), "Rotor mass", "kg"),
-            Field(("rotor", "angular_momentum_kgm2_s"), "Kinetic moment H", "kg·m²/s"),
-            Field(("rotor", "speed_rad_s"), "Design speed", "rad/s"),
-            Field(("rotor", "run_up_time_s"), "Required run-up time", "s"),
-            Field(("rotor", "slew_rate_rad_s"), "Slew rate of the housing Ω", "rad/s"),
-            Field(("rotor", "slew_angle_deg"), "Angle of one slew", "deg", optional=True),
-            Field(("rotor", "ball_plane_to_cg_mm"), "Ball plane to centre of mass h", "mm"),
-        ),
-        2: (
-            Field(("rotor", "aero", "loss_W"), "Aerodynamic loss at speed", "W", optional=True),
-            Field(
-                ("rotor", "aero", "outer_radius_mm"), "…or cup outer radius", "mm", optional=True
-            ),
-            Field(
-                ("rotor", "aero", "outer_length_mm"), "…and cup outer length", "mm", optional=True
-            ),
-        ),
-        3: (
-            Field(("rotor", "bearing"), "Bearing (SKF designation)", kind="str"),
-            Field(("rotor", "bearing_count"), "Bearings", kind="int"),
-            Field(("rotor", "rolling_friction_mm"), "Rolling friction λ", "mm", optional=True),
-            Field(
-                ("rotor", "contact_angle_deg"),
-                "Operating contact angle (deep groove)",
-                "deg",
-                optional=True,
-            ),
-            Field(("rotor", "required_life_h"), "Required life L10h", "h", optional=True),
-        ),
-    },
-}
-
-DEFAULTS: dict[str, dict[str, Any]] = {
-    "linear": {"motor": {"kind": "induction", "supply_frequency_Hz": 50.0}},
-    "rotary": {"motor": {"kind": "bldc", "candidate_speeds_rpm": [5000.0, 10000.0]}},
-    "positioning": {"positioning": {"profile": "trapezoidal"}},
-    "spinning_rotor": {"rotor": {"bearing": "7000 CD", "bearing_count": 2, "aero": {}}},
-}
+@cache
+def _fields(model: Any) -> dict[int, tuple[Field, ...]]:
+    out: dict[int, list[Field]] = {}
+    for q in wizard_questions(model):
+        out.setdefault(q.step, []).append(Field(*q))
+    return {step: tuple(fs) for step, fs in out.items()}
 
 
 def fields_for(kind: str, step: int) -> tuple[Field, ...]:
-    return FIELDS.get(kind, {}).get(step, ())
+    return _fields(registry.requirements_model(kind)).get(step, ())
 
 
 def all_fields(kind: str) -> list[Field]:
     return [f for step in (1, 2, 3) for f in fields_for(kind, step)]
+
+
+def starting_doc(kind: str) -> dict[str, Any]:
+    """A new requirement of ``kind``: the fields that allow one value only (the motor kind)
+    filled in; everything else empty, so that the model's defaults apply."""
+    doc: dict[str, Any] = {}
+    for path, value in fixed_values(registry.requirements_model(kind)).items():
+        put(doc, path, value)
+    return doc
+
+
+@cache
+def title_field() -> Field:
+    """The report title, asked with the application (step 0)."""
+    from advisor.core.questions import questions
+    from advisor.core.requirements import ApplicationReq
+
+    q = next(q for q in questions(ApplicationReq, ("application",)) if q.path[-1] == "title")
+    return Field(*q)
+
+
+def row_note(kind: str, step: int) -> str:
+    """A word on the rows of a list of tables asked in this step (candidate motors)."""
+    rows = {f.row[:-1] for f in fields_for(kind, step) if f.row is not None}
+    return "".join(
+        f"Rows of {'.'.join(r)} may stay empty; a row once started needs every value."
+        for r in sorted(rows)
+    )
 
 
 # ------------------------------------------------------------------ the draft document
@@ -275,7 +155,8 @@ def parse_text(field: Field, text: str) -> tuple[Any, str | None]:
     """The value of a field's text, or None with a message written for the user."""
     text = text.strip()
     if not text:
-        return None, None if field.optional else "required"
+        # an empty row of a list of tables is no row; a started one the engine checks whole
+        return None, None if field.optional or field.row is not None else "required"
     if field.kind == "str":
         return text, None
     if field.kind == "int":

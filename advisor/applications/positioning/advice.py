@@ -3,12 +3,17 @@ move, and the fastest motor. Orchestration only."""
 
 import math
 
+from advisor.applications.positioning.report import (
+    CurveOut,
+    MotionCandidateOut,
+    MotionOut,
+    PositioningDesignOut,
+)
 from advisor.calc import motion as mo
 from advisor.calc.sizing import Check
-from advisor.errors import InfeasibleError
-from advisor.models import Requirements
-from advisor.positioning_report import CurveOut, MotionCandidateOut, MotionOut, PositioningDesignOut
-from advisor.rulebook import Trace
+from advisor.core.errors import InfeasibleError
+from advisor.core.requirements import Requirements
+from advisor.core.rulebook import Trace
 from catalogs import Catalogs
 from rules import motion as mo_rules
 

@@ -4,16 +4,17 @@ Rewinding the reference frame for another speed at the same voltage scales the t
 torque constant as 1/n and the resistance as 1/n², so at a given torque the copper loss does
 not depend on the winding and the current grows as n (seed 000, eqs. (4), (9)). The frame's
 limit is thermal: its total losses against what its cooling carries, by default the reference
-motor's own total losses at its rated point. Helpers of :mod:`advisor.rotary`; the physics is in
-:mod:`advisor.calc.bldc`, the rule in :mod:`rules.bldc`.
+motor's own total losses at its rated point. Helpers of
+:mod:`advisor.applications.rotary.advice`; the physics is in :mod:`advisor.calc.bldc`, the rule
+in :mod:`rules.bldc`.
 """
 
 import math
 
+from advisor.applications.rotary.requirements import BldcMotorReq
 from advisor.calc import bldc
 from advisor.calc.sizing import Check
-from advisor.errors import InfeasibleError
-from advisor.models_rotary import BldcMotorReq
+from advisor.core.errors import InfeasibleError
 from rules import bldc as bl_rules
 
 

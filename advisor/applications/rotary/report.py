@@ -1,6 +1,7 @@
 """Report tables of the rotary application (imported only on the rotary path)."""
 
-from advisor.report import OneWayOut, _Out
+from advisor.core.report import _Out
+from advisor.one_way.report import OneWayOut
 
 
 class LossesOut(_Out):
@@ -140,3 +141,12 @@ class RotaryDesignOut(_Out):
     motor: BldcMotorOut
     gearbox: GearboxOut
     one_way: OneWayOut | None = None
+
+
+def headline(report) -> str:
+    """The design in a few words: motor speed and losses, reducer stages, size, mass."""
+    m, g = report.design.motor, report.design.gearbox
+    return (
+        f"{m.speed_rpm:g} rpm, {m.losses_W.total:.0f} W; {len(g.stages)} stages q = "
+        f"{g.total_ratio:.4g}, Ø{g.outer_diameter_mm:.0f} mm, {g.mass_kg:.2f} kg"
+    )

@@ -6,32 +6,25 @@ One entry point, :func:`advise`, used by the batch command and the terminal wiza
 from pathlib import Path
 
 from advisor import __version__
-from advisor.errors import InfeasibleError
-from advisor.models import Requirements
-from advisor.report import CheckOut, DecisionOut, Report, ReportHeader
-from advisor.rulebook import Trace
+from advisor.core import registry
+from advisor.core.errors import InfeasibleError
+from advisor.core.report import CheckOut, DecisionOut, Report, ReportHeader
+from advisor.core.requirements import Requirements
+from advisor.core.rulebook import Trace
 from catalogs import load_catalogs
 
 
 def advise(req: Requirements, catalog_dir: Path | None = None) -> Report:
     """Choose and size the drive for ``req``.
 
-    Raises :class:`advisor.errors.InputError` for an input the catalogs cannot serve (an
-    unknown thread, a broken user catalog) and :class:`advisor.errors.InfeasibleError` when
+    Raises :class:`advisor.core.errors.InputError` for an input the catalogs cannot serve (an
+    unknown thread, a broken user catalog) and :class:`advisor.core.errors.InfeasibleError` when
     no design satisfies the requirement.
     """
     cat = load_catalogs(catalog_dir)
     trace = Trace()
-    # each application imports its own pipeline: the linear path stays free of numpy
-    if req.application.kind == "linear":
-        from advisor.linear import advise_linear as pipeline
-    elif req.application.kind == "positioning":
-        from advisor.positioning import advise_positioning as pipeline
-    elif req.application.kind == "spinning_rotor":
-        from advisor.spinning_rotor import advise_spinning_rotor as pipeline
-    else:
-        from advisor.rotary import advise_rotary as pipeline
-    design, checks, warnings = pipeline(req, cat, trace)
+    # the registry imports only this application's pipeline: the linear path stays numpy-free
+    design, checks, warnings = registry.pipeline(req.application.kind)(req, cat, trace)
     failed = [c for c in checks if not c.passed]
     if failed:  # the rules should never let this happen; if they do, it is not a design
         raise InfeasibleError(

@@ -6,100 +6,104 @@ application kind needs must be present.
 """
 
 import math
-import re
 import tomllib
 from pathlib import Path
 from typing import Annotated, Any, Literal
 
-from pydantic import BaseModel, ConfigDict, Field, ValidationError, field_validator, model_validator
+from pydantic import BaseModel, ConfigDict, Field, ValidationError, field_validator
+from pydantic_core import PydanticCustomError
 
-from advisor.errors import InputError
+from advisor.core.errors import InputError
+
+#: Stands for the registered kinds in a description (filled in when a message is written).
+_KINDS = "{kinds}"
 
 
 class _Strict(BaseModel):
     model_config = ConfigDict(extra="forbid", strict=True, frozen=True, allow_inf_nan=False)
 
 
-def _num(gt: float | None = None, le: float | None = None, ge: float | None = None, desc: str = ""):
-    return Field(gt=gt, le=le, ge=ge, allow_inf_nan=False, description=desc)
+def _extra(
+    label: str | None, unit: str | None, step: int | None, example: Any, extra: dict[str, Any]
+) -> dict[str, Any] | None:
+    """The question metadata of a field, kept in its JSON Schema as ``x-`` keywords (editors
+    ignore them; :mod:`advisor.core.questions` reads them)."""
+    out = {f"x-{k}": v for k, v in extra.items()}
+    if label is not None:
+        out["x-label"] = label
+    if unit is not None:
+        out["x-unit"] = unit
+    if step is not None:
+        out["x-step"] = step
+    if example is not None:
+        out["examples"] = [example]
+    return out or None
+
+
+def ask(
+    desc: str = "",
+    *,
+    label: str | None = None,
+    unit: str | None = None,
+    step: int | None = None,
+    example: Any = None,
+    extra: dict[str, Any] | None = None,
+    **constraints: Any,
+) -> Any:
+    """A requirement field declared once: ``desc`` is the help text (and the words of its
+    error messages), ``label`` the wizard's name for it, ``unit`` its unit (by default the
+    one its key's suffix names, see :mod:`advisor.core.questions`), ``step`` the wizard step
+    that asks it (none: the file only), ``example`` a value shown where there is no default;
+    ``constraints`` are pydantic's (``gt``, ``le``, ``max_length`` …), the valid range."""
+    return Field(
+        description=desc,
+        json_schema_extra=_extra(label, unit, step, example, extra or {}),
+        **constraints,
+    )
+
+
+def _num(
+    gt: float | None = None,
+    le: float | None = None,
+    ge: float | None = None,
+    desc: str = "",
+    **question: Any,
+) -> Any:
+    """A finite number field; ``question`` as for :func:`ask`."""
+    return ask(desc, gt=gt, le=le, ge=ge, allow_inf_nan=False, **question)
+
+
+def _kind_schema(schema: dict[str, Any]) -> None:
+    from advisor.core.registry import kinds
+
+    schema["enum"] = list(kinds())
 
 
 class ApplicationReq(_Strict):
-    kind: Annotated[
-        Literal["linear", "rotary", "positioning", "spinning_rotor"],
-        Field(description="the application"),
-    ]
+    kind: Annotated[str, Field(description="the application", json_schema_extra=_kind_schema)]
     hold_without_power: Annotated[
-        bool, Field(description="the drive must hold the load with the motor off")
+        bool,
+        ask(
+            "the drive must hold the load with the motor off",
+            label="Hold the load with the motor off",
+            step=2,
+            extra={"with": "one_way"},  # asked where the application has a one-way device
+        ),
     ] = False
-    title: Annotated[str, Field(max_length=200, description="a label for the report")] = ""
+    title: Annotated[
+        str, ask("a label for the report", label="Title for the report", max_length=200)
+    ] = ""
 
+    @field_validator("kind")
+    @classmethod
+    def _registered(cls, v: str) -> str:
+        from advisor.core.registry import expected_text, kinds
 
-class LinearReq(_Strict):
-    force_N: Annotated[float, _num(gt=0, le=5e6, desc="rated axial force, N")]
-    stroke_m: Annotated[float, _num(gt=0, le=20, desc="stroke, m")]
-    travel_time_s: Annotated[float, _num(gt=0, le=1e5, desc="time for the full stroke, s")]
-    support_span_m: Annotated[
-        float, _num(gt=0, le=20, desc="distance between the screw supports, m")
-    ]
-    end_fixity: Annotated[
-        Literal["pinned-pinned", "fixed-pinned", "fixed-fixed", "fixed-free"],
-        Field(description="how the screw ends are held, for buckling"),
-    ] = "pinned-pinned"
-    buckling_safety_factor: Annotated[
-        float, _num(ge=1, le=20, desc="required margin against buckling")
-    ] = 3.0
-
-    @model_validator(mode="after")
-    def _stroke_fits(self) -> "LinearReq":
-        if self.stroke_m > self.support_span_m:
-            raise ValueError(
-                f"linear.stroke_m = {self.stroke_m:g} is longer than linear.support_span_m = "
-                f"{self.support_span_m:g}: the nut must travel between the supports"
+        if v not in kinds():
+            raise PydanticCustomError(
+                "literal_error", "Input should be {expected}", {"expected": expected_text(kinds())}
             )
-        return self
-
-
-class InductionMotorReq(_Strict):
-    kind: Annotated[Literal["induction"], Field(description="motor type")]
-    supply_frequency_Hz: Annotated[float, _num(gt=0, desc="supply frequency, Hz")] = 50.0
-
-    @field_validator("supply_frequency_Hz")
-    @classmethod
-    def _fifty(cls, v: float) -> float:
-        if v != 50.0:
-            raise ValueError("must be 50: the induction motor catalog holds 50 Hz ratings")
         return v
-
-
-THREAD_RE = re.compile(r"^Tr\s*(\d+(?:\.\d+)?)\s*[x×]\s*(\d+(?:\.\d+)?)$", re.IGNORECASE)
-
-
-class ScrewReq(_Strict):
-    friction_coefficient: Annotated[
-        float | None, _num(gt=0, le=0.6, desc="thread friction coefficient f")
-    ] = None
-    starts: Annotated[int, Field(ge=1, le=4, description="number of thread starts")] = 1
-    friction_model: Annotated[
-        Literal["standard", "paper"], Field(description="reduced friction formula")
-    ] = "standard"
-    thread: Annotated[str | None, Field(description="imposed thread, e.g. Tr16x2")] = None
-    material_pair: Annotated[
-        Literal["steel_bronze", "hardened_steel_bronze", "steel_cast_iron", "steel_steel"],
-        Field(description="screw and nut materials"),
-    ] = "steel_bronze"
-    lubrication: Annotated[Literal["oil", "dry"], Field(description="thread lubrication")] = "oil"
-    screw_steel: Annotated[Literal["45", "40X"], Field(description="screw steel grade")] = "45"
-
-    @field_validator("thread")
-    @classmethod
-    def _thread_form(cls, v: str | None) -> str | None:
-        if v is None:
-            return v
-        m = THREAD_RE.match(v.strip())
-        if not m:
-            raise ValueError("must be a trapezoidal thread written like Tr16x2 (d x P in mm)")
-        return f"Tr{float(m.group(1)):g}x{float(m.group(2)):g}"
 
 
 class OneWayReq(_Strict):
@@ -107,26 +111,13 @@ class OneWayReq(_Strict):
 
     type: Annotated[
         Literal["auto", "roller_clutch", "em_clutch", "worm", "inverse_gear"],
-        Field(description="one-way device type"),
+        ask("one-way device type", label="One-way device", step=2),
     ] = "auto"
     rollers: Annotated[int, Field(ge=3, le=12, description="rollers of a roller clutch")] = 6
     priority: Annotated[
         Literal["mass", "inertia", "power"],
-        Field(description="what the automatic choice minimises"),
+        ask("what the automatic choice minimises", label="Automatic choice minimises", step=2),
     ] = "mass"
-
-
-class LinearRequirements(_Strict):
-    """A linear actuator: induction motor + sliding screw–nut (seed 001)."""
-
-    application: ApplicationReq
-    linear: Annotated[
-        LinearReq,
-        Field(description="the [linear] table: force_N, stroke_m, travel_time_s, support_span_m"),
-    ]
-    motor: Annotated[InductionMotorReq, Field(description="the [motor] table: kind = 'induction'")]
-    screw: ScrewReq = ScrewReq()
-    one_way: OneWayReq = OneWayReq()
 
 
 class _Head(BaseModel):
@@ -134,11 +125,7 @@ class _Head(BaseModel):
 
     model_config = ConfigDict(extra="allow", strict=True)
     application: Annotated[
-        ApplicationReq,
-        Field(
-            description="the [application] table: kind = 'linear', 'rotary', 'positioning' or "
-            "'spinning_rotor'"
-        ),
+        ApplicationReq, Field(description=f"the [application] table: kind = {_KINDS}")
     ]
 
 
@@ -147,21 +134,12 @@ Requirements = Any
 
 
 def requirements_model(kind: str) -> type[BaseModel]:
-    """The requirement model of an application kind (imported only when used: pydantic
-    builds a model's validator at import, and the linear batch path must stay light)."""
-    if kind == "linear":
-        return LinearRequirements
-    if kind == "positioning":
-        from advisor.models_positioning import PositioningRequirements
+    """The requirement model of a registered application kind (imported only when used:
+    pydantic builds a model's validator at import, and the linear batch path must stay
+    light)."""
+    from advisor.core.registry import requirements_model as model
 
-        return PositioningRequirements
-    if kind == "spinning_rotor":
-        from advisor.models_rotor import SpinningRotorRequirements
-
-        return SpinningRotorRequirements
-    from advisor.models_rotary import RotaryRequirements
-
-    return RotaryRequirements
+    return model(kind)
 
 
 # ------------------------------------------------------------------ reading and messages
@@ -243,6 +221,10 @@ def format_validation_error(exc: ValidationError, root: Any) -> list[str]:
         typ = err["type"]
         ctx = err.get("ctx", {}) or {}
         desc = f" ({info.description})" if info is not None and info.description else ""
+        if _KINDS in desc:
+            from advisor.core.registry import expected_text, kinds
+
+            desc = desc.replace(_KINDS, expected_text(kinds()))
         if typ == "missing":
             lines.append(f"{where}: missing; required{desc}")
             continue

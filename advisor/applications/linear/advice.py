@@ -6,6 +6,15 @@ Orchestration only: the rules in ``rules/`` choose, the functions in ``advisor/c
 import math
 from typing import NamedTuple
 
+from advisor.applications.linear.report import (
+    BucklingOut,
+    CurveOut,
+    InductionMotorOut,
+    LinearDesignOut,
+    MotorCandidateOut,
+    NutOut,
+    ScrewOut,
+)
 from advisor.calc import induction as im
 from advisor.calc import screw as sc
 from advisor.calc.sizing import (
@@ -16,18 +25,9 @@ from advisor.calc.sizing import (
     evaluate_motor,
     evaluate_thread,
 )
-from advisor.errors import InfeasibleError, InputError
-from advisor.models import Requirements
-from advisor.report import (
-    BucklingOut,
-    CurveOut,
-    InductionMotorOut,
-    LinearDesignOut,
-    MotorCandidateOut,
-    NutOut,
-    ScrewOut,
-)
-from advisor.rulebook import Trace
+from advisor.core.errors import InfeasibleError, InputError
+from advisor.core.requirements import Requirements
+from advisor.core.rulebook import Trace
 from catalogs import Catalogs
 from catalogs.rows import InductionMotor
 from rules import induction as im_rules
@@ -139,8 +139,8 @@ def _material(
 def _one_way(req, trace: Trace, ev, thread: str, friction_low: float):
     """Seed 004 for a screw drive: no device when the screw holds with margin, otherwise one
     at the motor side carrying the screw torque."""
-    from advisor.one_way import choose_device
-    from advisor.report import OneWayOut
+    from advisor.one_way.advice import choose_device
+    from advisor.one_way.report import OneWayOut
     from rules import one_way as ow_rules
 
     holds = trace.apply(ow_rules.screw_holds, ev.self_locking_at_low_friction, thread, friction_low)

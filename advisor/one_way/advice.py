@@ -3,8 +3,8 @@
 with the other types. Orchestration only; shared by the linear and rotary pipelines."""
 
 from advisor.calc import one_way as ow
-from advisor.report import DeviceOut, OneWayOut
-from advisor.rulebook import Trace
+from advisor.core.rulebook import Trace
+from advisor.one_way.report import DeviceOut, OneWayOut
 from rules import one_way as rules
 
 
@@ -67,7 +67,7 @@ def choose_device(
 
 
 def _em_clutch_impossible(torque: float):
-    from advisor.errors import InfeasibleError
+    from advisor.core.errors import InfeasibleError
 
     p = ow.EM_CLUTCH
     _, b = ow.em_clutch_power(torque, max(p.diameters_mm), p)

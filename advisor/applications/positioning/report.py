@@ -1,6 +1,6 @@
 """Report tables of the positioning drive (imported only on that path)."""
 
-from advisor.report import _Out
+from advisor.core.report import _Out
 
 
 class MotionCandidateOut(_Out):
@@ -38,3 +38,12 @@ class MotionOut(_Out):
 
 class PositioningDesignOut(_Out):
     motion: MotionOut
+
+
+def headline(report) -> str:
+    """The design in a few words: motor, ratio, move time."""
+    mo = report.design.motion
+    return (
+        f"motor {mo.motor}, i = {mo.optimal_ratio:.4g}, {mo.move_time_s:.4g} s "
+        f"({mo.profile_actual})"
+    )

@@ -1,6 +1,6 @@
 """Report tables of the spinning-rotor drive (imported only on that path)."""
 
-from advisor.report import _Out
+from advisor.core.report import _Out
 
 
 class PairOut(_Out):
@@ -95,3 +95,13 @@ class RotorOut(_Out):
 
 class RotorDesignOut(_Out):
     rotor: RotorOut
+
+
+def headline(report) -> str:
+    """The design in a few words: drive torque, run-up, power, bearing life."""
+    r = report.design.rotor
+    return (
+        f"{r.required_torque_Nm:.4g} N·m drive, run-up {r.run_up_time_s:.3g} s, "
+        f"{r.steady_power_W.with_reaction:.4g} W with the gyroscopic load, "
+        f"{r.bearing.designation} L10h {r.bearing_life_h:.3g} h"
+    )

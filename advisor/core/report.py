@@ -54,123 +54,6 @@ class DecisionOut(_Out):
     inputs: dict[str, Any] = {}
 
 
-class NutOut(_Out):
-    height_mm: float
-    turns: float
-    height_ratio: float
-    bearing_pressure_MPa: float
-    allowable_pressure_MPa: float
-
-
-class BucklingOut(_Out):
-    formula: str
-    end_fixity: str
-    effective_length_factor: float
-    slenderness: float
-    critical_load_N: float
-    safety_factor_required: float
-
-
-class ScrewOut(_Out):
-    thread: str
-    imposed: bool
-    advisor_choice: str | None = None
-    nominal_diameter_mm: float
-    pitch_mm: float
-    preferred_pitch: bool
-    starts: int
-    lead_mm: float
-    d2_mm: float
-    d3_mm: float
-    D1_mm: float
-    D2_mm: float
-    D4_mm: float
-    ac_mm: float
-    H1_mm: float
-    h3_mm: float
-    material_pair: str
-    lubrication: str
-    screw_steel: str
-    friction_model: str
-    friction_coefficient: float
-    friction_range: list[float]
-    lead_angle_deg: float
-    friction_angle_deg: float
-    torque_Nm: float
-    torque_standard_Nm: float
-    torque_paper_Nm: float
-    efficiency: float
-    back_driving_efficiency: float
-    self_locking: bool
-    self_locking_at_low_friction: bool
-    linear_speed_m_s: float
-    revolutions: float
-    speed_rpm: float
-    output_power_W: float
-    nut: NutOut
-    buckling: BucklingOut
-
-
-class CurveOut(_Out):
-    slip: list[float]
-    speed_rpm: list[float]
-    torque_Nm: list[float]
-
-
-class MotorCandidateOut(_Out):
-    role: str
-    rated_power_kW: float
-    model: str | None = None
-    in_catalog: bool
-    rated_speed_rpm: float | None = None
-    rated_torque_Nm: float | None = None
-    max_torque_Nm: float | None = None
-    starting_torque_Nm: float | None = None
-    critical_slip: float | None = None
-    kloss_epsilon: float | None = None
-    working_speed_rpm: float | None = None
-    torque_at_required_speed_Nm: float | None = None
-    rated_torque_margin: float | None = None
-    starting_torque_margin: float | None = None
-    breakdown_torque_margin: float | None = None
-    travel_time_s: float | None = None
-    suitable: bool
-    problems: list[str] = []
-    curve: CurveOut | None = None
-
-
-class InductionMotorOut(_Out):
-    kind: str
-    supply_frequency_Hz: float
-    speed_rpm: float
-    pole_pairs: int
-    synchronous_speed_rpm: float
-    required_torque_Nm: float
-    required_power_kW: float
-    rated_power_kW: float
-    model: str
-    rated_speed_rpm: float
-    rated_torque_Nm: float
-    working_speed_rpm: float
-    working_slip: float
-    working_power_kW: float
-    travel_time_s: float
-    efficiency_pct: float
-    cos_phi: float
-    starting_current_ratio: float
-    inertia_kgm2: float
-    mass_kg: float
-    estimated: list[str]
-    source: str
-    candidates: list[MotorCandidateOut]
-
-
-class LinearDesignOut(_Out):
-    screw: ScrewOut
-    motor: InductionMotorOut
-    one_way: "OneWayOut | None" = None
-
-
 class ReportHeader(_Out):
     format: int = REPORT_FORMAT
     advisor_version: str
@@ -182,7 +65,7 @@ class ReportHeader(_Out):
 class Report(_Out):
     report: ReportHeader
     requirements: dict[str, Any]
-    design: Any  # LinearDesignOut, or RotaryDesignOut from advisor.rotary_report
+    design: Any  # LinearDesignOut, or RotaryDesignOut from advisor.applications.rotary.report
     checks: list[CheckOut]
     warnings: list[str] = []
     decisions: list[DecisionOut]
@@ -251,32 +134,3 @@ def write_atomic(path: Path, text: str) -> None:
         except FileNotFoundError:
             pass
         raise
-
-
-class DeviceOut(_Out):
-    type: str
-    location: str
-    torque_Nm: float
-    outer_diameter_mm: float
-    length_mm: float
-    mass_kg: float
-    inertia_kgm2: float
-    efficiency: float
-    power_W: float
-    basis: str
-
-
-class OneWayOut(_Out):
-    type: str
-    location: str
-    torque_Nm: float
-    outer_diameter_mm: float | None = None
-    length_mm: float | None = None
-    mass_kg: float | None = None
-    inertia_kgm2: float | None = None
-    efficiency: float | None = None
-    power_W: float | None = None
-    power_share: float | None = None
-    basis: str = ""
-    output_side: DeviceOut | None = None
-    alternatives: list[DeviceOut] = []

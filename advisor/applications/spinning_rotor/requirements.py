@@ -1,20 +1,21 @@
 """Requirements of the spinning-rotor drive (seed 002): an idling high-speed rotor whose
 bearings carry the gyroscopic reaction when its housing is turned."""
 
-from typing import Annotated
+from typing import Annotated, Any
 
 from pydantic import Field, field_validator, model_validator
 
-from advisor.models import ApplicationReq, _num, _Strict
+from advisor.core.requirements import ApplicationReq, _num, _Strict, ask
 
 
-def _rng(lo: float, hi: float, desc: str, *, open_lo: bool = False):
+def _rng(lo: float, hi: float, desc: str, *, open_lo: bool = False, **question: Any) -> Any:
     """A number in [lo, hi] (or (lo, hi] with ``open_lo``), the range stated in the description
-    so that an error names it: the ranges bound what the advisor treats as a physical rotor."""
+    so that an error names it: the ranges bound what the advisor treats as a physical rotor.
+    ``question``: the wizard's metadata, as for :func:`advisor.core.requirements.ask`."""
     low = f"above {lo:g}" if open_lo else f"from {lo:g}"
     if open_lo:
-        return _num(gt=lo, le=hi, desc=f"{desc}; {low} to {hi:g}")
-    return _num(ge=lo, le=hi, desc=f"{desc}; {low} to {hi:g}")
+        return _num(gt=lo, le=hi, desc=f"{desc}; {low} to {hi:g}", **question)
+    return _num(ge=lo, le=hi, desc=f"{desc}; {low} to {hi:g}", **question)
 
 
 #: The slowest slew taken as one (Earth's rate is 7.3e-5 rad/s); below it give 0, no slew.
@@ -24,12 +25,31 @@ MIN_SLEW_RATE_rad_s = 1e-6
 class AeroReq(_Strict):
     """Aerodynamic drag of eq. (5): either the cup geometry or a known loss at the speed."""
 
-    loss_W: Annotated[float | None, _rng(0, 1e6, "aerodynamic loss at the design speed, W")] = None
+    loss_W: Annotated[
+        float | None,
+        _rng(
+            0,
+            1e6,
+            "aerodynamic loss at the design speed, W",
+            label="Aerodynamic loss at speed",
+            step=2,
+        ),
+    ] = None
     outer_radius_mm: Annotated[
-        float | None, _rng(1, 2000, "outer radius of the rotor cup R_o, mm")
+        float | None,
+        _rng(
+            1, 2000, "outer radius of the rotor cup R_o, mm", label="…or cup outer radius", step=2
+        ),
     ] = None
     outer_length_mm: Annotated[
-        float | None, _rng(0, 5000, "length of the cup's outer surface l_o, mm")
+        float | None,
+        _rng(
+            0,
+            5000,
+            "length of the cup's outer surface l_o, mm",
+            label="…and cup outer length",
+            step=2,
+        ),
     ] = None
     inner_radius_mm: Annotated[float, _rng(0, 2000, "inner radius of the cup R_i, mm")] = 0.0
     inner_length_mm: Annotated[
@@ -64,22 +84,42 @@ class AeroReq(_Strict):
 
 
 class RotorReq(_Strict):
-    mass_kg: Annotated[float, _rng(1e-3, 1e4, "rotor mass, kg")]
+    mass_kg: Annotated[float, _rng(1e-3, 1e4, "rotor mass, kg", label="Rotor mass", step=1)]
     angular_momentum_kgm2_s: Annotated[
-        float | None, _rng(1e-6, 1e6, "kinetic moment H at speed, kg·m²/s")
+        float | None,
+        _rng(1e-6, 1e6, "kinetic moment H at speed, kg·m²/s", label="Kinetic moment H", step=1),
     ] = None
-    inertia_kgm2: Annotated[float | None, _rng(1e-9, 1e4, "axial moment of inertia J, kg·m²")] = (
-        None
-    )
-    speed_rad_s: Annotated[float, _rng(10, 2e4, "design speed ω, rad/s")]
+    inertia_kgm2: Annotated[
+        float | None,
+        _rng(1e-9, 1e4, "axial moment of inertia J, kg·m²", label="…or axial inertia J", step=1),
+    ] = None
+    speed_rad_s: Annotated[
+        float, _rng(10, 2e4, "design speed ω, rad/s", label="Design speed", step=1)
+    ]
     bearing: Annotated[
-        str, Field(min_length=1, max_length=40, description="bearing designation, e.g. 7000 CD")
+        str,
+        ask(
+            "bearing designation, e.g. 7000 CD",
+            label="Bearing (SKF designation)",
+            step=3,
+            example="7000 CD",
+            min_length=1,
+            max_length=40,
+        ),
     ]
     bearing_count: Annotated[
-        int, Field(ge=2, le=8, description="bearings carrying the rotor; from 2 to 8")
+        int,
+        ask("bearings carrying the rotor; from 2 to 8", label="Bearings", step=3, ge=2, le=8),
     ] = 2
     ball_plane_to_cg_mm: Annotated[
-        float, _rng(0.1, 2000, "distance h from the ball plane to the centre of mass, mm")
+        float,
+        _rng(
+            0.1,
+            2000,
+            "distance h from the ball plane to the centre of mass, mm",
+            label="Ball plane to centre of mass h",
+            step=1,
+        ),
     ]
     slew_rate_rad_s: Annotated[
         float,
@@ -88,25 +128,52 @@ class RotorReq(_Strict):
             le=100,
             desc="external angular velocity Ω of the housing, rad/s; 0 (no slew) or from "
             f"{MIN_SLEW_RATE_rad_s:g} to 100",
+            label="Slew rate of the housing Ω",
+            step=1,
         ),
     ]
     axis_angle_deg: Annotated[float, _rng(0, 180, "angle α between H and Ω, degrees")] = 90.0
     slew_angle_deg: Annotated[
-        float, _rng(0.01, 36000, "angle the housing turns through in one slew, degrees")
+        float,
+        _rng(
+            0.01,
+            36000,
+            "angle the housing turns through in one slew, degrees",
+            label="Angle of one slew",
+            step=1,
+        ),
     ] = 90.0
-    run_up_time_s: Annotated[float, _rng(0.1, 1e5, "required time to reach speed, s")]
+    run_up_time_s: Annotated[
+        float,
+        _rng(0.1, 1e5, "required time to reach speed, s", label="Required run-up time", step=1),
+    ]
     rolling_friction_mm: Annotated[
-        float, _rng(1e-3, 1, "rolling friction coefficient λ of eq. (4), mm")
+        float,
+        _rng(
+            1e-3,
+            1,
+            "rolling friction coefficient λ of eq. (4), mm",
+            label="Rolling friction λ",
+            step=3,
+        ),
     ] = 0.028
     contact_angle_deg: Annotated[
-        float | None, _rng(5, 45, "operating contact angle β under preload, degrees")
+        float | None,
+        _rng(
+            5,
+            45,
+            "operating contact angle β under preload, degrees",
+            label="Operating contact angle (deep groove)",
+            step=3,
+        ),
     ] = None
     lubricant_viscosity_mm2_s: Annotated[
         float, _rng(0.5, 5000, "oil viscosity at operating temperature, mm²/s")
     ] = 10.0
-    required_life_h: Annotated[float | None, _rng(1, 1e7, "required basic rating life L10h, h")] = (
-        None
-    )
+    required_life_h: Annotated[
+        float | None,
+        _rng(1, 1e7, "required basic rating life L10h, h", label="Required life L10h", step=3),
+    ] = None
     aero: Annotated[AeroReq, Field(description="the [rotor.aero] table: loss_W or cup geometry")]
 
     @field_validator("slew_rate_rad_s")

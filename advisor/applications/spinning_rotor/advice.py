@@ -4,13 +4,7 @@ Orchestration only."""
 
 import math
 
-from advisor.calc import bearing_life as bl
-from advisor.calc import rotor as ro
-from advisor.calc.sizing import Check
-from advisor.errors import InputError
-from advisor.models import Requirements
-from advisor.rulebook import Trace
-from advisor.spinning_rotor_report import (
+from advisor.applications.spinning_rotor.report import (
     BearingOut,
     CurveOut,
     FrictionPartsOut,
@@ -21,6 +15,12 @@ from advisor.spinning_rotor_report import (
     RotorOut,
     SlewOut,
 )
+from advisor.calc import bearing_life as bl
+from advisor.calc import rotor as ro
+from advisor.calc.sizing import Check
+from advisor.core.errors import InputError
+from advisor.core.requirements import Requirements
+from advisor.core.rulebook import Trace
 from catalogs import Catalogs
 from catalogs.rows import Bearing
 from rules import rotor as rules

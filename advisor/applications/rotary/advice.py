@@ -5,15 +5,8 @@ import math
 
 import numpy as np
 
-from advisor import bldc_motor as bm
-from advisor.calc import bldc
-from advisor.calc import reducer as rd
-from advisor.calc import wavegear as wg
-from advisor.calc.sizing import Check
-from advisor.errors import InfeasibleError, InputError
-from advisor.models import Requirements
-from advisor.models_rotary import BldcMotorReq
-from advisor.rotary_report import (
+from advisor.applications.rotary import motor as bm
+from advisor.applications.rotary.report import (
     BldcMotorOut,
     Fig1Out,
     GearboxOut,
@@ -28,7 +21,14 @@ from advisor.rotary_report import (
     SteelOut,
     SweepOut,
 )
-from advisor.rulebook import Trace
+from advisor.applications.rotary.requirements import BldcMotorReq
+from advisor.calc import bldc
+from advisor.calc import reducer as rd
+from advisor.calc import wavegear as wg
+from advisor.calc.sizing import Check
+from advisor.core.errors import InfeasibleError, InputError
+from advisor.core.requirements import Requirements
+from advisor.core.rulebook import Trace
 from catalogs import Catalogs
 from rules import bldc as bl_rules
 from rules import wavegear as wg_rules
@@ -215,7 +215,7 @@ def advise_rotary(req: Requirements, cat: Catalogs, trace: Trace):
 def _one_way(req, trace, design: rd.Reducer, working: dict, limit: float, basis: str):
     """Seed 004: the holding device at the motor side, and what it asks of the motor: its
     driving loss raises the motor torque, hence the copper loss, at the same speed."""
-    from advisor.one_way import choose_device
+    from advisor.one_way.advice import choose_device
     from rules import one_way as ow_rules
 
     at_motor = trace.apply(

@@ -1,26 +1,45 @@
 """Requirements of the rotary actuator (seed 000): PM brushless motor + wave-gear reducer.
 
-Kept apart from :mod:`advisor.models` so the linear batch path never builds these validators.
+Kept apart from :mod:`advisor.core.requirements` so the linear batch path never builds these
+validators.
 """
 
 from typing import Annotated, Literal
 
 from pydantic import Field, model_validator
 
-from advisor.models import ApplicationReq, OneWayReq, _num, _Strict
+from advisor.core.requirements import ApplicationReq, OneWayReq, _num, _Strict, ask
 
 
 class RotaryReq(_Strict):
-    torque_Nm: Annotated[float, _num(gt=0, le=1e6, desc="peak output torque, N·m")]
-    speed_rpm: Annotated[float, _num(gt=0, le=1e4, desc="maximum output speed, rpm")]
+    torque_Nm: Annotated[
+        float, _num(gt=0, le=1e6, desc="peak output torque, N·m", label="Output torque", step=1)
+    ]
+    speed_rpm: Annotated[
+        float, _num(gt=0, le=1e4, desc="maximum output speed, rpm", label="Output speed", step=1)
+    ]
 
 
 class EnvelopeReq(_Strict):
     max_outer_diameter_mm: Annotated[
-        float | None, _num(gt=0, le=1e4, desc="largest outer diameter of the reducer, mm")
+        float | None,
+        _num(
+            gt=0,
+            le=1e4,
+            desc="largest outer diameter of the reducer, mm",
+            label="Largest reducer diameter",
+            step=2,
+        ),
     ] = None
     max_length_mm: Annotated[
-        float | None, _num(gt=0, le=1e5, desc="largest length of the reducer, mm")
+        float | None,
+        _num(
+            gt=0,
+            le=1e5,
+            desc="largest length of the reducer, mm",
+            label="Largest reducer length",
+            step=2,
+        ),
     ] = None
 
 
@@ -74,7 +93,13 @@ class BldcMotorReq(_Strict):
     kind: Annotated[Literal["bldc"], Field(description="motor type")]
     candidate_speeds_rpm: Annotated[
         list[Annotated[float, _num(gt=0, le=2e5)]],
-        Field(min_length=1, max_length=20, description="motor speeds to compare, rpm"),
+        ask(
+            "motor speeds to compare, rpm",
+            label="Motor speeds to compare",
+            step=3,
+            min_length=1,
+            max_length=20,
+        ),
     ] = [5000.0, 10000.0]  # noqa: RUF012 - pydantic copies field defaults
     phases: Annotated[int, Field(ge=3, le=3, description="number of phases")] = 3
     max_losses_W: Annotated[
@@ -90,8 +115,13 @@ class BldcMotorReq(_Strict):
 
 
 class GearboxReq(_Strict):
-    rolling_body: Annotated[Literal["ball", "roller"], Field(description="rolling bodies")] = "ball"
-    stage_efficiency: Annotated[float, _num(gt=0.3, le=1, desc="efficiency of one stage")] = 0.9
+    rolling_body: Annotated[
+        Literal["ball", "roller"], ask("rolling bodies", label="Rolling bodies", step=3)
+    ] = "ball"
+    stage_efficiency: Annotated[
+        float,
+        _num(gt=0.3, le=1, desc="efficiency of one stage", label="Efficiency of one stage", step=3),
+    ] = 0.9
     density_kg_m3: Annotated[float, _num(gt=0, le=2e4, desc="material density, kg/m³")] = 7800.0
     fill_factor: Annotated[float, _num(gt=0, le=1, desc="k_з of eq. (19)")] = 0.75
 

@@ -1,0 +1,47 @@
+"""One package per application (requirements.py, advice.py, report.py, views.py), each
+registered here once. Import paths only: nothing of an application is imported until a
+requirement file of its kind is read (the linear batch path stays free of numpy)."""
+
+from advisor.core.registry import Application, register
+
+register(
+    Application(
+        kind="linear",
+        title="Linear actuator — induction motor + sliding screw–nut (seed 001)",
+        requirements="advisor.applications.linear.requirements:LinearRequirements",
+        pipeline="advisor.applications.linear.advice:advise_linear",
+        headline="advisor.applications.linear.report:headline",
+        summary_rows="advisor.applications.linear.report:summary_rows",
+        views="advisor.applications.linear.views",
+    )
+)
+register(
+    Application(
+        kind="rotary",
+        title="Rotary actuator — PM brushless motor + wave-gear reducer (seed 000)",
+        requirements="advisor.applications.rotary.requirements:RotaryRequirements",
+        pipeline="advisor.applications.rotary.advice:advise_rotary",
+        headline="advisor.applications.rotary.report:headline",
+        views="advisor.applications.rotary.views",
+    )
+)
+register(
+    Application(
+        kind="positioning",
+        title="Positioning drive — ratio for the fastest move (seed 003)",
+        requirements="advisor.applications.positioning.requirements:PositioningRequirements",
+        pipeline="advisor.applications.positioning.advice:advise_positioning",
+        headline="advisor.applications.positioning.report:headline",
+        views="advisor.applications.positioning.views",
+    )
+)
+register(
+    Application(
+        kind="spinning_rotor",
+        title="High-speed rotor under gyroscopic load (seed 002)",
+        requirements="advisor.applications.spinning_rotor.requirements:SpinningRotorRequirements",
+        pipeline="advisor.applications.spinning_rotor.advice:advise_spinning_rotor",
+        headline="advisor.applications.spinning_rotor.report:headline",
+        views="advisor.applications.spinning_rotor.views",
+    )
+)

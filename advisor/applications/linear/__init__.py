@@ -1,0 +1,1 @@
+"""The linear actuator (seed 001): induction motor + sliding screw–nut."""

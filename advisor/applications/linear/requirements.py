@@ -1,0 +1,113 @@
+"""Requirements of the linear actuator (seed 001): induction motor + sliding screw–nut."""
+
+import re
+from typing import Annotated, Literal
+
+from pydantic import Field, field_validator, model_validator
+
+from advisor.core.requirements import ApplicationReq, OneWayReq, _num, _Strict, ask
+
+
+class LinearReq(_Strict):
+    force_N: Annotated[
+        float, _num(gt=0, le=5e6, desc="rated axial force, N", label="Axial force", step=1)
+    ]
+    stroke_m: Annotated[float, _num(gt=0, le=20, desc="stroke, m", label="Stroke", step=1)]
+    travel_time_s: Annotated[
+        float,
+        _num(gt=0, le=1e5, desc="time for the full stroke, s", label="Time for the stroke", step=1),
+    ]
+    support_span_m: Annotated[
+        float,
+        _num(
+            gt=0,
+            le=20,
+            desc="distance between the screw supports, m",
+            label="Unsupported screw length",
+            step=1,
+        ),
+    ]
+    end_fixity: Annotated[
+        Literal["pinned-pinned", "fixed-pinned", "fixed-fixed", "fixed-free"],
+        Field(description="how the screw ends are held, for buckling"),
+    ] = "pinned-pinned"
+    buckling_safety_factor: Annotated[
+        float, _num(ge=1, le=20, desc="required margin against buckling")
+    ] = 3.0
+
+    @model_validator(mode="after")
+    def _stroke_fits(self) -> "LinearReq":
+        if self.stroke_m > self.support_span_m:
+            raise ValueError(
+                f"linear.stroke_m = {self.stroke_m:g} is longer than linear.support_span_m = "
+                f"{self.support_span_m:g}: the nut must travel between the supports"
+            )
+        return self
+
+
+class InductionMotorReq(_Strict):
+    kind: Annotated[Literal["induction"], Field(description="motor type")]
+    supply_frequency_Hz: Annotated[
+        float, _num(gt=0, desc="supply frequency, Hz", label="Supply frequency", step=3)
+    ] = 50.0
+
+    @field_validator("supply_frequency_Hz")
+    @classmethod
+    def _fifty(cls, v: float) -> float:
+        if v != 50.0:
+            raise ValueError("must be 50: the induction motor catalog holds 50 Hz ratings")
+        return v
+
+
+THREAD_RE = re.compile(r"^Tr\s*(\d+(?:\.\d+)?)\s*[x×]\s*(\d+(?:\.\d+)?)$", re.IGNORECASE)
+
+
+class ScrewReq(_Strict):
+    friction_coefficient: Annotated[
+        float | None,
+        _num(
+            gt=0,
+            le=0.6,
+            desc="thread friction coefficient f",
+            label="Thread friction coefficient f",
+            step=3,
+        ),
+    ] = None
+    starts: Annotated[int, Field(ge=1, le=4, description="number of thread starts")] = 1
+    friction_model: Annotated[
+        Literal["standard", "paper"],
+        ask("reduced friction formula", label="Friction formula", step=3),
+    ] = "standard"
+    thread: Annotated[
+        str | None,
+        ask("imposed thread, e.g. Tr16x2", label="Impose a thread", step=2, example="Tr16x2"),
+    ] = None
+    material_pair: Annotated[
+        Literal["steel_bronze", "hardened_steel_bronze", "steel_cast_iron", "steel_steel"],
+        ask("screw and nut materials", label="Screw–nut materials", step=2),
+    ] = "steel_bronze"
+    lubrication: Annotated[Literal["oil", "dry"], Field(description="thread lubrication")] = "oil"
+    screw_steel: Annotated[Literal["45", "40X"], Field(description="screw steel grade")] = "45"
+
+    @field_validator("thread")
+    @classmethod
+    def _thread_form(cls, v: str | None) -> str | None:
+        if v is None:
+            return v
+        m = THREAD_RE.match(v.strip())
+        if not m:
+            raise ValueError("must be a trapezoidal thread written like Tr16x2 (d x P in mm)")
+        return f"Tr{float(m.group(1)):g}x{float(m.group(2)):g}"
+
+
+class LinearRequirements(_Strict):
+    """A linear actuator: induction motor + sliding screw–nut (seed 001)."""
+
+    application: ApplicationReq
+    linear: Annotated[
+        LinearReq,
+        Field(description="the [linear] table: force_N, stroke_m, travel_time_s, support_span_m"),
+    ]
+    motor: Annotated[InductionMotorReq, Field(description="the [motor] table: kind = 'induction'")]
+    screw: ScrewReq = ScrewReq()
+    one_way: OneWayReq = OneWayReq()

@@ -1,0 +1,1 @@
+"""The positioning drive (seed 003): the ratio for the fastest move."""

@@ -1,0 +1,37 @@
+"""How the wizard shows a positioning-drive report: its components and its plots."""
+
+from typing import Any
+
+from rich.table import Table
+
+from advisor.tui.views import PlotData
+
+
+def components(report) -> list[Any]:
+    d = report.design
+    parts: list[Any] = []
+    mo = d.motion
+    t = Table(title="Candidate motors", title_justify="left")
+    for col in ("motor", "optimal ratio", "estimate", "move time s", "profile"):
+        t.add_column(col, justify="right")
+    for c in mo.candidates:
+        t.add_row(
+            c.name,
+            f"{c.optimal_ratio:.4g}",
+            f"{c.estimated_ratio:.4g}",
+            f"{c.move_time_s:.4g}",
+            c.profile,
+        )
+    parts.append(t)
+    return parts
+
+
+def plots(report) -> list[PlotData]:
+    d = report.design
+    main = PlotData(
+        "Move time against ratio",
+        "ratio i",
+        "move time, s",
+        [(d.motion.motor, d.motion.curve.ratio, d.motion.curve.move_time_s)],
+    )
+    return [main]

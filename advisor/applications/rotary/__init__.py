@@ -1,0 +1,1 @@
+"""The rotary actuator (seed 000): PM brushless motor + wave-gear reducer."""

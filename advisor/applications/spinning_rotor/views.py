@@ -1,0 +1,55 @@
+"""How the wizard shows a spinning-rotor report: its components and its plots."""
+
+from typing import Any
+
+from advisor.tui.views import PlotData, kv
+
+
+def components(report) -> list[Any]:
+    d = report.design
+    parts: list[Any] = []
+    r = d.rotor
+    parts.append(
+        kv(
+            "Rotor",
+            [
+                ("gyroscopic moment", f"{r.gyroscopic_moment_Nm:.4g} N·m"),
+                ("preload", f"{r.preload_N:.4g} N"),
+                (
+                    "steady power",
+                    f"{r.steady_power_W.without_reaction:.4g} → "
+                    f"{r.steady_power_W.with_reaction:.4g} W with the reaction",
+                ),
+                ("required torque", f"{r.required_torque_Nm:.4g} N·m"),
+                ("run-up", f"{r.run_up_time_s:.3g} s"),
+            ],
+        )
+    )
+    b = r.bearing
+    parts.append(
+        kv(
+            "Bearings",
+            [
+                ("bearing", f"{b.designation} {b.d_mm:g}×{b.D_mm:g}×{b.B_mm:g} mm"),
+                ("friction (eq. 4)", f"{r.bearing_friction_Nm.with_reaction:.3g} N·m"),
+                ("life L10h", f"{r.bearing_life_h:.3g} h"),
+                ("static safety", b.static_safety),
+            ],
+        )
+    )
+    return parts
+
+
+def plots(report) -> list[PlotData]:
+    d = report.design
+    r = d.rotor
+    main = PlotData(
+        "Run-up of the rotor",
+        "time, s",
+        "speed, rad/s",
+        [
+            ("run-up", r.run_up.time_s, r.run_up.speed_rad_s),
+            ("sustained slew", r.slew.curve.time_s, r.slew.curve.speed_rad_s),
+        ],
+    )
+    return [main]

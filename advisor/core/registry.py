@@ -1,0 +1,105 @@
+"""The application registry: every application registers here once, and the engine, the
+many-file runner, the summaries and the wizard look it up by ``application.kind``.
+
+An entry holds *import paths* (``"package.module:name"``), not imported objects: the batch
+path then imports only the application it runs (the linear path no numpy, no path textual),
+and listing the applications costs nothing. The four shipped applications are registered in
+:mod:`advisor.applications`; a new one is one package plus one :func:`register` call.
+"""
+
+from importlib import import_module
+from typing import Any, NamedTuple
+
+
+class Application(NamedTuple):
+    """One application: what the wizard lists, how its file is read, how it is advised and
+    how its report is summed up. The wizard's questions come from the requirement model's
+    field metadata (see :mod:`advisor.core.requirements`)."""
+
+    kind: str  # the value of application.kind
+    title: str  # one line in the wizard's list of applications
+    requirements: Any  # "module:Model", the pydantic model of the whole requirement file
+    pipeline: Any  # "module:function" (req, catalogs, trace) -> (design, checks, warnings)
+    headline: Any  # "module:function" (report) -> the design in a few words
+    summary_rows: Any = None  # "module:function" (report) -> [(name, text)] for -o
+    views: Any = None  # "module" with components(report) and plots(report), for the wizard
+
+
+_APPLICATIONS: dict[str, Application] = {}
+_loaded = False
+
+
+def register(app: Application) -> Application:
+    """Add an application (a second registration of a kind replaces the first)."""
+    _APPLICATIONS[app.kind] = app
+    return app
+
+
+def unregister(kind: str) -> None:
+    _APPLICATIONS.pop(kind, None)
+
+
+def _shipped() -> dict[str, Application]:
+    global _loaded
+    if not _loaded:
+        _loaded = True
+        import_module("advisor.applications")  # registers the shipped applications
+    return _APPLICATIONS
+
+
+def applications() -> tuple[Application, ...]:
+    """Every registered application, in registration order."""
+    return tuple(_shipped().values())
+
+
+def kinds() -> tuple[str, ...]:
+    return tuple(_shipped())
+
+
+def application(kind: str) -> Application:
+    """The entry of ``kind``; a KeyError for an unregistered kind (the requirement model
+    refuses those before anything asks)."""
+    return _shipped()[kind]
+
+
+def load(path: Any) -> Any:
+    """The object an import path names (``"advisor.applications.linear.advice:advise"``);
+    an entry may also hold the object itself (an application defined in a test)."""
+    if not isinstance(path, str):
+        return path
+    module, _, name = path.partition(":")
+    obj = import_module(module)
+    return getattr(obj, name) if name else obj
+
+
+def requirements_model(kind: str) -> Any:
+    return load(application(kind).requirements)
+
+
+def pipeline(kind: str) -> Any:
+    return load(application(kind).pipeline)
+
+
+def headline(report: Any) -> str:
+    """The design of a report in a few words, as the application words it."""
+    return load(application(report.report.application).headline)(report)
+
+
+def summary_rows(report: Any) -> list[tuple[str, str]]:
+    """Rows of the short summary after ``advisor --batch -o``."""
+    app = application(report.report.application)
+    if app.summary_rows is None:
+        return [("design", headline(report))]
+    return load(app.summary_rows)(report)
+
+
+def views(kind: str) -> Any:
+    """The wizard's views of an application's report (None: only the generic ones)."""
+    app = application(kind)
+    return load(app.views) if app.views else None
+
+
+def expected_text(values: tuple[str, ...]) -> str:
+    """``'a', 'b' or 'c'``: the allowed values, worded as pydantic words a literal error."""
+    quoted = [repr(v) for v in values]
+    return quoted[0] if len(quoted) == 1 else ", ".join(quoted[:-1]) + " or " + quoted[-1]

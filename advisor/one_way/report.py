@@ -1,0 +1,32 @@
+"""Report tables of the one-way (holding) device, shared by the linear and rotary actuators."""
+
+from advisor.core.report import _Out
+
+
+class DeviceOut(_Out):
+    type: str
+    location: str
+    torque_Nm: float
+    outer_diameter_mm: float
+    length_mm: float
+    mass_kg: float
+    inertia_kgm2: float
+    efficiency: float
+    power_W: float
+    basis: str
+
+
+class OneWayOut(_Out):
+    type: str
+    location: str
+    torque_Nm: float
+    outer_diameter_mm: float | None = None
+    length_mm: float | None = None
+    mass_kg: float | None = None
+    inertia_kgm2: float | None = None
+    efficiency: float | None = None
+    power_W: float | None = None
+    power_share: float | None = None
+    basis: str = ""
+    output_side: DeviceOut | None = None
+    alternatives: list[DeviceOut] = []  # noqa: RUF012 - pydantic copies field defaults
