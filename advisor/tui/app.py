@@ -228,9 +228,9 @@ class DriveAdvisorApp(App[None]):
                         self.doc.get("application", {}).get("title", ""), "f-application-title"
                     )
                     yield Static("", id="step-0-error", classes="error")
-                for s in (1, 2, 3):
+                for s in F.ASKED:
                     yield VerticalScroll(id=f"step-{s}", classes="step")
-                with VerticalScroll(id="step-4", classes="step"):
+                with VerticalScroll(id=f"step-{F.REVIEW}", classes="step"):
                     yield Static("", id="review-text")
                     yield Static("", id="review-error", classes="error")
             with TabbedContent(id="results"):
@@ -283,7 +283,7 @@ class DriveAdvisorApp(App[None]):
 
     async def _build_steps(self) -> None:
         kind = self.kind
-        for s in (1, 2, 3):
+        for s in F.ASKED:
             box = self.query_one(f"#step-{s}", VerticalScroll)
             await box.remove_children()
             widgets: list[Any] = []
@@ -334,7 +334,7 @@ class DriveAdvisorApp(App[None]):
         results = "[reverse] Results [/] — ← → views, ctrl+e edit inputs, ctrl+s export"
         self.query_one("#steps", Static).update(results if on_results else names)
         self.query_one("#wizard", ContentSwitcher).current = f"step-{self.step}"
-        if self.step == 4:
+        if self.step == F.REVIEW:
             self.query_one("#review-text", Static).update(self._review_text())
 
     def _review_text(self) -> str:
@@ -409,7 +409,7 @@ class DriveAdvisorApp(App[None]):
                 self.query_one("#step-0-error", Static).update("choose an application")
                 return False
             return True
-        if step == 4:
+        if step == F.REVIEW:
             return True
         kind = self.kind
         assert kind is not None
@@ -455,7 +455,7 @@ class DriveAdvisorApp(App[None]):
         if not self._validate(self.step):
             self.bell()
             return
-        if self.step < 4:
+        if self.step < F.REVIEW:
             self.step += 1
             self._show_step()
         else:
