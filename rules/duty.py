@@ -30,6 +30,27 @@ def motor_for_cycle(rows: dict[str, tuple[float, float, bool, str]]) -> Finding[
     )
 
 
+@rule("DU-08", "Induction motor for the cycle", "issue 15; " + IEC_60034_1)
+def motor_for_cycle_linear(
+    rows: dict[str, tuple[float, list[str]]], point_motor: str, inertia_basis: str
+) -> Finding[str]:
+    """rows: model -> (rated power, problems), smallest first from the point's motor."""
+    best = next(n for n, (_, problems) in rows.items() if not problems)
+    tried = "; ".join(
+        f"{n} ({p:g} kW): " + ("passes" if not pr else ", ".join(pr))
+        for n, (p, pr) in rows.items()
+        if n == best or pr
+    )
+    return Finding(
+        best,
+        f"Motor {best} for the cycle"
+        + (" (the rated point's motor)." if best == point_motor else f", not {point_motor}."),
+        "The smallest motor of the rated point's pole count, from the point's motor up, whose "
+        "equivalent torque, starts per hour and starting torque pass the cycle — "
+        f"{tried}. Load inertia at the motor: {inertia_basis}.",
+    )
+
+
 @rule("DU-02", "Ratio of least RMS torque", "issue 15; seed 003 (phase torques)")
 def least_rms_ratio(
     motor: str, ratio: float, rms_Nm: float, chosen: float, chosen_rms_Nm: float

@@ -116,3 +116,123 @@ def test_no_motor_passes_the_rms(tmp_path):
     r = _run(f)
     assert r.returncode == 3
     assert "against its rated torque" in r.stderr
+
+
+# ------------------------------------------------------------------ linear (induction motor)
+VALVE = EXAMPLES / "valve_actuator_duty.toml"
+
+
+def _linear(tmp_path, duty: str):
+    src = VALVE.read_text(encoding="utf-8")
+    f = tmp_path / "lin.toml"
+    f.write_text(src[: src.index("[duty]")] + duty, encoding="utf-8")
+    return f
+
+
+def test_linear_s3_by_hand(tmp_path):
+    """S3 40 %, 10 min, β0 = 0.5: the run at seed 001's 5.085 N·m (paper model, Tr16x2) for
+    240 s, rest 360 s at standstill: M_eq = 5.08485·√(240/(240 + 0.5·360)) = 5.08485·√(4/7)
+    = 3.8438 N·m against the rated 750 W/(1390 rpm·π/30) = 5.1525 N·m of 4A71B4."""
+    f = _linear(tmp_path, '[duty]\nduty_type = "S3"\ncyclic_duration_factor = 0.4\n')
+    rep = advise(read_requirements(f))
+    d = rep.design.duty
+    m_l = rep.design.screw.torque_Nm
+    assert m_l == pytest.approx(5.08485, abs=1e-5)
+    assert d.rms_torque_Nm == pytest.approx(m_l * math.sqrt(4.0 / 7.0))
+    assert d.rms_torque_Nm == pytest.approx(3.8438, abs=1e-4)
+    assert d.rated_torque_Nm == pytest.approx(750.0 / (1390.0 * math.pi / 30.0))
+    assert d.thermal_utilisation == pytest.approx(3.8438 / 5.1525, abs=1e-4)
+    assert [p.name for p in d.phases] == ["run", "rest"]
+    assert d.cycle_time_s == 600.0 and d.duty_type == "S3"
+    assert "DU-07" in {x.id for x in rep.decisions}
+
+
+def test_linear_s4_starts_by_hand(tmp_path):
+    """S4 40 %, 600 starts/h, FI from a 40 kg nut: the starts allowed by hand.
+    4A71B4: 0.75 kW, η 72 % (estimated) → P_loss = 750·(100/72 − 1) = 291.67 W; J_M =
+    0.0014 kg·m², ω0 = 157.08 rad/s; z0 = 3600·291.67·0.75/(0.0014·157.08²) = 22797 /h.
+    FI and k_L as the report states them; u = M_eq/M_n:
+    z = z0·(1 − u²)/(FI·k_L)."""
+    f = _linear(
+        tmp_path,
+        '[duty]\nduty_type = "S4"\ncyclic_duration_factor = 0.4\nstarts_per_hour = 600\n'
+        "moving_mass_kg = 40\n",
+    )
+    d = advise(read_requirements(f)).design.duty
+    z0 = 3600.0 * 750.0 * (100.0 / 72.0 - 1.0) * 0.75 / (0.0014 * (50.0 * math.pi) ** 2)
+    assert z0 == pytest.approx(22797, abs=1)
+    assert d.no_load_starts_per_hour == pytest.approx(z0)
+    start = d.phases[0]
+    assert start.name == "start"
+    # k_L = M_m/(M_m − M_L) with the mean starting torque of the phase
+    k_l = start.torque_Nm / (start.torque_Nm - d.phases[1].torque_Nm)
+    u = d.rms_torque_Nm / d.rated_torque_Nm
+    assert d.allowed_starts_per_hour == pytest.approx(z0 * (1 - u * u) / (d.inertia_factor * k_l))
+    assert d.starts_per_hour == 600.0
+    # the cycle is 3600/600 = 6 s: start, run to 40 % of it, rest
+    assert d.cycle_time_s == pytest.approx(6.0)
+    assert start.time_s + d.phases[1].time_s == pytest.approx(2.4)
+
+
+def test_linear_cycle_example(tmp_path):
+    rep = advise(read_requirements(VALVE))
+    d = rep.design.duty
+    assert d.motor == rep.design.motor.model == "4A71B4"
+    assert d.starts_per_hour == 40.0  # two moves, 20 cycles an hour
+    assert d.cycle_time_s == pytest.approx(180.0)
+    # holding: Tr16x2 is self-locking, so the hold asks nothing of the motor
+    hold = next(p for p in d.phases if p.name == "2 hold")
+    assert hold.torque_Nm == 0.0
+    # the equivalent torque from the reported phases, with β0 = 0.5 at rest, 0.75 in ramps
+    num = sum(p.torque_Nm**2 * p.time_s for p in d.phases if not p.name.endswith("start"))
+    den = sum(
+        p.time_s
+        * (0.5 if p.speed_rpm == 0 else 0.75 if p.speed_start_rpm != p.speed_end_rpm else 1)
+        for p in d.phases
+    )
+    assert d.rms_torque_Nm == pytest.approx(math.sqrt(num / den), rel=1e-5)
+    assert d.regenerated_per_cycle_J == 0.0  # a self-locking screw never drives the motor
+
+
+def test_linear_cycle_needs_a_larger_motor(tmp_path):
+    f = _linear(
+        tmp_path,
+        '[duty]\nduty_type = "S9"\n'
+        + "loads = [{ load_share = 1.6, time_share = 0.5 }, { load_share = 0.2, time_share = 0.5 }]\n",
+    )
+    rep = advise(read_requirements(f))
+    # M_eq = 5.085·√(0.5·1.6² + 0.5·0.2²) = 5.085·1.1402 = 5.798 > 5.15: the next power up
+    assert rep.design.duty.rms_torque_Nm == pytest.approx(5.08485 * math.sqrt(1.3), rel=1e-4)
+    assert rep.design.duty.motor == rep.design.motor.model != "4A71B4"
+    assert any("the cycle needs" in w for w in rep.warnings)
+
+
+def test_linear_hold_without_self_locking_is_infeasible(tmp_path):
+    src = VALVE.read_text(encoding="utf-8").replace('thread = "Tr16x2"', 'thread = "Tr16x4"')
+    f = tmp_path / "h.toml"
+    f.write_text(src.replace("[screw]", "[screw]\nstarts = 3"), encoding="utf-8")
+    r = _run(f)
+    assert r.returncode == 3, r.stderr
+    assert "cannot hold a load at standstill" in r.stderr
+
+
+def test_linear_duty_needs_one_form(tmp_path):
+    r = _run(_linear(tmp_path, "[duty]\nmoving_mass_kg = 1\n"))
+    assert r.returncode == 2
+    assert "duty: give segments (move, dwell, hold) or a duty_type (S1…S10)" in r.stderr
+    r = _run(_linear(tmp_path, '[duty]\nduty_type = "S4"\ncyclic_duration_factor = 0.4\n'))
+    assert r.returncode == 2 and "duty.starts_per_hour: missing" in r.stderr
+
+
+def test_linear_duty_path_imports_no_numpy():
+    code = (
+        "import sys, io, contextlib\n"
+        "from advisor.cli import main\n"
+        "with contextlib.redirect_stdout(io.StringIO()):\n"
+        f"    rc = main(['--batch', {str(VALVE)!r}])\n"
+        "assert rc == 0\n"
+        "print(','.join(m for m in ('textual', 'numpy', 'scipy') if m in sys.modules))\n"
+    )
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    assert r.stdout.strip() == ""

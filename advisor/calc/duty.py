@@ -288,17 +288,18 @@ def allowed_starts_per_hour(
 
 
 def no_load_starts_per_hour(
-    rated_losses_W: float, motor_inertia_kgm2: float, synchronous_speed_rad_s: float
+    rated_losses_W: float,
+    motor_inertia_kgm2: float,
+    synchronous_speed_rad_s: float,
+    cooling: float = 1.0,
 ) -> float:
-    """z0 from the motor's heat budget: the rated losses (what its cooling carries) over the
-    heat of one no-load start of the bare rotor (:func:`start_energy_J` with J_M, M_L = 0,
-    R1/R2' = 1): z0 = 3600·P_loss/(J_M·ω0²).
+    """z0 from the motor's heat budget: the losses its cooling carries, rated losses × the
+    cooling of a motor that only starts and stops (``cooling``, (1 + β0)/2 for a
+    self-ventilated one), over the heat of one no-load start of the bare rotor
+    (:func:`start_energy_J` with J_M, M_L = 0, R1/R2' = 1): z0 = 3600·P_loss·c/(J_M·ω0²).
 
     >>> round(no_load_starts_per_hour(200.0, 0.002, 157.08), 1)
     14592.5
     """
-    return (
-        3600.0
-        * rated_losses_W
-        / start_energy_J(motor_inertia_kgm2, synchronous_speed_rad_s, 1.0, 0.0)
-    )
+    heat = start_energy_J(motor_inertia_kgm2, synchronous_speed_rad_s, 1.0, 0.0)
+    return 3600.0 * rated_losses_W * cooling / heat

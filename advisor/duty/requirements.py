@@ -31,26 +31,46 @@ class PositioningDutyReq(_Strict):
 class _Segment(_Strict):
     kind: Annotated[
         Literal["move", "dwell", "hold"],
-        ask("move the load, dwell (no load held), or hold the load at rest", label="segment"),
+        ask(
+            "move the load, dwell (no load held), or hold the load at rest",
+            label="segment",
+            step=STEP,
+        ),
     ]
     time_s: Annotated[
         float,
-        _num(gt=0, le=1e6, desc="duration of the segment (a move: the time it may take), s"),
+        _num(
+            gt=0,
+            le=1e6,
+            desc="duration of the segment (a move: the time it may take), s",
+            label="time",
+            step=STEP,
+        ),
     ]
 
 
 class LinearSegmentReq(_Segment):
     distance_m: Annotated[
         float | None,
-        _num(gt=0, le=20, desc="path of a move, m (a move: required)"),
+        _num(gt=0, le=20, desc="path of a move, m (a move: required)", label="distance", step=STEP),
     ] = None
     direction: Annotated[
         Literal["against", "with"],
-        ask("a move against the load force (the motor drives) or with it (the load drives)"),
+        ask(
+            "a move against the load force (the motor drives) or with it (the load drives)",
+            label="direction",
+            step=STEP,
+        ),
     ] = "against"
     force_N: Annotated[
         float | None,
-        _num(ge=0, le=5e6, desc="axial load of the segment, N; default linear.force_N"),
+        _num(
+            ge=0,
+            le=5e6,
+            desc="axial load of the segment, N; default linear.force_N",
+            label="force",
+            step=STEP,
+        ),
     ] = None
 
     @model_validator(mode="after")
@@ -63,23 +83,45 @@ class LinearSegmentReq(_Segment):
 class RotarySegmentReq(_Segment):
     angle_deg: Annotated[
         float | None,
-        _num(gt=0, le=1e7, desc="angle of a move at the output, degrees (a move: required)"),
+        _num(
+            gt=0,
+            le=1e7,
+            desc="angle of a move at the output, degrees (a move: required)",
+            label="angle",
+            step=STEP,
+        ),
     ] = None
     profile: Annotated[
         Literal["trapezoidal", "triangular"],
-        ask("speed graph of a move"),
+        ask("speed graph of a move", label="speed graph", step=STEP),
     ] = "trapezoidal"
     accel_fraction: Annotated[
         float,
-        _num(gt=0, lt=0.5, desc="share of a trapezoidal move spent accelerating (and braking)"),
+        _num(
+            gt=0,
+            lt=0.5,
+            desc="share of a trapezoidal move spent accelerating (and braking)",
+            label="accelerating share",
+            step=STEP,
+        ),
     ] = 0.25
     direction: Annotated[
         Literal["against", "with"],
-        ask("a move against the load torque (the motor drives) or with it (the load drives)"),
+        ask(
+            "a move against the load torque (the motor drives) or with it (the load drives)",
+            label="direction",
+            step=STEP,
+        ),
     ] = "against"
     torque_Nm: Annotated[
         float | None,
-        _num(ge=0, le=1e6, desc="output load torque of the segment, N·m; default rotary.torque_Nm"),
+        _num(
+            ge=0,
+            le=1e6,
+            desc="output load torque of the segment, N·m; default rotary.torque_Nm",
+            label="load torque",
+            step=STEP,
+        ),
     ] = None
 
     @model_validator(mode="after")
@@ -90,8 +132,14 @@ class RotarySegmentReq(_Segment):
 
 
 class LoadShareReq(_Strict):
-    load_share: Annotated[float, _num(ge=0, le=10, desc="load as a share of the rated load")]
-    time_share: Annotated[float, _num(gt=0, le=1, desc="share of the time at that load")]
+    load_share: Annotated[
+        float,
+        _num(ge=0, le=10, desc="load as a share of the rated load", label="load share", step=STEP),
+    ]
+    time_share: Annotated[
+        float,
+        _num(gt=0, le=1, desc="share of the time at that load", label="time share", step=STEP),
+    ]
 
 
 DutyType = Literal["S1", "S2", "S3", "S4", "S5", "S6", "S7", "S8", "S9", "S10"]
@@ -134,10 +182,25 @@ class _CycleDuty(_Strict):
         ),
     ] = None
     duration_min: Annotated[
-        float | None, _num(gt=0, le=1e4, desc="time under load of an S2 duty, min")
+        float | None,
+        _num(
+            gt=0,
+            le=1e4,
+            desc="time under load of an S2 duty, min",
+            label="S2 time under load",
+            unit="min",
+            step=STEP,
+        ),
     ] = None
     cycle_time_s: Annotated[
-        float, _num(gt=0, le=1e6, desc="cycle time of an S3–S6 duty, s (IEC: 10 min)")
+        float,
+        _num(
+            gt=0,
+            le=1e6,
+            desc="cycle time of an S3–S6 duty, s (IEC: 10 min)",
+            label="Cycle time (S3, S6, S9, S10)",
+            step=STEP,
+        ),
     ] = 600.0
     loads: Annotated[
         list[LoadShareReq],

@@ -309,8 +309,11 @@ class DriveAdvisorApp(App[None]):
         if f.kind == "bool":
             control: Any = Switch(bool(f.default if value is None else value), id=f.id)
         elif f.kind == "choice":
+            blank = f.default is None  # no default to show: the field may stay unchosen
             current = value if value in f.choices else self._shown_choice(f)
-            control = Select([(c, c) for c in f.choices], value=current, allow_blank=False, id=f.id)
+            if blank and value not in f.choices:
+                current = Select.NULL
+            control = Select([(c, c) for c in f.choices], value=current, allow_blank=blank, id=f.id)
         else:
             control = _input(F.to_text(f, value), f.id)
             control.placeholder = f.shown_default
@@ -386,7 +389,12 @@ class DriveAdvisorApp(App[None]):
     @on(Select.Changed)
     def _select_changed(self, event: Select.Changed) -> None:
         f = self._field_by_id(event.select.id)
-        if f is None or not isinstance(event.value, str):
+        if f is None:
+            return
+        if not isinstance(event.value, str):  # blanked: the field is left out again
+            if F.get(self.doc, f.path) is not None:
+                F.put(self.doc, f.path, None)
+                self._changed()
             return
         if F.get(self.doc, f.path) is None and event.value == self._shown_choice(f):
             return  # the shown default, not a choice the user made: keep the file as it was

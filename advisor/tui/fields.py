@@ -90,7 +90,7 @@ def title_field() -> Field:
 def row_note(kind: str, step: int) -> str:
     """A word on the rows of a list of tables asked in this step (candidate motors)."""
     rows = {f.row[:-1] for f in fields_for(kind, step) if f.row is not None}
-    return "".join(
+    return " ".join(
         f"Rows of {'.'.join(r)} may stay empty; a row once started needs every value."
         for r in sorted(rows)
     )
