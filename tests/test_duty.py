@@ -236,3 +236,103 @@ def test_linear_duty_path_imports_no_numpy():
     r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
     assert r.returncode == 0, r.stderr
     assert r.stdout.strip() == ""
+
+
+# ------------------------------------------------------------------ rotary (PM brushless)
+RUDDER = EXAMPLES / "rudder_actuator_duty.toml"
+
+
+def test_rotary_cycle_by_hand():
+    """The rudder cycle at 5000 rpm, q = 1000, two stages η = 0.9² = 0.81, J_L = 2 kg·m²,
+    J_M = 1.5e-4 kg·m². Move 25° = 0.436332 rad in 1 s, 0.1 s ramps: ω_out = θ/0.9 s =
+    0.484814 rad/s (4629.6 rpm at the motor), ε_out = 4.84814 rad/s², J_M·ε_m = 1.5e-4·4848.14
+    = 0.727221 N·m. Against 1200 N·m (the motor drives, /(q·η) = /810):
+      accelerate (2·4.84814 + 1200)/810 + 0.727221 = 2.220673; run 1200/810 = 1.481481;
+      decelerate (1200 − 9.69628)/810 − 0.727221 = 0.742290.
+    Back with the load (the load drives, ·η/q = ·0.81e-3):
+      accelerate −1190.304·0.81e-3 + 0.727221 = −0.236925; run −0.972;
+      decelerate −1209.696·0.81e-3 − 0.727221 = −1.707075.
+    Hold 1620 N·m at rest: 1620·0.81e-3 = 1.3122. Dwell and nothing else: 0."""
+    rep = advise(read_requirements(RUDDER))
+    d = rep.design.duty
+    assert (d.ratio, rep.design.gearbox.efficiency) == pytest.approx((1000.0, 0.81))
+    torques = [p.torque_Nm for p in d.phases]
+    hand = [2.220673, 1.481481, 0.742290, 1.3122, -0.236925, -0.972, -1.707075, 0.0]
+    assert torques == pytest.approx(hand, abs=2e-6)
+    times = [p.time_s for p in d.phases]
+    assert times == pytest.approx([0.1, 0.8, 0.1, 3.0, 0.1, 0.8, 0.1, 5.0])
+    assert d.phases[1].speed_rpm == pytest.approx(0.484814 * 1000 * 30 / math.pi, rel=1e-6)
+    rms = math.sqrt(sum(t * t * s for t, s in zip(hand, times, strict=True)) / 10.0)
+    assert d.rms_torque_Nm == pytest.approx(rms, rel=1e-5)
+    assert d.peak_torque_Nm == pytest.approx(2.220673, abs=2e-6)
+    # copper: the seed's 68.97 W at 2 N·m (2·1.14 Ω·5.5² A²), so 68.97·(M_rms/2)² on average
+    copper = 68.97 * (rms / 2.0) ** 2
+    assert d.losses_W["copper"] == pytest.approx(copper, rel=1e-5)
+    # iron (f² model) and magnets (n² below 5000 rpm) both go as n²: 99.45 + 60 W at 5000 rpm
+    # times (n/5000)²; a ramp averages n² to n_max²/3 (0.2 s of ramps per move)
+    k = (0.484814 * 1000 * 30 / math.pi / 5000.0) ** 2
+    core = (99.45 + 60.0) * k * (2 * 0.8 + 2 * 2 * 0.1 / 3.0) / 10.0
+    assert d.losses_W["iron_and_magnets"] == pytest.approx(core, rel=1e-5)
+    assert d.thermal_utilisation == pytest.approx((copper + core) / 228.42, rel=1e-5)
+    # energy: the phases' M·ω_mean·t; what comes back is the braking and the load's help
+    w = 484.814
+    out = (2.220673 * 0.05 + 1.481481 * 0.8 + 0.742290 * 0.05) * w
+    back = (0.236925 * 0.05 + 0.972 * 0.8 + 1.707075 * 0.05) * w
+    assert (d.energy_per_cycle_J, d.regenerated_per_cycle_J) == pytest.approx((out, back), rel=1e-5)
+    # the thermal model settles at the mean losses' rise: R = 105 K / 228.42 W
+    assert d.thermal.steady_rise_K == pytest.approx((copper + core) * 105.0 / 228.42, rel=1e-5)
+    assert d.thermal.peak_rise_K >= d.thermal.steady_rise_K
+    assert d.thermal.rise_K[-1] == pytest.approx(d.thermal.steady_rise_K, rel=0.02)
+    assert d.inertia_ratio == pytest.approx(2.0 / (1000.0**2 * 0.81) / 1.5e-4)
+
+
+def test_first_order_model_by_hand():
+    """100 W for τ, then 0 W for τ, R = 0.5 K/W: ΔT(τ) = 50·(1 − e⁻¹) = 31.606 K, then
+    31.606·e⁻¹ = 11.627 K. Settled: ΔT₀ = B/(1 − A) with A = e⁻², B = 31.606·e⁻¹ →
+    11.627/(1 − 0.135335) = 13.447 K at the cycle's start, peak 13.447·e⁻¹ + 31.606 = 36.553."""
+    h = du.thermal_rise([(100.0, 600.0), (0.0, 600.0)], 0.5, 600.0, 1)
+    assert [x[1] for x in h] == pytest.approx([0.0, 31.606, 11.627], abs=1e-3)
+    assert du.periodic_peak_rise([(100.0, 600.0), (0.0, 600.0)], 0.5, 600.0) == pytest.approx(
+        36.553, abs=1e-3
+    )
+
+
+def test_rotary_cycle_too_fast_for_the_motor(tmp_path):
+    src = RUDDER.read_text(encoding="utf-8").replace(
+        "angle_deg = 25, time_s = 1", "angle_deg = 60, time_s = 1"
+    )
+    f = tmp_path / "fast.toml"
+    f.write_text(src, encoding="utf-8")
+    r = _run(f)
+    assert r.returncode == 3, r.stderr
+    assert "needs 11111 rpm at the motor (q = 1000), above its 5000 rpm" in r.stderr
+
+
+def test_rotary_s3_by_hand(tmp_path):
+    """S3 25 % at the rated point: 2 N·m at 5000 rpm for 150 s of 600 s, then rest: the mean
+    losses are a quarter of the point's 228.42 W (the motor torque 1620/(1000·0.81) = 2 N·m)."""
+    src = RUDDER.read_text(encoding="utf-8")
+    f = tmp_path / "s3.toml"
+    f.write_text(
+        src[: src.index("[duty]")]
+        + '[duty]\nduty_type = "S3"\ncyclic_duration_factor = 0.25\nmotor_inertia_kgm2 = 1.5e-4\n'
+        "thermal_time_constant_s = 900\n",
+        encoding="utf-8",
+    )
+    d = advise(read_requirements(f)).design.duty
+    assert d.losses_W["total"] == pytest.approx(228.42 / 4.0, rel=1e-5)
+    assert d.thermal_utilisation == pytest.approx(0.25, rel=1e-5)
+    assert d.rms_torque_Nm == pytest.approx(2.0 * math.sqrt(0.25), rel=1e-5)
+
+
+def test_wizard_plots_of_the_cycle():
+    from advisor.duty.views import plots, series
+
+    rep = advise(read_requirements(RUDDER))
+    titles = [p.title for p in plots(rep.design.duty)]
+    assert titles[0].startswith("Torque over the cycle") and titles[1] == "Speed over the cycle"
+    assert titles[2].startswith("Winding temperature rise")
+    tt, mm, _ts, ns = series(rep.design.duty)
+    assert tt[-1] == pytest.approx(10.0) and mm[:2] == [mm[0], mm[0]]
+    assert max(ns) == pytest.approx(rep.design.duty.phases[1].speed_rpm)
+    assert plots(None) == []

@@ -30,4 +30,20 @@ def plots(duty) -> list[PlotData]:
             [("torque", tt, mm), ("RMS", [tt[0], tt[-1]], [rms, rms])],
         ),
         PlotData("Speed over the cycle", "time, s", "motor speed, rpm", [("speed", ts, ns)]),
+        *_thermal(duty),
+    ]
+
+
+def _thermal(duty) -> list[PlotData]:
+    th = getattr(duty, "thermal", None)
+    if th is None:
+        return []
+    lim = th.limit_rise_K
+    return [
+        PlotData(
+            f"Winding temperature rise over repeated cycles (τ = {th.time_constant_s:g} s)",
+            "time, s",
+            "rise, K",
+            [("rise", th.time_s, th.rise_K), ("limit", [0.0, th.time_s[-1]], [lim, lim])],
+        )
     ]
