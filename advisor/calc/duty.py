@@ -298,8 +298,8 @@ def no_load_starts_per_hour(
     self-ventilated one), over the heat of one no-load start of the bare rotor
     (:func:`start_energy_J` with J_M, M_L = 0, R1/R2' = 1): z0 = 3600·P_loss·c/(J_M·ω0²).
 
-    >>> round(no_load_starts_per_hour(200.0, 0.002, 157.08), 1)
-    14592.5
+    >>> round(no_load_starts_per_hour(200.0, 0.002, 157.08), 1)  # 3600·200/(0.002·157.08²)
+    14590.2
     """
     heat = start_energy_J(motor_inertia_kgm2, synchronous_speed_rad_s, 1.0, 0.0)
     return 3600.0 * rated_losses_W * cooling / heat
