@@ -18,10 +18,13 @@ def motor_for_cycle(rows: dict[str, tuple[float, float, bool, str]]) -> Finding[
     """rows: name -> (move time, ratio, passes the cycle, why not)."""
     ok = {n: r for n, r in rows.items() if r[2]}
     best = min(ok, key=lambda n: ok[n][0])
+    ranked = sorted(rows.items(), key=lambda kv: kv[1][0])
+    shown = ranked[:5] + [kv for kv in ranked[5:] if not kv[1][2]][:3]
     table = "; ".join(
-        f"{n}: {r[0]:.4g} s at i = {r[1]:.4g}" + ("" if r[2] else f" ({r[3]})")
-        for n, r in sorted(rows.items(), key=lambda kv: kv[1][0])
+        f"{n}: {r[0]:.4g} s at i = {r[1]:.4g}" + ("" if r[2] else f" ({r[3]})") for n, r in shown
     )
+    if len(ranked) > len(shown):
+        table += f"; and {len(ranked) - len(shown)} more motors that pass, slower"
     return Finding(
         best,
         f"Motor {best} at i = {ok[best][1]:.4g}: the fastest move whose motor passes the cycle.",
