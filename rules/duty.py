@@ -24,7 +24,7 @@ def motor_for_cycle(rows: dict[str, tuple[float, float, bool, str]]) -> Finding[
         f"{n}: {r[0]:.4g} s at i = {r[1]:.4g}" + ("" if r[2] else f" ({r[3]})") for n, r in shown
     )
     if len(ranked) > len(shown):
-        table += f"; and {len(ranked) - len(shown)} more motors that pass, slower"
+        table += f"; and {len(ranked) - len(shown)} more motors"
     return Finding(
         best,
         f"Motor {best} at i = {ok[best][1]:.4g}: the fastest move whose motor passes the cycle.",
