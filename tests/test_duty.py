@@ -336,3 +336,20 @@ def test_wizard_plots_of_the_cycle():
     assert tt[-1] == pytest.approx(10.0) and mm[:2] == [mm[0], mm[0]]
     assert max(ns) == pytest.approx(rep.design.duty.phases[1].speed_rpm)
     assert plots(None) == []
+
+
+def test_the_wizard_asks_the_duty_in_its_own_step():
+    from advisor.tui import fields as F
+
+    assert F.STEPS[4] == "Duty cycle" and F.REVIEW == 5
+    asked = {k: [f.dotted for f in F.fields_for(k, 4)] for k in ("positioning", "linear", "rotary")}
+    assert asked["positioning"] == ["duty.cycle_time_s"]
+    assert "positioning.motors.0.rated_torque_Nm" in [
+        f.dotted for f in F.fields_for("positioning", 3)
+    ]
+    assert {"duty.duty_type", "duty.segments.0.distance_m", "duty.moving_mass_kg"} <= set(
+        asked["linear"]
+    )
+    assert {"duty.motor_inertia_kgm2", "duty.segments.0.angle_deg"} <= set(asked["rotary"])
+    for k in asked:  # every duty question has its label and help
+        assert all(f.label and f.help for f in F.fields_for(k, 4))

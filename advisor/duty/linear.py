@@ -285,7 +285,11 @@ def advise_duty(req, ev, selected, cat, holder: str | None, trace: Trace):
         shown = [tried[0], tried[-1]] if len(tried) > 1 else tried
         raise InfeasibleError(
             "no feasible design: no motor of the chosen pole count passes the duty cycle",
-            [f"{e['motor'].model}: " + "; ".join(e["problems"]) for e in shown],
+            [
+                *(f"{e['motor'].model}: " + "; ".join(e["problems"]) for e in shown),
+                "larger motors of the same pole count were tried; the moves run at the speed "
+                "chosen for linear.travel_time_s (a shorter one picks a faster motor)",
+            ],
         )
     e = ok[0]
     m = e["motor"]
