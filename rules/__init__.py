@@ -6,7 +6,7 @@ of its application (issue 16). :func:`load_all` imports every module: the whole 
 from importlib import import_module
 
 #: The rule modules, one per domain.
-MODULES = ("bldc", "induction", "motion", "one_way", "rotor", "screw", "wavegear")
+MODULES = ("bldc", "duty", "induction", "motion", "one_way", "rotor", "screw", "wavegear")
 
 
 def load_all() -> dict:
