@@ -195,8 +195,12 @@ def evaluate_thread(
         lead_angle_rad=psi,
         friction_angle_rad=phi,
         torque_Nm=torque,
-        torque_standard_Nm=sc.thread_torque(force_N, d2, p, f, "standard", starts),
-        torque_paper_Nm=sc.thread_torque(force_N, d2, p, f, "paper", starts),
+        torque_standard_Nm=torque
+        if friction_model == "standard"
+        else sc.thread_torque(force_N, d2, p, f, "standard", starts),
+        torque_paper_Nm=torque
+        if friction_model == "paper"
+        else sc.thread_torque(force_N, d2, p, f, "paper", starts),
         efficiency=sc.efficiency(psi, phi),
         back_driving_efficiency=sc.back_driving_efficiency(psi, phi),
         self_locking=sc.is_self_locking(psi, phi),

@@ -4,6 +4,7 @@ Orchestration only: the rules in ``rules/`` choose, the functions in ``advisor/c
 """
 
 import math
+from bisect import bisect_left
 from typing import NamedTuple
 
 from advisor.applications.linear.report import (
@@ -52,29 +53,44 @@ def drive_options(
     evaluations: list[ThreadEvaluation], fits: dict[int, list[MotorFit]]
 ) -> list[screw_rules.DriveOption]:
     """Every (thread, starts) that passes its checks, with the smallest motor of each pole
-    count that drives it directly (the lines in ``fits`` are in order of rated power)."""
+    count that drives it directly (the lines in ``fits`` are in order of rated power).
+
+    A motor whose rated or starting torque is below the screw torque cannot drive it (the
+    first test of :func:`drive_working_speed`); along each line the running maximum of the
+    smaller of the two is kept, and a bisection on it skips those motors at once instead of
+    testing them one by one (issue 16: the joint choice screens every thread)."""
+    lines = []
+    for pp, line in fits.items():
+        reach, top = [], -math.inf
+        for fit in line:
+            top = max(top, min(fit.rated_torque_Nm, fit.starting_torque_Nm))
+            reach.append(top)
+        lines.append((pp, line, reach))
     out = []
     for ev in evaluations:
         if not ev.passed:
             continue
-        for pp, line in fits.items():
-            for fit in line:
-                n = drive_working_speed(fit, ev.torque_Nm, ev.speed_rpm)
+        torque, thread = ev.torque_Nm, ev.thread
+        name = thread.name
+        for pp, line, reach in lines:
+            for i in range(bisect_left(reach, torque), len(line)):
+                fit = line[i]
+                n = drive_working_speed(fit, torque, ev.speed_rpm)
                 if n is None:
                     continue
                 m = fit.motor
                 out.append(
                     screw_rules.DriveOption(
-                        thread=ev.thread.name,
-                        d_mm=ev.thread.d_mm,
-                        pitch_mm=ev.thread.pitch_mm,
+                        thread=name,
+                        d_mm=thread.d_mm,
+                        pitch_mm=thread.pitch_mm,
                         starts=ev.starts,
                         self_locking_at_low_friction=ev.self_locking_at_low_friction,
-                        screw_torque_Nm=ev.torque_Nm,
+                        screw_torque_Nm=torque,
                         motor_model=m.model,
                         pole_pairs=pp,
                         rated_power_kW=m.rated_power_kW,
-                        rated_torque_Nm=m.rated_torque_Nm,
+                        rated_torque_Nm=fit.rated_torque_Nm,
                         travel_time_s=60.0 * ev.revolutions / n,
                     )
                 )
