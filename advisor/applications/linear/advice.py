@@ -79,19 +79,19 @@ def drive_options(
                 if n is None:
                     continue
                 m = fit.motor
-                out.append(
+                out.append(  # positional, in the order of DriveOption's fields (faster)
                     screw_rules.DriveOption(
-                        thread=name,
-                        d_mm=thread.d_mm,
-                        pitch_mm=thread.pitch_mm,
-                        starts=ev.starts,
-                        self_locking_at_low_friction=ev.self_locking_at_low_friction,
-                        screw_torque_Nm=torque,
-                        motor_model=m.model,
-                        pole_pairs=pp,
-                        rated_power_kW=m.rated_power_kW,
-                        rated_torque_Nm=fit.rated_torque_Nm,
-                        travel_time_s=60.0 * ev.revolutions / n,
+                        name,  # thread
+                        thread.d_mm,
+                        thread.pitch_mm,
+                        ev.starts,
+                        ev.self_locking_at_low_friction,
+                        torque,  # screw_torque_Nm
+                        m.model,
+                        pp,  # pole_pairs
+                        m.rated_power_kW,
+                        fit.rated_torque_Nm,
+                        60.0 * ev.revolutions / n,  # travel_time_s
                     )
                 )
                 break
