@@ -13,7 +13,7 @@ NEVER = ("textual", "rich", "pint", "dask", "matplotlib", "pandas", "numpy.ma")
 #: Applications whose path needs no numpy at all (their sizes are a few dozen numbers).
 NO_NUMPY = {"linear_screw_actuator.toml", "positioning_drive.toml"}
 #: Applications whose path still needs scipy (none should: issue 16).
-NEEDS_SCIPY = {"gyro_compensator.toml"}
+NEEDS_SCIPY: set[str] = set()
 
 EXAMPLE_NAMES = sorted(p.name for p in EXAMPLES.glob("*.toml"))
 

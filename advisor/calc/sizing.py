@@ -7,26 +7,11 @@ from typing import NamedTuple, Protocol
 
 from advisor.calc import induction as im
 from advisor.calc import screw as sc
+from advisor.calc.checks import Check as Check  # re-exported: the linear chain's checks
 from catalogs.threads import ThreadProfile
 
 MM = 1e-3
 MPA = 1e6
-
-
-class Check(NamedTuple):
-    """One strength or function check: ``margin`` ≥ 1 passes."""
-
-    id: str
-    name: str
-    value: float
-    limit: float
-    unit: str
-    margin: float
-    source: str
-
-    @property
-    def passed(self) -> bool:
-        return self.margin >= 1.0
 
 
 def _upper(id: str, name: str, value: float, limit: float, unit: str, source: str) -> Check:

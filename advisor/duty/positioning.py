@@ -11,7 +11,7 @@ import math
 
 from advisor.calc import duty as du
 from advisor.calc import motion as mo
-from advisor.calc.sizing import Check
+from advisor.calc.checks import Check
 from advisor.core.errors import InfeasibleError
 from advisor.core.rulebook import Trace
 from advisor.duty.report import DutyOut, phases_out

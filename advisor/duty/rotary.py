@@ -19,7 +19,7 @@ temperature rise, class 155 (F) by resistance), shows the rise over repeated cyc
 import math
 
 from advisor.calc import duty as du
-from advisor.calc.sizing import Check
+from advisor.calc.checks import Check
 from advisor.core.errors import InfeasibleError
 from advisor.core.rulebook import Trace
 from advisor.duty.report import DutyOut, ThermalOut, phases_out

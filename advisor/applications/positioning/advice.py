@@ -10,7 +10,7 @@ from advisor.applications.positioning.report import (
     PositioningDesignOut,
 )
 from advisor.calc import motion as mo
-from advisor.calc.sizing import Check
+from advisor.calc.checks import Check
 from advisor.core.errors import InfeasibleError
 from advisor.core.requirements import Requirements
 from advisor.core.rulebook import Trace

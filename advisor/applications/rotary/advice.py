@@ -25,7 +25,7 @@ from advisor.applications.rotary.requirements import BldcMotorReq
 from advisor.calc import bldc
 from advisor.calc import reducer as rd
 from advisor.calc import wavegear as wg
-from advisor.calc.sizing import Check
+from advisor.calc.checks import Check
 from advisor.core.errors import InfeasibleError, InputError
 from advisor.core.requirements import Requirements
 from advisor.core.rulebook import Trace

@@ -13,7 +13,7 @@ import math
 
 from advisor.applications.rotary.requirements import BldcMotorReq
 from advisor.calc import bldc
-from advisor.calc.sizing import Check
+from advisor.calc.checks import Check
 from advisor.core.errors import InfeasibleError
 from rules import bldc as bl_rules
 

@@ -17,7 +17,7 @@ from advisor.applications.spinning_rotor.report import (
 )
 from advisor.calc import bearing_life as bl
 from advisor.calc import rotor as ro
-from advisor.calc.sizing import Check
+from advisor.calc.checks import Check
 from advisor.core.errors import InputError
 from advisor.core.requirements import Requirements
 from advisor.core.rulebook import Trace

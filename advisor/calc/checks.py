@@ -1,0 +1,22 @@
+"""A check of a design: a value against its limit, with the margin (≥ 1 passes).
+
+Its own module so that every application can use it without importing the linear chain's
+sizing (the induction motor and screw equations; issue 16)."""
+
+from typing import NamedTuple
+
+
+class Check(NamedTuple):
+    """One strength or function check: ``margin`` ≥ 1 passes."""
+
+    id: str
+    name: str
+    value: float
+    limit: float
+    unit: str
+    margin: float
+    source: str
+
+    @property
+    def passed(self) -> bool:
+        return self.margin >= 1.0
