@@ -38,12 +38,13 @@ def warm(n: int) -> dict:
     out = {}
     for ex in examples():
         to_toml(advise(read_requirements(ex)))
-        ts = []
+        ts, cpu = [], []
         for _ in range(n):
-            t0 = time.perf_counter()
+            t0, c0 = time.perf_counter(), time.process_time()
             to_toml(advise(read_requirements(ex)))
             ts.append(1e3 * (time.perf_counter() - t0))
-        out[ex.name] = spread(ts)
+            cpu.append(1e3 * (time.process_time() - c0))
+        out[ex.name] = {**spread(ts), "cpu": spread(cpu)}
     return out
 
 
@@ -136,7 +137,8 @@ def table(res: dict) -> str:
             )
     for name, r in res["warm_advice"].items():
         rows.append(
-            f"| warm advice (read + advise + TOML) | {name} | {r['median']:.2f} ms ({_iqr(r)} ms) |"
+            f"| warm advice (read + advise + TOML) | {name} | {r['median']:.2f} ms wall "
+            f"({_iqr(r)} ms); {r['cpu']['median']:.2f} ms CPU ({_iqr(r['cpu'])} ms) |"
         )
     for name, r in res["sweep"].items():
         rows.append(
