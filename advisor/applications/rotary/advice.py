@@ -40,6 +40,18 @@ FIG1_ROWS = [2, 3, 4, 6, 8, 10, 12]
 PARETO_POINTS = 16
 
 
+def _ratio_hint(output_rpm: float, fastest_rpm: float) -> str:
+    """What would make the total ratio reachable: one stage's minimum (the stage limits of
+    :mod:`advisor.calc.reducer`, a bore by seed 000, eq. (14)) against the speeds given."""
+    q_min = rd.STAGE_RATIO_MIN
+    return (
+        f"one wave-gear stage makes at least q = {q_min:g} (a bore by eq. (14)): give a "
+        f"motor.candidate_speeds_rpm of at least {q_min:g} × {output_rpm:g} = "
+        f"{q_min * output_rpm:.4g} rpm, or rotary.speed_rpm ≤ {fastest_rpm:g}/{q_min:g} = "
+        f"{fastest_rpm / q_min:.4g} rpm"
+    )
+
+
 def _steel(req: Requirements, cat: Catalogs):
     ref = req.motor.reference  # type: ignore[union-attr]
     steel = cat.electrical_steel(ref.steel_grade, ref.steel_thickness_mm)
@@ -110,7 +122,10 @@ def advise_rotary(req: Requirements, cat: Catalogs, trace: Trace):
     if not reducible:
         raise InfeasibleError(
             "no feasible design: no candidate speed gives a ratio a wave-gear reducer can make",
-            [f"{c['speed_rpm']:g} rpm → q_Σ = {c['q_total']:.4g}" for c in cands],
+            [
+                *(f"{c['speed_rpm']:g} rpm → q_Σ = {c['q_total']:.4g}" for c in cands),
+                _ratio_hint(rot.speed_rpm, max(c["speed_rpm"] for c in cands)),
+            ],
         )
     # eq. (10) at the reference speed, with the losses of the model in use
     at_ref = _candidate(ref.speed_rpm, req, steel, steel_mass, terms, params)
