@@ -40,15 +40,17 @@ FIG1_ROWS = [2, 3, 4, 6, 8, 10, 12]
 PARETO_POINTS = 16
 
 
-def _ratio_hint(output_rpm: float, fastest_rpm: float) -> str:
-    """What would make the total ratio reachable: one stage's minimum (the stage limits of
-    :mod:`advisor.calc.reducer`, a bore by seed 000, eq. (14)) against the speeds given."""
+def _ratio_hint(output_rpm: float, speeds_rpm: list[float]) -> str:
+    """The total ratios a reducer makes (one stage's minimum for a bore, seed 000 eq. (14); four
+    stages of 20 × 12 × 12 × the stage maximum) and the speeds that reach them."""
     q_min = rd.STAGE_RATIO_MIN
+    q_max = wg_rules.Q_OUT_PREFERRED * wg_rules.Q_NEXT**2 * rd.STAGE_RATIO_MAX
+    lo, hi = min(speeds_rpm), max(speeds_rpm)
     return (
-        f"one wave-gear stage makes at least q = {q_min:g} (a bore by eq. (14)): give a "
-        f"motor.candidate_speeds_rpm of at least {q_min:g} × {output_rpm:g} = "
-        f"{q_min * output_rpm:.4g} rpm, or rotary.speed_rpm ≤ {fastest_rpm:g}/{q_min:g} = "
-        f"{fastest_rpm / q_min:.4g} rpm"
+        f"one to four wave-gear stages make q_Σ = {q_min:g} … {q_max:.6g} (one stage at least "
+        f"{q_min:g} for a bore, eq. (14)): motor.candidate_speeds_rpm "
+        f"{q_min * output_rpm:.4g} … {q_max * output_rpm:.4g} rpm, or rotary.speed_rpm "
+        f"{lo / q_max:.4g} … {hi / q_min:.4g} rpm"
     )
 
 
@@ -124,7 +126,7 @@ def advise_rotary(req: Requirements, cat: Catalogs, trace: Trace):
             "no feasible design: no candidate speed gives a ratio a wave-gear reducer can make",
             [
                 *(f"{c['speed_rpm']:g} rpm → q_Σ = {c['q_total']:.4g}" for c in cands),
-                _ratio_hint(rot.speed_rpm, max(c["speed_rpm"] for c in cands)),
+                _ratio_hint(rot.speed_rpm, [c["speed_rpm"] for c in cands]),
             ],
         )
     # eq. (10) at the reference speed, with the losses of the model in use
