@@ -223,3 +223,25 @@ def test_one_way_roller_clutch_by_hand():
     # m = ∛(M/(σ_t·z)) = ∛(1153.403/(400·20)) = ∛0.1441753 = 0.5243684 mm; d = m·z = 10.48737
     assert inv["outer_diameter_mm"] == pytest.approx(10.48737, rel=REL)
     assert math.isfinite(ow["mass_kg"])
+
+
+def test_rotary_eq10_optimum_is_finite_when_the_reference_speed_cannot_be_reduced():
+    """1 N·m at 800 rpm from a 6000 rpm motor (q = 7.5, one stage): at the reference speed,
+    5000 rpm, the ratio 6.25 is below one stage's 6.5, so eq. (10) is evaluated at the
+    candidate instead of writing nan into the report (issue 13: no nan, ever)."""
+    rep = _design(
+        {
+            "application": {"kind": "rotary", "title": "hand"},
+            "rotary": {"torque_Nm": 1, "speed_rpm": 800},
+            "motor": {"kind": "bldc", "candidate_speeds_rpm": [6000]},
+        }
+    )
+    mot = rep["design"]["motor"]
+    # motor torque 1/(7.5·0.9) = 0.1481481 N·m; ohmic 68.97·(0.1481481/2)² = 0.378436 W;
+    # f = 6000·6/60 = 600 Hz; iron 0.3978·2.5·(600/50)² = 143.208 W; magnets on the power law
+    # through 60 W @ 5000 and 100 W @ 10000: 60·1.2^(log(100/60)/log 2) = 68.6286 W.
+    # eq. (10): f* = f·(P_om/P_core)^(1/4) = 600·(0.378436/211.8366)^0.25 = 600·0.205590
+    # = 123.354 Hz → n* = 123.354·60/6 = 1233.54 rpm
+    assert mot["losses_W"]["ohmic"] == pytest.approx(0.378436, rel=REL)
+    assert mot["optimum_frequency_Hz"] == pytest.approx(123.354, rel=REL)
+    assert mot["optimum_speed_rpm"] == pytest.approx(1233.54, rel=REL)

@@ -129,13 +129,14 @@ def advise_rotary(req: Requirements, cat: Catalogs, trace: Trace):
                 _ratio_hint(rot.speed_rpm, [c["speed_rpm"] for c in cands]),
             ],
         )
-    # eq. (10) at the reference speed, with the losses of the model in use
+    # eq. (10) at the reference speed, with the losses of the model in use; where no reducer
+    # makes the reference speed's ratio, at the candidate nearest to it (K_om and K_mag are
+    # the constants of eqs. (9) and (5), read at any operating point), never nan
     at_ref = _candidate(ref.speed_rpm, req, steel, steel_mass, terms, params)
-    if at_ref["split"]:
-        core = at_ref["losses"]["iron"] + at_ref["losses"]["magnets"]
-        f_opt = bldc.optimum_frequency_Hz(at_ref["losses"]["ohmic"], core, at_ref["frequency_Hz"])
-    else:
-        f_opt = math.nan
+    if not at_ref["split"]:
+        at_ref = min(reducible, key=lambda c: abs(math.log(c["speed_rpm"] / ref.speed_rpm)))
+    core = at_ref["losses"]["iron"] + at_ref["losses"]["magnets"]
+    f_opt = bldc.optimum_frequency_Hz(at_ref["losses"]["ohmic"], core, at_ref["frequency_Hz"])
     n_opt = f_opt * 60.0 / ref.pole_pairs
     # the frame's limit is thermal: a speed is a candidate only if its losses are carried
     limit, basis = bm.loss_limit(mot, steel, steel_mass, terms)
