@@ -102,9 +102,91 @@ def _plain(obj: Any) -> Any:
     raise TypeError(f"a report cannot hold {type(obj).__name__}: {obj!r}")
 
 
+#: A table of number arrays is a curve when its longest array has at least this many points.
+CURVE_POINTS = 10
+
+
+def plain(report: Report) -> dict[str, Any]:
+    """The report as nested plain data (curves where the design holds them): what the
+    datasheet reads."""
+    return _plain(report)
+
+
+def _is_curve(table: Any) -> bool:
+    """A table whose values are all arrays of numbers (or arrays of them), one of them long:
+    a characteristic, a sweep or a time history, data for a plot rather than the design."""
+
+    def numbers(v: Any) -> bool:
+        return isinstance(v, list) and all(
+            (isinstance(x, int | float) and not isinstance(x, bool)) or numbers(x) for x in v
+        )
+
+    return (
+        isinstance(table, dict)
+        and bool(table)
+        and all(numbers(v) for v in table.values())
+        and max(len(v) for v in table.values()) >= CURVE_POINTS
+    )
+
+
+def _lift(node: Any, path: str, curves: dict[str, Any]) -> Any:
+    if isinstance(node, dict):
+        out = {}
+        for k, v in node.items():
+            where = f"{path}.{k}" if path else k
+            if _is_curve(v):
+                curves[where] = v
+            else:
+                out[k] = _lift(v, where, curves)
+        return out
+    if isinstance(node, list):
+        return [_lift(v, f"{path}[{i + 1}]", curves) for i, v in enumerate(node)]
+    return node
+
+
+def archive(doc: dict[str, Any]) -> dict[str, Any]:
+    """The archive layout: every curve (see :func:`_is_curve`) moved out of the design into
+    one ``[curves]`` table at the end, keyed by where it was (``"design.motion.curve"``,
+    ``"design.motor.candidates[2].curve"``, list items counted from 1), so the design reads
+    first.
+
+    >>> archive({"design": {"m": 1.0, "curve": {"t": list(range(10))}}})["curves"]
+    {'design.curve': {'t': [0, 1, 2, 3, 4, 5, 6, 7, 8, 9]}}
+    """
+    curves: dict[str, Any] = {}
+    out = _lift(doc, "", curves)
+    if curves:
+        out["curves"] = curves
+    return out
+
+
+def nest_curves(doc: dict[str, Any]) -> dict[str, Any]:
+    """The inverse of :func:`archive`: a report read back from its TOML or JSON with its
+    curves where the design holds them (for tools that prefer them there)."""
+    import copy
+    import re
+
+    out = copy.deepcopy({k: v for k, v in doc.items() if k != "curves"})
+    for where, curve in doc.get("curves", {}).items():
+        parts = [int(p) - 1 if p.isdigit() else p for p in re.findall(r"[^.\[\]]+", where)]
+        node: Any = out
+        for p in parts[:-1]:
+            node = node[p]
+        node[parts[-1]] = curve
+    return out
+
+
 def to_toml(report: Report) -> str:
-    """The report as TOML text (no nulls: TOML has none)."""
-    return tomli_w.dumps(_plain(report))
+    """The report as TOML text (no nulls: TOML has none), curves in ``[curves]`` at the
+    end."""
+    return tomli_w.dumps(archive(_plain(report)))
+
+
+def to_json(report: Report) -> str:
+    """The report as JSON: the same document as the TOML, keys in the same order."""
+    import json
+
+    return json.dumps(archive(_plain(report)), indent=2, ensure_ascii=False) + "\n"
 
 
 def write_atomic(path: Path, text: str) -> None:

@@ -1,6 +1,8 @@
 """Requirements: the input of the advisor, read from TOML and validated strictly.
 
-Units are SI and named in the keys (``force_N``, ``stroke_m``). Unknown keys are refused (a
+Units are SI and named in the keys (``force_N``, ``stroke_m``); a number may also be written
+as a string with a unit (``"5 kN"``), converted to the key's unit by
+:mod:`advisor.core.units`. Unknown keys are refused (a
 typo must not be silently ignored), numbers must be finite, and a table that the
 application kind needs must be present.
 """
@@ -272,6 +274,9 @@ def parse_requirements(data: dict[str, Any]) -> Requirements:
     except ValidationError as exc:
         raise InputError(*format_validation_error(exc, _Head)) from None
     model = requirements_model(kind)
+    from advisor.core.units import convert
+
+    data = convert(data, model)  # "5 kN" → 5000 (pint only if such a string is there)
     try:
         return model.model_validate(data)
     except ValidationError as exc:

@@ -14,6 +14,7 @@ from advisor.applications.linear.report import (
     MotorCandidateOut,
     NutOut,
     ScrewOut,
+    back_driving_words,
 )
 from advisor.calc import induction as im
 from advisor.calc import screw as sc
@@ -421,6 +422,9 @@ def _screw_out(
         torque_paper_Nm=ev.torque_paper_Nm,
         efficiency=ev.efficiency,
         back_driving_efficiency=ev.back_driving_efficiency,
+        back_driving=back_driving_words(
+            ev.back_driving_efficiency, ev.self_locking, ev.self_locking_at_low_friction
+        ),
         self_locking=ev.self_locking,
         self_locking_at_low_friction=ev.self_locking_at_low_friction,
         linear_speed_m_s=v,
