@@ -130,6 +130,8 @@ def to_unit(text: str, unit: str) -> float:
     """
     if _NUMBER.match(text):  # a number in quotes: the key's unit
         return float(text)
+    if not re.match(PATTERN, text):  # a unit alone ("kN") is 1 kN to pint: not here
+        raise UnitError(_expected(unit, _GARBAGE))
     target = PINT_UNITS.get(unit)
     if target is None:
         raise UnitError(f"this field takes numbers in {unit} only")
@@ -192,7 +194,8 @@ def _strip_optional(ann: Any) -> Any:
 
 
 def _is_number(ann: Any) -> bool:
-    return ann is float or ann is int
+    """A quantity: a float field (whole-number fields are counts, without a unit)."""
+    return ann is float
 
 
 def _models(ann: Any) -> list[type[BaseModel]]:
@@ -282,9 +285,4 @@ def _one(text: str, unit: str, ann: Any, path: tuple[Any, ...], errors: list[str
     except UnitError as exc:
         errors.append(f"{_where(path)} = {text!r}: {exc}")
         return text
-    if ann is int:
-        if value != int(value):
-            errors.append(f"{_where(path)} = {text!r}: must be a whole number")
-            return text
-        return int(value)
     return value
