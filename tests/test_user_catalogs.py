@@ -45,3 +45,17 @@ def test_a_report_with_the_example_catalogs(tmp_path, capsys, monkeypatch):
     text = out.read_text(encoding="utf-8")
     # 3500 N on Tr16x2 at 8 MPa: the nut grows to keep the flank pressure within the rule
     assert 'id = "nut_pressure"' in text and "limit = 8.0" in text
+
+
+def test_a_materials_file_missing_a_pair_is_refused(tmp_path, capsys, monkeypatch):
+    """It replaces the shipped file: a requirement naming the missing pair would find none."""
+    monkeypatch.setenv("DRIVE_ADVISOR_NO_CACHE", "1")
+    text = (USER / "screw_materials.toml").read_text(encoding="utf-8")
+    start = text.index('[[pair]]\nname = "steel_steel"')
+    end = text.index("[[", start + 2)
+    (tmp_path / "screw_materials.toml").write_text(text[:start] + text[end:], encoding="utf-8")
+    src = EXAMPLES / "linear_screw_actuator.toml"
+    assert main(["--batch", str(src), "--catalog-dir", str(tmp_path)]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1
+    assert "[[pair]] 'steel_steel' missing; a user materials file replaces the shipped one" in err

@@ -55,7 +55,6 @@ PINT_UNITS = {
 
 #: Units that carry an angle (pint counts the radian as no dimension at all).
 _ANGULAR = {"rad", "deg", "rpm", "rad/s"}
-_ANGLE_WORDS = ("radian", "degree", "revolution", "turn", "arcminute", "arcsecond", "gradian")
 
 #: Words for what a unit measures, for messages (matched by dimension).
 _DIMENSION_WORDS = (
@@ -101,9 +100,11 @@ def _registry() -> Any:
         base = os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache")
         folder = os.path.join(base, "drive-advisor", "pint")
     try:
-        return pint.UnitRegistry(cache_folder=folder)
+        ureg = pint.UnitRegistry(cache_folder=folder)
     except OSError:  # an unwritable cache: parse the definitions every time
-        return pint.UnitRegistry()
+        ureg = pint.UnitRegistry()
+    ureg.define("rev = revolution")  # "1 rev/s", as engineers write it
+    return ureg
 
 
 def _words(dimensionality: Any) -> str:
@@ -115,7 +116,8 @@ def _words(dimensionality: Any) -> str:
 
 
 def _has_angle(units: Any) -> bool:
-    return any(w in str(u) for u in units._units for w in _ANGLE_WORDS)
+    """Whether a unit holds an angle: in base units, the radian stays (Hz does not)."""
+    return "radian" in str((1 * units).to_base_units().units)
 
 
 def to_unit(text: str, unit: str) -> float:
