@@ -134,7 +134,7 @@ async def test_invalid_input_is_shown_inline_and_next_waits():
         err = _text(app.query_one("#f-linear-force-N-err", Label))
         assert "must be > 0" in err
         await _type(pilot, app, "f-linear-stroke-m", "abc")
-        assert "not a number" in _text(app.query_one("#f-linear-stroke-m-err", Label))
+        assert "must be a number" in _text(app.query_one("#f-linear-stroke-m-err", Label))
         # Back keeps what was typed
         await pilot.press("ctrl+b", "ctrl+n")
         assert app.query_one("#f-linear-stroke-m", Input).value == "abc"

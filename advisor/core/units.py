@@ -10,7 +10,8 @@ are cached beside the catalog cache (``$XDG_CACHE_HOME/drive-advisor/pint``).
 pint treats the radian as dimensionless, so ``1 Hz`` would become 9.55 rpm and ``5 rad`` a
 valid force ratio. An angle is therefore checked apart from the dimension: a field whose
 unit holds an angle (rad, deg, rpm, rad/s) takes only a value whose unit holds one, and the
-other way round; a bare number in quotes is taken in the key's unit.
+other way round. A number in quotes without a unit is refused: it is a slip or a unit left
+out, and guessing either way would hide it.
 """
 
 import math
@@ -79,12 +80,12 @@ _DIMENSION_WORDS = (
     ("dimensionless", "a pure number"),
 )
 
-#: A number, then optionally a unit: what the JSON Schema allows as a string.
-PATTERN = r"^\s*[-+]?(\d+(\.\d*)?|\.\d+)([eE][-+]?\d+)?\s*([^\s\d.+-].*)?$"
+#: A number, then a unit: what the JSON Schema allows as a string.
+PATTERN = r"^\s*[-+]?(\d+(\.\d*)?|\.\d+)([eE][-+]?\d+)?\s*[^\s\d.+-].*$"
 _NUMBER = re.compile(r"^\s*[-+]?(\d+(\.\d*)?|\.\d+)([eE][-+]?\d+)?\s*$")
 
 
-_GARBAGE = 'not a number with a unit (write it like "5 kN", "200 mm", "1500 rpm")'
+_GARBAGE = 'must be a number or a quantity with a unit, like "5 kN", "200 mm" or "1500 rpm"'
 
 
 class UnitError(ValueError):
@@ -127,11 +128,15 @@ def to_unit(text: str, unit: str) -> float:
 
     >>> to_unit("5 kN", "N"), to_unit("200 mm", "m"), to_unit("1500 rpm", "rad/s")
     (5000.0, 0.2, 157.079632679)
-    >>> to_unit("90 deg", "rad"), to_unit("3", "N·m")
+    >>> to_unit("90 deg", "rad"), to_unit("3 N*m", "N·m")
     (1.57079632679, 3.0)
     """
-    if _NUMBER.match(text):  # a number in quotes: the key's unit
-        return float(text)
+    if _NUMBER.match(text):  # a number in quotes: a slip, or a unit left out
+        n = text.strip()
+        raise UnitError(
+            f"must be a number ({n})"
+            + (f' or a quantity with its unit ("{n} {unit}")' if unit else "")
+        )
     if not re.match(PATTERN, text):  # a unit alone ("kN") is 1 kN to pint: not here
         raise UnitError(_expected(unit, _GARBAGE))
     target = PINT_UNITS.get(unit)
