@@ -51,16 +51,10 @@ def report_name(source: Path, taken: set[str]) -> str:
     return name
 
 
-def headline(report) -> str:
-    """The design of a report in a few words, as its application words it."""
-    from advisor.core.registry import headline as app_headline
-
-    return app_headline(report)
-
-
 def advise_one(source: Path, target: Path, catalog_dir: Path | None) -> Outcome:
     """Advise one file and write its report; every failure becomes an Outcome."""
     from advisor.core.engine import advise
+    from advisor.core.registry import headline
     from advisor.core.report import to_toml, write_atomic
     from advisor.core.requirements import read_requirements
 

@@ -29,7 +29,13 @@ def main() -> None:
             times.append(time.perf_counter() - t0)
         med = statistics.median(times)
         results[example.name] = {"median_ms": med * 1e3, "runs": n}
-        print(f"{example.name:32s} warm advice (read + advise + TOML) {med * 1e3:6.2f} ms")
+        line = f"{example.name:32s} warm advice (read + advise + TOML) {med * 1e3:6.2f} ms"
+        if req.application.kind == "rotary":  # the sweep, counted honestly (issue 16)
+            sweep = advise(req).design.gearbox.sweep
+            results[example.name]["sweep_configurations"] = sweep.configurations
+            results[example.name]["sweep_feasible"] = sweep.feasible
+            line += f" (sweep: {sweep.configurations:,} computed, {sweep.feasible:,} feasible)"
+        print(line)
     save("warm_advice", results)
 
 

@@ -22,16 +22,24 @@ def choose_speed(
     losses_by_speed: dict[float, float],
     optimum_speed_rpm: float,
     pole_pairs: int,
-    over_rating: dict[float, float],
-    rated_current_A: float,
+    loss_limit_W: float,
+    limit_basis: str,
+    current_by_speed: dict[float, float],
 ) -> Finding[float]:
     """The candidate speed with the smallest total loss (ohmic + iron + magnets) among those
-    at which the motor stays within its rated current."""
-    allowed = {n: w for n, w in losses_by_speed.items() if n not in over_rating}
+    whose losses the frame's cooling carries (``loss_limit_W``). The caller guarantees that
+    at least one candidate is within the limit.
+
+    The limit is thermal (seed 000: the permissible load of the drive is set by the motor's
+    temperature, and a faster winding with less copper loss may carry more current). The
+    current of the winding rewound for each speed grows as n at a given torque; it is
+    reported for the drive electronics and is not a limit of the motor.
+    """
+    allowed = {n: w for n, w in losses_by_speed.items() if within_limit(w, loss_limit_W)}
     best = min(allowed, key=allowed.__getitem__)
     table = ", ".join(
-        f"{n:g} rpm: {w:.0f} W"
-        + (f" (needs {over_rating[n]:.3g} A > {rated_current_A:g} A)" if n in over_rating else "")
+        f"{n:g} rpm: {w:.4g} W at {current_by_speed[n]:.3g} A"
+        + ("" if n in allowed else f" (over the {loss_limit_W:.4g} W limit)")
         for n, w in sorted(losses_by_speed.items())
     )
     faster = [n for n in losses_by_speed if n > best and losses_by_speed[n] > losses_by_speed[best]]
@@ -41,13 +49,33 @@ def choose_speed(
         if faster
         else ""
     )
+    over = len(allowed) < len(losses_by_speed)
     return Finding(
         best,
-        f"{best:g} rpm (total loss {losses_by_speed[best]:.0f} W).",
-        f"Total losses at the candidate speeds: {table}. The minimum of eq. (10) lies at "
-        f"≈ {optimum_speed_rpm:.0f} rpm ({optimum_speed_rpm * pole_pairs / 60:.0f} Hz), where "
-        "the ohmic and the core losses are equal; of the candidates the least lossy is taken."
+        f"{best:g} rpm (total loss {losses_by_speed[best]:.4g} W of the {loss_limit_W:.4g} W "
+        "the frame carries).",
+        f"Total losses at the candidate speeds: {table}. The limit is thermal: {limit_basis}. "
+        "The current is that of the winding rewound for each speed (turns and torque constant "
+        "∝ 1/n, so at a given torque the current grows as n while the copper loss stays); "
+        "it sizes the drive electronics and is not a limit of the motor. The minimum of "
+        f"eq. (10) lies at ≈ {optimum_speed_rpm:.0f} rpm "
+        f"({optimum_speed_rpm * pole_pairs / 60:.0f} Hz), where the ohmic and the core losses "
+        "are equal; of the candidates the least lossy is taken."
         + tail
-        + (" Speeds over the rated current are shown but not chosen." if over_rating else ""),
-        {"losses_W": {f"{n:g}": round(w, 2) for n, w in losses_by_speed.items()}},
+        + (" Speeds over the loss limit are shown but not chosen." if over else ""),
+        {
+            "losses_W": {f"{n:g}": round(w, 2) for n, w in losses_by_speed.items()},
+            "loss_limit_W": round(loss_limit_W, 2),
+            "current_A": {f"{n:g}": round(a, 3) for n, a in current_by_speed.items()},
+        },
     )
+
+
+#: Relative tolerance of the loss limit: a frame at its own reference point is exactly at
+#: the limit, and floating-point rounding must not decide which side it falls.
+LIMIT_REL_TOL = 1e-9
+
+
+def within_limit(losses_W: float, limit_W: float) -> bool:
+    """Losses within the limit, up to :data:`LIMIT_REL_TOL` (rounding, not engineering)."""
+    return losses_W <= limit_W * (1.0 + LIMIT_REL_TOL)

@@ -26,23 +26,86 @@ def reducer_type(torque_Nm: float) -> Finding[str]:
     )
 
 
+def _output_diameter_factor(q: float, rows: int = 3) -> float:
+    """D/∛M of a stage of ratio q: (2.06/sin(π/q) + 1.8)·∛(241/(n_p·(q − 1))·sin(π/(q − 1))),
+    seed 000, eqs. (13) and (16) with balls (the comparison of two ratios does not depend
+    on the torque or the rolling body)."""
+    return (2.06 / math.sin(math.pi / q) + 1.8) * (
+        241.0 / (rows * (q - 1.0)) * math.sin(math.pi / (q - 1.0))
+    ) ** (1.0 / 3.0)
+
+
 @rule("WG-02", "Stage count and split of the ratio", SEED_000 + "; " + TEXTBOOK)
 def split_ratio(total_ratio: float, q_min: float, q_max: float) -> Finding[list[float] | None]:
     """Output stage q_out = 20 (12…20 gives the smallest outer diameter), the stage next to
     it 12, the remainder to the input stage; the fewest stages whose ratios stay within the
-    per-stage limits. Ratios are listed from the output towards the motor."""
+    per-stage limits. Ratios are listed from the output towards the motor.
+
+    Where the seed's rules cannot all hold, the decision says which gave way: below
+    q_Σ = 12 one stage is all there is (q_out < 12); between 20 and 12·q_min (≈ 78) neither
+    one stage (q_out = q_Σ > 20) nor two (q_out = q_Σ/q_min < 12) keeps q_out within 12…20,
+    and the option with the smaller outer diameter (eqs. (13), (16), three rows) is taken,
+    the reason the seed gives for its 12…20."""
     q = total_ratio
+    lo, hi = Q_OUT_RANGE
     if q < q_min:
         return Finding(
             None,
-            f"No reducer: the total ratio {q:.3g} is below one stage's minimum {q_min:g}.",
+            f"No reducer: the total ratio {q:.4g} is below one stage's minimum {q_min:g}.",
             "Eq. (14) leaves no bore below q ≈ 6.45.",
         )
-    lo, hi = Q_OUT_RANGE
     if q <= hi:
-        return Finding([q], f"One stage, q = {q:.4g}.", "The whole ratio fits one output stage.")
+        if q >= lo:
+            return Finding(
+                [q], f"One stage, q = {q:.4g}.", "The whole ratio fits one output stage."
+            )
+        return Finding(
+            [q],
+            f"One stage, q = {q:.4g}: the rule q_out = {lo:g}…{hi:g} gives way.",
+            f"q_Σ = {q:.4g} is below {lo:g}, so one stage carries the whole ratio and its "
+            f"q_out lies below the seed's {lo:g}…{hi:g}; a second stage would need a ratio "
+            f"below the minimum {q_min:g} (eq. (14)).",
+        )
+    if q < lo * q_min:
+        one = [q] if q <= q_max else None
+        two = [q / q_min, q_min] if q / q_min >= q_min else None
+        d_one = _output_diameter_factor(q) if one else math.inf
+        d_two = _output_diameter_factor(q / q_min) if two else math.inf
+        if d_one <= d_two:
+            split = one
+            decision = f"One stage, q = {q:.4g}: the rule q_out = {lo:g}…{hi:g} gives way."
+        else:
+            split = two
+            decision = (
+                f"Two stages: q_out = {q / q_min:.4g}, q1 = {q_min:g}: the rule "
+                f"q_out = {lo:g}…{hi:g} gives way."
+            )
+        alternatives = []
+        if one:
+            alternatives.append(f"one stage (q_out = {q:.4g} > {hi:g}): D = {d_one:.4g}·∛M")
+        if two:
+            alternatives.append(
+                f"two stages with the input stage at its minimum {q_min:g} "
+                f"(q_out = {q / q_min:.4g} < {lo:g}): D = {d_two:.4g}·∛M"
+            )
+        return Finding(
+            split,
+            decision,
+            f"q_Σ = {q:.4g} lies between {hi:g} and {lo:g} × {q_min:g} = {lo * q_min:.4g}: "
+            f"no split keeps q_out within {lo:g}…{hi:g} and every stage at or above "
+            f"{q_min:g} (eq. (14)). The seed keeps q_out within {lo:g}…{hi:g} for the "
+            "smallest outer diameter, so the option with the smaller outer diameter "
+            "(eqs. (13), (16), three rows at the output) is taken: "
+            + "; ".join(alternatives)
+            + ".",
+            {
+                "outer_diameter_per_cbrt_torque": {
+                    k: v for k, v in (("one", d_one), ("two", d_two)) if math.isfinite(v)
+                }
+            },
+        )
     if q <= Q_OUT_PREFERRED * q_max:
-        q_out = Q_OUT_PREFERRED if q / Q_OUT_PREFERRED >= q_min else max(lo, q / q_min)
+        q_out = Q_OUT_PREFERRED if q / Q_OUT_PREFERRED >= q_min else q / q_min
         split = [q_out, q / q_out]
         why = (
             f"q_Σ = {q:.4g} needs two stages: the output stage takes q_out = {q_out:.4g} "
@@ -54,17 +117,23 @@ def split_ratio(total_ratio: float, q_min: float, q_max: float) -> Finding[list[
         rest = q / (Q_OUT_PREFERRED * Q_NEXT ** (n - 2))
         if rest <= q_max:
             mids = [Q_NEXT] * (n - 2)
+            gave_way = ""
             if rest < q_min:  # lower the stage next to the output to keep the input stage
                 mids[0] = Q_NEXT * rest / q_min
+                gave_way = (
+                    f" The remainder {rest:.4g} is below the minimum {q_min:g} (eq. (14)), so "
+                    f"the seed's {Q_NEXT:g} for the stage next to the output gives way: it "
+                    f"takes {mids[0]:.4g} and the input stage {q_min:g}."
+                )
                 rest = q_min
             split = [Q_OUT_PREFERRED, *mids, rest]
             names = ", ".join(f"{x:.4g}" for x in split)
             return Finding(
                 split,
                 f"{n} stages: q = {names} (output first).",
-                f"q_Σ = {q:.4g} exceeds what two stages give (20 × {q_max:g}); seed 000 takes "
-                f"q_out = 20, the next stage {Q_NEXT:g} and gives the remainder "
-                f"{rest:.4g} to the input stage.",
+                f"q_Σ = {q:.4g} exceeds what {n - 1} stages give; seed 000 takes "
+                f"q_out = 20, the next stage {Q_NEXT:g} and gives the remainder to the input "
+                f"stage." + gave_way,
             )
     return Finding(
         None,
@@ -139,4 +208,42 @@ def compare_with_optimum(
         "experience; the sweep uses only eqs. (13)–(19). Both are reported so the engineer can "
         "judge; differences above 5 % are flagged.",
         {"tolerance": tolerance},
+    )
+
+
+@rule("WG-05", "Rule design against the Pareto front of the design space", SEED_000)
+def compare_with_front(
+    front_size: int,
+    shown: int,
+    adopted: dict[str, float],
+    dominating: dict[str, float] | None,
+) -> Finding[str]:
+    """Where the adopted reducer stands against the non-dominated set of the design space
+    (mass, outer diameter, length, efficiency by eqs. (13)–(19)). ``adopted`` and
+    ``dominating`` hold mass_kg, outer_diameter_mm, length_mm, stages and efficiency."""
+    objectives = "least mass, outer diameter and length, highest efficiency"
+    if dominating is None:
+        return Finding(
+            "on the front",
+            f"The adopted reducer is on the Pareto front ({objectives}).",
+            f"No configuration of the design space is at least as good in every objective and "
+            f"better in one. The front holds {front_size} designs; {shown} are reported, "
+            "evenly spaced along it.",
+            {"front_size": front_size, "shown": shown},
+        )
+    a, d = adopted, dominating
+    return Finding(
+        "dominated",
+        f"The adopted reducer is dominated by {d['ratios']} (rows {int(d['rows_out'])} at the "
+        f"output): {d['mass_kg']:.4g} kg against {a['mass_kg']:.4g} kg, "
+        f"{d['outer_diameter_mm']:.4g} mm against {a['outer_diameter_mm']:.4g} mm outer "
+        f"diameter, {d['length_mm']:.4g} mm against {a['length_mm']:.4g} mm length, "
+        f"{int(d['stages'])} stages against {int(a['stages'])}; it is kept (the seed's "
+        "practice).",
+        "By eqs. (13)–(19) alone a design is at least as good in every objective "
+        f"({objectives}) and better in one. The seed's rules (q_out = 12…20, three rows at "
+        "the output) come from the authors' fuller model, which these equations do not hold; "
+        f"the engineer judges. The front holds {front_size} designs; {shown} are reported, "
+        "evenly spaced along it.",
+        {"front_size": front_size, "shown": shown},
     )

@@ -193,6 +193,26 @@ def test_pareto_front_and_duty_when_the_report_has_them():
     assert duty(doc) is None
 
 
+def test_the_design_space_of_the_rudder_shows_its_pareto_front(reports):
+    doc = plain(reports["rudder_actuator.toml"])
+    pareto = doc["design"]["gearbox"]["pareto"]  # columns, lightest first
+    space = reducer_space(doc)
+    labels = [line.label for line in space.lines]
+    assert (
+        labels[0]
+        == f"Pareto front (mass, diameter, length, efficiency): {len(pareto['mass_kg'])} of {pareto['front_size']} designs"
+    )
+    assert sorted(space.lines[0].y) == sorted(pareto["mass_kg"])
+    assert labels[1:] == [
+        "least mass in the design space",
+        "least diameter in the design space",
+        "the rule's design (adopted)",
+        "lightest design that dominates the rule's",
+    ]
+    g = doc["design"]["gearbox"]
+    assert space.lines[3].x == [g["outer_diameter_mm"]] and space.lines[3].y == [g["mass_kg"]]
+
+
 def test_cli_writes_the_datasheet(tmp_path, capsys):
     out = tmp_path / "design.html"
     assert (

@@ -44,6 +44,27 @@ def test_motor_torque_is_the_papers_2_Nm(report):
     assert report["design"]["motor"]["current_A"] == pytest.approx(5.5)
 
 
+def test_motor_is_checked_by_its_losses(report):
+    # the example runs the frame at its reference point: 68.97 + 99.45 + 60 = 228.42 W
+    # against the same 228.42 W; 10000 rpm loses 21.29 + 397.8 + 100 = 519.09 W, over it
+    m = report["design"]["motor"]
+    assert m["loss_limit_W"] == pytest.approx(228.42, rel=1e-5)
+    assert {c["speed_rpm"]: c["within_loss_limit"] for c in m["candidates"]} == {
+        5000: True,
+        10000: False,
+    }
+    assert {c["speed_rpm"]: c["current_A"] for c in m["candidates"]} == pytest.approx(
+        {5000: 5.5, 10000: 6.11111}
+    )
+    check = next(c for c in report["checks"] if c["id"] == "motor_losses")
+    assert check["value"] == pytest.approx(228.42, rel=1e-5)
+    assert check["limit"] == pytest.approx(228.42, rel=1e-5)
+    assert check["unit"] == "W" and check["passed"]
+    assert not any(c["id"] == "motor_current" for c in report["checks"])
+    speed = next(d for d in report["decisions"] if d["id"] == "BL-02")
+    assert "6.11 A" in speed["rationale"] and "not a limit" in speed["rationale"]
+
+
 def test_optimum_frequency_of_eq10(report):
     # K_om = 68.97·500², K_mag = 159.45/500² → f* = (K_om/K_mag)^¼ = 405.5 Hz
     k_om = 2 * 1.14 * 5.5**2 * 500**2
@@ -86,7 +107,11 @@ def test_optimum_side_by_side_with_warnings(report):
     }
     # more than 5 % apart → flagged
     assert any("heavier than the lightest" in w for w in report["warnings"])
-    assert g["sweep"]["configurations"] > 100_000
+    # counted honestly (issue 16): only combinations within the stage limits are built, four
+    # stages (at least 6.5⁴ = 1785) are not for q = 1000
+    sw = g["sweep"]
+    assert sw["stage_counts"] == [2, 3]
+    assert 1000 < sw["feasible"] <= sw["configurations"] < 10_000
 
 
 def test_fig1_data(report):
@@ -101,7 +126,7 @@ def test_fig1_data(report):
 
 def test_decisions(report):
     ids = [d["id"] for d in report["decisions"]]
-    assert ids == ["BL-01", "WG-01", "BL-02", "WG-02", "WG-03", "WG-04"]
+    assert ids == ["BL-01", "WG-01", "BL-02", "WG-02", "WG-03", "WG-04", "WG-05"]
     speed = next(d for d in report["decisions"] if d["id"] == "BL-02")
     assert "Faster is not better" in speed["rationale"]
 
@@ -174,11 +199,15 @@ def test_wrong_motor_for_the_application(tmp_path, capsys):
 
 
 def test_motor_too_small_for_the_torque():
-    # four times the torque: 5000 rpm needs 4 × 5.5 = 22 A, 10000 rpm 4 × 6.11 = 24.4 A, from
-    # a motor rated for 5.5 A
-    with pytest.raises(InfeasibleError, match="reference motor cannot give the torque") as e:
+    # four times the torque: 8 N·m at 5000 rpm gives 16 × 68.97 = 1103.5 W of copper loss,
+    # 1263 W in all; 4.44 N·m at 10000 rpm 16 × 21.287 = 340.6 W, 838.4 W in all; the frame
+    # carries 228.42 W. The currents (22 A, 24.4 A) are reported beside the losses.
+    with pytest.raises(InfeasibleError, match="losses exceed what its frame's cooling") as e:
         advise(parse_requirements(_req(torque_Nm=4 * 1620)))
-    assert "it would need 22 A" in str(e.value) and "it would need 24.4 A" in str(e.value)
+    text = str(e.value)
+    assert "losses 1263 W" in text and "losses 838.4 W" in text
+    assert text.count("against the limit 228.4 W") == 2
+    assert "(22 A)" in text and "(24.4 A)" in text
 
 
 def test_three_term_iron_model_still_prefers_5000():
@@ -188,3 +217,24 @@ def test_three_term_iron_model_still_prefers_5000():
     m = rep.design.motor
     assert m.speed_rpm == 5000
     assert m.losses_W.iron == pytest.approx(m.steel.mass_kg * m.steel.specific_loss_three_term_W_kg)
+
+
+def test_pareto_front_in_the_report(report):
+    # issue 16: the non-dominated set under design.gearbox.pareto, thinned, and where the
+    # rule design (q_out = 20, three rows, 5.633 kg) stands: dominated, by a named design
+    g = report["design"]["gearbox"]
+    # the archive keeps the front's columns with the curves, the rest in the design
+    pf = {**g["pareto"], **report["curves"]["design.gearbox.pareto"]}
+    assert "mass_kg" not in g["pareto"] and "front_size" in g["pareto"]
+    n = len(pf["mass_kg"])
+    assert 0 < n <= 16 <= pf["front_size"]
+    for col in ("stages", "ratios", "rows_out", "outer_diameter_mm", "length_mm", "efficiency"):
+        assert len(pf[col]) == n
+    assert pf["adopted"] == "dominated"
+    by = pf["dominated_by"]
+    assert by["mass_kg"] < g["mass_kg"] and by["outer_diameter_mm"] <= g["outer_diameter_mm"]
+    assert by["length_mm"] <= g["length_mm"] and by["efficiency"] >= g["efficiency"]
+    masses = pf["mass_kg"]
+    assert masses == sorted(masses) and masses[0] == g["optimum"]["mass_kg"]
+    wg05 = next(d for d in report["decisions"] if d["id"] == "WG-05")
+    assert "dominated by [40.0, 25.0]" in wg05["decision"]

@@ -128,10 +128,17 @@ def test_rotary_design_or_clear_infeasibility(data):
     env = data.get("envelope", {})
     assert g.outer_diameter_mm <= env.get("max_outer_diameter_mm", math.inf) * (1 + 1e-9)
     assert g.length_mm <= env.get("max_length_mm", math.inf) * (1 + 1e-9)
-    # the least lossy speed among those the motor carries within its rated current
-    assert m.losses_W.total == pytest.approx(
-        min(c.losses_W.total for c in m.candidates if c.within_rating)
+    # the least lossy speed among those within the frame's loss limit (compared with the
+    # rule's reducer at each speed) ...
+    best = min((c for c in m.candidates if c.within_loss_limit), key=lambda c: c.losses_W.total)
+    assert m.speed_rpm == best.speed_rpm
+    # ... and the motor's own figures at the reducer adopted, within the limit
+    assert m.torque_Nm == pytest.approx(
+        data["rotary"]["torque_Nm"] / (g.total_ratio * g.efficiency), rel=1e-9
     )
+    if g.efficiency == pytest.approx(best.gearbox_efficiency, rel=1e-12):
+        assert m.losses_W.total == pytest.approx(best.losses_W.total, rel=1e-9)
+    assert m.losses_W.total <= m.loss_limit_W * (1 + 1e-9)
     ow = rep.design.one_way
     assert (ow is not None) == data["application"]["hold_without_power"]
     if ow is not None:  # at the motor side, carrying M_out/(q·η); smaller than at the output

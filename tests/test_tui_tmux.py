@@ -19,8 +19,13 @@ from advisor.core.requirements import read_requirements
 pytestmark = pytest.mark.skipif(shutil.which("tmux") is None, reason="tmux is not installed")
 
 
+# a private server: tests running side by side (or a user's own tmux) never share it, and
+# killing our session never takes another run's server down
+_SOCKET = f"advisor-e2e-{uuid.uuid4().hex[:8]}"
+
+
 def _tmux(*args: str, check: bool = True) -> str:
-    r = subprocess.run(["tmux", *args], capture_output=True, text=True, check=check)
+    r = subprocess.run(["tmux", "-L", _SOCKET, *args], capture_output=True, text=True, check=check)
     return r.stdout
 
 
@@ -54,13 +59,15 @@ def test_wizard_in_tmux_exports_the_batch_report(tmp_path):
         _wait_for(session, "Export to")
         # clear the proposed name, type ours, tab to "Save report" and press it
         _tmux("send-keys", "-t", session, "C-u")
-        _tmux("send-keys", "-t", session, "-l", str(out))
+        # relative to the wizard's working directory (tmp_path), short enough to show whole
+        _tmux("send-keys", "-t", session, "-l", out.name)
+        _wait_for(session, out.name)  # the path typed must show before it is saved
         _tmux("send-keys", "-t", session, "Tab", "Enter")
-        for _ in range(100):
+        for _ in range(300):  # a loaded machine can take seconds to write it
             if out.exists():
                 break
             time.sleep(0.1)
         assert out.read_text(encoding="utf-8") == to_toml(advise(read_requirements(src)))
         _tmux("send-keys", "-t", session, "C-q")
     finally:
-        _tmux("kill-session", "-t", session, check=False)
+        _tmux("kill-server", check=False)

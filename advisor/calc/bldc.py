@@ -157,16 +157,61 @@ def ohmic_loss(
     return reference_loss_W * (reference_speed_rpm / speed_rpm) ** 2 * load_ratio**2
 
 
+def ohmic_loss_at_torque(
+    reference_loss_W: float, reference_torque_Nm: float, torque_Nm: float
+) -> float:
+    """Copper loss of the frame at a torque, whatever its winding.
+
+    Rewinding the same frame for another speed at the same voltage scales the turns and the
+    torque constant as 1/n and the resistance as 1/n², so the current at a torque grows as n
+    and I²·R does not change: the loss depends on the torque alone, P = P_ref·(M/M_ref)².
+    With the motor torque of a reducer, M ∝ 1/n, this is seed 000's eq. (4), P1/P2 = n², and
+    eq. (9), P_om ∝ 1/f².
+
+    Seed 000: 2 · 1.14 Ω · 5.5² A² = 68.97 W at 2.0 N·m; the 10000 rpm motor at 1.0 N·m
+    (two parallels, R/4, same 5.5 A) loses a quarter of that.
+
+    >>> ohmic_loss_at_torque(68.97, 2.0, 1.0)
+    17.2425
+    """
+    return reference_loss_W * (torque_Nm / reference_torque_Nm) ** 2
+
+
+def rewound_current_A(
+    reference_current_A: float,
+    reference_torque_Nm: float,
+    reference_speed_rpm: float,
+    torque_Nm: float,
+    speed_rpm: float,
+) -> float:
+    """Phase current of the frame rewound for ``speed_rpm`` at a torque: the torque constant
+    falls as 1/n, so I = I_ref·(M/M_ref)·(n/n_ref). A drive-sizing figure, not the frame's
+    limit (that is thermal: see :func:`ohmic_loss_at_torque`).
+
+    Seed 000: 1.0 N·m at 10000 rpm needs the reference 5.5 A (2.0 N·m at 5000 rpm).
+
+    >>> rewound_current_A(5.5, 2.0, 5000, 1.0, 10000)
+    5.5
+    """
+    return (
+        reference_current_A * (torque_Nm / reference_torque_Nm) * (speed_rpm / reference_speed_rpm)
+    )
+
+
 def magnet_loss(points: list[tuple[float, float]], speed_rpm: float) -> float:
     """Eddy-current loss in the magnets at a speed, from the reference design's values.
 
     Between two given points the loss follows the power law through them (log–log
     interpolation); beyond the given points it grows with the square of speed, seed 000's
     stated assumption. The seed's own FEM values (60 W at 5000 rpm, 100 W at 10000 rpm) grow
-    as n^0.74, not n², which is why they are data here and not a law.
+    as n^0.74, not n², which is why they are data here and not a law. A loss of 0 W (magnets
+    that are segmented finely enough, or none at all) has no power law through it: between a
+    zero and its neighbour the loss is interpolated linearly, and beyond a zero it stays 0.
 
     >>> magnet_loss([(5000, 60), (10000, 100)], 10000), magnet_loss([(5000, 60)], 10000)
     (100.0, 240.0)
+    >>> magnet_loss([(5000, 0), (10000, 100)], 7500), magnet_loss([(5000, 0.0)], 10000)
+    (50.0, 0.0)
     """
     pts = sorted(points)
     if len(pts) == 1 or speed_rpm <= pts[0][0]:
@@ -177,6 +222,8 @@ def magnet_loss(points: list[tuple[float, float]], speed_rpm: float) -> float:
         return p0 * (speed_rpm / n0) ** 2
     for (n0, p0), (n1, p1) in itertools.pairwise(pts):
         if n0 <= speed_rpm <= n1:
+            if p0 <= 0.0 or p1 <= 0.0:
+                return p0 + (p1 - p0) * (speed_rpm - n0) / (n1 - n0)
             e = math.log(p1 / p0) / math.log(n1 / n0)
             return p0 * (speed_rpm / n0) ** e
     raise AssertionError("unreachable")

@@ -21,7 +21,9 @@ from advisor.calc import wavegear as wg
 STAGE_RATIO_MIN = 6.5
 STAGE_RATIO_MAX = 64.0
 #: Output-stage ratios swept (the issue's design space) and row counts (seed 000 fig. 1).
-OUTPUT_RATIO_GRID = np.arange(7.0, 40.0 + 1e-9, 0.5)
+#: A single stage may take any ratio within the stage limits.
+OUTPUT_RATIO_MAX = 40.0
+OUTPUT_RATIO_GRID = np.arange(STAGE_RATIO_MIN, OUTPUT_RATIO_MAX + 1e-9, 0.5)
 ROW_GRID = np.arange(2, 13)
 INTERMEDIATE_RATIO_GRID = np.geomspace(STAGE_RATIO_MIN, STAGE_RATIO_MAX, 24)
 
@@ -107,7 +109,8 @@ def evaluate(ratios_out_to_in: list[float], rows_out_to_in: list[int], p: Reduce
 
 
 class SweepResult(NamedTuple):
-    """Flat arrays, one entry per feasible configuration."""
+    """Flat arrays, one entry per feasible configuration (every stage ratio within limits and
+    every stage's own outer diameter within the common one)."""
 
     stages: np.ndarray
     q_out: np.ndarray
@@ -117,7 +120,14 @@ class SweepResult(NamedTuple):
     outer_diameter_mm: np.ndarray
     length_mm: np.ndarray
     mass_kg: np.ndarray
-    evaluated: int  # configurations examined, feasible or not
+    evaluated: int  # configurations built and computed: every one realises the total ratio
+
+    @property
+    def feasible(self) -> int:
+        return int(self.mass_kg.size)
+
+    def efficiency(self, stage_efficiency: float) -> np.ndarray:
+        return stage_efficiency ** self.stages.astype(float)
 
     def ratios_out_to_in(self, i: int) -> list[float]:
         out = [float(self.q_out[i])]
@@ -127,69 +137,133 @@ class SweepResult(NamedTuple):
         return out
 
 
-def sweep(total_ratio: float, p: ReducerParams, max_stages: int = 4) -> SweepResult:
-    """Every stage count (1…max_stages), split, output ratio (7…40) and output row count
-    (2…12) that realises ``total_ratio`` with every stage ratio within limits."""
+def stage_count_bounds(total_ratio: float, max_stages: int = 4) -> range:
+    """The stage counts that can realise ``total_ratio``: n stages make at least
+    q_min^n and at most q_out,max·q_max^(n−1) (one stage: q_min…q_max)."""
+    lo, hi = STAGE_RATIO_MIN, STAGE_RATIO_MAX
+    ns = [
+        n
+        for n in range(1, max_stages + 1)
+        if lo**n <= total_ratio * (1 + 1e-12)
+        and total_ratio <= (hi if n == 1 else OUTPUT_RATIO_MAX * hi ** (n - 1)) * (1 + 1e-12)
+    ]
+    return range(ns[0], ns[-1] + 1) if ns else range(0)
+
+
+def _level(
+    rest: np.ndarray, after: int, grid: np.ndarray, top: float
+) -> tuple[np.ndarray, np.ndarray]:
+    """Every ratio of one stage that leaves the ``after`` stages behind it a realisable
+    remainder: q in [max(q_min, rest/q_max^after), min(top, rest/q_min^after)], taken from
+    ``grid`` plus both ends of the interval (the constraint boundaries). Returns the parent
+    index of each ratio and the ratio; no infeasible combination is built."""
+    lo, hi = STAGE_RATIO_MIN, STAGE_RATIO_MAX
+    a = np.maximum(lo, rest / hi**after)
+    b = np.minimum(top, rest / lo**after)
+    keep = a <= b * (1 + 1e-12)
+    i0 = np.searchsorted(grid, a, "right")  # grid points strictly inside (a, b)
+    i1 = np.searchsorted(grid, b, "left")
+    counts = np.where(keep, np.maximum(i1 - i0, 0) + 2, 0)
+    parent = np.repeat(np.arange(rest.size), counts)
+    starts = np.cumsum(counts) - counts
+    pos = np.arange(parent.size) - starts[parent]
+    inner = np.minimum(i0[parent] + pos - 2, grid.size - 1)
+    q = np.where(pos == 0, a[parent], np.where(pos == 1, b[parent], grid[inner]))
+    return parent, q
+
+
+def _chains(total_ratio: float, n: int, out_grid: np.ndarray, mid_grid: np.ndarray):
+    """The ratio chains (output first) of ``n`` stages that realise ``total_ratio``."""
+    if n == 1:
+        ok = STAGE_RATIO_MIN <= total_ratio <= STAGE_RATIO_MAX
+        return [np.array([total_ratio] if ok else [])]
+    parent, q_out = _level(np.array([float(total_ratio)]), n - 1, out_grid, OUTPUT_RATIO_MAX)
+    cols = [q_out]
+    rest = total_ratio / q_out
+    for j in range(n - 2):
+        parent, q = _level(rest, n - 2 - j, mid_grid, STAGE_RATIO_MAX)
+        cols = [c[parent] for c in cols] + [q]
+        rest = rest[parent] / q
+    cols.append(np.clip(rest, STAGE_RATIO_MIN, STAGE_RATIO_MAX))
+    return cols
+
+
+def _stage_factor(q: np.ndarray) -> np.ndarray:
+    """sin(π/(q − 1))/(q − 1) of eq. (16)."""
+    return np.sin(np.pi / (q - 1.0)) / (q - 1.0)
+
+
+def sweep(
+    total_ratio: float,
+    p: ReducerParams,
+    max_stages: int = 4,
+    out_grid: np.ndarray | None = None,
+    mid_grid: np.ndarray | None = None,
+    rows: np.ndarray | None = None,
+    stage_counts: range | list[int] | None = None,
+) -> SweepResult:
+    """Every stage count (1…max_stages), split (intermediate ratios from ``mid_grid``),
+    output ratio (``out_grid``, 6.5…40) and output row count (2…12) that realises
+    ``total_ratio`` with every stage ratio within limits, plus the constraint boundaries
+    (a stage ratio at its limit). Only combinations within the ratio limits are built; each
+    is then checked for the other stages fitting the common diameter."""
+    out_grid = OUTPUT_RATIO_GRID if out_grid is None else out_grid
+    mid_grid = INTERMEDIATE_RATIO_GRID if mid_grid is None else mid_grid
+    rows_f = (ROW_GRID if rows is None else np.asarray(rows)).astype(float)
+    counts = stage_count_bounds(total_ratio, max_stages) if stage_counts is None else stage_counts
+    m, k, eta = p.torque_Nm, p.k_rb, p.stage_efficiency
     parts = []
     evaluated = 0
-    for n in range(1, max_stages + 1):
-        if n == 1:
-            q_out = OUTPUT_RATIO_GRID[np.isclose(OUTPUT_RATIO_GRID, total_ratio)]
-            if q_out.size == 0 and 7.0 <= total_ratio <= 40.0:
-                q_out = np.array([total_ratio])
-            grids = np.meshgrid(q_out, ROW_GRID, indexing="ij")
-            qo, rows = (g.ravel() for g in grids)
-            mids = np.full((qo.size, 2), np.nan)
-            q_in = np.full(qo.size, np.nan)
-            ok = np.ones(qo.size, bool)
-        else:
-            n_mid = n - 2
-            axes = [OUTPUT_RATIO_GRID] + [INTERMEDIATE_RATIO_GRID] * n_mid + [ROW_GRID]
-            grids = np.meshgrid(*axes, indexing="ij")
-            flat = [g.ravel() for g in grids]
-            qo, rows = flat[0], flat[-1]
-            mids = np.full((qo.size, 2), np.nan)
-            prod = qo.copy()
-            for j in range(n_mid):
-                mids[:, j] = flat[1 + j]
-                prod = prod * flat[1 + j]
-            q_in = total_ratio / prod
-            ok = (q_in >= STAGE_RATIO_MIN) & (q_in <= STAGE_RATIO_MAX)
-        evaluated += qo.size
-        if not ok.any():
+    for n in counts:
+        chain = _chains(total_ratio, n, out_grid, mid_grid)
+        qo = chain[0]
+        if qo.size == 0:
             continue
-        qo, rows, mids, q_in = qo[ok], rows[ok], mids[ok], q_in[ok]
-        d_rb = wg.rolling_body_diameter(p.torque_Nm, qo, rows, p.k_rb)
-        D = wg.outer_diameter(qo, d_rb)
-        d = wg.inner_diameter(qo, d_rb)
-        L_out = wg.stage_length(rows, d_rb)
-        length = L_out.copy()
-        downstream = qo.copy()
-        for j in range(n - 1):
-            length = length + wg.equal_diameter_length(L_out, downstream)
-            nxt = mids[:, j] if j < n - 2 else q_in
-            downstream = downstream * nxt
-        mass = wg.mass_kg(wg.hollow_cylinder_volume(D, d, length), p.density_kg_m3, p.fill_factor)
+        evaluated += qo.size * rows_f.size
+        # output stage, eqs. (13)–(16): chains × rows
+        d_rb = np.cbrt(241.0 * m / k * _stage_factor(qo)[:, None] / rows_f[None, :])
+        a = 2.06 / np.sin(np.pi / qo)
+        D = (a + 1.8)[:, None] * d_rb
+        d = (a - 4.4)[:, None] * d_rb
+        # equal-diameter layout: L = L_out·(1 + Σ ∛(1/Π q)) and each stage's own diameter
+        factor = np.ones(qo.size)
+        own = np.zeros(qo.size)
+        downstream = np.ones(qo.size)
+        for j in range(1, n):
+            downstream = downstream * chain[j - 1]
+            factor += np.cbrt(1.0 / downstream)
+            qj = chain[j]
+            torque = m / (downstream * eta**j)
+            own_j = (2.06 / np.sin(np.pi / qj) + 1.8) * np.cbrt(
+                241.0 * torque / (2.0 * k) * _stage_factor(qj)
+            )
+            own = np.maximum(own, own_j)
+        length = (1.2 * rows_f + 1.8)[None, :] * d_rb * factor[:, None]
+        ok = own[:, None] <= D
+        mass = p.density_kg_m3 * p.fill_factor * 1e-9 * np.pi / 4.0 * (D * D - d * d) * length
+        ic, ir = np.nonzero(ok)
+        mids = np.full((ic.size, 2), np.nan)
+        for j in range(n - 2):
+            mids[:, j] = chain[1 + j][ic]
         parts.append(
-            (np.full(qo.size, n), qo, mids, np.where(n == 1, np.nan, q_in), rows, D, length, mass)
+            (
+                np.full(ic.size, n),
+                qo[ic],
+                mids,
+                chain[-1][ic] if n > 1 else np.full(ic.size, np.nan),
+                rows_f[ir].astype(int),
+                D[ic, ir],
+                length[ic, ir],
+                mass[ic, ir],
+            )
         )
     if not parts:
         empty = np.array([])
         return SweepResult(
-            empty, empty, np.empty((0, 2)), empty, empty, empty, empty, empty, evaluated
+            empty, empty, np.empty((0, 2)), empty, empty.astype(int), empty, empty, empty, evaluated
         )
     cols = list(zip(*parts, strict=True))
-    return SweepResult(
-        stages=np.concatenate(cols[0]),
-        q_out=np.concatenate(cols[1]),
-        q_mid=np.concatenate(cols[2]),
-        q_in=np.concatenate(cols[3]),
-        rows_out=np.concatenate(cols[4]),
-        outer_diameter_mm=np.concatenate(cols[5]),
-        length_mm=np.concatenate(cols[6]),
-        mass_kg=np.concatenate(cols[7]),
-        evaluated=evaluated,
-    )
+    return SweepResult(*(np.concatenate(c) for c in cols), evaluated)
 
 
 def best(
@@ -210,3 +284,193 @@ def best(
     key = result.mass_kg if objective == "mass" else result.outer_diameter_mm
     masked = np.where(ok, key, np.inf)
     return int(np.argmin(masked))
+
+
+#: Ratio of neighbouring intermediate grid ratios (the refinement works within one step).
+_MID_STEP = float(INTERMEDIATE_RATIO_GRID[1] / INTERMEDIATE_RATIO_GRID[0])
+_OUT_STEP = float(OUTPUT_RATIO_GRID[1] - OUTPUT_RATIO_GRID[0])
+
+
+def refine(
+    total_ratio: float,
+    p: ReducerParams,
+    result: SweepResult,
+    objective: str,
+    max_outer_diameter_mm: float | None = None,
+    max_length_mm: float | None = None,
+    points: int = 11,
+    passes: int = 3,
+) -> tuple[list[float], int] | None:
+    """The best configuration, polished: for each stage count, its best grid point is swept
+    again with ``points`` ratios over a grid step on either side (plus the constraint
+    boundaries, which the sweep always adds) and the neighbouring row counts, ``passes``
+    times with a span shrinking fivefold. Within an envelope the optimum lies between grid
+    points (on the envelope); without one, the mass optimum sits on a ratio limit, which
+    the boundary points already hold. Returns the ratios (output first) and output rows,
+    or ``None`` if nothing fits."""
+    ok = _within(result, max_outer_diameter_mm, max_length_mm)
+    key = result.mass_kg if objective == "mass" else result.outer_diameter_mm
+    found: tuple[float, list[float], int] | None = None
+    for n in np.unique(result.stages[ok]):
+        masked = np.where(ok & (result.stages == n), key, np.inf)
+        i = int(np.argmin(masked))
+        cand = (float(key[i]), result.ratios_out_to_in(i), int(result.rows_out[i]))
+        span_out, span_mid = _OUT_STEP, _MID_STEP
+        for _ in range(passes if n > 1 else 0):
+            ratios, rows = cand[1], cand[2]
+            out_grid = np.linspace(ratios[0] - span_out, ratios[0] + span_out, points)
+            mids = ratios[1:-1]
+            mid_grid = (
+                np.unique(
+                    np.concatenate([np.geomspace(m / span_mid, m * span_mid, points) for m in mids])
+                )
+                if mids
+                else INTERMEDIATE_RATIO_GRID[:0]
+            )
+            local = sweep(
+                total_ratio,
+                p,
+                out_grid=out_grid,
+                mid_grid=mid_grid,
+                rows=np.arange(max(2, rows - 1), min(int(ROW_GRID.max()), rows + 1) + 1),
+                stage_counts=[int(n)],
+            )
+            j = best(local, objective, max_outer_diameter_mm, max_length_mm)
+            local_key = local.mass_kg if objective == "mass" else local.outer_diameter_mm
+            if j is not None and local_key[j] < cand[0]:
+                cand = (float(local_key[j]), local.ratios_out_to_in(j), int(local.rows_out[j]))
+            span_out, span_mid = span_out / 5.0, span_mid ** (1.0 / 5.0)
+        if found is None or cand[0] < found[0]:
+            found = cand
+    return None if found is None else (found[1], found[2])
+
+
+def _within(
+    result: SweepResult, max_outer_diameter_mm: float | None, max_length_mm: float | None
+) -> np.ndarray:
+    ok = np.ones(result.mass_kg.size, bool)
+    if max_outer_diameter_mm is not None:
+        ok &= result.outer_diameter_mm <= max_outer_diameter_mm
+    if max_length_mm is not None:
+        ok &= result.length_mm <= max_length_mm
+    return ok
+
+
+#: Points checked at once by :func:`pareto`.
+_BLOCK = 64
+
+
+def pareto(
+    result: SweepResult,
+    stage_efficiency: float,
+    max_outer_diameter_mm: float | None = None,
+    max_length_mm: float | None = None,
+) -> np.ndarray:
+    """Indices of the non-dominated configurations within the envelope, by least mass, least
+    outer diameter, least length and highest efficiency (η^n; the losses follow it), sorted
+    by mass. Of configurations with the same stage count, output ratio and rows (the same
+    diameters and efficiency) only the shortest can be non-dominated; duplicates are kept
+    once."""
+    ok = np.nonzero(_within(result, max_outer_diameter_mm, max_length_mm))[0]
+    if ok.size == 0:
+        return ok
+    # the sweep lists configurations by stage count, then chain (chains of one q_out are
+    # contiguous), then rows: a run id per (stage count, q_out) and the rows make the group
+    n, qo = result.stages[ok], result.q_out[ok]
+    new_run = np.ones(ok.size, bool)
+    new_run[1:] = (n[1:] != n[:-1]) | (qo[1:] != qo[:-1])
+    group = np.cumsum(new_run) * 64 + result.rows_out[ok]
+    order = np.argsort(group, kind="stable")
+    g = group[order]
+    starts = np.nonzero(np.r_[True, g[1:] != g[:-1]])[0]
+    length = result.length_mm[ok][order]
+    shortest = np.minimum.reduceat(length, starts)
+    # the first of each group that is the shortest
+    ends = np.r_[starts[1:], g.size]
+    is_min = length == np.repeat(shortest, ends - starts)
+    pick = np.zeros(g.size, bool)
+    cand_pos = np.nonzero(is_min)[0]
+    grp_of = np.searchsorted(starts, cand_pos, "right") - 1
+    first_in_group = np.r_[True, grp_of[1:] != grp_of[:-1]]
+    pick[cand_pos[first_in_group]] = True
+    cand = ok[order[pick]]
+    # the same output stage (q_out, rows: the same diameters) with fewer stages is shorter,
+    # lighter and more efficient: keep the fewest stages of each
+    by_stage = cand[np.lexsort((result.stages[cand], result.rows_out[cand], result.q_out[cand]))]
+    qo, rw = result.q_out[by_stage], result.rows_out[by_stage]
+    cand = by_stage[np.r_[True, (qo[1:] != qo[:-1]) | (rw[1:] != rw[:-1])]]
+    # by mass, ties by diameter, length, stages: a point can only be dominated by earlier ones
+    cand = cand[
+        np.lexsort(
+            (
+                result.stages[cand],
+                result.length_mm[cand],
+                result.outer_diameter_mm[cand],
+                result.mass_kg[cand],
+            )
+        )
+    ]
+    # mass, diameter, length, stages (fewer: higher efficiency η^n, lower losses)
+    obj = [
+        result.mass_kg[cand],
+        result.outer_diameter_mm[cand],
+        result.length_mm[cand],
+        result.stages[cand].astype(float),
+    ]
+    # in this order whatever dominates a point comes before it, and (dominance being
+    # transitive) so does a non-dominated point that dominates it: each block is checked
+    # against the front so far and against the points before it within the block. A point
+    # equal in every objective to an earlier one goes too (duplicates are kept once).
+    front_obj = [x[:0] for x in obj]
+    front = []
+    before = np.triu(np.ones((_BLOCK, _BLOCK), bool), 1)  # [i, j]: i before j
+    for start in range(0, cand.size, _BLOCK):
+        blk = [x[start : start + _BLOCK] for x in obj]
+        b = blk[0].size
+        covered = before[:b, :b].copy()
+        for x in blk:
+            covered &= x[:, None] <= x[None, :]
+        dominated = covered.any(axis=0)
+        if front_obj[0].size:
+            covered = front_obj[0][:, None] <= blk[0][None, :]
+            for f, x in zip(front_obj[1:], blk[1:], strict=True):
+                covered &= f[:, None] <= x[None, :]
+            dominated |= covered.any(axis=0)
+        keep = ~dominated
+        front_obj = [np.concatenate([f, x[keep]]) for f, x in zip(front_obj, blk, strict=True)]
+        front.append(cand[start : start + _BLOCK][keep])
+    return np.concatenate(front) if front else cand[:0]
+
+
+def thin(front: np.ndarray, at_most: int) -> np.ndarray:
+    """At most ``at_most`` of the ``front`` (sorted by mass), evenly spaced along it, the
+    lightest and the heaviest always kept."""
+    if front.size <= at_most:
+        return front
+    return front[np.unique(np.round(np.linspace(0, front.size - 1, at_most)).astype(int))]
+
+
+def dominator(
+    result: SweepResult,
+    r: Reducer,
+    max_outer_diameter_mm: float | None = None,
+    max_length_mm: float | None = None,
+    rel: float = 1e-9,
+) -> int | None:
+    """Index of the configuration that dominates reducer ``r`` (no heavier, wider, longer or
+    with more stages, and better in one of them by more than ``rel``), the lightest of them
+    (ties by diameter, length), or ``None`` if ``r`` is non-dominated in the design space."""
+    ok = _within(result, max_outer_diameter_mm, max_length_mm)
+    n = len(r.stages)
+    m, D, L = r.mass_kg * (1 + rel), r.outer_diameter_mm * (1 + rel), r.length_mm * (1 + rel)
+    weak = ok & (result.mass_kg <= m) & (result.outer_diameter_mm <= D)
+    weak &= (result.length_mm <= L) & (result.stages <= n)
+    strict = (result.mass_kg < r.mass_kg * (1 - rel)) | (
+        result.outer_diameter_mm < r.outer_diameter_mm * (1 - rel)
+    )
+    strict |= (result.length_mm < r.length_mm * (1 - rel)) | (result.stages < n)
+    idx = np.nonzero(weak & strict)[0]
+    if idx.size == 0:
+        return None
+    order = np.lexsort((result.length_mm[idx], result.outer_diameter_mm[idx], result.mass_kg[idx]))
+    return int(idx[order[0]])

@@ -112,49 +112,65 @@ def plain(report: Report) -> dict[str, Any]:
     return _plain(report)
 
 
-def _is_curve(table: Any) -> bool:
-    """A table whose values are all arrays of numbers (or arrays of them), one of them long:
-    a characteristic, a sweep or a time history, data for a plot rather than the design."""
-
-    def numbers(v: Any) -> bool:
-        return isinstance(v, list) and all(
-            (isinstance(x, int | float) and not isinstance(x, bool)) or numbers(x) for x in v
-        )
-
-    return (
-        isinstance(table, dict)
-        and bool(table)
-        and all(numbers(v) for v in table.values())
-        and max(len(v) for v in table.values()) >= CURVE_POINTS
+def _numbers(v: Any) -> bool:
+    """An array of numbers (or of arrays of them)."""
+    return isinstance(v, list) and all(
+        (isinstance(x, int | float) and not isinstance(x, bool)) or _numbers(x) for x in v
     )
+
+
+def curve_part(table: Any) -> dict[str, Any]:
+    """The curve data of a table: its number arrays, when one of them has at least
+    :data:`CURVE_POINTS` points (a characteristic, a sweep, a time history, the columns of a
+    front) — data for a plot rather than the design. Empty when there is none."""
+    if not isinstance(table, dict):
+        return {}
+    arrays = {k: v for k, v in table.items() if _numbers(v)}
+    if not arrays or max(len(v) for v in arrays.values()) < CURVE_POINTS:
+        return {}
+    return arrays
+
+
+def _is_curve(table: Any) -> bool:
+    """A table that is all curve data (nothing of it stays in the design)."""
+    part = curve_part(table)
+    return bool(part) and len(part) == len(table)
 
 
 def _lift(node: Any, path: str, curves: dict[str, Any]) -> Any:
     if isinstance(node, dict):
+        part = curve_part(node) if path.startswith("design") else {}
+        if part:
+            curves[path] = part
         out = {}
         for k, v in node.items():
-            where = f"{path}.{k}" if path else k
-            if _is_curve(v):
-                curves[where] = v
-            else:
-                out[k] = _lift(v, where, curves)
-        return out
+            if k not in part:
+                out[k] = _lift(v, f"{path}.{k}" if path else k, curves)
+        return out if out or not part else None
     if isinstance(node, list):
         return [_lift(v, f"{path}[{i + 1}]", curves) for i, v in enumerate(node)]
     return node
 
 
+def _drop_empty(node: Any) -> Any:
+    if isinstance(node, dict):
+        return {k: _drop_empty(v) for k, v in node.items() if v is not None}
+    if isinstance(node, list):
+        return [_drop_empty(v) for v in node]
+    return node
+
+
 def archive(doc: dict[str, Any]) -> dict[str, Any]:
-    """The archive layout: every curve (see :func:`_is_curve`) moved out of the design into
-    one ``[curves]`` table at the end, keyed by where it was (``"design.motion.curve"``,
-    ``"design.motor.candidates[2].curve"``, list items counted from 1), so the design reads
-    first.
+    """The archive layout: the curve data of the design (see :func:`curve_part`) moved into
+    one ``[curves]`` table at the end, keyed by the table that held it
+    (``"design.motion.curve"``, ``"design.motor.candidates[2].curve"``, list items counted
+    from 1), so the design reads first; the table's other keys stay where they were.
 
     >>> archive({"design": {"m": 1.0, "curve": {"t": list(range(10))}}})["curves"]
     {'design.curve': {'t': [0, 1, 2, 3, 4, 5, 6, 7, 8, 9]}}
     """
     curves: dict[str, Any] = {}
-    out = _lift(doc, "", curves)
+    out = _drop_empty(_lift(doc, "", curves))
     if curves:
         out["curves"] = curves
     return out
@@ -172,7 +188,7 @@ def nest_curves(doc: dict[str, Any]) -> dict[str, Any]:
         node: Any = out
         for p in parts[:-1]:
             node = node[p]
-        node[parts[-1]] = curve
+        node[parts[-1]] = {**node.get(parts[-1], {}), **curve}
     return out
 
 

@@ -10,7 +10,7 @@ import math
 from dataclasses import dataclass, field
 from typing import Any
 
-from advisor.core.report import _is_curve
+from advisor.core.report import _is_curve, curve_part
 from advisor.datasheet.references import cited, readable
 
 #: A check whose margin is below this passes, but with little to spare: marked "tight".
@@ -191,9 +191,10 @@ def block(title: str, data: dict, unit: str = "") -> Block:
     tables as tables; curves left out (they are plotted). ``unit`` is the unit a parent key
     named for children without their own (``losses_W`` → ``ohmic``)."""
     b = Block(title)
+    plotted = curve_part(data)
     for k, v in data.items():
         label, own = split_key(k)
-        if _is_curve(v):
+        if _is_curve(v) or k in plotted:
             continue
         if _scalar(v):
             b.rows.append((label, number(v), own or unit))

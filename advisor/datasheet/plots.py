@@ -100,20 +100,25 @@ def reducer_space(doc: dict) -> Plot | None:
     if not isinstance(g, dict) or "mass_kg" not in g:
         return None
     lines: list[Line] = []
-    front = _get(g, "pareto", "points")
-    if isinstance(front, list) and front:
-        pts = sorted(
-            (p for p in front if "outer_diameter_mm" in p and "mass_kg" in p),
-            key=lambda p: p["outer_diameter_mm"],
-        )
+    pareto = g.get("pareto") if isinstance(g.get("pareto"), dict) else {}
+    if isinstance(pareto.get("points"), list):  # a front as rows
+        rows = [p for p in pareto["points"] if "outer_diameter_mm" in p and "mass_kg" in p]
+        xs, ys = [p["outer_diameter_mm"] for p in rows], [p["mass_kg"] for p in rows]
+    else:  # a front as columns, like fig1
+        xs, ys = pareto.get("outer_diameter_mm"), pareto.get("mass_kg")
+    if isinstance(xs, list) and isinstance(ys, list) and xs and len(xs) == len(ys):
+        front = sorted(zip(xs, ys, strict=True))
+        size = pareto.get("front_size")
         lines.append(
             Line(
-                "Pareto front (mass, diameter, length, efficiency)",
-                [p["outer_diameter_mm"] for p in pts],
-                [p["mass_kg"] for p in pts],
+                "Pareto front (mass, diameter, length, efficiency)"
+                + (f": {len(front)} of {size} designs" if size else ""),
+                [x for x, _ in front],
+                [y for _, y in front],
                 "points",
             )
         )
+    by = _point("lightest design that dominates the rule's", pareto.get("dominated_by"))
     for label, part in (
         ("least mass in the design space", g.get("optimum")),
         ("least diameter in the design space", g.get("optimum_min_diameter")),
@@ -122,6 +127,8 @@ def reducer_space(doc: dict) -> Plot | None:
         line = _point(label, part)
         if line is not None:
             lines.append(line)
+    if by is not None:
+        lines.append(by)
     d_max = _get(doc, "requirements", "envelope", "max_outer_diameter_mm")
     vlines = [(d_max, f"envelope Ø{d_max:g} mm")] if d_max is not None else []
     return Plot(

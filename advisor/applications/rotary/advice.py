@@ -5,12 +5,15 @@ import math
 
 import numpy as np
 
+from advisor.applications.rotary import motor as bm
 from advisor.applications.rotary.report import (
     BldcMotorOut,
     Fig1Out,
     GearboxOut,
     GearboxSummaryOut,
     LossesOut,
+    ParetoOut,
+    ParetoPointOut,
     PoleSlotOut,
     RotaryDesignOut,
     SpeedCandidateOut,
@@ -33,6 +36,8 @@ from rules import wavegear as wg_rules
 SEED_000 = wg_rules.SEED_000
 MAX_ROWS = int(rd.ROW_GRID.max())
 FIG1_ROWS = [2, 3, 4, 6, 8, 10, 12]
+#: At most this many designs of the Pareto front in the report, evenly spaced along it.
+PARETO_POINTS = 16
 
 
 def _steel(req: Requirements, cat: Catalogs):
@@ -59,22 +64,8 @@ def _candidate(n: float, req: Requirements, steel, steel_mass: float, terms, par
     stages = len(split) if split else 0
     eta = params.stage_efficiency**stages if stages else math.nan
     torque = rot.torque_Nm / (q_total * eta) if stages else math.nan
-    # rewound for n: the torque at the reference current falls as n_ref/n (seed 000, eq. (4))
-    torque_at_ref_current = ref.torque_Nm * ref.speed_rpm / n
-    load = torque / torque_at_ref_current
     f = bldc.flux_frequency_Hz(n, ref.pole_pairs)
-    spec_quad = (
-        bldc.iron_specific_loss_quadratic(steel.p15_50_W_kg, f) * (ref.induction_T / 1.5) ** 2
-    )
-    spec_three = terms.specific_loss(f, ref.induction_T)
-    spec = spec_quad if ref.iron_loss_model == "quadratic" else spec_three
-    ohmic_ref = ref.conducting_phases * ref.phase_resistance_ohm * ref.current_A**2
-    losses = {
-        "ohmic": bldc.ohmic_loss(ohmic_ref, ref.speed_rpm, n, load),
-        "iron": steel_mass * spec,
-        "magnets": bldc.magnet_loss([(p.speed_rpm, p.loss_W) for p in ref.magnet_losses], n),
-    }
-    losses["total"] = sum(losses.values())
+    spec, spec_three = bm.specific_iron_loss(ref, steel, terms, f)
     return {
         "speed_rpm": n,
         "frequency_Hz": f,
@@ -82,9 +73,9 @@ def _candidate(n: float, req: Requirements, steel, steel_mass: float, terms, par
         "split": split,
         "eta": eta,
         "torque_Nm": torque,
-        "current_A": ref.current_A * load,
-        "load": load,
-        "losses": losses,
+        # the winding rewound for n: current ∝ torque·n (seed 000, eq. (4)); reported only
+        "current_A": bldc.rewound_current_A(ref.current_A, ref.torque_Nm, ref.speed_rpm, torque, n),
+        "losses": bm.losses_at(ref, steel_mass * spec, n, torque),
         "iron_three_term_W": steel_mass * spec_three,
         "spec": spec,
         "spec_three": spec_three,
@@ -121,23 +112,6 @@ def advise_rotary(req: Requirements, cat: Catalogs, trace: Trace):
             "no feasible design: no candidate speed gives a ratio a wave-gear reducer can make",
             [f"{c['speed_rpm']:g} rpm → q_Σ = {c['q_total']:.4g}" for c in cands],
         )
-    # a speed is a candidate only if the rewound reference motor carries the torque there
-    usable = [c for c in reducible if c["load"] <= 1.0 + 1e-9]
-    if not usable:
-        raise InfeasibleError(
-            "no feasible design: the reference motor cannot give the torque",
-            [
-                f"at {c['speed_rpm']:g} rpm the reducer (q = {c['q_total']:.4g}, "
-                f"η = {c['eta']:.3g}) "
-                f"asks {c['torque_Nm']:.3g} N·m of the motor: it would need "
-                f"{c['current_A']:.3g} A against its rated {ref.current_A:g} A"
-                for c in reducible
-            ]
-            + [
-                "describe a larger motor in [motor.reference] (torque_Nm, current_A, "
-                "phase_resistance_ohm, stator size) or lower rotary.torque_Nm"
-            ],
-        )
     # eq. (10) at the reference speed, with the losses of the model in use
     at_ref = _candidate(ref.speed_rpm, req, steel, steel_mass, terms, params)
     if at_ref["split"]:
@@ -146,15 +120,20 @@ def advise_rotary(req: Requirements, cat: Catalogs, trace: Trace):
     else:
         f_opt = math.nan
     n_opt = f_opt * 60.0 / ref.pole_pairs
+    # the frame's limit is thermal: a speed is a candidate only if its losses are carried
+    limit, basis = bm.loss_limit(mot, steel, steel_mass, terms)
+    if not any(bl_rules.within_limit(c["losses"]["total"], limit) for c in reducible):
+        raise bm.too_lossy(reducible, limit, basis, n_opt)
     speed = trace.apply(
         bl_rules.choose_speed,
         {c["speed_rpm"]: c["losses"]["total"] for c in reducible},
         n_opt,
         ref.pole_pairs,
-        {c["speed_rpm"]: c["current_A"] for c in reducible if c not in usable},
-        ref.current_A,
+        limit,
+        basis,
+        {c["speed_rpm"]: c["current_A"] for c in reducible},
     )
-    chosen = next(c for c in usable if c["speed_rpm"] == speed)
+    chosen = next(c for c in reducible if c["speed_rpm"] == speed)
 
     # ---- reducer
     q_total = chosen["q_total"]
@@ -166,12 +145,10 @@ def advise_rotary(req: Requirements, cat: Catalogs, trace: Trace):
     )
     rows = trace.apply(wg_rules.choose_rows, len(split), needed, MAX_ROWS)
     space = rd.sweep(q_total, params)
-    i_mass = rd.best(space, "mass", env.max_outer_diameter_mm, env.max_length_mm)
-    i_diam = rd.best(space, "diameter", env.max_outer_diameter_mm, env.max_length_mm)
-    if i_mass is None or i_diam is None:
+    optimum = _optimum(space, q_total, "mass", params, env)
+    slimmest = _optimum(space, q_total, "diameter", params, env)
+    if optimum is None or slimmest is None:
         raise _no_reducer(space, rot.torque_Nm, env)
-    optimum = _from_sweep(space, i_mass, params)
-    slimmest = _from_sweep(space, i_diam, params)
     design = rd.evaluate(split, rows, params) if rows else None
     warnings: list[str] = []
     if design is None or not _fits(design, env):
@@ -192,25 +169,24 @@ def advise_rotary(req: Requirements, cat: Catalogs, trace: Trace):
         design.outer_diameter_mm,
         slimmest.outer_diameter_mm,
     )
+    pareto = _pareto(space, design, params, env, trace)
 
     # the motor torque follows the reducer actually adopted (its efficiency)
     motor_torque = rot.torque_Nm / (design.total_ratio * design.efficiency)
-    at_ref_current = ref.torque_Nm * ref.speed_rpm / speed
-    load = motor_torque / at_ref_current
-    if load > 1.0:
-        raise InfeasibleError(
-            "no feasible design: the reference motor cannot give the torque",
-            [
-                f"at {speed:g} rpm the reducer (q = {design.total_ratio:.4g}, η = "
-                f"{design.efficiency:.3g}) asks {motor_torque:.3g} N·m of the motor, which gives "
-                f"{at_ref_current:.3g} N·m at its rated {ref.current_A:g} A: it would need "
-                f"{ref.current_A * load:.3g} A",
-                "describe a larger motor in [motor.reference] (torque_Nm, current_A, "
-                "phase_resistance_ohm, stator size) or lower rotary.torque_Nm",
-            ],
-        )
-    checks = _checks(design, env, load, ref.current_A)
-    motor = _motor_out(chosen, reducible, ref, steel, steel_mass, f_opt, n_opt, motor_torque, load)
+    working = {
+        **chosen,
+        "q_total": design.total_ratio,
+        "eta": design.efficiency,
+        "torque_Nm": motor_torque,
+        "current_A": bldc.rewound_current_A(
+            ref.current_A, ref.torque_Nm, ref.speed_rpm, motor_torque, speed
+        ),
+        "losses": bm.losses_at(ref, chosen["losses"]["iron"], speed, motor_torque),
+    }
+    if not bl_rules.within_limit(working["losses"]["total"], limit):
+        raise bm.too_lossy([working], limit, basis, n_opt)
+    checks = _checks(design, env, working["losses"]["total"], limit, basis)
+    motor = _motor_out(working, reducible, ref, steel, steel_mass, f_opt, n_opt, limit, basis)
     gearbox = GearboxOut.make(
         kind="wave gear with rolling bodies",
         layout="equal-diameter",
@@ -220,44 +196,47 @@ def advise_rotary(req: Requirements, cat: Catalogs, trace: Trace):
         optimum_min_diameter=GearboxSummaryOut.make(**_summary_fields(slimmest)),
         sweep=SweepOut.make(
             configurations=space.evaluated,
-            feasible=int(space.mass_kg.size),
+            feasible=space.feasible,
+            stage_counts=[int(n) for n in rd.stage_count_bounds(q_total)],
             objective_mass="least mass within the envelope",
             objective_diameter="least outer diameter within the envelope",
         ),
+        pareto=pareto,
         fig1=_fig1(params.k_rb),
     )
     one_way = None
     if req.application.hold_without_power:
-        one_way, dev_checks, dev_warnings = _one_way(
-            req, trace, design, motor_torque, speed, load, ref.current_A
-        )
+        one_way, dev_checks, dev_warnings = _one_way(req, trace, design, working, limit, basis)
         checks += dev_checks
         warnings += dev_warnings
     return RotaryDesignOut.make(motor=motor, gearbox=gearbox, one_way=one_way), checks, warnings
 
 
-def _one_way(req, trace, design: rd.Reducer, motor_torque, speed, load, rated_current):
-    """Seed 004: the holding device at the motor side, and what it asks of the motor."""
+def _one_way(req, trace, design: rd.Reducer, working: dict, limit: float, basis: str):
+    """Seed 004: the holding device at the motor side, and what it asks of the motor: its
+    driving loss raises the motor torque, hence the copper loss, at the same speed."""
     from advisor.one_way.advice import choose_device
     from rules import one_way as ow_rules
 
     at_motor = trace.apply(
         ow_rules.placement, req.rotary.torque_Nm, design.total_ratio, design.efficiency
     )
+    motor_torque, speed = working["torque_Nm"], working["speed_rpm"]
     power = motor_torque * speed * math.pi / 30.0
     device, warnings = choose_device(req.one_way, at_motor, req.rotary.torque_Nm, power, trace)
     checks = []
     if device.efficiency < 1.0:
-        with_device = load / device.efficiency
+        ref = req.motor.reference
+        with_device = bm.losses_at(
+            ref, working["losses"]["iron"], speed, motor_torque / device.efficiency
+        )["total"]
         checks.append(
-            Check(
-                "motor_current_with_one_way",
-                "motor current with the one-way device's loss",
-                rated_current * with_device,
-                rated_current,
-                "A",
-                1.0 / with_device,
-                ow_rules.SEED_004,
+            bm.losses_check(
+                "motor_losses_with_one_way",
+                "motor losses with the one-way device's loss",
+                with_device,
+                limit,
+                f"{ow_rules.SEED_004}; {SEED_000}, eq. (4): {basis}",
             )
         )
     return device, checks, warnings
@@ -272,6 +251,68 @@ def _fits(r: rd.Reducer, env) -> bool:
 def _from_sweep(space: rd.SweepResult, i: int, params: rd.ReducerParams) -> rd.Reducer:
     ratios = space.ratios_out_to_in(i)
     return rd.evaluate(ratios, [int(space.rows_out[i])] + [2] * (len(ratios) - 1), params)
+
+
+def _optimum(space, q_total, objective, params, env) -> rd.Reducer | None:
+    """The best of the design space; within an envelope the optimum lies on it, between
+    grid points, and the best grid point is polished (without one the boundary points the
+    sweep adds hold the mass optimum)."""
+    d_max, l_max = env.max_outer_diameter_mm, env.max_length_mm
+    if d_max is None and l_max is None:
+        i = rd.best(space, objective)
+        return None if i is None else _from_sweep(space, i, params)
+    found = rd.refine(q_total, params, space, objective, d_max, l_max)
+    if found is None:
+        return None
+    ratios, rows = found
+    return rd.evaluate(ratios, [rows] + [2] * (len(ratios) - 1), params)
+
+
+def _pareto(space, design: rd.Reducer, params, env, trace) -> ParetoOut:
+    """The non-dominated set of the design space (thinned) and where ``design`` stands."""
+    d_max, l_max = env.max_outer_diameter_mm, env.max_length_mm
+    eta = params.stage_efficiency
+    front = rd.pareto(space, eta, d_max, l_max)
+    shown = rd.thin(front, PARETO_POINTS)
+    j = rd.dominator(space, design, d_max, l_max)
+    point = _pareto_point(space, j, eta) if j is not None else None
+    trace.apply(
+        wg_rules.compare_with_front,
+        int(front.size),
+        int(shown.size),
+        {
+            "mass_kg": design.mass_kg,
+            "outer_diameter_mm": design.outer_diameter_mm,
+            "length_mm": design.length_mm,
+            "stages": len(design.stages),
+        },
+        None if point is None else point.model_dump(),
+    )
+    return ParetoOut.make(
+        objectives=["least mass", "least outer diameter", "least length", "highest efficiency"],
+        front_size=int(front.size),
+        adopted="on the front" if point is None else "dominated",
+        dominated_by=point,
+        stages=[int(space.stages[i]) for i in shown],
+        ratios=[space.ratios_out_to_in(int(i)) for i in shown],
+        rows_out=[int(space.rows_out[i]) for i in shown],
+        mass_kg=[float(space.mass_kg[i]) for i in shown],
+        outer_diameter_mm=[float(space.outer_diameter_mm[i]) for i in shown],
+        length_mm=[float(space.length_mm[i]) for i in shown],
+        efficiency=[eta ** int(space.stages[i]) for i in shown],
+    )
+
+
+def _pareto_point(space: rd.SweepResult, i: int, eta: float) -> ParetoPointOut:
+    return ParetoPointOut.make(
+        stages=int(space.stages[i]),
+        ratios=space.ratios_out_to_in(i),
+        rows_out=int(space.rows_out[i]),
+        mass_kg=float(space.mass_kg[i]),
+        outer_diameter_mm=float(space.outer_diameter_mm[i]),
+        length_mm=float(space.length_mm[i]),
+        efficiency=eta ** int(space.stages[i]),
+    )
 
 
 def _no_reducer(space: rd.SweepResult, torque: float, env) -> InfeasibleError:
@@ -307,7 +348,7 @@ def _no_reducer(space: rd.SweepResult, torque: float, env) -> InfeasibleError:
     )
 
 
-def _checks(design: rd.Reducer, env, load: float, ref_current: float) -> list[Check]:
+def _checks(design: rd.Reducer, env, losses_W: float, limit_W: float, basis: str) -> list[Check]:
     checks = []
     if env.max_outer_diameter_mm:
         checks.append(
@@ -358,14 +399,12 @@ def _checks(design: rd.Reducer, env, load: float, ref_current: float) -> list[Ch
             )
         )
     checks.append(
-        Check(
-            "motor_current",
-            "motor current against the reference design's current",
-            ref_current * load,
-            ref_current,
-            "A",
-            1.0 / load,
-            SEED_000 + ": the reference motor's thermal rating",
+        bm.losses_check(
+            "motor_losses",
+            "motor total losses against what the frame's cooling carries",
+            losses_W,
+            limit_W,
+            f"{SEED_000}, eqs. (4), (5), (9): {basis}",
         )
     )
     return checks
@@ -418,7 +457,7 @@ def _losses(d: dict) -> LossesOut:
 
 
 def _motor_out(
-    chosen, candidates, ref, steel, steel_mass, f_opt, n_opt, torque, load
+    chosen, candidates, ref, steel, steel_mass, f_opt, n_opt, limit, basis
 ) -> BldcMotorOut:
     options = [c for c in bldc.pole_slot_combinations(3, 36) if c.pole_pairs == ref.pole_pairs]
     return BldcMotorOut.make(
@@ -426,9 +465,11 @@ def _motor_out(
         speed_rpm=chosen["speed_rpm"],
         pole_pairs=ref.pole_pairs,
         electrical_frequency_Hz=chosen["frequency_Hz"],
-        torque_Nm=torque,
-        current_A=ref.current_A * load,
+        torque_Nm=chosen["torque_Nm"],
+        current_A=chosen["current_A"],
         losses_W=_losses(chosen["losses"]),
+        loss_limit_W=limit,
+        loss_limit_basis=basis,
         optimum_frequency_Hz=f_opt,
         optimum_speed_rpm=n_opt,
         steel=SteelOut.make(
@@ -451,7 +492,7 @@ def _motor_out(
                 gearbox_efficiency=c["eta"],
                 torque_Nm=c["torque_Nm"],
                 current_A=c["current_A"],
-                within_rating=c["load"] <= 1.0 + 1e-9,
+                within_loss_limit=bl_rules.within_limit(c["losses"]["total"], limit),
                 losses_W=_losses(c["losses"]),
                 iron_loss_three_term_W=c["iron_three_term_W"],
             )

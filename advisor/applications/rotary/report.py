@@ -19,7 +19,7 @@ class SpeedCandidateOut(_Out):
     gearbox_efficiency: float
     torque_Nm: float
     current_A: float
-    within_rating: bool
+    within_loss_limit: bool
     losses_W: LossesOut
     iron_loss_three_term_W: float
 
@@ -51,6 +51,8 @@ class BldcMotorOut(_Out):
     torque_Nm: float
     current_A: float
     losses_W: LossesOut
+    loss_limit_W: float
+    loss_limit_basis: str
     optimum_frequency_Hz: float
     optimum_speed_rpm: float
     steel: SteelOut
@@ -83,8 +85,9 @@ class GearboxSummaryOut(_Out):
 
 
 class SweepOut(_Out):
-    configurations: int
-    feasible: int
+    configurations: int  # built and computed: each realises the ratio within the stage limits
+    feasible: int  # of those, the ones whose every stage fits the common diameter
+    stage_counts: list[int]
     objective_mass: str
     objective_diameter: str
 
@@ -93,6 +96,32 @@ class Fig1Out(_Out):
     q: list[float]
     rows: list[int]
     volume_per_torque_cm3_per_Nm: list[list[float]]
+
+
+class ParetoPointOut(_Out):
+    stages: int
+    ratios: list[float]  # output first
+    rows_out: int
+    mass_kg: float
+    outer_diameter_mm: float
+    length_mm: float
+    efficiency: float
+
+
+class ParetoOut(_Out):
+    """The front as columns (one entry per design shown, lightest first), like ``fig1``."""
+
+    objectives: list[str]
+    front_size: int
+    adopted: str  # "on the front" | "dominated"
+    dominated_by: ParetoPointOut | None = None
+    stages: list[int]
+    ratios: list[list[float]]  # output first
+    rows_out: list[int]
+    mass_kg: list[float]
+    outer_diameter_mm: list[float]
+    length_mm: list[float]
+    efficiency: list[float]
 
 
 class GearboxOut(GearboxSummaryOut):
@@ -104,6 +133,7 @@ class GearboxOut(GearboxSummaryOut):
     optimum: GearboxSummaryOut
     optimum_min_diameter: GearboxSummaryOut
     sweep: SweepOut
+    pareto: ParetoOut
     fig1: Fig1Out
 
 

@@ -78,6 +78,16 @@ class ReferenceMotor(_Strict):
         MagnetLossPoint(speed_rpm=10000.0, loss_W=100.0),
     ]
 
+    @model_validator(mode="after")
+    def _one_loss_per_speed(self) -> "ReferenceMotor":
+        speeds = [p.speed_rpm for p in self.magnet_losses]
+        if len(set(speeds)) < len(speeds):
+            raise ValueError(
+                "motor.reference.magnet_losses: two points at one speed_rpm; give one loss_W "
+                "per speed"
+            )
+        return self
+
 
 class BldcMotorReq(_Strict):
     kind: Annotated[Literal["bldc"], Field(description="motor type")]
@@ -92,6 +102,15 @@ class BldcMotorReq(_Strict):
         ),
     ] = [5000.0, 10000.0]  # noqa: RUF012 - pydantic copies field defaults
     phases: Annotated[int, Field(ge=3, le=3, description="number of phases")] = 3
+    max_losses_W: Annotated[
+        float | None,
+        _num(
+            gt=0,
+            le=1e6,
+            desc="total losses the motor's cooling carries away, W; by default the reference "
+            "motor's own total losses at its rated point (same frame, same cooling)",
+        ),
+    ] = None
     reference: ReferenceMotor = ReferenceMotor()
 
 

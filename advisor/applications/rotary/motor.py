@@ -1,0 +1,91 @@
+"""The PM brushless motor at a working point: its losses, and the limit of its frame.
+
+Rewinding the reference frame for another speed at the same voltage scales the turns and the
+torque constant as 1/n and the resistance as 1/n², so at a given torque the copper loss does
+not depend on the winding and the current grows as n (seed 000, eqs. (4), (9)). The frame's
+limit is thermal: its total losses against what its cooling carries, by default the reference
+motor's own total losses at its rated point. Helpers of
+:mod:`advisor.applications.rotary.advice`; the physics is in :mod:`advisor.calc.bldc`, the rule
+in :mod:`rules.bldc`.
+"""
+
+import math
+
+from advisor.applications.rotary.requirements import BldcMotorReq
+from advisor.calc import bldc
+from advisor.calc.sizing import Check
+from advisor.core.errors import InfeasibleError
+from rules import bldc as bl_rules
+
+
+def specific_iron_loss(ref, steel, terms, f: float) -> tuple[float, float]:
+    """Specific iron loss at f by the model in use, and by the three-term eq. (5) beside it."""
+    spec_quad = (
+        bldc.iron_specific_loss_quadratic(steel.p15_50_W_kg, f) * (ref.induction_T / 1.5) ** 2
+    )
+    spec_three = terms.specific_loss(f, ref.induction_T)
+    return (spec_quad if ref.iron_loss_model == "quadratic" else spec_three), spec_three
+
+
+def losses_at(ref, iron_W: float, n: float, torque: float) -> dict[str, float]:
+    """Losses of the frame wound for speed n at a motor torque, seed 000 eqs. (4), (5), (9):
+    the copper loss depends on the torque alone, whatever the winding."""
+    ohmic_ref = ref.conducting_phases * ref.phase_resistance_ohm * ref.current_A**2
+    losses = {
+        "ohmic": bldc.ohmic_loss_at_torque(ohmic_ref, ref.torque_Nm, torque),
+        "iron": iron_W,
+        "magnets": bldc.magnet_loss([(p.speed_rpm, p.loss_W) for p in ref.magnet_losses], n),
+    }
+    losses["total"] = sum(losses.values())
+    return losses
+
+
+def loss_limit(mot: BldcMotorReq, steel, steel_mass: float, terms) -> tuple[float, str]:
+    """What the frame's cooling carries: the requirement's own figure, or the reference
+    motor's total losses at its rated point (same frame, same cooling)."""
+    if mot.max_losses_W is not None:
+        return mot.max_losses_W, f"the requirement's motor.max_losses_W = {mot.max_losses_W:g} W"
+    ref = mot.reference
+    spec, _ = specific_iron_loss(
+        ref, steel, terms, bldc.flux_frequency_Hz(ref.speed_rpm, ref.pole_pairs)
+    )
+    total = losses_at(ref, steel_mass * spec, ref.speed_rpm, ref.torque_Nm)["total"]
+    return total, (
+        f"the reference motor's total losses at its rated point ({ref.speed_rpm:g} rpm, "
+        f"{ref.torque_Nm:g} N·m at {ref.current_A:g} A): {total:.4g} W, same frame, same cooling"
+    )
+
+
+def _w(x: float) -> str:
+    """A power in W as an engineer writes it: four figures, no exponent."""
+    return f"{x:.4g}" if abs(x) < 1e4 else f"{x:.0f}"
+
+
+def too_lossy(cands: list[dict], limit: float, basis: str, n_opt: float) -> InfeasibleError:
+    shown = sorted(cands, key=lambda c: c["losses"]["total"])[:3]
+    reasons = [
+        f"at {c['speed_rpm']:g} rpm the reducer (q = {c['q_total']:.4g}, η = {c['eta']:.3g}) "
+        f"asks {c['torque_Nm']:.3g} N·m of the motor ({c['current_A']:.3g} A): losses "
+        f"{_w(c['losses']['total'])} W (ohmic {_w(c['losses']['ohmic'])}, iron "
+        f"{_w(c['losses']['iron'])}, magnets {_w(c['losses']['magnets'])}) against the limit "
+        f"{_w(limit)} W"
+        for c in shown
+    ]
+    if len(cands) > len(shown):
+        reasons.append(f"and {len(cands) - len(shown)} more candidate speeds, lossier still")
+    reasons.append(
+        f"the limit is {basis}; give a larger frame in [motor.reference], motor.max_losses_W "
+        "for a better cooling, or a lower rotary.torque_Nm"
+        + (f" (eq. (10): least loss near {n_opt:.0f} rpm)" if math.isfinite(n_opt) else "")
+    )
+    return InfeasibleError(
+        "no feasible design: the motor's losses exceed what its frame's cooling carries", reasons
+    )
+
+
+def losses_check(id: str, name: str, losses_W: float, limit_W: float, source: str) -> Check:
+    """Losses against the frame's limit; at the limit within rounding the margin is 1."""
+    margin = limit_W / losses_W if losses_W > 0 else math.inf
+    if bl_rules.within_limit(losses_W, limit_W):
+        margin = max(margin, 1.0)
+    return Check(id, name, losses_W, limit_W, "W", margin, source)
