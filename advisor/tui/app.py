@@ -128,10 +128,7 @@ class ExportScreen(ModalScreen[None]):
 
     def compose(self) -> ComposeResult:
         with Vertical(id="dialog"):
-            yield Label(
-                "Export to (.toml; a report also as .json, .md or .html, by the suffix; an "
-                "existing file asks before it is replaced):"
-            )
+            yield Label("Export to (.toml; a report also .json, .md or .html; asks to replace):")
             yield _input(str(self.default), "export-path")
             yield Static("", id="export-error", classes="error")
             with Horizontal():
