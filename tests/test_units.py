@@ -186,3 +186,14 @@ def test_the_schema_allows_the_strings_on_number_fields_only():
     assert starts["type"] == "integer" and "anyOf" not in starts
     text = json.dumps(schema)
     assert '"type": "number"' in text and text.count(quantity["pattern"].replace("\\", "\\\\")) > 10
+
+
+def test_the_wizard_opens_a_file_with_units_in_si():
+    from advisor.tui.draft import shape
+
+    doc = _linear(force_N="3.5 kN", stroke_m="5 kN")
+    shaped, problems = shape(doc)
+    assert shaped["linear"]["force_N"] == 3500.0
+    # a wrong one stays in its field to be fixed, named
+    assert shaped["linear"]["stroke_m"] == "5 kN"
+    assert problems == ["linear.stroke_m = '5 kN': must be a number; fix it here"]
