@@ -3,7 +3,6 @@ every plot the report has data for, the same without plots as Markdown, the repo
 matplotlib only on the HTML path, deterministic SVG."""
 
 import json
-import os
 import subprocess
 import sys
 import tomllib
@@ -251,15 +250,16 @@ def _run(code: str) -> subprocess.CompletedProcess:
     return subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
 
 
-def test_matplotlib_only_on_the_html_path():
+def test_matplotlib_only_on_the_html_path(tmp_path):
     src = str(EXAMPLES / "rudder_actuator.toml")
+    out = tmp_path / "design."
     code = (
         "import sys\n"
         "from advisor.cli import main\n"
         "for fmt in ('toml', 'json', 'md'):\n"
-        f"    assert main(['--batch', {src!r}, '--format', fmt, '-o', {os.devnull!r}]) == 0\n"
+        f"    assert main(['--batch', {src!r}, '--format', fmt, '-o', {str(out)!r} + fmt]) == 0\n"
         "print('MPL', 'matplotlib' in sys.modules)\n"
-        f"assert main(['--batch', {src!r}, '--format', 'html', '-o', {os.devnull!r}]) == 0\n"
+        f"assert main(['--batch', {src!r}, '--format', 'html', '-o', {str(out)!r} + 'html']) == 0\n"
         "print('MPL', 'matplotlib' in sys.modules)\n"
     )
     r = _run(code)

@@ -258,6 +258,11 @@ def format_validation_error(exc: ValidationError, root: Any) -> list[str]:
             lines.append(f"{where} = {shown}: {what}{desc}")
     if len(unknown) > MAX_UNKNOWN_SHOWN:
         lines.append(f"… and {len(unknown) - MAX_UNKNOWN_SHOWN:,} more unknown keys")
+    return capped(lines)
+
+
+def capped(lines: list[str]) -> list[str]:
+    """At most :data:`MAX_PROBLEMS_SHOWN` lines, the last saying how many more there are."""
     if len(lines) > MAX_PROBLEMS_SHOWN:
         more = len(lines) - MAX_PROBLEMS_SHOWN + 1
         lines = [*lines[: MAX_PROBLEMS_SHOWN - 1], f"… and {more:,} more problems"]
@@ -298,7 +303,10 @@ def parse_requirements(data: dict[str, Any]) -> Requirements:
     from advisor.core.units import convert
     from advisor.ignored import contradictions
 
-    data = convert(data, model)  # "5 kN" → 5000 (pint only if such a string is there)
+    try:
+        data = convert(data, model)  # "5 kN" → 5000 (pint only if such a string is there)
+    except InputError as exc:
+        raise InputError(*capped(exc.messages)) from None
     conflicts = contradictions(data)
     try:
         req = model.model_validate(data)

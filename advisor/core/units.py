@@ -133,6 +133,8 @@ def to_unit(text: str, unit: str) -> float:
     """
     if _NUMBER.match(text):  # a number in quotes: a slip, or a unit left out
         n = text.strip()
+        if len(n) > 24:
+            raise UnitError("must be a number, or a quantity with its unit; not a number in quotes")
         raise UnitError(
             f"must be a number ({n})"
             + (f' or a quantity with its unit ("{n} {unit}")' if unit else "")
@@ -290,6 +292,8 @@ def _one(text: str, unit: str, ann: Any, path: tuple[Any, ...], errors: list[str
     try:
         value = to_unit(text, unit)
     except UnitError as exc:
-        errors.append(f"{_where(path)} = {text!r}: {exc}")
+        from advisor.io_safety import show_repr
+
+        errors.append(f"{_where(path)} = {show_repr(text)}: {exc}")
         return text
     return value

@@ -301,7 +301,7 @@ def svg(plot: Plot, salt: str) -> str:
             if line.style == "marker":
                 ax.plot(line.x, line.y, "o", markersize=8, label=line.label, zorder=5)
             elif line.style == "points":
-                ax.plot(line.x, line.y, ".-", markersize=6, linewidth=0.8, label=line.label)
+                ax.plot(line.x, line.y, ".", markersize=7, label=line.label)  # no curve between
             elif line.style == "steps":
                 ax.step(line.x, line.y, where="post", label=line.label)
             else:
