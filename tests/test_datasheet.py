@@ -30,6 +30,13 @@ PLOTS = {
     "valve_actuator_hold.toml": ["motor-losses", "reducer-design-space", "reducer-fig1"],
     "positioning_drive.toml": ["move-time-ratio"],
     "gyro_compensator.toml": ["run-up", "slew"],
+    "rudder_actuator_duty.toml": [
+        "motor-losses",
+        "reducer-design-space",
+        "reducer-fig1",
+        "duty",
+        "duty-thermal",
+    ],
 }
 
 
@@ -154,6 +161,20 @@ def test_numbers_read_as_engineers_write_them():
     assert number(0.219099) == "0.2191"
     assert number(1200.0) == "1200"
     assert number(-2.51905) == "-2.519"
+
+
+def test_the_duty_plot_steps_through_the_phases(reports):
+    doc = plain(reports["rudder_actuator_duty.toml"])
+    d = duty(doc)
+    phases = doc["design"]["duty"]["phases"]
+    torque = d.lines[0]
+    assert torque.y[:-1] == [p["torque_Nm"] for p in phases]
+    assert torque.x[-1] == pytest.approx(sum(p["time_s"] for p in phases))
+    assert torque.x[-1] == pytest.approx(doc["design"]["duty"]["cycle_time_s"])
+    assert [y for y, _ in d.hlines] == [
+        doc["design"]["duty"]["rms_torque_Nm"],
+        doc["design"]["duty"]["peak_torque_limit_Nm"],
+    ]
 
 
 def test_pareto_front_and_duty_when_the_report_has_them():

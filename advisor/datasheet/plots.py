@@ -226,12 +226,13 @@ def slew(doc: dict) -> Plot | None:
 
 
 def duty(doc: dict) -> Plot | None:
-    """Torque against time over the duty cycle, where the report has one: arrays
-    (``time_s`` and ``…_Nm``) or segments (``duration_s`` and ``torque_Nm`` each)."""
+    """Motor torque against time over the duty cycle, where the report has one: its phases
+    (each ``time_s`` or ``duration_s`` long at ``torque_Nm``) as steps, or arrays
+    (``time_s`` and ``…_Nm``); the RMS torque and the peak limit as lines."""
     d = _get(doc, "design", "duty")
     if not isinstance(d, dict):
         return None
-    segments = next(
+    phases = next(
         (
             v
             for v in d.values()
@@ -244,21 +245,43 @@ def duty(doc: dict) -> Plot | None:
         for k, v in d.items():
             if k.endswith("_Nm") and isinstance(v, list) and len(v) == len(d["time_s"]):
                 lines.append(Line(k.removesuffix("_Nm").replace("_", " "), d["time_s"], v, "steps"))
-    elif segments and all("duration_s" in s and "torque_Nm" in s for s in segments):
+    elif phases and all(("duration_s" in s or "time_s" in s) and "torque_Nm" in s for s in phases):
         t, xs, ys = 0.0, [], []
-        for s in segments:
-            xs += [t]
-            ys += [s["torque_Nm"]]
-            t += s["duration_s"]
+        for s in phases:
+            xs.append(t)
+            ys.append(s["torque_Nm"])
+            t += s.get("duration_s", s.get("time_s", 0.0))
         xs.append(t)
-        ys.append(segments[-1]["torque_Nm"])
-        lines.append(Line("torque", xs, ys, "steps"))
+        ys.append(phases[-1]["torque_Nm"])
+        lines.append(Line("motor torque", xs, ys, "steps"))
     if not lines:
         return None
+    hlines = []
     rms = next((v for k, v in d.items() if "rms" in k and isinstance(v, int | float)), None)
-    hlines = [(rms, f"rms {rms:.4g} N·m")] if rms is not None else []
+    if rms is not None:
+        hlines.append((rms, f"RMS {rms:.4g} N·m"))
+    limit = d.get("peak_torque_limit_Nm")
+    if isinstance(limit, int | float):
+        hlines.append((limit, f"peak limit {limit:.4g} N·m"))
     return Plot(
         "duty", "Duty cycle: torque against time", "time, s", "torque, N·m", lines, [], hlines
+    )
+
+
+def duty_thermal(doc: dict) -> Plot | None:
+    """The winding's temperature rise over repeated duty cycles against its limit."""
+    th = _get(doc, "design", "duty", "thermal")
+    if not isinstance(th, dict) or not th.get("time_s") or not th.get("rise_K"):
+        return None
+    lim = th.get("limit_rise_K")
+    return Plot(
+        "duty-thermal",
+        "Winding temperature rise over repeated cycles",
+        "time, s",
+        "rise, K",
+        [Line("rise", th["time_s"], th["rise_K"])],
+        [],
+        [(lim, f"limit {lim:g} K")] if isinstance(lim, int | float) else [],
     )
 
 
@@ -271,6 +294,7 @@ PLOTS = (
     run_up,
     slew,
     duty,
+    duty_thermal,
 )
 
 
