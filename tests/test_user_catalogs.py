@@ -25,7 +25,7 @@ def test_the_examples_load_and_their_rows_are_there():
     shipped = _load_and_validate(None)
     cat = _load_and_validate(USER)
     assert len(cat.motors) == len(shipped.motors) + 1
-    assert any(m.model == "AIR71B4-example" for m in cat.motors)
+    assert any(m.model == "AIR160M2-example" and m.rated_power_kW == 18.5 for m in cat.motors)
     assert [t.name for t in cat.threads if t.d_mm == 110] == ["Tr110x20", "Tr110x12", "Tr110x4"]
     assert cat.thread("Tr110x12").preferred
     assert cat.electrical_steel("2212", 0.5) is not None
