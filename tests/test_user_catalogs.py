@@ -59,3 +59,38 @@ def test_a_materials_file_missing_a_pair_is_refused(tmp_path, capsys, monkeypatc
     err = capsys.readouterr().err
     assert err.count("\n") == 1
     assert "[[pair]] 'steel_steel' missing; a user materials file replaces the shipped one" in err
+
+
+def test_a_user_motor_of_the_same_power_and_poles_as_a_catalog_motor(tmp_path, capsys, monkeypatch):
+    """A user 0.75 kW 4-pole motor beside the shipped 4A71B4 (same rating, a stronger start
+    and breakdown) used to trip an internal assertion (exit 1): the motor line was keyed by
+    rated power, so one of the two was dropped. Either may be chosen; the run must succeed
+    and the report's motor must be one of them."""
+    monkeypatch.setenv("DRIVE_ADVISOR_NO_CACHE", "1")
+    (tmp_path / "induction_4a.toml").write_text(
+        """supply_frequency_Hz = 50
+[sources]
+own = "a user's datasheet (test)"
+[[motor]]
+model = "USER-0.75-4"
+poles = 4
+rated_power_kW = 0.75
+rated_speed_rpm = 1400.0
+slip_pct = 6.7
+breakdown_torque_ratio = 2.4
+starting_torque_ratio = 2.2
+efficiency_pct = 75.0
+cos_phi = 0.75
+starting_current_ratio = 5.0
+inertia_kgm2 = 0.0015
+mass_kg = 14.0
+source = "own"
+estimated = []
+""",
+        encoding="utf-8",
+    )
+    out = tmp_path / "r.toml"
+    src = EXAMPLES / "linear_screw_actuator.toml"
+    assert main(["--batch", str(src), "--catalog-dir", str(tmp_path), "-o", str(out)]) == 0
+    text = out.read_text(encoding="utf-8")
+    assert 'model = "USER-0.75-4"' in text or 'model = "4A71B4"' in text

@@ -88,7 +88,10 @@ def plan_motor(
 ) -> MotorPlan:
     """The chosen motor's pole pairs, its rated-power band and the evaluated neighbours."""
     pp = motor.pole_pairs
+    # the band shows one motor per rated power; the chosen one must be the one at its power
+    # (a user catalog may hold another motor of the same rating and poles)
     line = {m.rated_power_kW: m for m in cat.motors_with_poles(2 * pp)}
+    line[motor.rated_power_kW] = motor
 
     def evaluate(power: float) -> MotorEvaluation | None:
         m = line.get(power)
