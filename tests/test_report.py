@@ -95,7 +95,7 @@ def test_toml_text_writes_what_tomli_w_writes_for_every_example(example):
     from advisor.core.engine import advise
     from advisor.core.requirements import read_requirements
 
-    plain = rp._plain(advise(read_requirements(example)))
+    plain = rp.archive(rp._plain(advise(read_requirements(example))))
     assert rp.to_toml(advise(read_requirements(example))) == tomli_w.dumps(plain)
 
 
