@@ -1,8 +1,9 @@
 """Rules of the brushless motor choice (seed 000)."""
 
+from advisor.core.cite import cite
 from advisor.core.rulebook import Finding, rule
 
-SEED_000 = "000_e109c3d4c17eaf1c.txt"
+SEED_000 = cite("seed-000")
 
 
 @rule("BL-01", "Type of motor", SEED_000)

@@ -1,8 +1,9 @@
 """Rules of the positioning drive (seed 003)."""
 
+from advisor.core.cite import cite
 from advisor.core.rulebook import Finding, rule
 
-SEED_003 = "003_9e41cc3901572aaa.txt"
+SEED_003 = cite("seed-003")
 
 
 @rule("MO-01", "Gear ratio of each motor", SEED_003)

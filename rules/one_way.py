@@ -1,8 +1,9 @@
 """Rules of the one-way (holding) device (seed 004)."""
 
+from advisor.core.cite import cite
 from advisor.core.rulebook import Finding, rule
 
-SEED_004 = "004_ce1464ec9bc33bf8.txt"
+SEED_004 = cite("seed-004")
 
 NAMES = {
     "roller_clutch": "roller irreversible clutch",

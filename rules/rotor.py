@@ -1,8 +1,9 @@
 """Rules of the spinning-rotor drive (seed 002)."""
 
+from advisor.core.cite import cite
 from advisor.core.rulebook import Finding, rule
 
-SEED_002 = "002_4f513db63d3429ac.txt"
+SEED_002 = cite("seed-002")
 
 
 @rule("RO-01", "Design load on the bearings", SEED_002)

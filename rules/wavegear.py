@@ -2,10 +2,11 @@
 
 import math
 
+from advisor.core.cite import cite
 from advisor.core.rulebook import Finding, rule
 
-SEED_000 = "000_e109c3d4c17eaf1c.txt"
-TEXTBOOK = "Gerashchenko, Postnikov, Samsonovich, textbook (2010), fig. 1.72, cited by seed 000"
+SEED_000 = cite("seed-000")
+TEXTBOOK = cite("textbook-2010", "fig. 1.72, cited by seed 000")
 
 #: The output ratio the seed prefers, and its range (minimum outer diameter).
 Q_OUT_PREFERRED = 20.0
@@ -35,7 +36,7 @@ def _output_diameter_factor(q: float, rows: int = 3) -> float:
     ) ** (1.0 / 3.0)
 
 
-@rule("WG-02", "Stage count and split of the ratio", SEED_000 + "; " + TEXTBOOK)
+@rule("WG-02", "Stage count and split of the ratio", SEED_000 + TEXTBOOK)
 def split_ratio(total_ratio: float, q_min: float, q_max: float) -> Finding[list[float] | None]:
     """Output stage q_out = 20 (12…20 gives the smallest outer diameter), the stage next to
     it 12, the remainder to the input stage; the fewest stages whose ratios stay within the

@@ -43,6 +43,7 @@ class CheckOut(_Out):
     margin: float
     passed: bool
     source: str
+    sources: list[str] = []
 
 
 class DecisionOut(_Out):
@@ -51,7 +52,42 @@ class DecisionOut(_Out):
     decision: str
     rationale: str
     source: str
+    sources: list[str] = []
     inputs: dict[str, Any] = {}
+
+
+class SourceOut(_Out):
+    """One entry of the bibliography (catalogs/bibliography.toml) the report cites."""
+
+    id: str
+    short: str
+    authors: list[str]
+    title: str
+    journal: str | None = None
+    volume: str | None = None
+    year: int | None = None
+    institution: str | None = None
+    publisher: str | None = None
+    number: str | None = None
+    note: str | None = None
+    file: str | None = None
+
+    def reference(self) -> str:
+        """The full reference in one line, as a reader would look it up."""
+        head = ", ".join(self.authors)
+        sep = " " if head.endswith(".") else ". "
+        parts = [f"{head}{sep}{self.title}" if head else self.title]
+        for x in (self.number, self.journal, self.volume and f"vol. {self.volume}"):
+            if x:
+                parts.append(x)
+        for x in (self.institution, self.publisher, self.year and str(self.year)):
+            if x:
+                parts.append(x)
+        if self.note:
+            parts.append(f"({self.note})")
+        if self.file:
+            parts.append(f"seed file {self.file}")
+        return ". ".join(parts)
 
 
 class ReportHeader(_Out):
@@ -69,6 +105,7 @@ class Report(_Out):
     checks: list[CheckOut]
     warnings: list[str] = []
     decisions: list[DecisionOut]
+    sources: list[SourceOut] = []
 
 
 def round_sig(x: float, digits: int = 6) -> float:

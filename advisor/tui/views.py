@@ -69,21 +69,30 @@ def decisions(report) -> Table:
     t = Table(expand=True)
     t.add_column("rule", no_wrap=True)
     t.add_column("decision and rationale", ratio=1)
+    refs = {s.id: s.reference() for s in getattr(report, "sources", [])}
     for d in report.decisions:
         t.add_row(
             f"{d.id}\n{d.title}",
-            Text.assemble((d.decision, "bold"), "\n", d.rationale, "\n", (d.source, "dim")),
+            Text.assemble(
+                (d.decision, "bold"), "\n", d.rationale, "\n", (d.source, "dim"), _refs(d, refs)
+            ),
         )
     return t
+
+
+def _refs(item, refs: dict[str, str]) -> str:
+    """The full references of the sources a decision or a check rests on."""
+    return "".join(f"\n  [{i}] {refs[i]}" for i in getattr(item, "sources", []) if i in refs)
 
 
 def checks(report) -> Table:
     t = Table(expand=True)
     for col in ("check", "value", "limit", "margin", ""):
         t.add_column(col, justify="left" if col == "check" else "right")
+    refs = {s.id: s.reference() for s in getattr(report, "sources", [])}
     for c in report.checks:
         t.add_row(
-            c.name,
+            Text.assemble(c.name, "\n", (c.source, "dim"), _refs(c, refs)),
             f"{c.value:.4g} {c.unit}".strip(),
             f"{c.limit:.4g} {c.unit}".strip(),
             f"{c.margin:.3f}",
