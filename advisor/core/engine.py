@@ -12,6 +12,7 @@ from advisor.core.errors import InfeasibleError
 from advisor.core.report import CheckOut, DecisionOut, Report, ReportHeader, SourceOut
 from advisor.core.requirements import Requirements
 from advisor.core.rulebook import Trace
+from advisor.ignored import ignored
 from catalogs import load_catalogs
 
 
@@ -67,7 +68,7 @@ def advise(req: Requirements, catalog_dir: Path | None = None) -> Report:
             )
             for c in checks
         ],
-        warnings=warnings,
+        warnings=[*ignored(req), *warnings],
         decisions=[
             DecisionOut.make(
                 id=d.id,

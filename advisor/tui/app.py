@@ -11,6 +11,7 @@ from pathlib import Path
 from typing import Any, ClassVar
 
 import tomli_w
+from rich.text import Text
 from textual import on
 from textual.app import App, ComposeResult
 from textual.binding import Binding
@@ -33,6 +34,7 @@ from textual.widgets import (
 )
 
 from advisor.core.errors import InfeasibleError, InputError
+from advisor.io_safety import plain, show
 from advisor.tui import draft as drafts
 from advisor.tui import fields as F
 from advisor.tui import views
@@ -74,6 +76,10 @@ Numbers are SI with the unit shown beside each field.
 """
 
 
+#: At most this many loading problems are listed (then how many more).
+MAX_PROBLEMS = 8
+
+
 def _input(value: str, id: str) -> Input:
     """An input whose cursor does not blink (a steady screen, and steady snapshots)."""
     box = Input(value, id=id)
@@ -106,7 +112,7 @@ class ConfirmScreen(ModalScreen[bool]):
 
     def compose(self) -> ComposeResult:
         with Vertical(id="dialog"):
-            yield Static(self.question, id="question")
+            yield Static(plain(self.question), id="question")
             with Horizontal():
                 yield Button(f"{self.yes} (y)", id="yes", variant="primary")
                 yield Button(f"{self.no} (n)", id="no")
@@ -154,7 +160,7 @@ class ExportScreen(ModalScreen[None]):
             path = path.with_name(path.name.replace(".report.toml", ".toml"))
         if path.exists():
             self.app.push_screen(
-                ConfirmScreen(f"{path} exists. Replace it?", "Replace", "Keep it"),
+                ConfirmScreen(f"{show(path, 200)} exists. Replace it?", "Replace", "Keep it"),
                 lambda yes: self._write(path, what) if yes else None,
             )
         else:
@@ -167,10 +173,13 @@ class ExportScreen(ModalScreen[None]):
             app.write_export(path, what)
         except OSError as exc:
             self.query_one("#export-error", Static).update(
-                f"{path}: cannot write ({exc.strerror}); nothing was written"
+                plain(f"{path}: cannot write ({exc.strerror}); nothing was written")
             )
             return
-        app.notify(f"{what} written to {path}", title="Exported")
+        except InputError as exc:  # a device, a FIFO, a directory: refused, nothing written
+            self.query_one("#export-error", Static).update(plain(str(exc)))
+            return
+        app.notify(f"{what} written to {path}", title="Exported", markup=False)
         self.dismiss()
 
 
@@ -195,9 +204,14 @@ class DriveAdvisorApp(App[None]):
         catalog_dir: Path | None = None,
         save_drafts: bool = True,
         offer_draft: bool = True,
+        problems: list[str] | None = None,
     ) -> None:
         super().__init__()
-        self.doc: dict[str, Any] = copy.deepcopy(doc) if doc else {}
+        # any document (a file, a draft, a test's dict) is shaped so that no widget breaks
+        shaped, found = drafts.shape(copy.deepcopy(doc)) if doc else ({}, [])
+        self.doc: dict[str, Any] = shaped
+        self.load_problems: list[str] = [*(problems or []), *found]
+        self._draft: drafts.Loaded | None = None
         self.source = source
         self.catalog_dir = catalog_dir
         self.save_drafts = save_drafts
@@ -247,11 +261,15 @@ class DriveAdvisorApp(App[None]):
     async def on_mount(self) -> None:
         await self._build_steps()
         self._show_step()
+        self._show_problems(self.load_problems)
         if self.offer_draft:
-            saved = drafts.load_draft()
-            if saved:
-                kind = saved.get("application", {}).get("kind", "?")
-                title = saved.get("application", {}).get("title", "")
+            self._draft = loaded = drafts.load_draft()
+            if loaded.doc is None and loaded.problems:  # unreadable: set aside, say so
+                self._show_problems(loaded.problems)
+            elif loaded.doc:
+                app = loaded.doc.get("application", {})
+                kind = app.get("kind", "?")
+                title = show(app.get("title", ""))
                 self.push_screen(
                     ConfirmScreen(
                         f"A draft from your last session was found: {kind}"
@@ -263,17 +281,29 @@ class DriveAdvisorApp(App[None]):
                     self._resume,
                 )
 
+    def _show_problems(self, problems: list[str]) -> None:
+        """What loading a file or draft changed or could not use: on the first step and as a
+        notification, as plain text (never markup)."""
+        if not problems:
+            return
+        shown = problems[:MAX_PROBLEMS] + (
+            [f"… and {len(problems) - MAX_PROBLEMS:,} more"] if len(problems) > MAX_PROBLEMS else []
+        )
+        text = "\n".join(shown)
+        self.query_one("#step-0-error", Static).update(plain(text))
+        self.notify(text, title="Loaded with problems", severity="warning", markup=False)
+
     async def _resume(self, yes: bool | None) -> None:
-        if yes:
-            saved = drafts.load_draft() or {}
-            self.doc = saved
-            kind = saved.get("application", {}).get("kind")
+        loaded = self._draft
+        if yes and loaded is not None and loaded.doc is not None:
+            self.doc = loaded.doc
+            app = self.doc.get("application", {})
+            kind = app.get("kind")
             for k in F.titles():
                 self.query_one(f"#kind-{k}", RadioButton).value = k == kind
-            self.query_one("#f-application-title", Input).value = saved.get("application", {}).get(
-                "title", ""
-            )
+            self.query_one("#f-application-title", Input).value = app.get("title", "")
             await self._build_steps()
+            self._show_problems(loaded.problems)
         else:
             drafts.clear_draft()
 
@@ -357,7 +387,11 @@ class DriveAdvisorApp(App[None]):
             try:
                 drafts.save_draft(F.prune(self.doc))
             except OSError as exc:
-                self.notify(f"the draft cannot be saved ({exc.strerror})", severity="warning")
+                self.notify(
+                    f"the draft cannot be saved ({exc.strerror})", severity="warning", markup=False
+                )
+            except InputError as exc:  # the draft's place is a directory, a FIFO, a device
+                self.notify(f"the draft cannot be saved: {exc}", severity="warning", markup=False)
 
     @on(RadioSet.Changed, "#kind")
     async def _kind_changed(self, event: RadioSet.Changed) -> None:
@@ -378,7 +412,7 @@ class DriveAdvisorApp(App[None]):
         value, err = F.parse_text(f, event.value)
         label = self.query(f"#{f.id}-err")
         if label:
-            label.first(Label).update(err or "")
+            label.first(Label).update(plain(err or ""))
         if err is None:
             F.put(self.doc, f.path, value)
             self._changed()
@@ -418,7 +452,7 @@ class DriveAdvisorApp(App[None]):
             w = self.query_one(f"#{f.id}")
             if isinstance(w, Input):
                 value, err = F.parse_text(f, w.value)
-                self.query_one(f"#{f.id}-err", Label).update(err or "")
+                self.query_one(f"#{f.id}-err", Label).update(plain(err or ""))
                 if err is None:  # what is on screen is what is checked
                     F.put(self.doc, f.path, value)
                 ok = ok and err is None
@@ -432,11 +466,11 @@ class DriveAdvisorApp(App[None]):
                 None,
             )
             if owner and target is not None and target in F.fields_for(kind, step):
-                self.query_one(f"#{target.id}-err", Label).update(line.split(": ", 1)[-1])
+                self.query_one(f"#{target.id}-err", Label).update(plain(line.split(": ", 1)[-1]))
             else:
                 step_msgs.append(line)
             ok = False
-        self.query_one(f"#step-{step}-error", Static).update("\n".join(step_msgs))
+        self.query_one(f"#step-{step}-error", Static).update(plain("\n".join(step_msgs)))
         return ok
 
     def _engine_errors(self) -> list[str]:
@@ -523,22 +557,27 @@ class DriveAdvisorApp(App[None]):
         self.query_one("#main", ContentSwitcher).current = "wizard"
         self._show_step()
         self.query_one("#review-error", Static).update(
-            "The requirement is not complete or not valid:\n" + "\n".join(messages)
+            plain("The requirement is not complete or not valid:\n" + "\n".join(messages))
         )
         self._done()
 
     def _infeasible(self, exc: InfeasibleError) -> None:
         self.report = None
         self._fill(
-            summary=f"[b]No feasible design.[/b]\n{exc.summary}\n"
-            + "\n".join(f" • {r}" for r in exc.reasons)
+            summary=Text.assemble(
+                ("No feasible design.", "bold"),
+                "\n",
+                plain(exc.summary + "\n" + "\n".join(f" • {r}" for r in exc.reasons)),
+            )
         )
         self._done()
 
     def _crashed(self, exc: Exception) -> None:
         self.query_one("#review-error", Static).update(
-            f"internal error in the calculation ({type(exc).__name__}: {exc}); your input is "
-            "kept — please report it with the exported requirements"
+            plain(
+                f"internal error in the calculation ({type(exc).__name__}: {exc}); your input "
+                "is kept — please report it with the exported requirements"
+            )
         )
         self.notify(f"internal error: {type(exc).__name__}", severity="error")
         self._done()
@@ -588,14 +627,14 @@ class DriveAdvisorApp(App[None]):
 
 
 def run(path: Path | None, catalog_dir: Path | None) -> int:
-    """``advisor`` and ``advisor REQ.toml``: the wizard, prefilled from a file if given."""
-    import tomllib
+    """``advisor`` and ``advisor REQ.toml``: the wizard, prefilled from a file if given.
 
-    doc = None
+    The file is read like a batch input (:func:`advisor.io_safety.read_toml`); one that
+    cannot be read at all is an :class:`InputError` (exit 2, one line); wrong-typed values
+    open with the problems shown."""
+    doc, problems = None, []
     if path is not None:
-        try:
-            doc = tomllib.loads(path.read_text(encoding="utf-8"))
-        except (OSError, UnicodeDecodeError, tomllib.TOMLDecodeError) as exc:
-            raise InputError(f"{path}: cannot be opened in the wizard ({exc})") from None
-    DriveAdvisorApp(doc, path, catalog_dir).run()
-    return 0
+        doc, problems, _ = drafts.open_doc(path)
+    app = DriveAdvisorApp(doc, path, catalog_dir, problems=problems)
+    app.run()
+    return 1 if app.return_code else 0

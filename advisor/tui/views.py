@@ -9,6 +9,7 @@ from rich.text import Text
 
 from advisor.core import registry
 from advisor.core.registry import headline
+from advisor.io_safety import plain
 
 
 def kv(title: str, rows: list[tuple[str, Any]]) -> Table:
@@ -20,25 +21,26 @@ def kv(title: str, rows: list[tuple[str, Any]]) -> Table:
     return t
 
 
-def _fmt(v: Any) -> str:
+def _fmt(v: Any) -> Text:
+    """A cell as plain text: names come from users and catalogs and are never markup."""
     if isinstance(v, bool):
-        return "yes" if v else "no"
+        return plain("yes" if v else "no")
     if isinstance(v, float):
-        return f"{v:.4g}"
-    return str(v)
+        return plain(f"{v:.4g}")
+    return plain(v)
 
 
 def summary(report) -> Group:
     worst = min(report.checks, key=lambda c: c.margin) if report.checks else None
     lines = [
-        Text(report.report.title or report.report.application, style="bold"),
-        Text(headline(report)),
+        plain(report.report.title or report.report.application, "bold"),
+        plain(headline(report)),
         Text(f"status: {report.report.status}, {len(report.checks)} checks passed"),
     ]
     if worst is not None:
-        lines.append(Text(f"lowest margin: {worst.name} — {worst.margin:.3f}"))
+        lines.append(plain(f"lowest margin: {worst.name} — {worst.margin:.3f}"))
     for w in report.warnings:
-        lines.append(Text(f"⚠ {w}", style="yellow"))
+        lines.append(plain(f"⚠ {w}", "yellow"))
     return Group(*lines)
 
 
@@ -72,9 +74,14 @@ def decisions(report) -> Table:
     refs = {s.id: s.reference() for s in getattr(report, "sources", [])}
     for d in report.decisions:
         t.add_row(
-            f"{d.id}\n{d.title}",
+            plain(f"{d.id}\n{d.title}"),
             Text.assemble(
-                (d.decision, "bold"), "\n", d.rationale, "\n", (d.source, "dim"), _refs(d, refs)
+                plain(d.decision, "bold"),
+                "\n",
+                plain(d.rationale),
+                "\n",
+                plain(d.source, "dim"),
+                plain(_refs(d, refs)),
             ),
         )
     return t
@@ -92,7 +99,7 @@ def checks(report) -> Table:
     refs = {s.id: s.reference() for s in getattr(report, "sources", [])}
     for c in report.checks:
         t.add_row(
-            Text.assemble(c.name, "\n", (c.source, "dim"), _refs(c, refs)),
+            Text.assemble(plain(c.name), "\n", plain(c.source, "dim"), plain(_refs(c, refs))),
             f"{c.value:.4g} {c.unit}".strip(),
             f"{c.limit:.4g} {c.unit}".strip(),
             f"{c.margin:.3f}",
