@@ -77,8 +77,13 @@ def _err(message: str) -> None:
     :data:`LINE_CHARS` characters (a message never floods the terminal)."""
     from advisor.io_safety import clip, printable
 
+    room = LINE_CHARS - len(PROG) - 2  # "advisor: " comes first
     for line in message.splitlines() or [message]:
-        print(f"{PROG}: {clip(printable(line), LINE_CHARS)}", file=sys.stderr)
+        text = printable(line)
+        if len(text) > room:  # clip's "… (N characters)" counted in the room
+            tail = f"… ({len(text):,} characters)"
+            text = clip(text, room - len(tail) + 1)
+        print(f"{PROG}: {text}", file=sys.stderr)
 
 
 #: The longest line the command prints on stderr.

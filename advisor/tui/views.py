@@ -71,35 +71,29 @@ def decisions(report) -> Table:
     t = Table(expand=True)
     t.add_column("rule", no_wrap=True)
     t.add_column("decision and rationale", ratio=1)
-    refs = {s.id: s.reference() for s in getattr(report, "sources", [])}
     for d in report.decisions:
         t.add_row(
             plain(f"{d.id}\n{d.title}"),
             Text.assemble(
-                plain(d.decision, "bold"),
-                "\n",
-                plain(d.rationale),
-                "\n",
-                plain(d.source, "dim"),
-                plain(_refs(d, refs)),
+                plain(d.decision, "bold"), "\n", plain(d.rationale), "\n", plain(d.source, "dim")
             ),
         )
+    sources = getattr(report, "sources", [])
+    if sources:  # the full references, once each, below the decisions that cite them
+        t.add_row(
+            plain("sources", "bold"),
+            plain("\n".join(f"[{s.id}] {s.reference()}" for s in sources)),
+        )
     return t
-
-
-def _refs(item, refs: dict[str, str]) -> str:
-    """The full references of the sources a decision or a check rests on."""
-    return "".join(f"\n  [{i}] {refs[i]}" for i in getattr(item, "sources", []) if i in refs)
 
 
 def checks(report) -> Table:
     t = Table(expand=True)
     for col in ("check", "value", "limit", "margin", ""):
         t.add_column(col, justify="left" if col == "check" else "right")
-    refs = {s.id: s.reference() for s in getattr(report, "sources", [])}
     for c in report.checks:
         t.add_row(
-            Text.assemble(plain(c.name), "\n", plain(c.source, "dim"), plain(_refs(c, refs))),
+            Text.assemble(plain(c.name), "\n", plain(c.source, "dim")),
             f"{c.value:.4g} {c.unit}".strip(),
             f"{c.limit:.4g} {c.unit}".strip(),
             f"{c.margin:.3f}",
