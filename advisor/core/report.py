@@ -119,24 +119,36 @@ def round_sig(x: float, digits: int = 6) -> float:
     return round(x, digits - 1 - math.floor(math.log10(abs(x))))
 
 
-def _plain(obj: Any) -> Any:
+class NonFiniteValue(ValueError):
+    """A report value that is nan or inf: a bug of the advice, never written to a file."""
+
+
+def _plain(obj: Any, key: str = "") -> Any:
     """Plain dicts and lists of a report, without None (TOML has no null), floats rounded
-    to six significant digits, fields in their declared order."""
+    to six significant digits, fields in their declared order. A nan or an inf is refused
+    with its key named (:class:`NonFiniteValue`): a report states numbers a reader can check.
+    """
     if isinstance(obj, BaseModel):
         return {
-            name: _plain(getattr(obj, name))
+            name: _plain(getattr(obj, name), _join(key, name))
             for name in type(obj).model_fields
             if getattr(obj, name) is not None
         }
     if isinstance(obj, float):
+        if not math.isfinite(obj):
+            raise NonFiniteValue(f"the report's {key or 'value'} is {obj}: not a finite number")
         return round_sig(obj)
     if isinstance(obj, bool | int | str):
         return obj
     if isinstance(obj, dict):
-        return {str(k): _plain(v) for k, v in obj.items() if v is not None}
+        return {str(k): _plain(v, _join(key, str(k))) for k, v in obj.items() if v is not None}
     if isinstance(obj, list | tuple):
-        return [_plain(v) for v in obj if v is not None]
-    raise TypeError(f"a report cannot hold {type(obj).__name__}: {obj!r}")
+        return [_plain(v, f"{key}[{i}]") for i, v in enumerate(obj) if v is not None]
+    raise TypeError(f"a report cannot hold {type(obj).__name__} at {key}: {obj!r}")
+
+
+def _join(key: str, name: str) -> str:
+    return f"{key}.{name}" if key else name
 
 
 def to_toml(report: Report) -> str:
