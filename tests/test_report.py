@@ -1,5 +1,6 @@
 """Reports are written atomically: a failure never leaves a half-written or lost file."""
 
+import math
 import os
 
 import pytest
@@ -76,3 +77,20 @@ def test_killed_writer_leaves_the_old_file_and_no_one_deletes_its_temp(tmp_path)
     rp.write_atomic(target, "next = true\n")
     assert target.read_text() == "next = true\n"
     assert sorted(tmp_path.iterdir()) == sorted([target, leftovers[0]])
+
+
+def test_a_nan_or_an_inf_is_never_written_and_its_key_is_named():
+    # issue 13: a denormal span once gave margin = inf in a report
+    from advisor.core.report import NonFiniteValue, _Out
+
+    class Inner(_Out):
+        margin: float
+
+    class Outer(_Out):
+        checks: list[Inner]
+
+    good = Outer.make(checks=[Inner.make(margin=1.5)])
+    assert "margin = 1.5" in rp.to_toml(good)
+    for bad in (math.inf, -math.inf, math.nan):
+        with pytest.raises(NonFiniteValue, match=r"checks\[1\]\.margin is"):
+            rp.to_toml(Outer.make(checks=[Inner.make(margin=1.0), Inner.make(margin=bad)]))

@@ -115,13 +115,13 @@ def advise_rotary(req: Requirements, cat: Catalogs, trace: Trace):
             "no feasible design: no candidate speed gives a ratio a wave-gear reducer can make",
             [f"{c['speed_rpm']:g} rpm → q_Σ = {c['q_total']:.4g}" for c in cands],
         )
-    # eq. (10) at the reference speed, with the losses of the model in use
+    # eq. (10) at the reference speed, with the losses of the model in use; where the reference
+    # speed gives no reducer (q_Σ beyond what wave-gear stages make), at the slowest candidate
+    # that does: K_ом and K_маг are constants of the frame, any working point gives them
     at_ref = _candidate(ref.speed_rpm, req, steel, steel_mass, terms, params)
-    if at_ref["split"]:
-        core = at_ref["losses"]["iron"] + at_ref["losses"]["magnets"]
-        f_opt = bldc.optimum_frequency_Hz(at_ref["losses"]["ohmic"], core, at_ref["frequency_Hz"])
-    else:
-        f_opt = math.nan
+    point = at_ref if at_ref["split"] else reducible[0]
+    core = point["losses"]["iron"] + point["losses"]["magnets"]
+    f_opt = bldc.optimum_frequency_Hz(point["losses"]["ohmic"], core, point["frequency_Hz"])
     n_opt = f_opt * 60.0 / ref.pole_pairs
     # the frame's limit is thermal: a speed is a candidate only if its losses are carried
     limit, basis = bm.loss_limit(mot, steel, steel_mass, terms)

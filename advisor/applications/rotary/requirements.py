@@ -5,7 +5,7 @@ validators.
 
 Every number has a physically meaningful range, stated in its description; a value outside it
 is an input error naming the field and the range (exit 2). The ranges span the drives the
-seed's model describes — a reducer from about Ø10 mm (0.1 N·m) to about Ø1 m (10⁵ N·m), a
+seed's model describes — a reducer from about Ø10 mm (1 N·m) to about Ø1 m (10⁵ N·m), a
 motor frame from a few watts to hundreds of kilowatts — and keep every quantity the advice
 computes finite (issue 13).
 """
@@ -21,9 +21,9 @@ class RotaryReq(_Strict):
     torque_Nm: Annotated[
         float,
         _num(
-            ge=0.1,
+            ge=1,
             le=1e5,
-            desc="peak output torque, 0.1 … 10⁵ N·m",
+            desc="peak output torque, 1 … 10⁵ N·m",
             label="Output torque",
             step=1,
         ),
