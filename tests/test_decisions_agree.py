@@ -179,3 +179,154 @@ def test_round_ratios_at_a_stage_limit_are_no_knife_edge(q):
         return [(round(s["ratio"], 4), s["rows"]) for s in rep["design"]["gearbox"]["stages"]]
 
     assert stages(1.0) == stages(1 + 1e-9) == stages(1 - 1e-9)
+
+
+# ------------------------------------------------------------------ positioning
+@st.composite
+def positioning_requirements(draw) -> dict:
+    n = draw(st.integers(1, 4))
+    motors = [
+        {
+            "name": f"M{k}",
+            "speed_rad_s": draw(logs(10.0, 1000.0)),
+            "inertia_kgm2": draw(logs(1e-4, 0.1)),
+            "accel_torque_Nm": draw(logs(1.0, 500.0)),
+        }
+        for k in range(n)
+    ]
+    return {
+        "application": {"kind": "positioning"},
+        "positioning": {
+            "profile": draw(st.sampled_from(["trapezoidal", "triangular"])),
+            "travel_rad": draw(logs(0.1, 1000.0)),
+            "load_inertia_kgm2": draw(logs(0.01, 100.0)),
+            "load_torque_Nm": draw(st.just(0.0) | logs(0.1, 500.0)),
+            "motors": motors,
+        },
+    }
+
+
+def check_positioning(rep: dict) -> None:
+    d = _decisions(rep)
+    mo = rep["design"]["motion"]
+    chooser = d.get("MO-02") or d["MO-04"]
+    assert chooser["motor"] == mo["motor"]
+    if "MO-02" in d:
+        times = {c["name"]: c["move_time_s"] for c in mo["candidates"]}
+        assert set(d["MO-02"]["move_time_s"]) == set(times)
+        for name, t in d["MO-02"]["move_time_s"].items():
+            assert close(t, times[name]), name
+    m1 = d["MO-01"]
+    assert m1["motor"] == mo["motor"]
+    assert close(m1["ratio"], mo["optimal_ratio"])
+    assert close(m1["estimated_ratio"], mo["estimated_ratio"])
+    assert close(m1["first_step"], mo["estimated_ratio_first_step"])
+    assert close(m1["torque_ratio"], mo["torque_ratio"])
+    assert m1["profile"] == mo["profile_actual"]
+    assert d["MO-03"]["profile"] == mo["profile_actual"]
+    assert close(d["MO-03"]["path_rad"], rep["requirements"]["positioning"]["travel_rad"])
+
+
+@SLOW
+@given(positioning_requirements())
+def test_positioning_decisions_state_the_designs_values(doc):
+    rep = _report(doc)
+    if rep is not None:
+        check_positioning(rep)
+
+
+POSITIONING_FIELDS = [
+    ("positioning", "travel_rad"),
+    ("positioning", "load_inertia_kgm2"),
+    ("positioning", "load_torque_Nm"),
+]
+
+
+@SLOW
+@given(
+    positioning_requirements(),
+    st.sampled_from(POSITIONING_FIELDS),
+    st.sampled_from([1 - 1e-9, 1 + 1e-9]),
+)
+def test_positioning_perturbed_by_1e_9_gives_the_same_design(doc, field, factor):
+    def choice(rep):
+        if rep is None:
+            return None
+        mo = rep["design"]["motion"]
+        return mo["motor"], mo["profile_actual"]
+
+    assert choice(_report(doc)) == choice(_report(_scaled(doc, field, factor)))
+
+
+# ------------------------------------------------------------------ spinning rotor
+@st.composite
+def rotor_requirements(draw) -> dict:
+    rotor = {
+        "mass_kg": draw(logs(0.05, 20.0)),
+        "angular_momentum_kgm2_s": draw(logs(0.01, 50.0)),
+        "speed_rad_s": draw(logs(100.0, 6000.0)),
+        "bearing": draw(st.sampled_from(["7000 CD", "6000", "6200", "7200 BECBP", "6204"])),
+        "ball_plane_to_cg_mm": draw(logs(2.0, 200.0)),
+        "slew_rate_rad_s": draw(st.just(0.0) | logs(0.01, 1.0)),
+        "axis_angle_deg": draw(st.floats(0.0, 180.0, **finite)),
+        "slew_angle_deg": draw(logs(1.0, 90.0)),
+        "run_up_time_s": draw(logs(1.0, 600.0)),
+        "aero": {"loss_W": draw(logs(0.1, 500.0))},
+    }
+    if rotor["bearing"].startswith("6"):  # a deep-groove bearing: β of eq. (4) is given
+        rotor["contact_angle_deg"] = draw(st.floats(5.0, 25.0, **finite))
+    if draw(st.booleans()):
+        rotor["required_life_h"] = draw(logs(100.0, 1e5))
+    return {"application": {"kind": "spinning_rotor"}, "rotor": rotor}
+
+
+def check_rotor(rep: dict) -> None:
+    d = _decisions(rep)
+    r = rep["design"]["rotor"]
+    for key in ("gyroscopic_moment_Nm", "reaction_radial_N", "reaction_axial_N", "preload_N"):
+        assert close(d["RO-01"][key], r[key]), key
+    assert close(d["RO-02"]["required_torque_Nm"], r["required_torque_Nm"])
+    assert close(d["RO-02"]["run_up_torque_Nm"], r["run_up_torque_Nm"])
+    assert close(d["RO-02"]["steady_with_reaction_Nm"], r["steady_torque_Nm"]["with_reaction"])
+    assert close(
+        d["RO-03"]["rolling_friction_mm"], rep["requirements"]["rotor"]["rolling_friction_mm"]
+    )
+
+
+def _rotor_report(doc: dict) -> dict | None:
+    from advisor.core.errors import InputError
+
+    try:
+        return _report(doc)
+    except InputError:  # a bearing absent from the catalog, a speed over its limit
+        return None
+
+
+@SLOW
+@given(rotor_requirements())
+def test_rotor_decisions_state_the_designs_values(doc):
+    rep = _rotor_report(doc)
+    if rep is not None:
+        check_rotor(rep)
+
+
+ROTOR_FIELDS = [
+    ("rotor", "mass_kg"),
+    ("rotor", "angular_momentum_kgm2_s"),
+    ("rotor", "speed_rad_s"),
+    ("rotor", "run_up_time_s"),
+    ("rotor", "slew_rate_rad_s"),
+]
+
+
+@SLOW
+@given(rotor_requirements(), st.sampled_from(ROTOR_FIELDS), st.sampled_from([1 - 1e-9, 1 + 1e-9]))
+def test_rotor_perturbed_by_1e_9_gives_the_same_design(doc, field, factor):
+    def choice(rep):
+        if rep is None:
+            return None
+        r = rep["design"]["rotor"]
+        steady = r["required_torque_Nm"] == r["run_up_torque_Nm"]
+        return r["bearing"]["designation"], steady, [c["passed"] for c in rep["checks"]]
+
+    assert choice(_rotor_report(doc)) == choice(_rotor_report(_scaled(doc, field, factor)))
