@@ -40,7 +40,7 @@ async def _compute(pilot) -> None:
     await pilot.pause()
 
 
-@pytest.mark.parametrize("steps", [0, 1, 2, 3, 4])
+@pytest.mark.parametrize("steps", [0, 1, 2, 3, 4, 5])
 def test_wizard_step(snap_compare, steps):
     assert snap_compare(
         _app("linear_screw_actuator.toml"), press=["ctrl+n"] * steps, terminal_size=SIZE

@@ -242,9 +242,9 @@ class DriveAdvisorApp(App[None]):
                         self.doc.get("application", {}).get("title", ""), "f-application-title"
                     )
                     yield Static("", id="step-0-error", classes="error")
-                for s in (1, 2, 3):
+                for s in F.ASKED:
                     yield VerticalScroll(id=f"step-{s}", classes="step")
-                with VerticalScroll(id="step-4", classes="step"):
+                with VerticalScroll(id=f"step-{F.REVIEW}", classes="step"):
                     yield Static("", id="review-text")
                     yield Static("", id="review-error", classes="error")
             with TabbedContent(id="results"):
@@ -313,7 +313,7 @@ class DriveAdvisorApp(App[None]):
 
     async def _build_steps(self) -> None:
         kind = self.kind
-        for s in (1, 2, 3):
+        for s in F.ASKED:
             box = self.query_one(f"#step-{s}", VerticalScroll)
             await box.remove_children()
             widgets: list[Any] = []
@@ -339,8 +339,11 @@ class DriveAdvisorApp(App[None]):
         if f.kind == "bool":
             control: Any = Switch(bool(f.default if value is None else value), id=f.id)
         elif f.kind == "choice":
+            blank = f.default is None  # no default to show: the field may stay unchosen
             current = value if value in f.choices else self._shown_choice(f)
-            control = Select([(c, c) for c in f.choices], value=current, allow_blank=False, id=f.id)
+            if blank and value not in f.choices:
+                current = Select.NULL
+            control = Select([(c, c) for c in f.choices], value=current, allow_blank=blank, id=f.id)
         else:
             control = _input(F.to_text(f, value), f.id)
             control.placeholder = f.shown_default
@@ -364,7 +367,7 @@ class DriveAdvisorApp(App[None]):
         results = "[reverse] Results [/] — ← → views, ctrl+e edit inputs, ctrl+s export"
         self.query_one("#steps", Static).update(results if on_results else names)
         self.query_one("#wizard", ContentSwitcher).current = f"step-{self.step}"
-        if self.step == 4:
+        if self.step == F.REVIEW:
             self.query_one("#review-text", Static).update(self._review_text())
 
     def _review_text(self) -> str:
@@ -420,7 +423,12 @@ class DriveAdvisorApp(App[None]):
     @on(Select.Changed)
     def _select_changed(self, event: Select.Changed) -> None:
         f = self._field_by_id(event.select.id)
-        if f is None or not isinstance(event.value, str):
+        if f is None:
+            return
+        if not isinstance(event.value, str):  # blanked: the field is left out again
+            if F.get(self.doc, f.path) is not None:
+                F.put(self.doc, f.path, None)
+                self._changed()
             return
         if F.get(self.doc, f.path) is None and event.value == self._shown_choice(f):
             return  # the shown default, not a choice the user made: keep the file as it was
@@ -443,7 +451,7 @@ class DriveAdvisorApp(App[None]):
                 self.query_one("#step-0-error", Static).update("choose an application")
                 return False
             return True
-        if step == 4:
+        if step == F.REVIEW:
             return True
         kind = self.kind
         assert kind is not None
@@ -489,7 +497,7 @@ class DriveAdvisorApp(App[None]):
         if not self._validate(self.step):
             self.bell()
             return
-        if self.step < 4:
+        if self.step < F.REVIEW:
             self.step += 1
             self._show_step()
         else:

@@ -11,7 +11,17 @@ from typing import Any
 from advisor.core import registry
 from advisor.core.questions import Question, fixed_values, wizard_questions
 
-STEPS = ("Application", "Loads and motion", "Envelope and holding", "Motor preferences", "Review")
+STEPS = (
+    "Application",
+    "Loads and motion",
+    "Envelope and holding",
+    "Motor preferences",
+    "Duty cycle",
+    "Review",
+)
+#: The steps that ask the model's fields, and the review.
+ASKED = tuple(range(1, len(STEPS) - 1))
+REVIEW = len(STEPS) - 1
 
 
 class Field(Question):
@@ -55,7 +65,7 @@ def fields_for(kind: str, step: int) -> tuple[Field, ...]:
 
 
 def all_fields(kind: str) -> list[Field]:
-    return [f for step in (1, 2, 3) for f in fields_for(kind, step)]
+    return [f for step in ASKED for f in fields_for(kind, step)]
 
 
 def starting_doc(kind: str) -> dict[str, Any]:
@@ -80,7 +90,7 @@ def title_field() -> Field:
 def row_note(kind: str, step: int) -> str:
     """A word on the rows of a list of tables asked in this step (candidate motors)."""
     rows = {f.row[:-1] for f in fields_for(kind, step) if f.row is not None}
-    return "".join(
+    return " ".join(
         f"Rows of {'.'.join(r)} may stay empty; a row once started needs every value."
         for r in sorted(rows)
     )
@@ -191,7 +201,7 @@ def error_owner(line: str, kind: str, upto_step: int) -> str | None:
     parts = [str(int(p) - 1) if p.isdigit() else p for p in parts]
     dotted = ".".join(parts)
     seen = [f for s in range(1, upto_step + 1) for f in fields_for(kind, s)]
-    later = [f for s in range(upto_step + 1, 4) for f in fields_for(kind, s)]
+    later = [f for s in range(upto_step + 1, REVIEW) for f in fields_for(kind, s)]
     for f in seen:
         if f.dotted == dotted:
             return dotted

@@ -263,6 +263,20 @@ def advise_linear(
     chosen_name = chosen.label
 
     warnings: list[str] = []
+    duty = None
+    if req.duty is not None:  # issue 15: the motor sized for the cycle
+        from advisor.duty.linear import advise_duty
+
+        holder = "screw" if ev.self_locking_at_low_friction else None
+        holder = holder or ("one_way" if req.application.hold_without_power else None)
+        duty, motor, duty_checks, duty_warnings = advise_duty(
+            req, ev, plan.selected, cat, holder, trace
+        )
+        warnings += duty_warnings
+        if motor is not plan.selected:
+            power = motor.rated_power_kW
+            evaluations = {**plan.evaluations, power: _eval_motor(motor, ev)}
+            plan = plan._replace(selected=motor, evaluations=evaluations)
     one_way = None
     if req.application.hold_without_power:
         one_way, dev_warnings = _one_way(req, trace, ev, chosen_name, material.friction_low)
@@ -277,6 +291,7 @@ def advise_linear(
         screw=_screw_out(ev, req, material, f_range, advisor_choice),
         motor=_motor_out(plan, ev, cat, freq),
         one_way=one_way,
+        duty=duty,
     )
     sel = plan.evaluations[plan.selected.rated_power_kW]
     assert sel is not None
@@ -314,7 +329,13 @@ def advise_linear(
     ]
     if sel.travel_time_s and sel.travel_time_s < FAST_SHARE * lin.travel_time_s:
         warnings.append(_too_fast(ev, sel, plan, evaluations, cat, lin.travel_time_s))
+    if duty is not None:
+        checks += duty_checks
     return design, checks, warnings
+
+
+def _eval_motor(motor: InductionMotor, ev: ThreadEvaluation) -> MotorEvaluation:
+    return evaluate_motor(motor, ev.torque_Nm, ev.speed_rpm, ev.revolutions)
 
 
 #: A stroke made in less than this share of the time asked for is flagged.

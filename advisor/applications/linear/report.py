@@ -1,6 +1,7 @@
 """Report tables of the linear actuator (imported only on the linear path)."""
 
 from advisor.core.report import _Out
+from advisor.duty.report import DutyOut
 from advisor.one_way.report import OneWayOut
 
 
@@ -119,6 +120,7 @@ class LinearDesignOut(_Out):
     screw: ScrewOut
     motor: InductionMotorOut
     one_way: "OneWayOut | None" = None
+    duty: DutyOut | None = None
 
 
 def headline(report) -> str:

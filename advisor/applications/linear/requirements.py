@@ -6,6 +6,7 @@ from typing import Annotated, Literal
 from pydantic import Field, field_validator, model_validator
 
 from advisor.core.requirements import ApplicationReq, OneWayReq, _num, _Strict, ask
+from advisor.duty.requirements import LinearDutyReq
 
 
 class LinearReq(_Strict):
@@ -138,3 +139,7 @@ class LinearRequirements(_Strict):
     motor: Annotated[InductionMotorReq, Field(description="the [motor] table: kind = 'induction'")]
     screw: ScrewReq = ScrewReq()
     one_way: OneWayReq = OneWayReq()
+    duty: Annotated[
+        LinearDutyReq | None,
+        Field(description="the [duty] table: segments with cycles_per_hour, or duty_type"),
+    ] = None

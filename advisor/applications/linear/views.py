@@ -51,4 +51,6 @@ def plots(report) -> list[PlotData]:
         "torque, N·m",
         series,
     )
-    return [main]
+    from advisor.duty.views import plots as duty_plots
+
+    return [main, *duty_plots(getattr(d, "duty", None))]

@@ -37,4 +37,6 @@ def plots(report) -> list[PlotData]:
         "move time, s",
         [(d.motion.motor, d.motion.curve.ratio, d.motion.curve.move_time_s)],
     )
-    return [main]
+    from advisor.duty.views import plots as duty_plots
+
+    return [main, *duty_plots(getattr(d, "duty", None))]
