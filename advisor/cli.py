@@ -1,9 +1,10 @@
 """``advisor``: the command line.
 
 ``advisor --batch REQ.toml`` prints the report TOML on stdout; with ``-o OUT.toml`` it writes
-the report atomically and prints a short summary instead. Exit codes: see
-:class:`advisor.core.errors.ExitCode`. Never a traceback: every failure is one line per problem on
-stderr.
+the report atomically and prints a short summary instead. ``--format json|md|html`` writes
+the report as JSON or as a datasheet (:mod:`advisor.datasheet`; matplotlib for html only).
+Exit codes: see :class:`advisor.core.errors.ExitCode`. Never a traceback: every failure is one
+line per problem on stderr.
 
 The batch path must stay light: it imports neither textual nor rich (rich only for the
 summary of ``-o``) nor scipy.optimize.
@@ -64,6 +65,13 @@ def build_parser() -> argparse.ArgumentParser:
         help="write the report here (atomically) and print a summary instead",
     )
     p.add_argument(
+        "--format",
+        choices=("toml", "json", "md", "html"),
+        help="the report as TOML (the archive; default), JSON (for tools), Markdown or a "
+        "self-contained HTML datasheet with plots (needs the [report] extra); with -o and no "
+        "--format, the file's suffix decides",
+    )
+    p.add_argument(
         "--catalog-dir",
         metavar="DIR",
         type=Path,
@@ -117,15 +125,20 @@ def _warn_ignored(warnings: list[str], source: Path | None = None) -> None:
             _err(f"{source}: warning: {w}" if source is not None else f"warning: {w}")
 
 
-def run_batch(req_path: Path, output: Path | None, catalog_dir: Path | None) -> int:
+def run_batch(
+    req_path: Path, output: Path | None, catalog_dir: Path | None, fmt: str | None = None
+) -> int:
     # pydantic scans every installed package's entry points for plugins on its first model
     # (about 7 ms of importlib.metadata); the advisor uses none.
     os.environ.setdefault("PYDANTIC_DISABLE_PLUGINS", "__all__")
     from advisor.core.engine import advise
-    from advisor.core.report import to_toml
     from advisor.core.requirements import read_requirements
     from advisor.io_safety import OutputError, check_target, same_file, show, write_atomic
 
+    if fmt is None:
+        from advisor.datasheet import format_of
+
+        fmt = (format_of(output) if output is not None else None) or "toml"
     if output is not None:  # refuse a target that would destroy something, before computing
         if same_file(output, req_path):
             raise OutputError(
@@ -136,7 +149,18 @@ def run_batch(req_path: Path, output: Path | None, catalog_dir: Path | None) -> 
     req = read_requirements(req_path)
     report = advise(req, catalog_dir)
     _warn_ignored(report.warnings)
-    text = to_toml(report)
+    if fmt == "toml":
+        from advisor.core.report import to_toml
+
+        text = to_toml(report)
+    else:
+        from advisor.datasheet import MissingExtra, render
+
+        try:
+            text = render(report, fmt)
+        except MissingExtra as exc:
+            _err(str(exc))
+            return ExitCode.INVALID_INPUT
     if output is None:
         try:
             sys.stdout.write(text)
@@ -287,5 +311,8 @@ def _dispatch(args: argparse.Namespace) -> int:
         if args.out_dir is None:
             _err("several inputs (or a directory) need --out-dir DIR for their reports")
             return ExitCode.INVALID_INPUT
+        if args.format not in (None, "toml"):
+            _err(f"--format {args.format} takes one input; with --out-dir the reports are TOML")
+            return ExitCode.INVALID_INPUT
         return run_many(inputs, args.out_dir, args.catalog_dir, args.jobs)
-    return run_batch(inputs[0], args.output, args.catalog_dir)
+    return run_batch(inputs[0], args.output, args.catalog_dir, args.format)

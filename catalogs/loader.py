@@ -290,6 +290,24 @@ def _load_materials(path: Path, bib: dict[str, dict[str, Any]]) -> Materials:
         raise _fail(path, where, exc) from None
 
 
+def _replace_materials(path: Path, shipped: Materials, bib: dict[str, dict[str, Any]]) -> Materials:
+    """A user materials file replaces the shipped one whole, so it must hold every pair and
+    steel a requirement can name (the shipped names)."""
+    user = _load_materials(path, bib)
+    for what, have, need in (
+        ("pair", [p.name for p in user.pair], [p.name for p in shipped.pair]),
+        ("steel", [s.name for s in user.steel], [s.name for s in shipped.steel]),
+    ):
+        missing = [n for n in need if n not in have]
+        if missing:
+            raise CatalogError(
+                f"catalog {path}: [[{what}]] {', '.join(repr(n) for n in missing)} missing; "
+                f"a user materials file replaces the shipped one and must hold every {what} a "
+                f"requirement can name: {', '.join(need)}"
+            )
+    return user
+
+
 @cache
 def load_catalogs(user_dir: Path | None = None) -> Catalogs:
     """The shipped catalogs, plus the rows of a user catalog directory if given.
@@ -355,7 +373,7 @@ def _load_and_validate(user_dir: Path | None) -> Catalogs:
             threads = threads + extra_threads
             _check_unique(user_dir / THREADS_FILE, [t.name for t in threads], "thread")
         if (user_dir / MATERIALS_FILE).exists():
-            materials = _load_materials(user_dir / MATERIALS_FILE, bib)
+            materials = _replace_materials(user_dir / MATERIALS_FILE, materials, bib)
         if (user_dir / STEELS_FILE).exists():
             extra_steels, extra_sources = _load_steels(user_dir / STEELS_FILE, bib)
             steels = steels + extra_steels

@@ -54,8 +54,11 @@ def test_motor_power_and_neighbours(report):
 
 
 def test_characteristics_are_arrays_with_both_ends(report):
-    for c in report["design"]["motor"]["candidates"]:
-        curve = c["curve"]
+    # the archive keeps the curves in [curves] at the end, keyed by where they belong
+    assert list(report)[-1] == "curves"
+    for i, c in enumerate(report["design"]["motor"]["candidates"], 1):
+        assert "curve" not in c
+        curve = report["curves"][f"design.motor.candidates[{i}].curve"]
         assert len(curve["slip"]) == len(curve["torque_Nm"]) == len(curve["speed_rpm"]) == 41
         assert curve["slip"][0] == 0 and curve["slip"][-1] == 1
         assert curve["torque_Nm"][0] == 0

@@ -167,8 +167,9 @@ def test_example_picks_the_fastest_motor(report):
     assert a["estimated_ratio_first_step"] == pytest.approx(12.515, abs=1e-3)
     assert a["first_step_moves_load"] is True
     assert m["profile_actual"] == "trapezoidal"
-    assert len(m["curve"]["ratio"]) == len(m["curve"]["move_time_s"]) == 61
-    assert min(m["curve"]["move_time_s"]) >= m["move_time_s"] * (1 - 1e-6)
+    curve = report["curves"]["design.motion.curve"]
+    assert len(curve["ratio"]) == len(curve["move_time_s"]) == 61
+    assert min(curve["move_time_s"]) >= m["move_time_s"] * (1 - 1e-6)
     assert [d["id"] for d in report["decisions"]] == ["MO-02", "MO-01", "MO-03"]
 
 

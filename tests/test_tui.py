@@ -91,6 +91,40 @@ async def test_each_example_exports_the_batch_report(example, tmp_path):
     assert target.read_text(encoding="utf-8") == to_toml(advise(read_requirements(src)))
 
 
+@pytest.mark.parametrize("suffix", [".json", ".md", ".html"])
+async def test_export_offers_the_batch_formats(suffix, tmp_path):
+    """ctrl+s writes the report in the format its file suffix names, as --format does."""
+    pytest.importorskip("matplotlib")
+    from advisor.datasheet import format_of, render
+
+    src = EXAMPLES / "positioning_drive.toml"
+    app = DriveAdvisorApp(tomllib.loads(src.read_text(encoding="utf-8")), src, save_drafts=False)
+    async with app.run_test(size=SIZE) as pilot:
+        await _computed(app, pilot)
+        await pilot.press("ctrl+s")
+        await pilot.pause()
+        target = tmp_path / f"design{suffix}"
+        app.screen.query_one("#export-path", Input).value = str(target)
+        await pilot.click("#save-report")
+        await pilot.pause()
+        assert not isinstance(app.screen, ExportScreen)
+    expected = render(advise(read_requirements(src)), format_of(target))
+    assert target.read_text(encoding="utf-8") == expected
+
+
+async def test_number_fields_take_units():
+    src = EXAMPLES / "linear_screw_actuator.toml"
+    app = DriveAdvisorApp(tomllib.loads(src.read_text(encoding="utf-8")), src, save_drafts=False)
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("ctrl+n")
+        await _type(pilot, app, "f-linear-force-N", "3.5 kN")
+        await _type(pilot, app, "f-linear-stroke-m", "200 mm")
+        assert app.doc["linear"]["force_N"] == 3500.0 and app.doc["linear"]["stroke_m"] == 0.2
+        await _type(pilot, app, "f-linear-stroke-m", "5 kN")
+        err = _text(app.query_one("#f-linear-stroke-m-err", Label))
+        assert "kN is a force, not a length; expected m" in err
+
+
 async def test_invalid_input_is_shown_inline_and_next_waits():
     src = EXAMPLES / "linear_screw_actuator.toml"
     app = DriveAdvisorApp(tomllib.loads(src.read_text(encoding="utf-8")), src, save_drafts=False)
@@ -102,7 +136,7 @@ async def test_invalid_input_is_shown_inline_and_next_waits():
         err = _text(app.query_one("#f-linear-force-N-err", Label))
         assert "must be ≥ 1" in err and "1 N … 5 MN" in err
         await _type(pilot, app, "f-linear-stroke-m", "abc")
-        assert "not a number" in _text(app.query_one("#f-linear-stroke-m-err", Label))
+        assert "must be a number" in _text(app.query_one("#f-linear-stroke-m-err", Label))
         # Back keeps what was typed
         await pilot.press("ctrl+b", "ctrl+n")
         assert app.query_one("#f-linear-stroke-m", Input).value == "abc"

@@ -151,6 +151,104 @@ def _join(key: str, name: str) -> str:
     return f"{key}.{name}" if key else name
 
 
+#: A table of number arrays is a curve when its longest array has at least this many points.
+CURVE_POINTS = 10
+
+
+def plain(report: Report) -> dict[str, Any]:
+    """The report as nested plain data (curves where the design holds them): what the
+    datasheet reads."""
+    return _plain(report)
+
+
+def _numbers(v: Any) -> bool:
+    """An array of numbers (or of arrays of them)."""
+    return isinstance(v, list) and all(
+        (isinstance(x, int | float) and not isinstance(x, bool)) or _numbers(x) for x in v
+    )
+
+
+def curve_part(table: Any) -> dict[str, Any]:
+    """The curve data of a table: its number arrays, when one of them has at least
+    :data:`CURVE_POINTS` points (a characteristic, a sweep, a time history, the columns of a
+    front) — data for a plot rather than the design. Empty when there is none."""
+    if not isinstance(table, dict):
+        return {}
+    arrays = {k: v for k, v in table.items() if _numbers(v)}
+    if not arrays or max(len(v) for v in arrays.values()) < CURVE_POINTS:
+        return {}
+    return arrays
+
+
+def _is_curve(table: Any) -> bool:
+    """A table that is all curve data (nothing of it stays in the design)."""
+    part = curve_part(table)
+    return bool(part) and len(part) == len(table)
+
+
+def _lift(node: Any, path: str, curves: dict[str, Any]) -> Any:
+    if isinstance(node, dict):
+        part = curve_part(node) if path.startswith("design") else {}
+        if part:
+            curves[path] = part
+        out = {}
+        for k, v in node.items():
+            if k not in part:
+                out[k] = _lift(v, f"{path}.{k}" if path else k, curves)
+        return out if out or not part else None
+    if isinstance(node, list):
+        return [_lift(v, f"{path}[{i + 1}]", curves) for i, v in enumerate(node)]
+    return node
+
+
+def _drop_empty(node: Any) -> Any:
+    if isinstance(node, dict):
+        return {k: _drop_empty(v) for k, v in node.items() if v is not None}
+    if isinstance(node, list):
+        return [_drop_empty(v) for v in node]
+    return node
+
+
+def archive(doc: dict[str, Any]) -> dict[str, Any]:
+    """The archive layout: the curve data of the design (see :func:`curve_part`) moved into
+    one ``[curves]`` table at the end, keyed by the table that held it
+    (``"design.motion.curve"``, ``"design.motor.candidates[2].curve"``, list items counted
+    from 1), so the design reads first; the table's other keys stay where they were.
+
+    >>> archive({"design": {"m": 1.0, "curve": {"t": list(range(10))}}})["curves"]
+    {'design.curve': {'t': [0, 1, 2, 3, 4, 5, 6, 7, 8, 9]}}
+    """
+    curves: dict[str, Any] = {}
+    out = _drop_empty(_lift(doc, "", curves))
+    if curves:
+        out["curves"] = curves
+    return out
+
+
+def nest_curves(doc: dict[str, Any]) -> dict[str, Any]:
+    """The inverse of :func:`archive`: a report read back from its TOML or JSON with its
+    curves where the design holds them (for tools that prefer them there)."""
+    import copy
+    import re
+
+    out = copy.deepcopy({k: v for k, v in doc.items() if k != "curves"})
+    for where, curve in doc.get("curves", {}).items():
+        parts = [int(p) - 1 if p.isdigit() else p for p in re.findall(r"[^.\[\]]+", where)]
+        node: Any = out
+        for p in parts[:-1]:
+            node = node[p]
+        node[parts[-1]] = {**node.get(parts[-1], {}), **curve}
+    return out
+
+
 def to_toml(report: Report) -> str:
-    """The report as TOML text (no nulls: TOML has none)."""
-    return tomli_w.dumps(_plain(report))
+    """The report as TOML text (no nulls: TOML has none), curves in ``[curves]`` at the
+    end."""
+    return tomli_w.dumps(archive(_plain(report)))
+
+
+def to_json(report: Report) -> str:
+    """The report as JSON: the same document as the TOML, keys in the same order."""
+    import json
+
+    return json.dumps(archive(_plain(report)), indent=2, ensure_ascii=False) + "\n"

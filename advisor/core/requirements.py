@@ -1,6 +1,8 @@
 """Requirements: the input of the advisor, read from TOML and validated strictly.
 
-Units are SI and named in the keys (``force_N``, ``stroke_m``). Unknown keys are refused (a
+Units are SI and named in the keys (``force_N``, ``stroke_m``); a number may also be written
+as a string with a unit (``"5 kN"``), converted to the key's unit by
+:mod:`advisor.core.units`. Unknown keys are refused (a
 typo must not be silently ignored), numbers must be finite, and a table that the
 application kind needs must be present.
 """
@@ -259,6 +261,11 @@ def format_validation_error(exc: ValidationError, root: Any) -> list[str]:
             lines.append(f"{where} = {shown}: {what}{desc}")
     if len(unknown) > MAX_UNKNOWN_SHOWN:
         lines.append(f"… and {len(unknown) - MAX_UNKNOWN_SHOWN:,} more unknown keys")
+    return capped(lines)
+
+
+def capped(lines: list[str]) -> list[str]:
+    """At most :data:`MAX_PROBLEMS_SHOWN` lines, the last saying how many more there are."""
     if len(lines) > MAX_PROBLEMS_SHOWN:
         more = len(lines) - MAX_PROBLEMS_SHOWN + 1
         lines = [*lines[: MAX_PROBLEMS_SHOWN - 1], f"… and {more:,} more problems"]
@@ -296,8 +303,13 @@ def parse_requirements(data: dict[str, Any]) -> Requirements:
     except ValidationError as exc:
         raise InputError(*format_validation_error(exc, _Head)) from None
     model = requirements_model(kind)
+    from advisor.core.units import convert
     from advisor.ignored import contradictions
 
+    try:
+        data = convert(data, model)  # "5 kN" → 5000 (pint only if such a string is there)
+    except InputError as exc:
+        raise InputError(*capped(exc.messages)) from None
     conflicts = contradictions(data)
     try:
         req = model.model_validate(data)

@@ -58,14 +58,14 @@ def advise_one(
     import tomli_w
 
     from advisor.core.engine import advise
-    from advisor.core.report import _plain
+    from advisor.core.report import _plain, archive
     from advisor.core.requirements import parse_requirements
 
     try:
         req = parse_requirements(requirement)
         report = advise(req, Path(catalog_dir) if catalog_dir else None)
-        data = _plain(report)  # exactly what advisor.core.report.to_toml dumps
-        text = tomli_w.dumps(data) if with_text else None
+        data = _plain(report)  # what advisor.core.report.to_toml dumps, curves in place
+        text = tomli_w.dumps(archive(data)) if with_text else None  # = to_toml(report)
         return Outcome(ExitCode.OK, STATUS[ExitCode.OK], "", data, text)
     except InfeasibleError as exc:
         return Outcome(exc.exit_code, STATUS[ExitCode.INFEASIBLE], one_line(str(exc)), None, None)

@@ -67,7 +67,7 @@ HELP = """\
   ctrl+b   previous step (keeps what you typed)
   ctrl+r   compute the design (from any step; again after an edit)
   ctrl+e   back to the inputs from the results
-  ctrl+s   export the report or the requirements (TOML)
+  ctrl+s   export the report (TOML, JSON, Markdown or HTML) or the requirements
   f1       this help           ctrl+q   quit
   tab / shift+tab move between fields; arrows choose in lists
 
@@ -134,7 +134,7 @@ class ExportScreen(ModalScreen[None]):
 
     def compose(self) -> ComposeResult:
         with Vertical(id="dialog"):
-            yield Label("Export to (a .toml file; an existing file asks before it is replaced):")
+            yield Label("Export to (.toml; a report also .json, .md or .html; asks to replace):")
             yield _input(str(self.default), "export-path")
             yield Static("", id="export-error", classes="error")
             with Horizontal():
@@ -169,12 +169,17 @@ class ExportScreen(ModalScreen[None]):
     def _write(self, path: Path, what: str) -> None:
         app = self.app
         assert isinstance(app, DriveAdvisorApp)
+        from advisor.datasheet import MissingExtra
+
         try:
             app.write_export(path, what)
         except OSError as exc:
             self.query_one("#export-error", Static).update(
                 plain(f"{path}: cannot write ({exc.strerror}); nothing was written")
             )
+            return
+        except MissingExtra as exc:
+            self.query_one("#export-error", Static).update(plain(str(exc)))
             return
         except InputError as exc:  # a device, a FIFO, a directory: refused, nothing written
             self.query_one("#export-error", Static).update(plain(str(exc)))
@@ -526,7 +531,10 @@ class DriveAdvisorApp(App[None]):
         from advisor.core.report import to_toml, write_atomic
 
         if what == "report":
-            text = to_toml(self.report)
+            from advisor.datasheet import format_of, render
+
+            fmt = format_of(path) or "toml"  # design.html: the datasheet, as --format html
+            text = to_toml(self.report) if fmt == "toml" else render(self.report, fmt)
         else:
             text = tomli_w.dumps(F.prune(self.doc))
         write_atomic(path, text)

@@ -134,6 +134,11 @@ def shape(doc: Any) -> tuple[dict[str, Any], list[str]]:
                 value = node[key]
             if last:
                 why = _leaf_ok(field, value)
+                if why is None and field.kind == "float" and isinstance(value, str):
+                    number, err = F.parse_text(field, value)  # "5 kN", as batch reads it
+                    if err is None and number is not None:
+                        node[key if isinstance(node, dict) else int(key)] = number
+                        break
                 if why is None and field.kind in ("float", "int") and isinstance(value, str | bool):
                     problems.append(f"{where} = {_echo(value)}: must be a number; fix it here")
                 elif why is None and field.kind == "str" and not isinstance(value, str):

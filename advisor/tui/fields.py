@@ -161,6 +161,17 @@ def to_text(field: Field, value: Any) -> str:
     return str(value)
 
 
+def _number(field: Field, text: str) -> float:
+    """A number, or a quantity with a unit ("5 kN") in the field's unit, as a requirement
+    file takes it (:mod:`advisor.core.units`; pint is imported for the latter only)."""
+    try:
+        return float(text)
+    except ValueError:
+        from advisor.core.units import to_unit
+
+        return to_unit(text, field.unit)  # UnitError is a ValueError, worded for the user
+
+
 def parse_text(field: Field, text: str) -> tuple[Any, str | None]:
     """The value of a field's text, or None with a message written for the user."""
     text = text.strip()
@@ -176,16 +187,16 @@ def parse_text(field: Field, text: str) -> tuple[Any, str | None]:
             return None, f"{text!r} is not a whole number"
     if field.kind == "floats":
         try:
-            values = [float(x) for x in text.replace(";", ",").split(",") if x.strip()]
-        except ValueError:
-            return None, f"{text!r}: numbers separated by commas, e.g. 5000, 10000"
+            values = [_number(field, x) for x in text.replace(";", ",").split(",") if x.strip()]
+        except ValueError as exc:
+            return None, f"{text!r}: numbers separated by commas, e.g. 5000, 10000 ({exc})"
         if not values or not all(math.isfinite(v) for v in values):
             return None, "numbers separated by commas, each finite"
         return values, None
     try:
-        value = float(text.replace(",", "."))
-    except ValueError:
-        return None, f"{text!r} is not a number" + (f" ({field.unit})" if field.unit else "")
+        value = _number(field, text.replace(",", "."))
+    except ValueError as exc:
+        return None, f"{text!r}: {exc}"
     if not math.isfinite(value):
         return None, "must be a finite number"
     return value, None

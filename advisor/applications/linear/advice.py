@@ -14,6 +14,7 @@ from advisor.applications.linear.report import (
     MotorCandidateOut,
     NutOut,
     ScrewOut,
+    back_driving_words,
 )
 from advisor.calc import induction as im
 from advisor.calc import screw as sc
@@ -88,7 +89,10 @@ def plan_motor(
 ) -> MotorPlan:
     """The chosen motor's pole pairs, its rated-power band and the evaluated neighbours."""
     pp = motor.pole_pairs
+    # the band shows one motor per rated power; the chosen one must be the one at its power
+    # (a user catalog may hold another motor of the same rating and poles)
     line = {m.rated_power_kW: m for m in cat.motors_with_poles(2 * pp)}
+    line[motor.rated_power_kW] = motor
 
     def evaluate(power: float) -> MotorEvaluation | None:
         m = line.get(power)
@@ -488,6 +492,9 @@ def _screw_out(
         torque_paper_Nm=ev.torque_paper_Nm,
         efficiency=ev.efficiency,
         back_driving_efficiency=ev.back_driving_efficiency,
+        back_driving=back_driving_words(
+            ev.back_driving_efficiency, ev.self_locking, ev.self_locking_at_low_friction
+        ),
         self_locking=ev.self_locking,
         self_locking_at_low_friction=ev.self_locking_at_low_friction,
         linear_speed_m_s=v,

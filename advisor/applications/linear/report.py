@@ -52,6 +52,7 @@ class ScrewOut(_Out):
     torque_paper_Nm: float
     efficiency: float
     back_driving_efficiency: float
+    back_driving: str  # the sign of back_driving_efficiency in words
     self_locking: bool
     self_locking_at_low_friction: bool
     linear_speed_m_s: float
@@ -149,3 +150,24 @@ def summary_rows(report) -> list[tuple[str, str]]:
             f"runs at {m.working_speed_rpm:.0f} rpm, stroke in {m.travel_time_s:.2f} s",
         ),
     ]
+
+
+def back_driving_words(eta_back: float, self_locking: bool, at_low_friction: bool) -> str:
+    """What the back-driving efficiency η' = tan(ψ − φ')/tan ψ means (Ivanov [3]): a
+    negative one is no efficiency but a self-locking screw.
+
+    >>> back_driving_words(0.35, False, False)[:40]
+    'not self-locking: the load drives the sc'
+    """
+    if not self_locking:
+        return (
+            f"not self-locking: the load drives the screw back with an efficiency of "
+            f"{eta_back:.3g}; holding without power needs a brake or a one-way device"
+        )
+    words = (
+        f"self-locking: a back-driving efficiency of {eta_back:.3g} (≤ 0) means the load "
+        f"cannot turn the screw; it holds without power"
+    )
+    if not at_low_friction:
+        words += ", but not at the low end of the friction range: do not rely on it alone"
+    return words

@@ -1,0 +1,284 @@
+"""What a datasheet says, independent of how it is written (HTML or Markdown): built from
+the report's plain data, the same document the TOML archive holds.
+
+Keys keep their meaning and lose their unit suffix to a unit column (``outer_diameter_mm``
+→ "outer diameter", mm); numbers are shown to four significant digits (the archive keeps
+six); curves are left to the plots.
+"""
+
+import math
+from dataclasses import dataclass, field
+from typing import Any
+
+from advisor.core.report import _is_curve, curve_part
+from advisor.datasheet.references import cited, readable
+
+#: A check whose margin is below this passes, but with little to spare: marked "tight".
+TIGHT_MARGIN = 1.1
+
+#: Units named by the suffixes of report keys (the requirement suffixes and a few more).
+UNITS = {
+    "N": "N",
+    "Nm": "N·m",
+    "m": "m",
+    "mm": "mm",
+    "mm2": "mm²",
+    "s": "s",
+    "h": "h",
+    "rpm": "rpm",
+    "Hz": "Hz",
+    "kg": "kg",
+    "kgm2": "kg·m²",
+    "kgm2_s": "kg·m²/s",
+    "kg_m3": "kg/m³",
+    "m2_s": "m²/s",
+    "mm2_s": "mm²/s",
+    "rad": "rad",
+    "rad_s": "rad/s",
+    "deg": "deg",
+    "W": "W",
+    "kW": "kW",
+    "A": "A",
+    "T": "T",
+    "ohm": "Ω",
+    "pct": "%",
+    "cm3": "cm³",
+    "MPa": "MPa",
+    "m_s": "m/s",
+    "W_kg": "W/kg",
+    "cm3_per_Nm": "cm³/(N·m)",
+}
+
+
+def split_key(key: str) -> tuple[str, str]:
+    """``outer_diameter_mm`` → ("outer diameter", "mm"); the longest unit suffix wins.
+
+    >>> split_key("outer_diameter_mm"), split_key("speed_rad_s"), split_key("rows")
+    (('outer diameter', 'mm'), ('speed', 'rad/s'), ('rows', ''))
+    """
+    parts = key.split("_")
+    for k in (3, 2, 1):
+        suffix = "_".join(parts[-k:])
+        if len(parts) > k and suffix in UNITS:
+            return " ".join(parts[:-k]), UNITS[suffix]
+    return key.replace("_", " "), ""
+
+
+def number(x: Any) -> str:
+    """A value as a reader wants it: four significant digits, no exponent between 0.001 and
+    a million, yes/no for booleans.
+
+    >>> number(5.08485), number(21120.5), number(442937), number(1.5e-05), number(True)
+    ('5.085', '21120', '442937', '1.5e-05', 'yes')
+    """
+    if isinstance(x, bool):
+        return "yes" if x else "no"
+    if isinstance(x, int):
+        return str(x)
+    if isinstance(x, float):
+        if x == 0 or not math.isfinite(x):
+            return f"{x:g}"
+        if 1e-3 <= abs(x) < 1e6:
+            decimals = max(0, 3 - math.floor(math.log10(abs(x))))
+            text = f"{x:.{decimals}f}"
+            return text.rstrip("0").rstrip(".") if "." in text else text
+        return f"{x:.4g}"
+    if isinstance(x, list):
+        return ", ".join(number(v) for v in x)
+    return str(x)
+
+
+@dataclass
+class Table:
+    title: str
+    columns: list[str]
+    rows: list[list[str]]
+
+
+@dataclass
+class Block:
+    """A component (or part of one): label–value–unit rows, tables of its lists, parts."""
+
+    title: str
+    rows: list[tuple[str, str, str]] = field(default_factory=list)
+    tables: list[Table] = field(default_factory=list)
+    parts: list["Block"] = field(default_factory=list)
+
+
+@dataclass
+class Check:
+    id: str
+    name: str
+    value: str
+    limit: str
+    unit: str
+    margin: str
+    status: str  # "fails" | "tight" | "passes"
+    source: str
+
+
+@dataclass
+class Decision:
+    id: str
+    title: str
+    decision: str
+    rationale: str
+    source: str
+    inputs: str
+
+
+@dataclass
+class Sheet:
+    title: str
+    application: str
+    status: str
+    version: str
+    headline: str
+    summary: list[tuple[str, str]]
+    requirements: list[Block]
+    components: list[Block]
+    decisions: list[Decision]
+    checks: list[Check]
+    warnings: list[str]
+    references: list[str]
+
+
+def _scalar(v: Any) -> bool:
+    return isinstance(v, bool | int | float | str) or (
+        isinstance(v, list) and all(isinstance(x, bool | int | float | str) for x in v)
+    )
+
+
+def _columns(items: list[dict]) -> list[tuple[str, tuple[str, ...], str]]:
+    """(header, path, unit) of every scalar of a list of tables, one level of sub-tables
+    flattened (``losses_W.total`` → "losses total")."""
+    cols: list[tuple[str, tuple[str, ...], str]] = []
+    seen: set[tuple[str, ...]] = set()
+    for item in items:
+        for k, v in item.items():
+            if _scalar(v) and (k,) not in seen:
+                seen.add((k,))
+                label, unit = split_key(k)
+                cols.append((label, (k,), unit))
+            elif isinstance(v, dict) and not _is_curve(v):
+                head, unit = split_key(k)
+                for k2, v2 in v.items():
+                    if _scalar(v2) and (k, k2) not in seen:
+                        seen.add((k, k2))
+                        label2, unit2 = split_key(k2)
+                        cols.append((f"{head} {label2}", (k, k2), unit2 or unit))
+    return cols
+
+
+def _cell(item: dict, path: tuple[str, ...]) -> str:
+    v: Any = item
+    for p in path:
+        v = v.get(p) if isinstance(v, dict) else None
+    return "" if v is None else number(v)
+
+
+def table(title: str, items: list[dict]) -> Table:
+    cols = _columns(items)
+    return Table(
+        title,
+        [f"{h}, {u}" if u else h for h, _, u in cols],
+        [[_cell(it, p) for _, p, _ in cols] for it in items],
+    )
+
+
+def block(title: str, data: dict, unit: str = "") -> Block:
+    """A table of the report as a block: scalars as rows, sub-tables as parts, lists of
+    tables as tables; curves left out (they are plotted). ``unit`` is the unit a parent key
+    named for children without their own (``losses_W`` → ``ohmic``)."""
+    b = Block(title)
+    plotted = curve_part(data)
+    for k, v in data.items():
+        label, own = split_key(k)
+        if _is_curve(v) or k in plotted:
+            continue
+        if _scalar(v):
+            b.rows.append((label, number(v), own or unit))
+        elif isinstance(v, dict):
+            b.parts.append(block(f"{title} — {label}", v, own or unit))
+        elif isinstance(v, list) and v and all(isinstance(x, dict) for x in v):
+            b.tables.append(table(f"{title} — {label}", v))
+    return b
+
+
+def _words(key: str) -> str:
+    return key.replace("_", " ")
+
+
+def _status(c: dict) -> str:
+    if not c.get("passed", True) or c["margin"] < 1:
+        return "fails"
+    return "tight" if c["margin"] < TIGHT_MARGIN else "passes"
+
+
+def _inputs(inputs: dict) -> str:
+    return "; ".join(
+        f"{k} = {number(v) if _scalar(v) else '{…}'}" for k, v in inputs.items() if v is not None
+    )
+
+
+def sheet(doc: dict[str, Any], headline: str, summary: list[tuple[str, str]]) -> Sheet:
+    """The datasheet of a report's plain data (:func:`advisor.core.report.plain`)."""
+    head = doc["report"]
+    checks = [
+        Check(
+            id=c["id"],
+            name=c["name"],
+            value=number(c["value"]),
+            limit=number(c["limit"]),
+            unit=c["unit"],
+            margin=f"{c['margin']:.3f}",
+            status=_status(c),
+            source=readable(c["source"]),
+        )
+        for c in doc.get("checks", [])
+    ]
+    decisions = [
+        Decision(
+            id=d["id"],
+            title=d["title"],
+            decision=d["decision"],
+            rationale=d["rationale"],
+            source=readable(d["source"]),
+            inputs=_inputs(d.get("inputs", {})),
+        )
+        for d in doc.get("decisions", [])
+    ]
+    lowest = min(doc.get("checks", []), key=lambda c: c["margin"], default=None)
+    rows = list(summary)
+    if lowest is not None:
+        rows.append(("lowest margin", f"{lowest['name']}: {lowest['margin']:.3f}"))
+    rows.append(("checks", _tally(checks)))
+    sources = [d["source"] for d in doc.get("decisions", [])] + [
+        c["source"] for c in doc.get("checks", [])
+    ]
+    return Sheet(
+        title=head.get("title") or f"{_words(head['application'])} drive",
+        application=head["application"],
+        status=head["status"],
+        version=head["advisor_version"],
+        headline=headline,
+        summary=rows,
+        requirements=[
+            block(_words(k), v) for k, v in doc["requirements"].items() if isinstance(v, dict)
+        ],
+        components=[block(_words(k), v) for k, v in doc["design"].items() if isinstance(v, dict)],
+        decisions=decisions,
+        checks=checks,
+        warnings=list(doc.get("warnings", [])),
+        references=cited(sources),
+    )
+
+
+def _tally(checks: list[Check]) -> str:
+    n = {s: sum(c.status == s for c in checks) for s in ("passes", "tight", "fails")}
+    text = f"{len(checks)} checks: {n['passes'] + n['tight']} pass"
+    if n["tight"]:
+        text += f" ({n['tight']} with a margin below {TIGHT_MARGIN:g})"
+    if n["fails"]:
+        text += f", {n['fails']} fail"
+    return text

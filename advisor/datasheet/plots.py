@@ -1,0 +1,351 @@
+"""The datasheet's plots: which ones a report has (pure, from its plain data) and each drawn
+as an SVG with matplotlib, imported here only (``pip install 'drive-advisor[report]'``).
+
+The SVG is deterministic, so that two datasheets of the same input diff clean: no date, no
+creator, ids salted per plot (``svg.hashsalt``) instead of random, text kept as text.
+"""
+
+import io
+from dataclasses import dataclass, field
+from typing import Any
+
+
+@dataclass
+class Line:
+    label: str
+    x: list[float]
+    y: list[float]
+    style: str = "line"  # line | points | marker | steps
+
+
+@dataclass
+class Plot:
+    id: str
+    title: str
+    xlabel: str
+    ylabel: str
+    lines: list[Line]
+    vlines: list[tuple[float, str]] = field(default_factory=list)
+    hlines: list[tuple[float, str]] = field(default_factory=list)
+    logx: bool = False
+
+
+def _get(doc: Any, *path: str) -> Any:
+    for p in path:
+        if not isinstance(doc, dict) or p not in doc:
+            return None
+        doc = doc[p]
+    return doc
+
+
+def motor_characteristics(doc: dict) -> Plot | None:
+    """M(n) of the candidate induction motors with the screw's working point (seed 001)."""
+    cands = _get(doc, "design", "motor", "candidates") or []
+    lines = [
+        Line(
+            f"{c.get('model') or c.get('role')} {c.get('rated_power_kW', 0):g} kW",
+            c["curve"]["speed_rpm"],
+            c["curve"]["torque_Nm"],
+        )
+        for c in cands
+        if isinstance(_get(c, "curve", "speed_rpm"), list)
+    ]
+    n, m = (
+        _get(doc, "design", "motor", "working_speed_rpm"),
+        _get(doc, "design", "screw", "torque_Nm"),
+    )
+    if not lines:
+        return None
+    if n is not None and m is not None:
+        lines.append(Line(f"working point {n:.0f} rpm, {m:.4g} N·m", [n], [m], "marker"))
+    return Plot(
+        "motor-torque-speed",
+        "M(n) of the candidate motors and the working point",
+        "speed, rpm",
+        "torque, N·m",
+        lines,
+    )
+
+
+def motor_losses(doc: dict) -> Plot | None:
+    """The BLDC motor's losses at each candidate speed, the chosen one marked (seed 000)."""
+    cands = [c for c in _get(doc, "design", "motor", "candidates") or [] if "losses_W" in c]
+    if not cands:
+        return None
+    cands = sorted(cands, key=lambda c: c["speed_rpm"])
+    speeds = [c["speed_rpm"] for c in cands]
+    style = "line" if len(cands) > 1 else "points"
+    lines = [
+        Line(part, speeds, [c["losses_W"][part] for c in cands], style)
+        for part in ("ohmic", "iron", "magnets", "total")
+        if all(part in c["losses_W"] for c in cands)
+    ]
+    chosen = _get(doc, "design", "motor", "speed_rpm")
+    vlines = [(chosen, f"chosen {chosen:g} rpm")] if chosen is not None else []
+    return Plot(
+        "motor-losses", "Motor losses against speed", "motor speed, rpm", "loss, W", lines, vlines
+    )
+
+
+def _point(label: str, g: Any, style: str = "marker") -> Line | None:
+    if isinstance(g, dict) and "outer_diameter_mm" in g and "mass_kg" in g:
+        return Line(label, [g["outer_diameter_mm"]], [g["mass_kg"]], style)
+    return None
+
+
+def reducer_space(doc: dict) -> Plot | None:
+    """The reducer design space as mass against outer diameter: the rule's design, the
+    optima of the sweep and, where the report has it, the Pareto front (seed 000)."""
+    g = _get(doc, "design", "gearbox")
+    if not isinstance(g, dict) or "mass_kg" not in g:
+        return None
+    lines: list[Line] = []
+    pareto = g.get("pareto") if isinstance(g.get("pareto"), dict) else {}
+    if isinstance(pareto.get("points"), list):  # a front as rows
+        rows = [p for p in pareto["points"] if "outer_diameter_mm" in p and "mass_kg" in p]
+        xs, ys = [p["outer_diameter_mm"] for p in rows], [p["mass_kg"] for p in rows]
+    else:  # a front as columns, like fig1
+        xs, ys = pareto.get("outer_diameter_mm"), pareto.get("mass_kg")
+    if isinstance(xs, list) and isinstance(ys, list) and xs and len(xs) == len(ys):
+        front = sorted(zip(xs, ys, strict=True))
+        size = pareto.get("front_size")
+        lines.append(
+            Line(
+                "Pareto front (mass, diameter, length, efficiency)"
+                + (f": {len(front)} of {size} designs" if size else ""),
+                [x for x, _ in front],
+                [y for _, y in front],
+                "points",
+            )
+        )
+    by = _point("lightest design that dominates the rule's", pareto.get("dominated_by"))
+    for label, part in (
+        ("least mass in the design space", g.get("optimum")),
+        ("least diameter in the design space", g.get("optimum_min_diameter")),
+        ("the rule's design (adopted)", g),
+    ):
+        line = _point(label, part)
+        if line is not None:
+            lines.append(line)
+    if by is not None:
+        lines.append(by)
+    d_max = _get(doc, "requirements", "envelope", "max_outer_diameter_mm")
+    vlines = [(d_max, f"envelope Ø{d_max:g} mm")] if d_max is not None else []
+    return Plot(
+        "reducer-design-space",
+        "Reducer design space: mass against outer diameter",
+        "outer diameter, mm",
+        "mass, kg",
+        lines,
+        vlines,
+    )
+
+
+def reducer_fig1(doc: dict) -> Plot | None:
+    """Stage volume per unit torque against q for 2…12 rows (seed 000, fig. 1)."""
+    f = _get(doc, "design", "gearbox", "fig1")
+    if not isinstance(f, dict) or not f.get("q"):
+        return None
+    lines = [
+        Line(f"{n} rows", f["q"], vols)
+        for n, vols in zip(f["rows"], f["volume_per_torque_cm3_per_Nm"], strict=True)
+    ]
+    return Plot(
+        "reducer-fig1",
+        "Stage volume per unit torque against q (seed 000, fig. 1)",
+        "stage ratio q",
+        "volume per torque, cm³/(N·m)",
+        lines,
+    )
+
+
+def move_time(doc: dict) -> Plot | None:
+    """Move time against the ratio for the fastest motor, the optimum marked (seed 003)."""
+    m = _get(doc, "design", "motion")
+    curve = _get(m, "curve")
+    if not isinstance(curve, dict) or not curve.get("ratio"):
+        return None
+    lines = [Line(f"motor {m.get('motor', '')}".strip(), curve["ratio"], curve["move_time_s"])]
+    if "optimal_ratio" in m and "move_time_s" in m:
+        lines.append(
+            Line(
+                f"optimum i = {m['optimal_ratio']:.4g}, {m['move_time_s']:.4g} s",
+                [m["optimal_ratio"]],
+                [m["move_time_s"]],
+                "marker",
+            )
+        )
+    est = m.get("estimated_ratio")
+    vlines = [(est, f"graphical estimate i = {est:.4g}")] if est is not None else []
+    return Plot(
+        "move-time-ratio",
+        "Move time against ratio",
+        "ratio i",
+        "move time, s",
+        lines,
+        vlines,
+        logx=True,
+    )
+
+
+def run_up(doc: dict) -> Plot | None:
+    """The rotor's run-up at the drive torque to the design speed (seed 002)."""
+    up = _get(doc, "design", "rotor", "run_up")
+    if not isinstance(up, dict) or not up.get("time_s"):
+        return None
+    target = _get(doc, "requirements", "rotor", "speed_rad_s")
+    t_req = _get(doc, "requirements", "rotor", "run_up_time_s")
+    return Plot(
+        "run-up",
+        "Run-up of the rotor at the drive torque",
+        "time, s",
+        "speed, rad/s",
+        [Line("run-up", up["time_s"], up["speed_rad_s"])],
+        [(t_req, f"required {t_req:g} s")] if t_req is not None else [],
+        [(target, f"design speed {target:g} rad/s")] if target is not None else [],
+    )
+
+
+def slew(doc: dict) -> Plot | None:
+    """The rotor's speed in a sustained slew with the drive limited to the steady torque
+    without the gyroscopic reaction (seed 002)."""
+    s = _get(doc, "design", "rotor", "slew")
+    curve = _get(s, "curve")
+    if not isinstance(curve, dict) or not curve.get("time_s"):
+        return None
+    settle = s.get("balance_speed_rad_s")
+    return Plot(
+        "slew",
+        "Rotor speed in a sustained slew at the steady torque",
+        "time, s",
+        "speed, rad/s",
+        [Line("speed", curve["time_s"], curve["speed_rad_s"])],
+        [],
+        [(settle, f"settles at {settle:.4g} rad/s")] if settle is not None else [],
+    )
+
+
+def duty(doc: dict) -> Plot | None:
+    """Motor torque against time over the duty cycle, where the report has one: its phases
+    (each ``time_s`` or ``duration_s`` long at ``torque_Nm``) as steps, or arrays
+    (``time_s`` and ``…_Nm``); the RMS torque and the peak limit as lines."""
+    d = _get(doc, "design", "duty")
+    if not isinstance(d, dict):
+        return None
+    phases = next(
+        (
+            v
+            for v in d.values()
+            if isinstance(v, list) and v and all(isinstance(x, dict) for x in v)
+        ),
+        None,
+    )
+    lines: list[Line] = []
+    if isinstance(d.get("time_s"), list):
+        for k, v in d.items():
+            if k.endswith("_Nm") and isinstance(v, list) and len(v) == len(d["time_s"]):
+                lines.append(Line(k.removesuffix("_Nm").replace("_", " "), d["time_s"], v, "steps"))
+    elif phases and all(("duration_s" in s or "time_s" in s) and "torque_Nm" in s for s in phases):
+        t, xs, ys = 0.0, [], []
+        for s in phases:
+            xs.append(t)
+            ys.append(s["torque_Nm"])
+            t += s.get("duration_s", s.get("time_s", 0.0))
+        xs.append(t)
+        ys.append(phases[-1]["torque_Nm"])
+        lines.append(Line("motor torque", xs, ys, "steps"))
+    if not lines:
+        return None
+    hlines = []
+    rms = next((v for k, v in d.items() if "rms" in k and isinstance(v, int | float)), None)
+    if rms is not None:
+        hlines.append((rms, f"RMS {rms:.4g} N·m"))
+    limit = d.get("peak_torque_limit_Nm")
+    if isinstance(limit, int | float):
+        hlines.append((limit, f"peak limit {limit:.4g} N·m"))
+    return Plot(
+        "duty", "Duty cycle: torque against time", "time, s", "torque, N·m", lines, [], hlines
+    )
+
+
+def duty_thermal(doc: dict) -> Plot | None:
+    """The winding's temperature rise over repeated duty cycles against its limit."""
+    th = _get(doc, "design", "duty", "thermal")
+    if not isinstance(th, dict) or not th.get("time_s") or not th.get("rise_K"):
+        return None
+    lim = th.get("limit_rise_K")
+    return Plot(
+        "duty-thermal",
+        "Winding temperature rise over repeated cycles",
+        "time, s",
+        "rise, K",
+        [Line("rise", th["time_s"], th["rise_K"])],
+        [],
+        [(lim, f"limit {lim:g} K")] if isinstance(lim, int | float) else [],
+    )
+
+
+PLOTS = (
+    motor_characteristics,
+    motor_losses,
+    reducer_space,
+    reducer_fig1,
+    move_time,
+    run_up,
+    slew,
+    duty,
+    duty_thermal,
+)
+
+
+def plots(doc: dict) -> list[Plot]:
+    """Every plot the report has data for, in a fixed order."""
+    return [p for p in (f(doc) for f in PLOTS) if p is not None]
+
+
+def svg(plot: Plot, salt: str) -> str:
+    """The plot as an inline ``<svg>`` element, byte for byte the same for the same data."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    from matplotlib.figure import Figure
+
+    style = {
+        "svg.hashsalt": salt,
+        "svg.fonttype": "none",
+        "font.family": "DejaVu Sans",
+        "font.size": 9,
+        "axes.grid": True,
+        "grid.alpha": 0.3,
+    }
+    with matplotlib.rc_context(style):
+        fig = Figure(figsize=(6.4, 3.8))
+        ax = fig.add_subplot()
+        for line in plot.lines:
+            if line.style == "marker":
+                ax.plot(line.x, line.y, "o", markersize=8, label=line.label, zorder=5)
+            elif line.style == "points":
+                ax.plot(line.x, line.y, ".", markersize=7, label=line.label)  # no curve between
+            elif line.style == "steps":
+                ax.step(line.x, line.y, where="post", label=line.label)
+            else:
+                ax.plot(line.x, line.y, label=line.label)
+        for x, label in plot.vlines:
+            ax.axvline(x, linestyle="--", color="grey", linewidth=1, label=label)
+        for y, label in plot.hlines:
+            ax.axhline(y, linestyle=":", color="grey", linewidth=1, label=label)
+        if plot.logx:
+            from matplotlib.ticker import NullFormatter, ScalarFormatter
+
+            ax.set_xscale("log")
+            ax.xaxis.set_major_formatter(ScalarFormatter())
+            ax.xaxis.set_minor_formatter(NullFormatter())
+        ax.set_title(plot.title)
+        ax.set_xlabel(plot.xlabel)
+        ax.set_ylabel(plot.ylabel)
+        ax.legend(fontsize=7)
+        fig.tight_layout()
+        buf = io.StringIO()
+        fig.savefig(buf, format="svg", metadata={"Date": None, "Creator": None})
+    text = buf.getvalue()
+    return text[text.index("<svg") :].strip()
