@@ -165,6 +165,9 @@ _FRIENDLY = {
     "model_type": "must be a table",
     "model_attributes_type": "must be a table",
     "string_too_long": "is too long (at most {max_length} characters)",
+    "list_type": "must be a list in brackets ([a, b, …])",
+    "too_short": "must list at least {min_length} item(s)",
+    "too_long": "must list at most {max_length} items",
 }
 
 

@@ -10,37 +10,17 @@ import math
 from dataclasses import dataclass, field
 from typing import Any
 
+from advisor.core.questions import UNIT_SUFFIXES
 from advisor.core.report import _is_curve, curve_part
 from advisor.datasheet.references import cited, readable
 
 #: A check whose margin is below this passes, but with little to spare: marked "tight".
 TIGHT_MARGIN = 1.1
 
-#: Units named by the suffixes of report keys (the requirement suffixes and a few more).
+#: Units named by the suffixes of report keys: the requirement suffixes and the report's own.
 UNITS = {
-    "N": "N",
-    "Nm": "N·m",
-    "m": "m",
-    "mm": "mm",
-    "mm2": "mm²",
-    "s": "s",
-    "h": "h",
-    "rpm": "rpm",
-    "Hz": "Hz",
-    "kg": "kg",
-    "kgm2": "kg·m²",
-    "kgm2_s": "kg·m²/s",
-    "kg_m3": "kg/m³",
-    "m2_s": "m²/s",
-    "mm2_s": "mm²/s",
-    "rad": "rad",
-    "rad_s": "rad/s",
-    "deg": "deg",
-    "W": "W",
+    **UNIT_SUFFIXES,
     "kW": "kW",
-    "A": "A",
-    "T": "T",
-    "ohm": "Ω",
     "pct": "%",
     "cm3": "cm³",
     "MPa": "MPa",

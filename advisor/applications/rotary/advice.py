@@ -43,6 +43,20 @@ PARETO_POINTS = 16
 ENVELOPE = note("the requirement's [envelope]")
 
 
+def _ratio_hint(output_rpm: float, speeds_rpm: list[float]) -> str:
+    """The total ratios a reducer makes (one stage's minimum for a bore, seed 000 eq. (14); four
+    stages of 20 × 12 × 12 × the stage maximum) and the speeds that reach them."""
+    q_min = rd.STAGE_RATIO_MIN
+    q_max = wg_rules.Q_OUT_PREFERRED * wg_rules.Q_NEXT**2 * rd.STAGE_RATIO_MAX
+    lo, hi = min(speeds_rpm), max(speeds_rpm)
+    return (
+        f"one to four wave-gear stages make q_Σ = {q_min:g} … {q_max:.6g} (one stage at least "
+        f"{q_min:g} for a bore, eq. (14)): motor.candidate_speeds_rpm "
+        f"{q_min * output_rpm:.4g} … {q_max * output_rpm:.4g} rpm, or rotary.speed_rpm "
+        f"{lo / q_max:.4g} … {hi / q_min:.4g} rpm"
+    )
+
+
 def _steel(req: Requirements, cat: Catalogs):
     ref = req.motor.reference  # type: ignore[union-attr]
     steel = cat.electrical_steel(ref.steel_grade, ref.steel_thickness_mm)
@@ -113,15 +127,19 @@ def advise_rotary(req: Requirements, cat: Catalogs, trace: Trace):
     if not reducible:
         raise InfeasibleError(
             "no feasible design: no candidate speed gives a ratio a wave-gear reducer can make",
-            [f"{c['speed_rpm']:g} rpm → q_Σ = {c['q_total']:.4g}" for c in cands],
+            [
+                *(f"{c['speed_rpm']:g} rpm → q_Σ = {c['q_total']:.4g}" for c in cands),
+                _ratio_hint(rot.speed_rpm, [c["speed_rpm"] for c in cands]),
+            ],
         )
-    # eq. (10) at the reference speed, with the losses of the model in use; where the reference
-    # speed gives no reducer (q_Σ beyond what wave-gear stages make), at the slowest candidate
-    # that does: K_ом and K_маг are constants of the frame, any working point gives them
+    # eq. (10) at the reference speed, with the losses of the model in use; where no reducer
+    # makes the reference speed's ratio, at the candidate nearest to it (K_om and K_mag are
+    # the constants of eqs. (9) and (5), read at any operating point), never nan
     at_ref = _candidate(ref.speed_rpm, req, steel, steel_mass, terms, params)
-    point = at_ref if at_ref["split"] else reducible[0]
-    core = point["losses"]["iron"] + point["losses"]["magnets"]
-    f_opt = bldc.optimum_frequency_Hz(point["losses"]["ohmic"], core, point["frequency_Hz"])
+    if not at_ref["split"]:
+        at_ref = min(reducible, key=lambda c: abs(math.log(c["speed_rpm"] / ref.speed_rpm)))
+    core = at_ref["losses"]["iron"] + at_ref["losses"]["magnets"]
+    f_opt = bldc.optimum_frequency_Hz(at_ref["losses"]["ohmic"], core, at_ref["frequency_Hz"])
     n_opt = f_opt * 60.0 / ref.pole_pairs
     # the frame's limit is thermal: a speed is a candidate only if its losses are carried
     limit, basis = bm.loss_limit(mot, steel, steel_mass, terms)

@@ -85,8 +85,10 @@ def too_lossy(cands: list[dict], limit: float, basis: str, n_opt: float) -> Infe
 
 
 def losses_check(id: str, name: str, losses_W: float, limit_W: float, source: Cite) -> Check:
-    """Losses against the frame's limit; at the limit within rounding the margin is 1."""
-    margin = limit_W / losses_W if losses_W > 0 else math.inf
-    if bl_rules.within_limit(losses_W, limit_W):
-        margin = max(margin, 1.0)
-    return Check(id, name, losses_W, limit_W, "W", margin, source)
+    """Losses against the frame's limit with the stated allowance
+    (:data:`rules.bldc.LIMIT_REL_TOL`): the check carries the limit it really applies, so its
+    margin and its verdict agree, and its name states the frame's own figure."""
+    allowed_W = limit_W * (1.0 + bl_rules.LIMIT_REL_TOL)
+    margin = allowed_W / losses_W if losses_W > 0 else math.inf
+    name = f"{name} ({limit_W:.5g} W + {bl_rules.LIMIT_REL_TOL:.1%} allowance)"
+    return Check(id, name, losses_W, allowed_W, "W", margin, source)
