@@ -9,6 +9,7 @@ from functools import cache
 from pathlib import Path
 from typing import Any, NamedTuple
 
+from advisor.core.cite import Cite
 from advisor.core.errors import CatalogError
 from catalogs.rows import (
     Bearing,
@@ -29,6 +30,10 @@ MOTORS_FILE = "induction_4a.toml"
 MATERIALS_FILE = "screw_materials.toml"
 STEELS_FILE = "electrical_steels.toml"
 BEARINGS_FILE = "skf_bearings.toml"
+BIBLIOGRAPHY_FILE = "bibliography.toml"
+
+#: A catalog's [sources] entry, resolved: (bibliography id, what the file takes from it).
+SourceMap = dict[str, tuple[str, str]]
 
 
 # ---------------------------------------------------------------- the bundle
@@ -38,13 +43,23 @@ class Catalogs(NamedTuple):
     rated_powers_kW: tuple[float, ...]
     powers_source: str
     motors: tuple[InductionMotor, ...]
-    motor_sources: dict[str, str]
+    motor_sources: SourceMap
     materials: Materials
     electrical_steels: tuple[ElectricalSteel, ...]
-    steel_sources: dict[str, str]
+    steel_sources: SourceMap
     bearings: tuple[Bearing, ...] = ()
     bearing_friction: dict[str, FrictionConstants] = {}  # noqa: RUF012 - NamedTuple default
-    bearing_sources: dict[str, str] = {}  # noqa: RUF012
+    bearing_sources: SourceMap = {}  # noqa: RUF012
+    #: catalogs/bibliography.toml (plus a user directory's): id → entry (fields as written)
+    bibliography: dict[str, dict[str, Any]] = {}  # noqa: RUF012
+
+    def cite_rows(self, sources: SourceMap, keys: "str | list[str] | tuple[str, ...]") -> Cite:
+        """The citation of a catalog row whose ``source`` names ``keys`` of ``sources``."""
+        keys = [keys] if isinstance(keys, str) else keys
+        return Cite(tuple((sources[k][0], sources[k][1]) for k in keys))
+
+    def short_names(self) -> dict[str, str]:
+        return {i: e["short"] for i, e in self.bibliography.items()}
 
     def bearing(self, designation: str) -> Bearing | None:
         key = " ".join(designation.split()).upper()
@@ -143,14 +158,73 @@ def _load_powers(path: Path) -> tuple[list[float], str]:
     return [float(p) for p in powers], str(data.get("source", path.name))
 
 
-def _load_motors(path: Path) -> tuple[list[InductionMotor], dict[str, str]]:
+def _load_bibliography(path: Path, known: dict[str, dict[str, Any]]) -> dict[str, dict[str, Any]]:
+    """The [[source]] entries of a bibliography file, validated, ids unique."""
+    from pydantic import ValidationError
+
+    from catalogs.schema import BibEntry
+
+    data = _read(path)
+    out = dict(known)
+    for i, row in enumerate(_rows(path, data, "source"), start=1):
+        where = f"row {i} (id = {row.get('id')!r})"
+        try:
+            e = BibEntry.model_validate(row)
+        except ValidationError as exc:
+            raise _fail(path, where, exc) from None
+        if e.id in out:
+            raise CatalogError(f"catalog {path}, {where}: id {e.id!r} appears twice")
+        out[e.id] = e.model_dump(exclude_none=True)
+    return out
+
+
+def _resolve_sources(path: Path, raw: Any, bib: dict[str, dict[str, Any]]) -> SourceMap:
+    """A catalog's [sources] table resolved to bibliography ids: ``key = { id = "...",
+    note = "..." }``, or ``key = "note"`` where the key is itself a bibliography id.
+
+    A user catalog may also name a source of its own, ``key = "what it is"``: it joins the
+    bibliography (``bib`` is extended) as an entry of that file. A shipped catalog may not."""
+    if not isinstance(raw, dict):
+        raise CatalogError(f"catalog {path}: [sources] must be a table")
+    out: SourceMap = {}
+    for key, v in raw.items():
+        if isinstance(v, str):
+            ref, note = key, v
+        elif isinstance(v, dict) and set(v) <= {"id", "note"} and isinstance(v.get("id"), str):
+            ref, note = v["id"], str(v.get("note", ""))
+        else:
+            raise CatalogError(
+                f'catalog {path}: [sources] {key} = {v!r}: give {{ id = "<bibliography id>", '
+                'note = "..." }'
+            )
+        if ref not in bib and isinstance(v, str) and path.parent != HERE:
+            bib[ref] = {
+                "id": ref,
+                "short": ref,
+                "authors": [],
+                "title": v,
+                "publisher": f"user catalog {path}",
+            }
+            note = ""
+        if ref not in bib:
+            raise CatalogError(
+                f"catalog {path}: [sources] {key}: {ref!r} is not an id of the bibliography "
+                f"({BIBLIOGRAPHY_FILE})"
+            )
+        out[key] = (ref, note)
+    return out
+
+
+def _load_motors(
+    path: Path, bib: dict[str, dict[str, Any]]
+) -> tuple[list[InductionMotor], SourceMap]:
     from pydantic import ValidationError
 
     from advisor.calc.induction import fit_kloss
     from catalogs.schema import InductionMotor as MotorSchema
 
     data = _read(path)
-    sources = data.get("sources", {})
+    sources = _resolve_sources(path, data.get("sources", {}), bib)
     freq = data.get("supply_frequency_Hz", 50)
     out: list[InductionMotor] = []
     for i, row in enumerate(_rows(path, data, "motor"), start=1):
@@ -195,14 +269,16 @@ def _check_motor_series(path: Path, motors: list[InductionMotor]) -> None:
                 )
 
 
-def _load_materials(path: Path) -> Materials:
+def _load_materials(path: Path, bib: dict[str, dict[str, Any]]) -> Materials:
     from pydantic import ValidationError
 
     from catalogs.schema import MaterialsFile
 
     data = _read(path)
+    sources = _resolve_sources(path, data.get("sources", {}), bib)
     try:
-        return Materials.from_dict(MaterialsFile.model_validate(data).model_dump())
+        valid = MaterialsFile.model_validate(data).model_dump()
+        return Materials.from_dict({**valid, "sources": sources})
     except ValidationError as exc:
         err = exc.errors()[0]
         loc = err["loc"]
@@ -214,10 +290,10 @@ def _load_materials(path: Path) -> Materials:
         raise _fail(path, where, exc) from None
 
 
-def _replace_materials(path: Path, shipped: Materials) -> Materials:
+def _replace_materials(path: Path, shipped: Materials, bib: dict[str, dict[str, Any]]) -> Materials:
     """A user materials file replaces the shipped one whole, so it must hold every pair and
     steel a requirement can name (the shipped names)."""
-    user = _load_materials(path)
+    user = _load_materials(path, bib)
     for what, have, need in (
         ("pair", [p.name for p in user.pair], [p.name for p in shipped.pair]),
         ("steel", [s.name for s in user.steel], [s.name for s in shipped.steel]),
@@ -248,12 +324,20 @@ def load_catalogs(user_dir: Path | None = None) -> Catalogs:
             MATERIALS_FILE,
             STEELS_FILE,
             BEARINGS_FILE,
+            BIBLIOGRAPHY_FILE,
         )
     ]
     if user_dir is not None:
         files += [
             user_dir / f
-            for f in (THREADS_FILE, MOTORS_FILE, MATERIALS_FILE, STEELS_FILE, BEARINGS_FILE)
+            for f in (
+                THREADS_FILE,
+                MOTORS_FILE,
+                MATERIALS_FILE,
+                STEELS_FILE,
+                BEARINGS_FILE,
+                BIBLIOGRAPHY_FILE,
+            )
         ]
     cache_file = _cache_file(files)
     if cache_file is not None:
@@ -267,17 +351,20 @@ def load_catalogs(user_dir: Path | None = None) -> Catalogs:
 
 
 def _load_and_validate(user_dir: Path | None) -> Catalogs:
+    bib = _load_bibliography(HERE / BIBLIOGRAPHY_FILE, {})
+    if user_dir is not None and (user_dir / BIBLIOGRAPHY_FILE).exists():
+        bib = _load_bibliography(user_dir / BIBLIOGRAPHY_FILE, bib)
     threads, threads_source = _load_threads(HERE / THREADS_FILE)
     powers, powers_source = _load_powers(HERE / POWERS_FILE)
-    motors, motor_sources = _load_motors(HERE / MOTORS_FILE)
-    materials = _load_materials(HERE / MATERIALS_FILE)
-    steels, steel_sources = _load_steels(HERE / STEELS_FILE)
-    bearings, friction, bearing_sources = _load_bearings(HERE / BEARINGS_FILE)
+    motors, motor_sources = _load_motors(HERE / MOTORS_FILE, bib)
+    materials = _load_materials(HERE / MATERIALS_FILE, bib)
+    steels, steel_sources = _load_steels(HERE / STEELS_FILE, bib)
+    bearings, friction, bearing_sources = _load_bearings(HERE / BEARINGS_FILE, bib)
     if user_dir is not None:
         if not user_dir.is_dir():
             raise CatalogError(f"catalog directory {user_dir}: not a directory")
         if (user_dir / MOTORS_FILE).exists():
-            extra, extra_sources = _load_motors(user_dir / MOTORS_FILE)
+            extra, extra_sources = _load_motors(user_dir / MOTORS_FILE, bib)
             motors = motors + extra
             motor_sources = {**motor_sources, **extra_sources}
             _check_unique(user_dir / MOTORS_FILE, [m.model for m in motors], "model")
@@ -286,14 +373,14 @@ def _load_and_validate(user_dir: Path | None) -> Catalogs:
             threads = threads + extra_threads
             _check_unique(user_dir / THREADS_FILE, [t.name for t in threads], "thread")
         if (user_dir / MATERIALS_FILE).exists():
-            materials = _replace_materials(user_dir / MATERIALS_FILE, materials)
+            materials = _replace_materials(user_dir / MATERIALS_FILE, materials, bib)
         if (user_dir / STEELS_FILE).exists():
-            extra_steels, extra_sources = _load_steels(user_dir / STEELS_FILE)
+            extra_steels, extra_sources = _load_steels(user_dir / STEELS_FILE, bib)
             steels = steels + extra_steels
             steel_sources = {**steel_sources, **extra_sources}
             _check_unique(user_dir / STEELS_FILE, [s.name for s in steels], "steel")
         if (user_dir / BEARINGS_FILE).exists():
-            extra_b, extra_f, extra_src = _load_bearings(user_dir / BEARINGS_FILE, friction)
+            extra_b, extra_f, extra_src = _load_bearings(user_dir / BEARINGS_FILE, bib, friction)
             bearings = bearings + extra_b
             friction = {**friction, **extra_f}
             bearing_sources = {**bearing_sources, **extra_src}
@@ -313,6 +400,7 @@ def _load_and_validate(user_dir: Path | None) -> Catalogs:
         bearings=tuple(bearings),
         bearing_friction=friction,
         bearing_sources=bearing_sources,
+        bibliography=bib,
     )
 
 
@@ -341,14 +429,16 @@ def _complete_bearing(row: dict[str, Any]) -> dict[str, Any]:
 
 
 def _load_bearings(
-    path: Path, known_friction: dict[str, FrictionConstants] | None = None
-) -> tuple[list[Bearing], dict[str, FrictionConstants], dict[str, str]]:
+    path: Path,
+    bib: dict[str, dict[str, Any]],
+    known_friction: dict[str, FrictionConstants] | None = None,
+) -> tuple[list[Bearing], dict[str, FrictionConstants], SourceMap]:
     from pydantic import ValidationError
 
     from catalogs.schema import BearingRow, FrictionRow
 
     data = _read(path)
-    sources = data.get("sources", {})
+    sources = _resolve_sources(path, data.get("sources", {}), bib)
     friction: dict[str, FrictionConstants] = {}
     table = data.get("friction", {})
     if not isinstance(table, dict):
@@ -382,13 +472,15 @@ def _load_bearings(
     return out, friction, dict(sources)
 
 
-def _load_steels(path: Path) -> tuple[list[ElectricalSteel], dict[str, str]]:
+def _load_steels(
+    path: Path, bib: dict[str, dict[str, Any]]
+) -> tuple[list[ElectricalSteel], SourceMap]:
     from pydantic import ValidationError
 
     from catalogs.schema import ElectricalSteelRow
 
     data = _read(path)
-    sources = data.get("sources", {})
+    sources = _resolve_sources(path, data.get("sources", {}), bib)
     out = []
     for i, row in enumerate(_rows(path, data, "steel"), start=1):
         where = f"row {i} (grade = {row.get('grade')!r})"
@@ -414,7 +506,7 @@ def _check_unique(path: Path, names: list[str], what: str) -> None:
 
 
 # ---------------------------------------------------------------- cache of validated catalogs
-CACHE_VERSION = 3
+CACHE_VERSION = 4
 
 
 def _cache_file(files: list[Path]) -> Path | None:
@@ -442,18 +534,23 @@ def _read_cache(path: Path) -> Catalogs | None:
             rated_powers_kW=tuple(data["rated_powers_kW"]),
             powers_source=data["powers_source"],
             motors=tuple(InductionMotor(**m) for m in data["motors"]),
-            motor_sources=data["motor_sources"],
+            motor_sources=_source_map(data["motor_sources"]),
             materials=Materials.from_dict(mat),
             electrical_steels=tuple(ElectricalSteel(**x) for x in data["electrical_steels"]),
-            steel_sources=data["steel_sources"],
+            steel_sources=_source_map(data["steel_sources"]),
             bearings=tuple(Bearing(**b) for b in data["bearings"]),
             bearing_friction={
                 k: FrictionConstants(**v) for k, v in data["bearing_friction"].items()
             },
-            bearing_sources=data["bearing_sources"],
+            bearing_sources=_source_map(data["bearing_sources"]),
+            bibliography=data["bibliography"],
         )
     except (OSError, ValueError, KeyError, TypeError):
         return None  # absent or stale format: validate the files again
+
+
+def _source_map(d: dict[str, list[str]]) -> SourceMap:
+    return {k: (v[0], v[1]) for k, v in d.items()}
 
 
 def _write_cache(path: Path, cat: Catalogs) -> None:
@@ -470,6 +567,7 @@ def _write_cache(path: Path, cat: Catalogs) -> None:
         "bearings": [b._asdict() for b in cat.bearings],
         "bearing_friction": {k: v._asdict() for k, v in cat.bearing_friction.items()},
         "bearing_sources": cat.bearing_sources,
+        "bibliography": cat.bibliography,
     }
     try:
         path.parent.mkdir(parents=True, exist_ok=True)

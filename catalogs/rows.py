@@ -78,7 +78,7 @@ class StrengthRules(NamedTuple):
 
 
 class Materials(NamedTuple):
-    sources: dict[str, str]
+    sources: dict[str, tuple[str, str]]  # key → (bibliography id, what is taken from it)
     pair: list[FrictionPair]
     steel: list[ScrewSteel]
     nut: NutRules
@@ -96,7 +96,7 @@ class Materials(NamedTuple):
     @classmethod
     def from_dict(cls, d: dict) -> "Materials":
         return cls(
-            sources=d["sources"],
+            sources={k: (v[0], v[1]) for k, v in d["sources"].items()},
             pair=[FrictionPair(**x) for x in d["pair"]],
             steel=[ScrewSteel(**x) for x in d["steel"]],
             nut=NutRules(**d["nut"]),

@@ -1,6 +1,6 @@
 """Pydantic schemas that validate the catalog files (see :mod:`catalogs.loader`)."""
 
-from typing import Annotated, Literal
+from typing import Annotated, Any, Literal
 
 from pydantic import BaseModel, ConfigDict, Field, model_validator
 
@@ -135,7 +135,7 @@ class StrengthRules(_Row):
 
 
 class MaterialsFile(_Row):
-    sources: dict[str, str]
+    sources: dict[str, Any]  # resolved against the bibliography by the loader
     pair: list[FrictionPair]
     steel: list[ScrewSteel]
     nut: NutRules
@@ -240,3 +240,35 @@ class BearingRow(_Row):
         if unknown:
             raise ValueError(f"estimated names unknown fields {sorted(unknown)}")
         return self
+
+
+# ---------------------------------------------------------------- the bibliography
+class BibEntry(_Row):
+    """One source of catalogs/bibliography.toml."""
+
+    id: Annotated[str, Field(pattern=r"^[a-z0-9][a-z0-9.\-]*$", max_length=40)]
+    short: Annotated[str, Field(min_length=1)]
+    authors: list[Annotated[str, Field(min_length=1)]]
+    title: Annotated[str, Field(min_length=1)]
+    journal: str | None = None
+    volume: str | None = None
+    year: Annotated[int, Field(ge=1800, le=2100)] | None = None
+    institution: str | None = None
+    publisher: str | None = None
+    number: str | None = None
+    note: str | None = None
+    file: str | None = None
+
+    @model_validator(mode="after")
+    def _where_published(self) -> "BibEntry":
+        if not (self.journal or self.publisher or self.number):
+            raise ValueError("give journal, publisher or (for a standard) number")
+        return self
+
+
+class SourceRef(_Row):
+    """A [sources] entry of a catalog file: the bibliography id and what the file takes
+    from it (a table, a page, a value)."""
+
+    id: str
+    note: str = ""

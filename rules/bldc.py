@@ -1,8 +1,9 @@
 """Rules of the brushless motor choice (seed 000)."""
 
+from advisor.core.cite import cite
 from advisor.core.rulebook import Finding, rule
 
-SEED_000 = "000_e109c3d4c17eaf1c.txt"
+SEED_000 = cite("seed-000")
 
 
 @rule("BL-01", "Type of motor", SEED_000)
@@ -64,9 +65,11 @@ def choose_speed(
         + tail
         + (" Speeds over the loss limit are shown but not chosen." if over else ""),
         {
-            "losses_W": {f"{n:g}": round(w, 2) for n, w in losses_by_speed.items()},
-            "loss_limit_W": round(loss_limit_W, 2),
-            "current_A": {f"{n:g}": round(a, 3) for n, a in current_by_speed.items()},
+            "speed_rpm": best,
+            "total_loss_W": losses_by_speed[best],
+            "losses_W": {f"{n:g}": w for n, w in losses_by_speed.items()},
+            "loss_limit_W": loss_limit_W,
+            "current_A": {f"{n:g}": a for n, a in current_by_speed.items()},
         },
     )
 

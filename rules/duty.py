@@ -1,19 +1,22 @@
 """Rules of a duty cycle (issue 15): the motor and ratio for the cycle, the thermal verdict,
 the inertia ratio against its guideline, the starts an induction motor allows."""
 
+from advisor.core.cite import cite, note
 from advisor.core.rulebook import Finding, rule
 
-IEC_60034_1 = "IEC 60034-1 (GOST IEC 60034-1-2014), duty types S1–S10"
-KLYUCHEV = "Klyuchev, «Теория электропривода»: method of equivalent torque"
-INERTIA_GUIDE = (
-    "servo sizing practice: load/motor inertia ≤ 10 for a standard axis, ≤ 5 for high "
-    "precision (e.g. autoengcalc.in servo load calculator; KEB, 'Sizing servo motors', 2023)"
+IEC_60034_1 = cite("iec-60034-1", "duty types S1–S10")
+KLYUCHEV = cite("klyuchev", "method of equivalent torque")
+INERTIA_GUIDE = (cite("keb-servo") + cite("autoengcalc")).with_note(
+    "servo sizing practice: load/motor inertia ≤ 10 for a standard axis, ≤ 5 for high precision"
 )
+#: The duty cycle's own basis: the project's issue 15, not a published source.
+ISSUE_15 = note("issue 15")
+SEED_003 = cite("seed-003")
 #: The guideline of servo practice for the reflected load over the motor's inertia.
 INERTIA_RATIO_GUIDELINE = 10.0
 
 
-@rule("DU-01", "Motor and ratio for the cycle", "issue 15; seed 003 (the move)")
+@rule("DU-01", "Motor and ratio for the cycle", SEED_003.at("the move") + ISSUE_15)
 def motor_for_cycle(rows: dict[str, tuple[float, float, bool, str]]) -> Finding[str]:
     """rows: name -> (move time, ratio, passes the cycle, why not)."""
     ok = {n: r for n, r in rows.items() if r[2]}
@@ -33,7 +36,7 @@ def motor_for_cycle(rows: dict[str, tuple[float, float, bool, str]]) -> Finding[
     )
 
 
-@rule("DU-08", "Induction motor for the cycle", "issue 15; " + IEC_60034_1)
+@rule("DU-08", "Induction motor for the cycle", IEC_60034_1 + ISSUE_15)
 def motor_for_cycle_linear(
     rows: dict[str, tuple[float, list[str]]], point_motor: str, inertia_basis: str
 ) -> Finding[str]:
@@ -54,7 +57,7 @@ def motor_for_cycle_linear(
     )
 
 
-@rule("DU-02", "Ratio of least RMS torque", "issue 15; seed 003 (phase torques)")
+@rule("DU-02", "Ratio of least RMS torque", SEED_003.at("phase torques") + ISSUE_15)
 def least_rms_ratio(
     motor: str, ratio: float, rms_Nm: float, chosen: float, chosen_rms_Nm: float
 ) -> Finding[float]:
@@ -84,7 +87,7 @@ def inertia_ratio(ratio: float, guideline: float = INERTIA_RATIO_GUIDELINE) -> F
     )
 
 
-@rule("DU-04", "Thermal verdict of the cycle", KLYUCHEV + "; " + IEC_60034_1)
+@rule("DU-04", "Thermal verdict of the cycle", KLYUCHEV + IEC_60034_1)
 def thermal(utilisation: float, basis: str) -> Finding[float]:
     return Finding(
         utilisation,
@@ -93,7 +96,7 @@ def thermal(utilisation: float, basis: str) -> Finding[float]:
     )
 
 
-@rule("DU-05", "Peak torque of the cycle", "issue 15; seed 003")
+@rule("DU-05", "Peak torque of the cycle", SEED_003 + ISSUE_15)
 def peak(peak_Nm: float, limit_Nm: float, basis: str) -> Finding[float]:
     return Finding(
         peak_Nm,
@@ -102,7 +105,7 @@ def peak(peak_Nm: float, limit_Nm: float, basis: str) -> Finding[float]:
     )
 
 
-@rule("DU-06", "Starts per hour", IEC_60034_1 + " (S4, S5: inertia factor FI)")
+@rule("DU-06", "Starts per hour", cite("iec-60034-1", "S4, S5: inertia factor FI"))
 def starts(required: float, allowed: float, basis: str) -> Finding[bool]:
     return Finding(
         required <= allowed,

@@ -2,9 +2,10 @@
 
 from typing import NamedTuple
 
+from advisor.core.cite import cite
 from advisor.core.rulebook import Finding, rule
 
-SEED_001 = "001_085658f38eaaea54.txt"
+SEED_001 = cite("seed-001")
 
 
 class PoleOption(NamedTuple):
@@ -56,7 +57,7 @@ def choose_pole_pairs(
     )
 
 
-@rule("IM-02", "Rated power and the design space", "GOST 12139-84; " + SEED_001)
+@rule("IM-02", "Rated power and the design space", cite("gost-12139-84") + SEED_001)
 def rated_power_band(
     required_power_kW: float,
     working_power_kW: float,
@@ -93,7 +94,7 @@ class MotorOption(NamedTuple):
     rated_torque_margin: float | None
 
 
-@rule("IM-03", "Motor of the catalog", "GOST 12139-84; " + SEED_001)
+@rule("IM-03", "Motor of the catalog", cite("gost-12139-84") + SEED_001)
 def choose_motor(options: list[MotorOption]) -> Finding[str | None]:
     """The smallest rated power (from the nearest one up) whose catalog motor drives the load
     continuously: rated torque ≥ load, starts under load, stable working point."""

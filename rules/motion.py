@@ -1,8 +1,9 @@
 """Rules of the positioning drive (seed 003)."""
 
+from advisor.core.cite import cite
 from advisor.core.rulebook import Finding, rule
 
-SEED_003 = "003_9e41cc3901572aaa.txt"
+SEED_003 = cite("seed-003")
 
 
 @rule("MO-01", "Gear ratio of each motor", SEED_003)
@@ -38,6 +39,14 @@ def ratio_per_motor(
         f"{name}: i = {exact:.4g} ({method}).",
         f"The ratio that minimises the {profile} move time: {why}. Near the optimum the "
         "time curve is flat (seed 003), so a standard ratio close to it costs little.",
+        {
+            "motor": name,
+            "ratio": exact,
+            "estimated_ratio": estimate,
+            "first_step": first_step,
+            "torque_ratio": m,
+            "profile": profile,
+        },
     )
 
 
@@ -49,6 +58,7 @@ def fastest_motor(times: dict[str, float]) -> Finding[str]:
         best,
         f"Motor {best}, the fastest at its own optimal ratio.",
         f"Seed 003, step 8: compare the move times at each motor's optimal ratio — {table}.",
+        {"motor": best, "move_time_s": times},
     )
 
 
@@ -62,6 +72,7 @@ def profile_check(
             f"The move is {actual}, as assumed.",
             f"Path {path_rad:.4g} rad against {transient_path_rad:.4g} rad covered while "
             "starting and stopping at the chosen ratio.",
+            {"profile": actual, "path_rad": path_rad, "transient_path_rad": transient_path_rad},
         )
     why = (
         "the path is shorter than the start-and-stop path, so the motor never reaches full speed"
@@ -73,6 +84,7 @@ def profile_check(
         f"The move is {actual}, not {asked} as assumed: {why}.",
         f"Path {path_rad:.4g} rad against {transient_path_rad:.4g} rad of transients; the "
         f"ratio is re-optimised with the {actual} time law, which is the one that happens.",
+        {"profile": actual, "path_rad": path_rad, "transient_path_rad": transient_path_rad},
     )
 
 
@@ -106,6 +118,7 @@ def robust_motor(
             f"inertia from {pct} below to {pct} above the estimate, and no other motor can be "
             "the fastest with its own inertia anywhere in that band: the estimated inertias "
             "do not decide.",
+            {"motor": nominal, "contenders": [nominal]},
         )
     choice = min(contenders, key=worst_case.__getitem__)
     table = ", ".join(f"{n}: {best_case[n]:.4g}…{worst_case[n]:.4g} s" for n in contenders[:6])
@@ -119,4 +132,5 @@ def robust_motor(
         f"from {pct} below to {pct} above its estimate — {table}{more}. Any of these "
         f"could be the fastest; the rule takes the one that is fastest when every inertia is "
         f"at the top of its band (nominal fastest: {nominal}).",
+        {"motor": choice, "contenders": contenders},
     )

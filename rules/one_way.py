@@ -1,8 +1,9 @@
 """Rules of the one-way (holding) device (seed 004)."""
 
+from advisor.core.cite import cite
 from advisor.core.rulebook import Finding, rule
 
-SEED_004 = "004_ce1464ec9bc33bf8.txt"
+SEED_004 = cite("seed-004")
 
 NAMES = {
     "roller_clutch": "roller irreversible clutch",
@@ -22,6 +23,7 @@ def placement(output_torque_Nm: float, ratio: float, efficiency: float) -> Findi
         "Seed 004, conclusions 4 and 6: every one-way device grows with the torque it holds, "
         "so it goes where the torque is least — at the motor, before the first stage. The "
         "report shows the same device at the output side for comparison.",
+        {"torque_Nm": at_motor, "location": "motor side"},
     )
 
 
@@ -34,6 +36,7 @@ def device_type(asked: str, priority: str, options: dict[str, dict]) -> Finding[
             asked,
             f"{NAMES[asked]}, as asked.",
             "The requirement names the type; the alternatives are shown beside it.",
+            {"type": asked},
         )
     clutches = {k: v for k, v in options.items() if k in ("roller_clutch", "em_clutch")}
     key = {"mass": "mass_kg", "inertia": "inertia_kgm2", "power": "power_W"}[priority]
@@ -51,7 +54,7 @@ def device_type(asked: str, priority: str, options: dict[str, dict]) -> Finding[
         "power, no loss) and the electromagnetic clutch (a few watts, least inertia at the "
         "larger torques) remain, and the one best on the stated priority is taken. "
         f"Sized for this torque: {table}.",
-        {"priority": priority},
+        {"priority": priority, "type": best},
     )
 
 

@@ -1,8 +1,9 @@
 """Rules of the spinning-rotor drive (seed 002)."""
 
+from advisor.core.cite import cite
 from advisor.core.rulebook import Finding, rule
 
-SEED_002 = "002_4f513db63d3429ac.txt"
+SEED_002 = cite("seed-002")
 
 
 @rule("RO-01", "Design load on the bearings", SEED_002)
@@ -18,6 +19,12 @@ def design_loads(
         "balls. The preload F_H ≈ 1.58·F_r·tan β is set with every radial component "
         f"(weight {weight_share_N:.4g} N per bearing plus the reaction), not with the weight "
         "alone (conclusion 2 of the seed).",
+        {
+            "gyroscopic_moment_Nm": moment_Nm,
+            "reaction_radial_N": radial_N,
+            "reaction_axial_N": axial_N,
+            "preload_N": preload_N,
+        },
     )
 
 
@@ -43,6 +50,11 @@ def drive_torque(
         "sizes the drive; the required torque comes from solving the motion equation (5) for "
         "the time. The drive runs at that torque only while starting, so a higher current "
         "density is acceptable in its windings.",
+        {
+            "required_torque_Nm": chosen,
+            "run_up_torque_Nm": run_up_Nm,
+            "steady_with_reaction_Nm": steady_with_reaction_Nm,
+        },
     )
 
 
@@ -55,4 +67,5 @@ def friction_model(lambda_mm: float) -> Finding[float]:
         "The paper does not print λ; its radial and axial rows agree with λ ≈ 0.028 mm, the "
         "default. The SKF catalogue model (rolling + sliding, inlet shear heating) is reported "
         "as a second opinion with the lubricant viscosity given.",
+        {"rolling_friction_mm": lambda_mm},
     )

@@ -2,9 +2,10 @@
 
 from typing import NamedTuple
 
+from advisor.core.cite import cite
 from advisor.core.rulebook import Finding, rule
 
-SEED_001 = "001_085658f38eaaea54.txt"
+SEED_001 = cite("seed-001")
 
 
 @rule("SCR-01", "Transmission of the linear stage", SEED_001)
@@ -20,7 +21,7 @@ def transmission_type(force_N: float) -> Finding[str]:
     )
 
 
-@rule("SCR-02", "Friction coefficient of the thread", "Shigley, table 8-5; " + SEED_001)
+@rule("SCR-02", "Friction coefficient of the thread", cite("shigley", "table 8-5") + SEED_001)
 def friction_coefficient(
     given: float | None, pair: str, lubrication: str, low: float, high: float
 ) -> Finding[float]:
@@ -54,7 +55,7 @@ def friction_coefficient(
     )
 
 
-@rule("SCR-03", "Reduced friction formula", "GOST 24737-81 (α = 30°); " + SEED_001)
+@rule("SCR-03", "Reduced friction formula", cite("gost-24737-81", "α = 30°") + SEED_001)
 def friction_model(asked: str) -> Finding[str]:
     if asked == "paper":
         return Finding(
@@ -135,7 +136,9 @@ RUNNERS_UP = 4
 @rule(
     "SCR-04",
     "Thread and motor, chosen together",
-    "GOST 24738-81 (diameter-pitch plan), GOST 24739-81 (multi-start); Ivanov, Детали машин; "
+    cite("gost-24738-81", "diameter-pitch plan")
+    + cite("gost-24739-81", "multi-start")
+    + cite("ivanov-dm", "power screws")
     + SEED_001,
 )
 def choose_drive(
@@ -223,7 +226,7 @@ def _best(options: list[DriveOption], hold: bool) -> DriveOption | None:
     return min(options, key=lambda o: drive_order(o, hold), default=None)
 
 
-@rule("SCR-05", "Holding the load without power", "Ivanov, Детали машин; " + SEED_001)
+@rule("SCR-05", "Holding the load without power", cite("ivanov-dm", "power screws") + SEED_001)
 def holding(
     hold_without_power: bool, self_locking: bool, self_locking_at_low: bool, thread: str
 ) -> Finding[bool]:

@@ -2,10 +2,11 @@
 
 import math
 
+from advisor.core.cite import cite
 from advisor.core.rulebook import Finding, rule
 
-SEED_000 = "000_e109c3d4c17eaf1c.txt"
-TEXTBOOK = "Gerashchenko, Postnikov, Samsonovich, textbook (2010), fig. 1.72, cited by seed 000"
+SEED_000 = cite("seed-000")
+TEXTBOOK = cite("textbook-2010", "fig. 1.72, cited by seed 000")
 
 #: The output ratio the seed prefers, and its range (minimum outer diameter).
 Q_OUT_PREFERRED = 20.0
@@ -35,7 +36,11 @@ def _output_diameter_factor(q: float, rows: int = 3) -> float:
     ) ** (1.0 / 3.0)
 
 
-@rule("WG-02", "Stage count and split of the ratio", SEED_000 + "; " + TEXTBOOK)
+#: Relative tolerance of the stage ratio limits (rounding and typing, not engineering).
+RATIO_REL_TOL = 1e-6
+
+
+@rule("WG-02", "Stage count and split of the ratio", SEED_000 + TEXTBOOK)
 def split_ratio(total_ratio: float, q_min: float, q_max: float) -> Finding[list[float] | None]:
     """Output stage q_out = 20 (12…20 gives the smallest outer diameter), the stage next to
     it 12, the remainder to the input stage; the fewest stages whose ratios stay within the
@@ -48,7 +53,12 @@ def split_ratio(total_ratio: float, q_min: float, q_max: float) -> Finding[list[
     the reason the seed gives for its 12…20."""
     q = total_ratio
     lo, hi = Q_OUT_RANGE
-    if q < q_min:
+    # a ratio within RATIO_REL_TOL of a stage limit is at the limit: a speed typed as a round
+    # number (6400 rpm to 5 rpm: q = 20 × 64) must not change the stage count when rounding
+    # moves it by 1e-15, nor by a 1e-9 change of the requirement (issue 12, item 5)
+    at_least_min = q_min * (1 - RATIO_REL_TOL)
+    at_most_max = q_max * (1 + RATIO_REL_TOL)
+    if q < at_least_min:
         return Finding(
             None,
             f"No reducer: the total ratio {q:.4g} is below one stage's minimum {q_min:g}.",
@@ -57,7 +67,10 @@ def split_ratio(total_ratio: float, q_min: float, q_max: float) -> Finding[list[
     if q <= hi:
         if q >= lo:
             return Finding(
-                [q], f"One stage, q = {q:.4g}.", "The whole ratio fits one output stage."
+                [q],
+                f"One stage, q = {q:.4g}.",
+                "The whole ratio fits one output stage.",
+                {"ratios": [q]},
             )
         return Finding(
             [q],
@@ -65,10 +78,11 @@ def split_ratio(total_ratio: float, q_min: float, q_max: float) -> Finding[list[
             f"q_Σ = {q:.4g} is below {lo:g}, so one stage carries the whole ratio and its "
             f"q_out lies below the seed's {lo:g}…{hi:g}; a second stage would need a ratio "
             f"below the minimum {q_min:g} (eq. (14)).",
+            {"ratios": [q]},
         )
     if q < lo * q_min:
-        one = [q] if q <= q_max else None
-        two = [q / q_min, q_min] if q / q_min >= q_min else None
+        one = [q] if q <= at_most_max else None
+        two = [q / q_min, q_min] if q / q_min >= at_least_min else None
         d_one = _output_diameter_factor(q) if one else math.inf
         d_two = _output_diameter_factor(q / q_min) if two else math.inf
         if d_one <= d_two:
@@ -99,26 +113,32 @@ def split_ratio(total_ratio: float, q_min: float, q_max: float) -> Finding[list[
             + "; ".join(alternatives)
             + ".",
             {
+                "ratios": split,
                 "outer_diameter_per_cbrt_torque": {
                     k: v for k, v in (("one", d_one), ("two", d_two)) if math.isfinite(v)
-                }
+                },
             },
         )
-    if q <= Q_OUT_PREFERRED * q_max:
-        q_out = Q_OUT_PREFERRED if q / Q_OUT_PREFERRED >= q_min else q / q_min
+    if q <= Q_OUT_PREFERRED * at_most_max:
+        q_out = Q_OUT_PREFERRED if q / Q_OUT_PREFERRED >= at_least_min else q / q_min
         split = [q_out, q / q_out]
         why = (
             f"q_Σ = {q:.4g} needs two stages: the output stage takes q_out = {q_out:.4g} "
             f"(seed 000: {lo:g}…{hi:g} gives the smallest outer diameter, 20 preferred), the "
             f"input stage the remaining {q / q_out:.4g} (within {q_min:g}…{q_max:g})."
         )
-        return Finding(split, f"Two stages: q_out = {q_out:.4g}, q1 = {q / q_out:.4g}.", why)
+        return Finding(
+            split,
+            f"Two stages: q_out = {q_out:.4g}, q1 = {q / q_out:.4g}.",
+            why,
+            {"ratios": split},
+        )
     for n in (3, 4):
         rest = q / (Q_OUT_PREFERRED * Q_NEXT ** (n - 2))
-        if rest <= q_max:
+        if rest <= at_most_max:
             mids = [Q_NEXT] * (n - 2)
             gave_way = ""
-            if rest < q_min:  # lower the stage next to the output to keep the input stage
+            if rest < at_least_min:  # lower the next stage to keep the input stage
                 mids[0] = Q_NEXT * rest / q_min
                 gave_way = (
                     f" The remainder {rest:.4g} is below the minimum {q_min:g} (eq. (14)), so "
@@ -134,6 +154,7 @@ def split_ratio(total_ratio: float, q_min: float, q_max: float) -> Finding[list[
                 f"q_Σ = {q:.4g} exceeds what {n - 1} stages give; seed 000 takes "
                 f"q_out = 20, the next stage {Q_NEXT:g} and gives the remainder to the input "
                 f"stage." + gave_way,
+                {"ratios": split},
             )
     return Finding(
         None,
@@ -170,7 +191,7 @@ def choose_rows(
             f"(seed 000, inequality after eq. (19)): {rows_out} rows."
         )
     rows = [rows_out] + [2] * (stages - 1)
-    return Finding(rows, f"Rows (output first): {rows}.", why, {"max_rows": max_rows})
+    return Finding(rows, f"Rows (output first): {rows}.", why, {"rows": rows, "max_rows": max_rows})
 
 
 @rule("WG-04", "Rule design against the computed optimum", SEED_000)
@@ -207,7 +228,13 @@ def compare_with_optimum(
         "The seed's heuristics (q_out = 20, three rows) come from the authors' fuller model and "
         "experience; the sweep uses only eqs. (13)–(19). Both are reported so the engineer can "
         "judge; differences above 5 % are flagged.",
-        {"tolerance": tolerance},
+        {
+            "tolerance": tolerance,
+            "rule_mass_kg": rule_mass_kg,
+            "opt_mass_kg": opt_mass_kg,
+            "rule_diameter_mm": rule_diameter_mm,
+            "min_diameter_mm": min_diameter_mm,
+        },
     )
 
 
@@ -229,7 +256,7 @@ def compare_with_front(
             f"No configuration of the design space is at least as good in every objective and "
             f"better in one. The front holds {front_size} designs; {shown} are reported, "
             "evenly spaced along it.",
-            {"front_size": front_size, "shown": shown},
+            {"front_size": front_size, "shown": shown, "adopted": adopted},
         )
     a, d = adopted, dominating
     return Finding(
@@ -245,5 +272,5 @@ def compare_with_front(
         "the output) come from the authors' fuller model, which these equations do not hold; "
         f"the engineer judges. The front holds {front_size} designs; {shown} are reported, "
         "evenly spaced along it.",
-        {"front_size": front_size, "shown": shown},
+        {"front_size": front_size, "shown": shown, "adopted": adopted, "dominating": dominating},
     )

@@ -80,7 +80,12 @@ def test_decisions_trace(report):
     assert ids == ["SCR-01", "SCR-02", "SCR-03", "SCR-04", "SCR-05", "IM-01", "IM-02", "IM-03"]
     for d in report["decisions"]:
         assert d["title"] and d["decision"] and d["rationale"] and d["source"]
-    assert any("001_085658f38eaaea54.txt" in d["source"] for d in report["decisions"])
+    # the sources by bibliography id, the text by the authors' names
+    assert all("seed-001" in d["sources"] for d in report["decisions"])
+    assert report["decisions"][0]["source"] == "Ivanov, Kolesnik, Koloshenko (seed 001)"
+    seed = next(s for s in report["sources"] if s["id"] == "seed-001")
+    assert seed["file"] == "001_085658f38eaaea54.txt"
+    assert seed["authors"] == ["Ivanov S. N.", "Kolesnik M. B.", "Koloshenko Yu. B."]
 
 
 def test_free_choice_is_the_smallest_passing_thread():

@@ -1,5 +1,6 @@
 """Reports are written atomically: a failure never leaves a half-written or lost file."""
 
+import math
 import os
 
 import pytest
@@ -123,3 +124,20 @@ def test_toml_text_writes_what_tomli_w_writes(doc):
     from advisor.core import toml_text
 
     assert toml_text.dumps(doc) == tomli_w.dumps(doc)
+
+
+def test_a_nan_or_an_inf_is_never_written_and_its_key_is_named():
+    # issue 13: a denormal span once gave margin = inf in a report
+    from advisor.core.report import NonFiniteValue, _Out
+
+    class Inner(_Out):
+        margin: float
+
+    class Outer(_Out):
+        checks: list[Inner]
+
+    good = Outer.make(checks=[Inner.make(margin=1.5)])
+    assert "margin = 1.5" in rp.to_toml(good)
+    for bad in (math.inf, -math.inf, math.nan):
+        with pytest.raises(NonFiniteValue, match=r"checks\[1\]\.margin is"):
+            rp.to_toml(Outer.make(checks=[Inner.make(margin=1.0), Inner.make(margin=bad)]))

@@ -3,7 +3,10 @@
 Its own module so that every application can use it without importing the linear chain's
 sizing (the induction motor and screw equations; issue 16)."""
 
-from typing import NamedTuple
+from typing import TYPE_CHECKING, NamedTuple
+
+if TYPE_CHECKING:  # the citation type; calc imports nothing of the core at run time
+    from advisor.core.cite import Cite
 
 
 class Check(NamedTuple):
@@ -15,7 +18,7 @@ class Check(NamedTuple):
     limit: float
     unit: str
     margin: float
-    source: str
+    source: "Cite"  # the bibliography ids and the place cited
 
     @property
     def passed(self) -> bool:

@@ -8,19 +8,20 @@ from typing import NamedTuple, Protocol
 from advisor.calc import induction as im
 from advisor.calc import screw as sc
 from advisor.calc.checks import Check as Check  # re-exported: the linear chain's checks
+from advisor.core.cite import Cite, cite
 from catalogs.threads import ThreadProfile
 
 MM = 1e-3
 MPA = 1e6
 
 
-def _upper(id: str, name: str, value: float, limit: float, unit: str, source: str) -> Check:
+def _upper(id: str, name: str, value: float, limit: float, unit: str, source: Cite) -> Check:
     """A check of the form value ≤ limit; margin = limit / value."""
     margin = math.inf if value <= 0 else limit / value
     return Check(id, name, value, limit, unit, margin, source)
 
 
-def _lower(id: str, name: str, value: float, limit: float, unit: str, source: str) -> Check:
+def _lower(id: str, name: str, value: float, limit: float, unit: str, source: Cite) -> Check:
     """A check of the form value ≥ limit; margin = value / limit."""
     return Check(id, name, value, limit, unit, value / limit, source)
 
@@ -137,7 +138,7 @@ def evaluate_thread(
         d3, span_m, end_fixity, material.elastic_modulus_Pa, material.yield_strength_Pa
     )
     allowed_stress = material.yield_strength_Pa / material.yield_safety_factor
-    ivanov = "Ivanov, Детали машин: power screws"
+    ivanov = cite("ivanov-dm", "power screws")
     checks = (
         _upper(
             "core_stress",
@@ -145,7 +146,7 @@ def evaluate_thread(
             core / MPA,
             allowed_stress / MPA,
             "MPa",
-            ivanov + f"; [σ] = σ_y/{material.yield_safety_factor:g}",
+            ivanov.with_note(f"[σ] = σ_y/{material.yield_safety_factor:g}"),
         ),
         _upper(
             "buckling",
@@ -153,7 +154,9 @@ def evaluate_thread(
             force_N,
             p_cr / buckling_safety_factor,
             "N",
-            f"{formula} column formula, safety factor {buckling_safety_factor:g}",
+            cite("shigley", f"ch. 4, {formula} column formula").with_note(
+                f"safety factor {buckling_safety_factor:g}"
+            ),
         ),
         _upper(
             "nut_pressure",

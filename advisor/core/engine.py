@@ -7,8 +7,9 @@ from pathlib import Path
 
 from advisor import __version__
 from advisor.core import registry
+from advisor.core.cite import Cite, cited_ids, note, text
 from advisor.core.errors import InfeasibleError
-from advisor.core.report import CheckOut, DecisionOut, Report, ReportHeader
+from advisor.core.report import CheckOut, DecisionOut, Report, ReportHeader, SourceOut
 from advisor.core.requirements import Requirements
 from advisor.core.rulebook import Trace
 from advisor.ignored import ignored
@@ -35,6 +36,15 @@ def advise(req: Requirements, catalog_dir: Path | None = None) -> Report:
                 for c in failed
             ],
         )
+    short = cat.short_names()
+    # a check may give its basis as plain words (a toy application does): no source then
+    checks = [
+        c if isinstance(c.source, Cite) else c._replace(source=note(c.source)) for c in checks
+    ]
+    ids = cited_ids([*(d.source.ids for d in trace.decisions), *(c.source.ids for c in checks)])
+    unknown = [i for i in ids if i not in cat.bibliography]
+    if unknown:  # a rule or a check cites what the bibliography lacks: a bug, not an input
+        raise KeyError(f"sources {unknown} are not in the bibliography")
     return Report.make(
         report=ReportHeader.make(
             advisor_version=__version__,
@@ -53,7 +63,8 @@ def advise(req: Requirements, catalog_dir: Path | None = None) -> Report:
                 unit=c.unit,
                 margin=c.margin,
                 passed=c.passed,
-                source=c.source,
+                source=text(c.source, short),
+                sources=c.source.ids,
             )
             for c in checks
         ],
@@ -64,11 +75,13 @@ def advise(req: Requirements, catalog_dir: Path | None = None) -> Report:
                 title=d.title,
                 decision=d.decision,
                 rationale=d.rationale,
-                source=d.source,
+                source=text(d.source, short),
+                sources=d.source.ids,
                 inputs=_tomlable(d.inputs),
             )
             for d in trace.decisions
         ],
+        sources=[SourceOut.make(**cat.bibliography[i]) for i in ids],
     )
 
 

@@ -57,6 +57,7 @@ class CheckOut(_Out):
     margin: float
     passed: bool
     source: str
+    sources: list[str] = []
 
 
 class DecisionOut(_Out):
@@ -65,7 +66,42 @@ class DecisionOut(_Out):
     decision: str
     rationale: str
     source: str
+    sources: list[str] = []
     inputs: dict[str, Any] = {}
+
+
+class SourceOut(_Out):
+    """One entry of the bibliography (catalogs/bibliography.toml) the report cites."""
+
+    id: str
+    short: str
+    authors: list[str]
+    title: str
+    journal: str | None = None
+    volume: str | None = None
+    year: int | None = None
+    institution: str | None = None
+    publisher: str | None = None
+    number: str | None = None
+    note: str | None = None
+    file: str | None = None
+
+    def reference(self) -> str:
+        """The full reference in one line, as a reader would look it up."""
+        head = ", ".join(self.authors)
+        sep = " " if head.endswith(".") else ". "
+        parts = [f"{head}{sep}{self.title}" if head else self.title]
+        for x in (self.number, self.journal, self.volume and f"vol. {self.volume}"):
+            if x:
+                parts.append(x)
+        for x in (self.institution, self.publisher, self.year and str(self.year)):
+            if x:
+                parts.append(x)
+        if self.note:
+            parts.append(f"({self.note})")
+        if self.file:
+            parts.append(f"seed file {self.file}")
+        return ". ".join(parts)
 
 
 class ReportHeader(_Out):
@@ -83,6 +119,7 @@ class Report(_Out):
     checks: list[CheckOut]
     warnings: list[str] = []
     decisions: list[DecisionOut]
+    sources: list[SourceOut] = []
 
 
 def round_sig(x: float, digits: int = 6) -> float:
@@ -99,33 +136,72 @@ def round_sig(x: float, digits: int = 6) -> float:
 _FIELDS: dict[type, tuple[str, ...]] = {}
 
 
+class NonFiniteValue(ValueError):
+    """A report value that is nan or inf: a bug of the advice, never written to a file."""
+
+
+def _fields(t: type) -> tuple[str, ...]:
+    names = _FIELDS.get(t)
+    if names is None:
+        names = _FIELDS[t] = tuple(t.model_fields)
+    return names
+
+
 def _plain(obj: Any) -> Any:
     """Plain dicts and lists of a report, without None (TOML has no null), floats rounded
-    to six significant digits, fields in their declared order."""
+    to six significant digits, fields in their declared order. A nan or an inf is refused
+    with its key named (:class:`NonFiniteValue`): a report states numbers a reader can check.
+    """
+    try:
+        return _plain_fast(obj)
+    except NonFiniteValue:
+        _plain_keyed(obj, "")  # the slow pass names the key; it raises
+        raise
+
+
+def _plain_fast(obj: Any) -> Any:
     t = type(obj)  # the exact types first: a report holds thousands of values
     if t is float:
+        if obj - obj != 0.0:  # nan or ±inf, one subtraction instead of a call
+            raise NonFiniteValue("a report value is not a finite number")
         return round_sig(obj)
     if t is str or t is int or t is bool:
         return obj
     if t is list or t is tuple:
-        return [_plain(v) for v in obj if v is not None]
+        return [_plain_fast(v) for v in obj if v is not None]
     if t is dict:
-        return {str(k): _plain(v) for k, v in obj.items() if v is not None}
+        return {str(k): _plain_fast(v) for k, v in obj.items() if v is not None}
     if isinstance(obj, BaseModel):
-        names = _FIELDS.get(t)
-        if names is None:
-            names = _FIELDS[t] = tuple(t.model_fields)
         values = obj.__dict__
-        return {n: _plain(values[n]) for n in names if values.get(n) is not None}
+        return {n: _plain_fast(values[n]) for n in _fields(t) if values.get(n) is not None}
+    return _plain_keyed(obj, "")
+
+
+def _plain_keyed(obj: Any, key: str) -> Any:
+    """The same, naming the key of the value it refuses (the error path only)."""
+    if isinstance(obj, BaseModel):
+        return {
+            name: _plain_keyed(getattr(obj, name), _join(key, name))
+            for name in type(obj).model_fields
+            if getattr(obj, name) is not None
+        }
     if isinstance(obj, float):
+        if not math.isfinite(obj):
+            raise NonFiniteValue(f"the report's {key or 'value'} is {obj}: not a finite number")
         return round_sig(obj)
     if isinstance(obj, bool | int | str):
         return obj
     if isinstance(obj, dict):
-        return {str(k): _plain(v) for k, v in obj.items() if v is not None}
+        return {
+            str(k): _plain_keyed(v, _join(key, str(k))) for k, v in obj.items() if v is not None
+        }
     if isinstance(obj, list | tuple):
-        return [_plain(v) for v in obj if v is not None]
-    raise TypeError(f"a report cannot hold {type(obj).__name__}: {obj!r}")
+        return [_plain_keyed(v, f"{key}[{i}]") for i, v in enumerate(obj) if v is not None]
+    raise TypeError(f"a report cannot hold {type(obj).__name__} at {key}: {obj!r}")
+
+
+def _join(key: str, name: str) -> str:
+    return f"{key}.{name}" if key else name
 
 
 #: A table of number arrays is a curve when its longest array has at least this many points.

@@ -125,7 +125,9 @@ class OneWayReq(_Strict):
         Literal["auto", "roller_clutch", "em_clutch", "worm", "inverse_gear"],
         ask("one-way device type", label="One-way device", step=2),
     ] = "auto"
-    rollers: Annotated[int, Field(ge=3, le=12, description="rollers of a roller clutch")] = 6
+    rollers: Annotated[
+        int, Field(ge=3, le=12, description="rollers of a roller clutch, 3 … 12")
+    ] = 6
     priority: Annotated[
         Literal["mass", "inertia", "power"],
         ask("what the automatic choice minimises", label="Automatic choice minimises", step=2),
@@ -201,10 +203,11 @@ def _walk(loc: tuple[Any, ...], root: Any) -> tuple[tuple[Any, ...], Any, Any]:
         out.append(part)
         fields = getattr(model, "model_fields", None) if model is not None else None
         holder = model
-        if isinstance(part, int) or not fields or part not in fields:
+        if isinstance(part, int):
+            continue  # an item of a list: the list's own description tells its range
+        if not fields or part not in fields:
             info = None
-            if not isinstance(part, int):
-                model = None
+            model = None
             continue
         info = fields[part]
         members = _members(info.annotation)

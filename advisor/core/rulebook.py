@@ -1,11 +1,11 @@
 """The rule engine core: rules with metadata, and the trace of decisions they make.
 
 A rule is a small pure function decorated with :func:`rule`, which gives it a stable id, a
-title and a source (a seed file name or a standard). A rule looks at facts and returns a
-:class:`Finding`: the value chosen, the decision in words, the rationale an engineer would
-accept, and the inputs it looked at. The engine runs rules through a :class:`Trace`, which
-records every finding as a :class:`Decision` — the audit trail the report carries as
-``[[decisions]]``.
+title and its sources (a :class:`~advisor.core.cite.Cite` of bibliography ids). A rule looks
+at facts and returns a :class:`Finding`: the value chosen, the decision in words, the
+rationale an engineer would accept, and the inputs it looked at. The engine runs rules through
+a :class:`Trace`, which records every finding as a :class:`Decision` — the audit trail the
+report carries as ``[[decisions]]``.
 
 (Records are NamedTuples rather than dataclasses: a dataclass compiles its methods at import,
 about 0.3 ms each, and the cold batch run has a budget of a few tens of milliseconds.)
@@ -13,6 +13,8 @@ about 0.3 ms each, and the cold batch run has a budget of a few tens of millisec
 
 from collections.abc import Callable
 from typing import Any, Generic, NamedTuple, TypeVar
+
+from advisor.core.cite import Cite
 
 T = TypeVar("T")
 
@@ -29,7 +31,7 @@ class Decision(NamedTuple):
     title: str
     decision: str
     rationale: str
-    source: str
+    source: Cite
     inputs: dict[str, Any]
 
 
@@ -38,7 +40,7 @@ class Rule(Generic[T]):
 
     __slots__ = ("fn", "id", "source", "title")
 
-    def __init__(self, id: str, title: str, source: str, fn: Callable[..., Finding[T]]) -> None:
+    def __init__(self, id: str, title: str, source: Cite, fn: Callable[..., Finding[T]]) -> None:
         self.id, self.title, self.source, self.fn = id, title, source, fn
 
     def __call__(self, *args: Any, **kwargs: Any) -> Finding[T]:
@@ -52,8 +54,10 @@ class Rule(Generic[T]):
 REGISTRY: dict[str, Rule[Any]] = {}
 
 
-def rule(id: str, title: str, source: str) -> Callable[[Callable[..., Finding[T]]], Rule[T]]:
-    """Register a function as a rule with a stable id, a title and its source."""
+def rule(id: str, title: str, source: Cite) -> Callable[[Callable[..., Finding[T]]], Rule[T]]:
+    """Register a function as a rule with a stable id, a title and its sources."""
+    if not isinstance(source, Cite) or not source.refs:
+        raise TypeError(f"rule {id}: its source must cite the bibliography (a Cite)")
 
     def wrap(fn: Callable[..., Finding[T]]) -> Rule[T]:
         if id in REGISTRY:

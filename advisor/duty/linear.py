@@ -22,6 +22,7 @@ import math
 from advisor.calc import duty as du
 from advisor.calc import induction as im
 from advisor.calc.sizing import Check
+from advisor.core.cite import cite
 from advisor.core.errors import InfeasibleError
 from advisor.core.rulebook import Trace
 from advisor.duty.report import DutyOut, phases_out
@@ -348,7 +349,7 @@ def advise_duty(req, ev, selected, cat, holder: str | None, trace: Trace):
             e["rated"],
             "N·m",
             e["rated"] / e["rms"] if e["rms"] > 0 else math.inf,
-            "issue 15; " + du_rules.KLYUCHEV,
+            du_rules.KLYUCHEV + du_rules.ISSUE_15,
         ),
         Check(
             "duty_peak_torque",
@@ -357,7 +358,7 @@ def advise_duty(req, ev, selected, cat, holder: str | None, trace: Trace):
             e["start_torque"],
             "N·m",
             e["start_torque"] / e["peak_load"] if e["peak_load"] > 0 else math.inf,
-            "issue 15; catalog M_start/M_n",
+            cite("4a-table", "M_start/M_n") + du_rules.ISSUE_15,
         ),
     ]
     if e["starts"] > 0:

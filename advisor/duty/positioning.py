@@ -210,7 +210,7 @@ def advise_duty(
             f"duty: the cycle needs i = {i:.4g}, not the fastest ratio {fastest[best]:.4g}: "
             "there the RMS torque exceeds the rated torque"
         )
-    src = "issue 15; " + du_rules.KLYUCHEV
+    src = du_rules.KLYUCHEV + du_rules.ISSUE_15
     checks = [
         Check(
             "duty_move_fits",
@@ -219,7 +219,7 @@ def advise_duty(
             cycle_time_s,
             "s",
             cycle_time_s / move,
-            "issue 15; seed 003, eq. (4)",
+            du_rules.SEED_003.at("eq. (4)") + du_rules.ISSUE_15,
         ),
         Check(
             "duty_rms_torque",

@@ -20,6 +20,7 @@ import math
 
 from advisor.calc import duty as du
 from advisor.calc.checks import Check
+from advisor.core.cite import cite, note
 from advisor.core.errors import InfeasibleError
 from advisor.core.rulebook import Trace
 from advisor.duty.report import DutyOut, ThermalOut, phases_out
@@ -295,7 +296,9 @@ def advise_duty(
             frame.limit_W,
             "W",
             frame.limit_W / e["total"] if e["total"] > 0 else math.inf,
-            "issue 15; seed 000 eqs. (4), (5), (9); the frame's limit of the point check",
+            cite("seed-000", "eqs. (4), (5), (9)").with_note(
+                "issue 15; the frame's limit of the point check"
+            ),
         ),
         Check(
             "duty_peak_torque",
@@ -304,7 +307,7 @@ def advise_duty(
             e["peak_limit"],
             "N·m",
             e["peak_limit"] / e["peak"] if e["peak"] > 0 else math.inf,
-            "issue 15; duty.peak_torque_factor",
+            note("issue 15; duty.peak_torque_factor"),
         ),
     ]
     out = DutyOut.make(

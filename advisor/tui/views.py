@@ -78,6 +78,12 @@ def decisions(report) -> Table:
                 plain(d.decision, "bold"), "\n", plain(d.rationale), "\n", plain(d.source, "dim")
             ),
         )
+    sources = getattr(report, "sources", [])
+    if sources:  # the full references, once each, below the decisions that cite them
+        t.add_row(
+            plain("sources", "bold"),
+            plain("\n".join(f"[{s.id}] {s.reference()}" for s in sources)),
+        )
     return t
 
 
@@ -87,7 +93,7 @@ def checks(report) -> Table:
         t.add_column(col, justify="left" if col == "check" else "right")
     for c in report.checks:
         t.add_row(
-            plain(c.name),
+            Text.assemble(plain(c.name), "\n", plain(c.source, "dim")),
             f"{c.value:.4g} {c.unit}".strip(),
             f"{c.limit:.4g} {c.unit}".strip(),
             f"{c.margin:.3f}",

@@ -30,6 +30,7 @@ from advisor.calc.sizing import (
     evaluate_thread,
     fit_motor,
 )
+from advisor.core.cite import cite, text
 from advisor.core.errors import InfeasibleError, InputError
 from advisor.core.requirements import Requirements
 from advisor.core.rulebook import Trace
@@ -323,7 +324,7 @@ def advise_linear(
             sel.rated_torque_Nm,
             "N·m",
             sel.rated_torque_margin,
-            "GOST 12139-84 motor rating; " + screw_rules.SEED_001,
+            cite("gost-12139-84", "rated powers") + screw_rules.SEED_001,
         ),
         Check(
             "motor_starting_torque",
@@ -332,7 +333,9 @@ def advise_linear(
             sel.starting_torque_Nm,
             "N·m",
             sel.starting_torque_margin,
-            "catalog starting torque ratio",
+            cat.cite_rows(cat.motor_sources, plan.selected.source).with_note(
+                "catalog starting torque ratio"
+            ),
         ),
         Check(
             "travel_time",
@@ -570,7 +573,7 @@ def _motor_out(
         inertia_kgm2=m.inertia_kgm2,
         mass_kg=m.mass_kg,
         estimated=list(m.estimated),
-        source=cat.motor_sources.get(m.source, m.source),
+        source=text(cat.cite_rows(cat.motor_sources, m.source), cat.short_names()),
         candidates=candidates,
     )
 

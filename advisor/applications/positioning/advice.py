@@ -237,7 +237,7 @@ def advise_positioning(req: Requirements, cat: Catalogs, trace: Trace):
                 d.torque_ratio,
                 "",
                 s["ratio"] / d.torque_ratio,
-                mo_rules.SEED_003 + ", eq. (3)",
+                mo_rules.SEED_003.at("eq. (3)"),
             )
         )
     duty = None

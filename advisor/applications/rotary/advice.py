@@ -26,6 +26,7 @@ from advisor.calc import bldc
 from advisor.calc import reducer as rd
 from advisor.calc import wavegear as wg
 from advisor.calc.checks import Check
+from advisor.core.cite import Cite, note
 from advisor.core.errors import InfeasibleError, InputError
 from advisor.core.requirements import Requirements
 from advisor.core.rulebook import Trace
@@ -38,6 +39,8 @@ MAX_ROWS = int(rd.ROW_GRID.max())
 FIG1_ROWS = [2, 3, 4, 6, 8, 10, 12]
 #: At most this many designs of the Pareto front in the report, evenly spaced along it.
 PARETO_POINTS = 16
+#: The envelope checks rest on the requirement itself, not on a published source.
+ENVELOPE = note("the requirement's [envelope]")
 
 
 def _ratio_hint(output_rpm: float, speeds_rpm: list[float]) -> str:
@@ -209,7 +212,8 @@ def advise_rotary(req: Requirements, cat: Catalogs, trace: Trace):
     }
     if not bl_rules.within_limit(working["losses"]["total"], limit):
         raise bm.too_lossy([working], limit, basis, n_opt)
-    checks = _checks(design, env, working["losses"]["total"], limit, basis)
+    steel_cite = cat.cite_rows(cat.steel_sources, steel.source)
+    checks = _checks(design, env, working["losses"]["total"], limit, basis, steel_cite)
     motor = _motor_out(working, reducible, ref, steel, steel_mass, f_opt, n_opt, limit, basis)
     gearbox = GearboxOut.make(
         kind="wave gear with rolling bodies",
@@ -230,7 +234,9 @@ def advise_rotary(req: Requirements, cat: Catalogs, trace: Trace):
     )
     one_way = None
     if req.application.hold_without_power:
-        one_way, dev_checks, dev_warnings = _one_way(req, trace, design, working, limit, basis)
+        one_way, dev_checks, dev_warnings = _one_way(
+            req, trace, design, working, limit, basis, steel_cite
+        )
         checks += dev_checks
         warnings += dev_warnings
     duty = None
@@ -244,7 +250,9 @@ def advise_rotary(req: Requirements, cat: Catalogs, trace: Trace):
     return design_out, checks, warnings
 
 
-def _one_way(req, trace, design: rd.Reducer, working: dict, limit: float, basis: str):
+def _one_way(
+    req, trace, design: rd.Reducer, working: dict, limit: float, basis: str, steel_cite: Cite
+):
     """Seed 004: the holding device at the motor side, and what it asks of the motor: its
     driving loss raises the motor torque, hence the copper loss, at the same speed."""
     from advisor.one_way.advice import choose_device
@@ -268,7 +276,7 @@ def _one_way(req, trace, design: rd.Reducer, working: dict, limit: float, basis:
                 "motor losses with the one-way device's loss",
                 with_device,
                 limit,
-                f"{ow_rules.SEED_004}; {SEED_000}, eq. (4): {basis}",
+                (ow_rules.SEED_004 + SEED_000.at("eq. (4)") + steel_cite).with_note(basis),
             )
         )
     return device, checks, warnings
@@ -380,7 +388,9 @@ def _no_reducer(space: rd.SweepResult, torque: float, env) -> InfeasibleError:
     )
 
 
-def _checks(design: rd.Reducer, env, losses_W: float, limit_W: float, basis: str) -> list[Check]:
+def _checks(
+    design: rd.Reducer, env, losses_W: float, limit_W: float, basis: str, steel_cite: Cite
+) -> list[Check]:
     checks = []
     if env.max_outer_diameter_mm:
         checks.append(
@@ -391,7 +401,7 @@ def _checks(design: rd.Reducer, env, losses_W: float, limit_W: float, basis: str
                 env.max_outer_diameter_mm,
                 "mm",
                 env.max_outer_diameter_mm / design.outer_diameter_mm,
-                "requirement [envelope]",
+                ENVELOPE,
             )
         )
     if env.max_length_mm:
@@ -403,7 +413,7 @@ def _checks(design: rd.Reducer, env, losses_W: float, limit_W: float, basis: str
                 env.max_length_mm,
                 "mm",
                 env.max_length_mm / design.length_mm,
-                "requirement [envelope]",
+                ENVELOPE,
             )
         )
     for s in design.stages:
@@ -416,7 +426,7 @@ def _checks(design: rd.Reducer, env, losses_W: float, limit_W: float, basis: str
                 wg.MIN_RATIO_FOR_BORE,
                 "",
                 s.ratio / wg.MIN_RATIO_FOR_BORE,
-                SEED_000 + ", eq. (14)",
+                SEED_000.at("eq. (14)"),
             )
         )
         if s.position == "output":
@@ -431,7 +441,7 @@ def _checks(design: rd.Reducer, env, losses_W: float, limit_W: float, basis: str
                 s.outer_diameter_mm,
                 "mm",
                 s.outer_diameter_mm / s.own_outer_diameter_mm,
-                SEED_000 + ", eqs. (13), (16)",
+                SEED_000.at("eqs. (13), (16)"),
             )
         )
     checks.append(
@@ -440,7 +450,7 @@ def _checks(design: rd.Reducer, env, losses_W: float, limit_W: float, basis: str
             "motor total losses against what the frame's cooling carries",
             losses_W,
             limit_W,
-            f"{SEED_000}, eqs. (4), (5), (9): {basis}",
+            (SEED_000.at("eqs. (4), (5), (9)") + steel_cite).with_note(basis),
         )
     )
     return checks

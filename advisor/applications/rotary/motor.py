@@ -14,6 +14,7 @@ import math
 from advisor.applications.rotary.requirements import BldcMotorReq
 from advisor.calc import bldc
 from advisor.calc.checks import Check
+from advisor.core.cite import Cite
 from advisor.core.errors import InfeasibleError
 from rules import bldc as bl_rules
 
@@ -83,7 +84,7 @@ def too_lossy(cands: list[dict], limit: float, basis: str, n_opt: float) -> Infe
     )
 
 
-def losses_check(id: str, name: str, losses_W: float, limit_W: float, source: str) -> Check:
+def losses_check(id: str, name: str, losses_W: float, limit_W: float, source: Cite) -> Check:
     """Losses against the frame's limit with the stated allowance
     (:data:`rules.bldc.LIMIT_REL_TOL`): the check carries the limit it really applies, so its
     margin and its verdict agree, and its name states the frame's own figure."""

@@ -2,6 +2,12 @@
 
 Kept apart from :mod:`advisor.core.requirements` so the linear batch path never builds these
 validators.
+
+Every number has a physically meaningful range, stated in its description; a value outside it
+is an input error naming the field and the range (exit 2). The ranges span the drives the
+seed's model describes — a reducer from about Ø10 mm (1 N·m) to about Ø1 m (10⁵ N·m), a
+motor frame from a few watts to hundreds of kilowatts — and keep every quantity the advice
+computes finite (issue 13).
 """
 
 from typing import Annotated, Literal
@@ -14,10 +20,24 @@ from advisor.duty.requirements import RotaryDutyReq
 
 class RotaryReq(_Strict):
     torque_Nm: Annotated[
-        float, _num(gt=0, le=1e6, desc="peak output torque, N·m", label="Output torque", step=1)
+        float,
+        _num(
+            ge=1,
+            le=1e5,
+            desc="peak output torque, 1 … 10⁵ N·m",
+            label="Output torque",
+            step=1,
+        ),
     ]
     speed_rpm: Annotated[
-        float, _num(gt=0, le=1e4, desc="maximum output speed, rpm", label="Output speed", step=1)
+        float,
+        _num(
+            ge=1e-3,
+            le=1e4,
+            desc="maximum output speed, 10⁻³ … 10⁴ rpm",
+            label="Output speed",
+            step=1,
+        ),
     ]
 
 
@@ -25,9 +45,9 @@ class EnvelopeReq(_Strict):
     max_outer_diameter_mm: Annotated[
         float | None,
         _num(
-            gt=0,
+            ge=1,
             le=1e4,
-            desc="largest outer diameter of the reducer, mm",
+            desc="largest outer diameter of the reducer, 1 … 10⁴ mm",
             label="Largest reducer diameter",
             step=2,
         ),
@@ -35,9 +55,9 @@ class EnvelopeReq(_Strict):
     max_length_mm: Annotated[
         float | None,
         _num(
-            gt=0,
-            le=1e5,
-            desc="largest length of the reducer, mm",
+            ge=1,
+            le=1e4,
+            desc="largest length of the reducer, 1 … 10⁴ mm",
             label="Largest reducer length",
             step=2,
         ),
@@ -45,30 +65,42 @@ class EnvelopeReq(_Strict):
 
 
 class MagnetLossPoint(_Strict):
-    speed_rpm: Annotated[float, _num(gt=0, le=2e5, desc="motor speed, rpm")]
-    loss_W: Annotated[float, _num(ge=0, le=1e6, desc="eddy-current loss in the magnets, W")]
+    speed_rpm: Annotated[float, _num(ge=1, le=2e5, desc="motor speed, 1 … 2·10⁵ rpm")]
+    loss_W: Annotated[float, _num(ge=0, le=1e5, desc="eddy-current loss in the magnets, 0 … 10⁵ W")]
 
 
 class ReferenceMotor(_Strict):
     """The design the loss model scales from; the defaults are the seed 000 motor."""
 
-    speed_rpm: Annotated[float, _num(gt=0, le=2e5, desc="speed of the reference design, rpm")] = (
-        5000.0
-    )
-    pole_pairs: Annotated[int, Field(ge=1, le=100, description="electrical reduction p")] = 6
-    phase_resistance_ohm: Annotated[float, _num(gt=0, le=1e3, desc="phase resistance, Ω")] = 1.14
-    current_A: Annotated[float, _num(gt=0, le=1e4, desc="phase current, A")] = 5.5
-    conducting_phases: Annotated[int, Field(ge=1, le=3, description="phases in series")] = 2
-    torque_Nm: Annotated[float, _num(gt=0, le=1e4, desc="torque at that current, N·m")] = 2.0
-    stator_steel_area_mm2: Annotated[float, _num(gt=0, le=1e7, desc="stator steel area, mm²")] = (
-        1200.0
-    )
-    stack_length_mm: Annotated[float, _num(gt=0, le=1e4, desc="stack length, mm")] = 50.0
-    stacking_factor: Annotated[float, _num(gt=0, le=1, desc="steel fill of the stack")] = 0.85
-    steel_density_kg_m3: Annotated[float, _num(gt=0, le=2e4, desc="steel density, kg/m³")] = 7800.0
+    speed_rpm: Annotated[
+        float, _num(ge=100, le=2e5, desc="speed of the reference design, 100 … 2·10⁵ rpm")
+    ] = 5000.0
+    pole_pairs: Annotated[
+        int, Field(ge=1, le=50, description="electrical reduction p, 1 … 50 pole pairs")
+    ] = 6
+    phase_resistance_ohm: Annotated[
+        float, _num(ge=1e-4, le=1e3, desc="phase resistance, 10⁻⁴ … 10³ Ω")
+    ] = 1.14
+    current_A: Annotated[float, _num(ge=0.01, le=1e4, desc="phase current, 0.01 … 10⁴ A")] = 5.5
+    conducting_phases: Annotated[int, Field(ge=1, le=3, description="phases in series, 1 … 3")] = 2
+    torque_Nm: Annotated[
+        float, _num(ge=1e-3, le=1e4, desc="torque at that current, 10⁻³ … 10⁴ N·m")
+    ] = 2.0
+    stator_steel_area_mm2: Annotated[
+        float, _num(ge=1, le=1e7, desc="stator steel area, 1 … 10⁷ mm²")
+    ] = 1200.0
+    stack_length_mm: Annotated[float, _num(ge=1, le=1e4, desc="stack length, 1 … 10⁴ mm")] = 50.0
+    stacking_factor: Annotated[
+        float, _num(ge=0.5, le=1, desc="steel fill of the stack, 0.5 … 1")
+    ] = 0.85
+    steel_density_kg_m3: Annotated[
+        float, _num(ge=6000, le=9000, desc="steel density, 6000 … 9000 kg/m³")
+    ] = 7800.0
     steel_grade: Annotated[str, Field(description="GOST 21427.2-83 grade, e.g. 2413")] = "2413"
-    steel_thickness_mm: Annotated[float, _num(gt=0, le=2, desc="lamination thickness, mm")] = 0.35
-    induction_T: Annotated[float, _num(gt=0, le=2.5, desc="peak flux density, T")] = 1.5
+    steel_thickness_mm: Annotated[
+        float, _num(ge=0.05, le=2, desc="lamination thickness, 0.05 … 2 mm")
+    ] = 0.35
+    induction_T: Annotated[float, _num(ge=0.1, le=2.5, desc="peak flux density, 0.1 … 2.5 T")] = 1.5
     iron_loss_model: Annotated[
         Literal["quadratic", "three_term"], Field(description="form of eq. (5) used")
     ] = "quadratic"
@@ -93,9 +125,9 @@ class ReferenceMotor(_Strict):
 class BldcMotorReq(_Strict):
     kind: Annotated[Literal["bldc"], Field(description="motor type")]
     candidate_speeds_rpm: Annotated[
-        list[Annotated[float, _num(gt=0, le=2e5)]],
+        list[Annotated[float, _num(ge=100, le=2e5, desc="a motor speed, 100 … 2·10⁵ rpm")]],
         ask(
-            "motor speeds to compare, rpm",
+            "motor speeds to compare, 100 … 2·10⁵ rpm each, at most 20",
             label="Motor speeds to compare",
             step=3,
             min_length=1,
@@ -106,10 +138,10 @@ class BldcMotorReq(_Strict):
     max_losses_W: Annotated[
         float | None,
         _num(
-            gt=0,
+            ge=0.1,
             le=1e6,
-            desc="total losses the motor's cooling carries away, W; by default the reference "
-            "motor's own total losses at its rated point (same frame, same cooling)",
+            desc="total losses the motor's cooling carries away, 0.1 … 10⁶ W; by default the "
+            "reference motor's own total losses at its rated point (same frame, same cooling)",
         ),
     ] = None
     reference: ReferenceMotor = ReferenceMotor.model_construct()
@@ -121,10 +153,18 @@ class GearboxReq(_Strict):
     ] = "ball"
     stage_efficiency: Annotated[
         float,
-        _num(gt=0.3, le=1, desc="efficiency of one stage", label="Efficiency of one stage", step=3),
+        _num(
+            ge=0.3,
+            le=1,
+            desc="efficiency of one stage, 0.3 … 1",
+            label="Efficiency of one stage",
+            step=3,
+        ),
     ] = 0.9
-    density_kg_m3: Annotated[float, _num(gt=0, le=2e4, desc="material density, kg/m³")] = 7800.0
-    fill_factor: Annotated[float, _num(gt=0, le=1, desc="k_з of eq. (19)")] = 0.75
+    density_kg_m3: Annotated[
+        float, _num(ge=1000, le=2e4, desc="material density, 1000 … 2·10⁴ kg/m³")
+    ] = 7800.0
+    fill_factor: Annotated[float, _num(ge=0.1, le=1, desc="k_з of eq. (19), 0.1 … 1")] = 0.75
 
 
 class RotaryRequirements(_Strict):

@@ -18,6 +18,7 @@ from advisor.applications.spinning_rotor.report import (
 from advisor.calc import bearing_life as bl
 from advisor.calc import rotor as ro
 from advisor.calc.checks import Check
+from advisor.core.cite import cite, text
 from advisor.core.errors import InputError
 from advisor.core.requirements import Requirements
 from advisor.core.rulebook import Trace
@@ -160,7 +161,7 @@ def advise_spinning_rotor(req: Requirements, cat: Catalogs, trace: Trace):
             b.limiting_speed_rpm,
             "rpm",
             b.limiting_speed_rpm / n_rpm,
-            "; ".join(cat.bearing_sources.get(x, x) for x in b.source),
+            cat.cite_rows(cat.bearing_sources, b.source),
         ),
         Check(
             "bearing_static",
@@ -169,7 +170,7 @@ def advise_spinning_rotor(req: Requirements, cat: Catalogs, trace: Trace):
             1.0,
             "",
             s0,
-            "ISO 76; SKF General Catalogue",
+            cite("iso-76") + cite("skf-gc", "bearing tables"),
         ),
         Check(
             "drive_holds_speed",
@@ -179,7 +180,7 @@ def advise_spinning_rotor(req: Requirements, cat: Catalogs, trace: Trace):
             "N·m",
             # RO-02 takes torques within 1e-9 as equal (the same sum, rounded differently)
             1.0 if abs(required / steady_slew - 1.0) < 1e-9 else required / steady_slew,
-            rules.SEED_002 + ", eq. (5)",
+            rules.SEED_002.at("eq. (5)"),
         ),
     ]
     if r.required_life_h is not None:
@@ -191,7 +192,7 @@ def advise_spinning_rotor(req: Requirements, cat: Catalogs, trace: Trace):
                 r.required_life_h,
                 "h",
                 life / r.required_life_h,
-                "ISO 281:2007, eq. (1)",
+                cite("iso-281", "eq. (1)"),
             )
         )
     warnings = []
@@ -205,6 +206,7 @@ def advise_spinning_rotor(req: Requirements, cat: Catalogs, trace: Trace):
             f"contact angle {angle:g}° given instead of the catalog's {b.contact_angle_deg:g}°"
         )
 
+    short = cat.short_names()
     out = RotorOut.make(
         inertia_kgm2=r.inertia,
         angular_momentum_kgm2_s=r.angular_momentum,
@@ -259,7 +261,7 @@ def advise_spinning_rotor(req: Requirements, cat: Catalogs, trace: Trace):
             factor_X=eq.X,
             factor_Y=eq.Y,
             static_safety=s0,
-            source=[cat.bearing_sources.get(s, s) for s in b.source],
+            source=[text(cat.cite_rows(cat.bearing_sources, s), short) for s in b.source],
             estimated=list(b.estimated),
         ),
         slew=SlewOut.make(
