@@ -141,3 +141,15 @@ def test_a_nan_or_an_inf_is_never_written_and_its_key_is_named():
     for bad in (math.inf, -math.inf, math.nan):
         with pytest.raises(NonFiniteValue, match=r"checks\[1\]\.margin is"):
             rp.to_toml(Outer.make(checks=[Inner.make(margin=1.0), Inner.make(margin=bad)]))
+
+
+def test_a_check_of_an_unloaded_part_is_left_out_not_written_as_inf():
+    """A check value ≤ 0 against an upper limit gives margin = inf (calc/sizing._upper): the
+    part carries nothing, so there is nothing to check, and the report keeps the others."""
+    from advisor.calc.checks import Check
+    from advisor.core.cite import note
+    from advisor.core.engine import finite_checks
+
+    loaded = Check("loaded", "loaded part", 2.0, 4.0, "N", 2.0, note("hand"))
+    idle = Check("idle", "unloaded part", 0.0, 4.0, "N", math.inf, note("hand"))
+    assert finite_checks([loaded, idle]) == [loaded]

@@ -36,6 +36,7 @@ def advise(req: Requirements, catalog_dir: Path | None = None) -> Report:
                 for c in failed
             ],
         )
+    checks = finite_checks(checks)
     short = cat.short_names()
     # a check may give its basis as plain words (a toy application does): no source then
     checks = [
@@ -95,3 +96,10 @@ def _tomlable(inputs: dict) -> dict:
             v = [x for x in v if x is not None]
         out[str(k)] = v
     return out
+
+
+def finite_checks(checks: list) -> list:
+    """The checks a report can state: a check of a value that is zero (no load on that part)
+    has an infinite margin. It is no check at all, and a report never states an infinite
+    number (issue 13)."""
+    return [c for c in checks if c.margin - c.margin == 0.0]
