@@ -347,3 +347,46 @@ async def test_one_way_device_summary_and_components():
         comps = _text(app.query_one("#view-components", Static))
         assert "where" in comps and "motor side" in comps and "output side" in comps
         assert "em clutch" in comps and "(chosen)" in comps and "basis" in comps
+
+
+# ------------------------------------------------------------------ compare
+async def test_compare_shows_the_alternatives_and_use_this_imposes_one():
+    app = DriveAdvisorApp(_doc(), VALVE, save_drafts=False)
+    async with app.run_test(size=SIZE) as pilot:
+        await _computed(app, pilot)
+        app.query_one("#result-tabs").active = "tab-compare"
+        await pilot.pause()
+        text = "\n".join(_text(w) for w in app.query("#compare-box Static"))
+        assert "▶ rules (seed 000)" in text and "lightest in the space" in text
+        assert "slimmest in the space" in text and "▶ roller clutch" in text
+        assert "▶ chosen: BL-02" in text and "OW-02" in text
+        labels = [str(b.label) for b in app.query("#compare-box Button")]
+        assert "Use em clutch" in labels
+        start = app.results_version
+        button = next(b for b in app.query("#compare-box Button") if "em clutch" in str(b.label))
+        button.press()
+        await _settle(pilot, app, start)
+        assert app.doc["one_way"]["type"] == "em_clutch"
+        assert app.report.design.one_way.type == "em_clutch"  # the next compute is that design
+        summary = _text(app.query_one("#view-summary", Static))
+        assert "input one_way.type: auto → em_clutch" in summary
+
+
+async def test_compare_after_an_infeasible_result_says_why_there_is_nothing():
+    doc = _doc()
+    doc.setdefault("envelope", {})["max_outer_diameter_mm"] = 20
+    app = DriveAdvisorApp(doc, VALVE, save_drafts=False)
+    async with app.run_test(size=SIZE) as pilot:
+        await _computed(app, pilot)
+        text = "\n".join(_text(w) for w in app.query("#compare-box Static"))
+        assert "Nothing to compare: the requirement has no feasible design" in text
+
+
+def test_plot_markers_tell_series_apart_without_colour():
+    from advisor.tui import views
+
+    data = views.PlotData("t", "x", "y", [("a", [1, 2], [1, 2]), ("b", [1, 2], [2, 1])])
+    data = data._replace(series=[*data.series, ("working point", [1.5], [1.5])])
+    assert views.markers(data) == ["•", "+", "◆"]
+    assert views.legend(data) == "• a   + b   ◆ working point"
+    assert views.plural(1, "check") == "1 check" and views.plural(2, "check") == "2 checks"

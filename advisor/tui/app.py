@@ -61,7 +61,11 @@ Screen { layout: vertical; }
 #plot-switcher { height: 1fr; }
 .plot-pane { height: 1fr; }
 .plot-legend { height: auto; padding: 0 1; }
-Switch { width: 12; }
+#compare-box Static { height: auto; }
+.uses { height: auto; }
+.uses Button { margin-right: 1; }
+.switch-row { height: auto; }
+.switch-row Label.state { padding: 1 1; }
 ModalScreen { align: center middle; }
 #dialog { width: 80; height: auto; border: thick $primary; padding: 1 2; background: $surface; }
 #dialog Horizontal { height: auto; margin-top: 1; }
@@ -75,7 +79,8 @@ HELP = """\
   ctrl+n   next step (waits until the step is valid)
   ctrl+b   previous step (keeps what you typed)
   ctrl+r   compute the design (from any step; again after an edit)
-  ctrl+e   back to the inputs from the results
+  ctrl+e   back to the inputs from the results (Compare: "Use …"
+           imposes an alternative in the requirement and computes it)
   ctrl+s   export the report or the requirements (TOML)
   [ / ]    previous / next plot on the Plot view
   f1       this help           ctrl+q   quit
@@ -96,6 +101,18 @@ def _input(value: str, id: str) -> Input:
     box = Input(value, id=id)
     box.cursor_blink = False
     return box
+
+
+class Choice(RadioButton):
+    """A radio button whose state reads without colour (NO_COLOR): ● chosen, blank not."""
+
+    @property
+    def BUTTON_INNER(self) -> str:  # type: ignore[override]
+        return "●" if self.value else " "
+
+
+def _on_off(value: bool) -> str:
+    return "yes" if value else "no"
 
 
 class HelpScreen(ModalScreen[None]):
@@ -251,6 +268,7 @@ class DriveAdvisorApp(App[None]):
         self.no_result_why = "nothing computed yet: ctrl+r computes the design"
         self.field_errors: dict[str, str] = {}  # widget id → what its field shows as wrong
         self.fixes: dict[str, fixes.Fix] = {}  # button id → what it does to the document
+        self.use_options: dict[str, Any] = {}  # button id → the alternative it imposes
         self.fix_buttons: dict[int, list[Button]] = {}  # step → its fix buttons shown
         self._step_lines: dict[int, list[str]] = {}  # step → the messages shown on it
         self.plot_index = 0
@@ -277,7 +295,7 @@ class DriveAdvisorApp(App[None]):
                     yield Label("What must the drive do?")
                     with RadioSet(id="kind"):
                         for k, text in F.titles().items():
-                            yield RadioButton(
+                            yield Choice(
                                 text,
                                 id=f"kind-{k}",
                                 value=self.doc.get("application", {}).get("kind") == k,
@@ -295,9 +313,11 @@ class DriveAdvisorApp(App[None]):
             with Vertical(id="results"):
                 yield Static("", id="result-status")
                 with TabbedContent(id="result-tabs"):
-                    for name in ("Summary", "Components", "Decisions", "Checks", "Plot"):
+                    for name in ("Summary", "Components", "Compare", "Decisions", "Checks", "Plot"):
                         with TabPane(name, id=f"tab-{name.lower()}"):
-                            if name == "Plot":
+                            if name == "Compare":
+                                yield VerticalScroll(id="compare-box")
+                            elif name == "Plot":
                                 yield Static("", id="plot-note", classes="note")
                                 yield ContentSwitcher(id="plot-switcher")
                             else:
@@ -384,7 +404,12 @@ class DriveAdvisorApp(App[None]):
                 wrong = f"{value!r} in the file is not true or false; shown: the default"
                 F.put(self.doc, f.path, None)
                 value = None
-            control: Any = Switch(bool(f.default if value is None else value), id=f.id)
+            on = bool(f.default if value is None else value)
+            control: Any = Horizontal(
+                Switch(on, id=f.id),
+                Label(_on_off(on), id=f"{f.id}-state", classes="state"),
+                classes="switch-row",
+            )
         elif f.kind == "choice":
             if value is not None and value not in f.choices:
                 wrong = f"{value!r} in the file is not one of {', '.join(f.choices)}; shown: " + (
@@ -416,18 +441,26 @@ class DriveAdvisorApp(App[None]):
     def _step_bar(self, width: int) -> str:
         walk = self._walk()
 
-        def bar(short: bool) -> str:
+        def bar(level: int) -> str:
+            """0: every name; 1: first words; 2: numbers only, the current step and Review
+            named."""
             out = []
             for i, (s, name) in enumerate(walk):
                 if s == self.step:
                     out.append(f"[reverse] {i + 1} {name} [/]")
+                elif level == 0 or s == 4:
+                    out.append(f"{i + 1} {name}")
+                elif level == 1:
+                    out.append(f"{i + 1} {name.split()[0]}")
                 else:
-                    out.append(f"{i + 1}" if short else f"{i + 1} {name}")
+                    out.append(f"{i + 1}")
             return " › ".join(out)
 
-        full = bar(False)
-        plain_len = len(Text.from_markup(full).plain)
-        return full if plain_len <= width - 2 else bar(True)
+        for level in (0, 1):
+            text = bar(level)
+            if len(Text.from_markup(text).plain) <= width - 2:
+                return text
+        return bar(2)
 
     def _show_step(self, focus: bool = True) -> None:
         on_results = self.query_one("#main", ContentSwitcher).current == "results"
@@ -558,6 +591,7 @@ class DriveAdvisorApp(App[None]):
         f = self._field_by_id(event.switch.id)
         if f is not None:
             F.put(self.doc, f.path, bool(event.value))
+            self.query_one(f"#{f.id}-state", Label).update(_on_off(bool(event.value)))
             self.query_one(f"#{f.id}-err", Label).update("")
             self._changed()
 
@@ -794,6 +828,7 @@ class DriveAdvisorApp(App[None]):
             checks=none,
         )
         self._plot(None)
+        self._compare(None)
         self._done()
 
     def _crashed(self, exc: Exception) -> None:
@@ -816,7 +851,52 @@ class DriveAdvisorApp(App[None]):
             checks=views.checks(report),
         )
         self._plot(report)
+        self._compare(report)
         self._done()
+
+    def _compare(self, report) -> None:
+        """The alternatives side by side, each with a button that imposes it."""
+        box = self.query_one("#compare-box", VerticalScroll)
+        box.remove_children()
+        self.use_options.clear()
+        if report is None:
+            box.mount(Static(f"Nothing to compare: {self.no_result_why}.", classes="note"))
+            return
+        sections = views.compare(report)
+        if not sections:
+            box.mount(Static("This application reports no alternatives.", classes="note"))
+            return
+        widgets: list[Any] = []
+        for sec in sections:
+            widgets.append(Static(Text(sec.title, style="bold underline")))
+            widgets.append(Static(sec.table))
+            if sec.why:
+                widgets.append(Static(Text.assemble(("▶ chosen: ", "bold"), sec.why)))
+            if sec.note:
+                widgets.append(Static(sec.note, classes="note", markup=False))
+            buttons = []
+            for opt in sec.options:
+                bid = f"use-{self.results_version}-{len(self.use_options)}"
+                self.use_options[bid] = opt
+                buttons.append(Button(opt.label, id=bid, compact=True, classes="use"))
+            if buttons:
+                widgets.append(Horizontal(*buttons, classes="uses"))
+            widgets.append(Static(""))
+        box.mount(*widgets)
+
+    @on(Button.Pressed, ".use")
+    async def _use_pressed(self, event: Button.Pressed) -> None:
+        """Impose the alternative in the requirement, and compute it."""
+        opt = self.use_options.get(event.button.id or "")
+        if opt is None:
+            return
+        for path, value in opt.patch:
+            F.put(self.doc, path, value)
+        self._changed()
+        self._step_lines.clear()
+        await self._build_steps()
+        self.notify(f"{opt.label}: imposed in the requirement; computing", markup=False)
+        self.action_compute()
 
     def _show_result_status(self) -> None:
         if self.report is None:
@@ -856,17 +936,18 @@ class DriveAdvisorApp(App[None]):
             plt = plot.plt
             plt.xlabel(data.xlabel)
             plt.ylabel(data.ylabel)
-            for k, (_label, xs, ys) in enumerate(data.series):
-                marker = views.marker(k, point=len(xs) == 1)
+            for marker, (_label, xs, ys) in zip(views.markers(data), data.series, strict=True):
                 if len(xs) == 1:
                     plt.scatter(xs, ys, marker=marker)
                 else:
                     plt.plot(xs, ys, marker=marker)
             legend = Static(views.legend(data), classes="plot-legend")
             pane_id = f"plot-{self.results_version}-{i}"  # the old panes go asynchronously
-            panes.append(Vertical(plot, legend, id=pane_id, classes="plot-pane"))
+            pane = Vertical(legend, plot, id=pane_id, classes="plot-pane")
+            pane.display = i == 0
+            panes.append(pane)
         switcher.mount(*panes)
-        switcher.current = panes[0].id
+        switcher.current = panes[0].id  # (the switcher shows it once mounted)
         self._plot_note()
 
     def _plot_note(self) -> None:

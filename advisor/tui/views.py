@@ -214,19 +214,29 @@ def checks(report) -> Table:
     return t
 
 
-#: One marker per series, told apart without colour (NO_COLOR); the working point's own.
+#: One marker per series, told apart without colour (NO_COLOR): curves take the first
+#: markers, single points (a working point, an optimum) the solid shapes.
 MARKERS = ("•", "+", "x", "o", "*", "=", "#", "~")
-POINT_MARKER = "◆"
+POINT_MARKERS = ("◆", "■", "▲", "★", "●", "▼")
 
 
-def marker(k: int, point: bool = False) -> str:
-    return POINT_MARKER if point else MARKERS[k % len(MARKERS)]
+def markers(data: "PlotData") -> list[str]:
+    """The marker of each series of a plot, in order."""
+    out, curves, points = [], 0, 0
+    for _label, xs, _ys in data.series:
+        if len(xs) == 1:
+            out.append(POINT_MARKERS[points % len(POINT_MARKERS)])
+            points += 1
+        else:
+            out.append(MARKERS[curves % len(MARKERS)])
+            curves += 1
+    return out
 
 
 def legend(data: "PlotData") -> str:
     """The legend under the plot, never over the curves: marker, then name."""
     return "   ".join(
-        f"{marker(k, point=len(xs) == 1)} {label}" for k, (label, xs, _) in enumerate(data.series)
+        f"{m} {label}" for m, (label, _, _) in zip(markers(data), data.series, strict=True)
     )
 
 
@@ -242,3 +252,11 @@ def plots(report) -> list[PlotData]:
     actuator adds the seed's fig. 1: reducer volume per unit torque against q)."""
     app_views = registry.views(report.report.application)
     return list(app_views.plots(report)) if app_views is not None else []
+
+
+def compare(report) -> list[Any]:
+    """The comparison sections of an application (see :mod:`advisor.tui.compare`); none
+    where its views have no ``compare``."""
+    app_views = registry.views(report.report.application)
+    fn = getattr(app_views, "compare", None)
+    return list(fn(report)) if fn is not None else []

@@ -64,3 +64,60 @@ def plots(report) -> list[PlotData]:
         ],
     )
     return [main, fig1]
+
+
+def compare(report) -> list[Any]:
+    """Candidate motor speeds, the rule reducer against the lightest and the slimmest of the
+    design space, and the one-way device types."""
+    from advisor.tui.compare import Option, Section, decision, mark, one_way, table
+
+    d = report.design
+    m, g = d.motor, d.gearbox
+    t = table("speed rpm", "q_Σ", "stages", "η", "torque N·m", "losses W", "within limit")
+    options = []
+    for c in sorted(m.candidates, key=lambda c: c.speed_rpm):
+        chosen = c.speed_rpm == m.speed_rpm
+        t.add_row(
+            mark(chosen, f"{c.speed_rpm:g}"),
+            f"{c.total_ratio:.4g}",
+            str(c.stages),
+            f"{c.gearbox_efficiency:.3g}",
+            f"{c.torque_Nm:.4g}",
+            f"{c.losses_W.total:.4g}",
+            "yes" if c.within_loss_limit else "no",
+        )
+        if not chosen and c.within_loss_limit and c.stages:
+            patch = ((("motor", "candidate_speeds_rpm"), [c.speed_rpm]),)
+            options.append(Option(f"Use {c.speed_rpm:g} rpm", patch))
+    motors = Section(
+        "Motor speed (the reference motor rewound)",
+        t,
+        decision(report, "BL-02"),
+        tuple(options),
+        "“Use” keeps that speed alone in motor.candidate_speeds_rpm.",
+    )
+    r = table("reducer", "stages", "q (output first)", "Ø mm", "length mm", "mass kg", "η")
+    for name, s, chosen in (
+        ("rules (seed 000)", g, True),
+        ("lightest in the space", g.optimum, False),
+        ("slimmest in the space", g.optimum_min_diameter, False),
+    ):
+        ratios = ", ".join(f"{st.ratio:.4g}" for st in reversed(s.stages))
+        r.add_row(
+            mark(chosen, name),
+            str(len(s.stages)),
+            ratios,
+            f"{s.outer_diameter_mm:.4g}",
+            f"{s.length_mm:.4g}",
+            f"{s.mass_kg:.3g}",
+            f"{s.efficiency:.3g}",
+        )
+    why = " ".join(x for x in (decision(report, "WG-04"), decision(report, "WG-05")) if x)
+    reducer = Section(
+        "Reducer: the rules against the design space",
+        r,
+        why,
+        (),
+        "The requirement has no key that imposes a reducer layout: the rules decide it.",
+    )
+    return [motors, reducer, *one_way(report)]
