@@ -10,6 +10,7 @@ summary of ``-o``) nor scipy.optimize.
 """
 
 import argparse
+import io
 import os
 import sys
 from pathlib import Path
@@ -72,8 +73,42 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 def _err(message: str) -> None:
+    """Each line of ``message`` on stderr after the program name: controls escaped, at most
+    :data:`LINE_CHARS` characters (a message never floods the terminal)."""
+    from advisor.io_safety import clip, printable
+
     for line in message.splitlines() or [message]:
-        print(f"{PROG}: {line}", file=sys.stderr)
+        print(f"{PROG}: {clip(printable(line), LINE_CHARS)}", file=sys.stderr)
+
+
+#: The longest line the command prints on stderr.
+LINE_CHARS = 300
+
+
+def _silence_stdout() -> None:
+    """Point stdout at /dev/null: the reader left (a closed pipe) or the device is full, and
+    the interpreter's last flush must not fail again at exit."""
+    try:
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+        os.close(devnull)
+    except (OSError, ValueError, AttributeError, io.UnsupportedOperation):
+        pass
+
+
+def _stdout_failed(exc: OSError, what: str, after: str = "it is incomplete") -> int:
+    _silence_stdout()
+    _err(f"standard output: cannot write {what} ({exc.strerror or exc}); {after}")
+    return ExitCode.INVALID_INPUT
+
+
+def _warn_ignored(warnings: list[str], source: Path | None = None) -> None:
+    """Options the design does not use, said on stderr too (they are in the report)."""
+    from advisor.ignored import IGNORED_PREFIX
+
+    for w in warnings:
+        if w.startswith(IGNORED_PREFIX):
+            _err(f"{source}: warning: {w}" if source is not None else f"warning: {w}")
 
 
 def run_batch(req_path: Path, output: Path | None, catalog_dir: Path | None) -> int:
@@ -81,47 +116,88 @@ def run_batch(req_path: Path, output: Path | None, catalog_dir: Path | None) -> 
     # (about 7 ms of importlib.metadata); the advisor uses none.
     os.environ.setdefault("PYDANTIC_DISABLE_PLUGINS", "__all__")
     from advisor.core.engine import advise
-    from advisor.core.report import to_toml, write_atomic
+    from advisor.core.report import to_toml
     from advisor.core.requirements import read_requirements
+    from advisor.io_safety import OutputError, check_target, same_file, show, write_atomic
 
+    if output is not None:  # refuse a target that would destroy something, before computing
+        if same_file(output, req_path):
+            raise OutputError(
+                f"{show(output, 200)}: is the requirement file itself; the report would "
+                "replace it (choose another -o)"
+            )
+        check_target(output)
     req = read_requirements(req_path)
     report = advise(req, catalog_dir)
+    _warn_ignored(report.warnings)
     text = to_toml(report)
     if output is None:
-        sys.stdout.write(text)
+        try:
+            sys.stdout.write(text)
+            sys.stdout.flush()
+        except BrokenPipeError:
+            raise
+        except OSError as exc:  # /dev/full, a full disk: never exit 0 with half a report
+            return _stdout_failed(exc, "the report")
         return ExitCode.OK
     try:
         write_atomic(output, text)
+    except OutputError:
+        raise
     except OSError as exc:
-        _err(f"{output}: cannot write the report ({exc.strerror}); nothing was written")
+        _err(f"{show(output, 200)}: cannot write the report ({exc.strerror}); nothing was written")
         return ExitCode.INVALID_INPUT
     from advisor.summary import print_summary
 
-    print_summary(report, output)
+    try:
+        print_summary(report, output)
+        sys.stdout.flush()
+    except (BrokenPipeError, SystemExit):  # rich exits on a closed pipe: the reader left
+        _silence_stdout()
+        return ExitCode.OK
+    except OSError as exc:
+        return _stdout_failed(exc, "the summary", f"the report was written to {show(output, 200)}")
     return ExitCode.OK
 
 
 def run_many(inputs: list[Path], out_dir: Path, catalog_dir: Path | None, jobs: int) -> int:
     os.environ.setdefault("PYDANTIC_DISABLE_PLUGINS", "__all__")
     from advisor import many
+    from advisor.io_safety import show
 
     missing = [p for p in inputs if not p.exists()]
     if missing:
-        _err(f"{missing[0]}: no such file or directory")
+        _err(f"{show(missing[0], 200)}: no such file or directory")
         return ExitCode.INVALID_INPUT
     try:
-        worst, outcomes = many.run_many(inputs, out_dir, catalog_dir, jobs)
+        worst, outcomes = many.run_many(inputs, out_dir, catalog_dir, jobs, notify=_err)
+    except many.Interrupted as exc:
+        _err(
+            f"interrupted; {exc.written} of {exc.total} reports were written to "
+            f"{show(out_dir, 200)}"
+        )
+        return 130
     except OSError as exc:
-        _err(f"{out_dir}: cannot write reports there ({exc.strerror})")
+        _err(f"{show(out_dir, 200)}: cannot write reports there ({exc.strerror})")
         return ExitCode.INVALID_INPUT
     if not outcomes:
         _err("no requirement files (*.toml) among the inputs")
         return ExitCode.INVALID_INPUT
-    many.print_summary(outcomes, out_dir)
-    for o in outcomes:
+    try:
+        many.print_summary(outcomes, out_dir)
+        sys.stdout.flush()
+    except (BrokenPipeError, SystemExit):  # the reader left; the exit code still tells
+        _silence_stdout()
+    except OSError as exc:
+        _stdout_failed(exc, "the summary", f"the reports were written to {show(out_dir, 200)}")
+        worst = many.worse(worst, ExitCode.INVALID_INPUT)
+    names = many.display_names([Path(o.source) for o in outcomes])
+    for o, name in zip(outcomes, names, strict=True):
         if o.code != ExitCode.OK:
             for line in (o.headline, *o.messages):
-                print(f"{PROG}: {o.source}: {line.strip()}", file=sys.stderr)
+                _err(f"{name}: {line.strip()}")
+        else:
+            _warn_ignored(list(o.messages), Path(name))
     return worst
 
 
@@ -132,11 +208,7 @@ def run_wizard(path: Path | None, catalog_dir: Path | None) -> int:
         return ExitCode.INVALID_INPUT
     from advisor.tui.app import run
 
-    try:
-        return run(path, catalog_dir)
-    except AdvisorError as exc:
-        _err(str(exc))
-        return exc.exit_code
+    return run(path, catalog_dir)
 
 
 def run_schema(argv: list[str]) -> int:
@@ -168,6 +240,29 @@ def main(argv: list[str] | None = None) -> int:
         args = parser.parse_args(argv)
     except SystemExit as exc:  # argparse: --help, --version, or a usage error (code 2)
         return int(exc.code or 0)
+    try:
+        return _dispatch(args)
+    except InfeasibleError as exc:
+        _err(str(exc))
+        return ExitCode.INFEASIBLE
+    except AdvisorError as exc:
+        _err(str(exc))
+        return exc.exit_code
+    except BrokenPipeError:  # `advisor --batch r.toml | head`: the reader left; not an error
+        _silence_stdout()
+        return ExitCode.OK
+    except KeyboardInterrupt:
+        _err("interrupted; nothing was written")
+        return 130
+    except RecursionError:  # a guard missed some deep structure: still one line, exit 2
+        _err("the input is nested too deeply to be read")
+        return ExitCode.INVALID_INPUT
+    except Exception as exc:  # a bug: say so in one line, never a traceback
+        _err(f"internal error ({type(exc).__name__}: {exc}); please report it with the input file")
+        return ExitCode.INTERNAL_ERROR
+
+
+def _dispatch(args: argparse.Namespace) -> int:
     inputs = args.batch
     if inputs is None:
         return run_wizard(args.requirements, args.catalog_dir)
@@ -183,23 +278,4 @@ def main(argv: list[str] | None = None) -> int:
             _err("several inputs (or a directory) need --out-dir DIR for their reports")
             return ExitCode.INVALID_INPUT
         return run_many(inputs, args.out_dir, args.catalog_dir, args.jobs)
-    try:
-        return run_batch(inputs[0], args.output, args.catalog_dir)
-    except InfeasibleError as exc:
-        _err(str(exc))
-        return ExitCode.INFEASIBLE
-    except AdvisorError as exc:
-        _err(str(exc))
-        return exc.exit_code
-    except BrokenPipeError:  # `advisor --batch r.toml | head`: the reader left; not an error
-        try:
-            sys.stdout = open(os.devnull, "w")
-        except OSError:
-            pass
-        return ExitCode.OK
-    except KeyboardInterrupt:
-        _err("interrupted; nothing was written")
-        return 130
-    except Exception as exc:  # a bug: say so in one line, never a traceback
-        _err(f"internal error ({type(exc).__name__}: {exc}); please report it with the input file")
-        return ExitCode.INTERNAL_ERROR
+    return run_batch(inputs[0], args.output, args.catalog_dir)

@@ -5,12 +5,12 @@ the run; its line in the summary says why. With ``-j N`` the files are advised i
 processes.
 """
 
+import os
 import sys
-from concurrent.futures import ProcessPoolExecutor
 from pathlib import Path
 from typing import NamedTuple
 
-from advisor.core.errors import AdvisorError, ExitCode, InfeasibleError
+from advisor.core.errors import AdvisorError, ExitCode, InfeasibleError, InputError
 
 #: Severity order for "the worst outcome": a bug, then bad input, then infeasibility.
 SEVERITY = {
@@ -21,6 +21,11 @@ SEVERITY = {
 }
 
 
+def worse(a: int, b: int) -> int:
+    """The more severe of two exit codes."""
+    return max(a, b, key=lambda c: SEVERITY[ExitCode(c)])
+
+
 class Outcome(NamedTuple):
     source: str
     code: int
@@ -29,15 +34,53 @@ class Outcome(NamedTuple):
     messages: tuple[str, ...]
 
 
+class Interrupted(Exception):
+    """Ctrl-C during a many-file run: how many reports were written by then."""
+
+    def __init__(self, written: int, total: int) -> None:
+        super().__init__(f"{written} of {total} reports written")
+        self.written, self.total = written, total
+
+
+def _toml_files(directory: Path) -> list[Path]:
+    """The requirement files of a directory: *.toml, not the advisor's own *.report.toml
+    (an --out-dir that is also an input must not be read back as requirements)."""
+    from advisor.io_safety import show
+
+    try:
+        with os.scandir(directory) as it:
+            names = [e.name for e in it]
+    except OSError as exc:
+        raise InputError(
+            f"{show(directory, 200)}: the directory cannot be read ({exc.strerror})"
+        ) from None
+    return sorted(
+        directory / n
+        for n in names
+        # a FIFO or device named *.toml is listed, and refused without being read
+        if n.endswith(".toml") and not n.endswith(".report.toml") and not (directory / n).is_dir()
+    )
+
+
 def expand(inputs: list[Path]) -> list[Path]:
-    """Files as given; a directory stands for its *.toml files (sorted, not recursive)."""
+    """Files as given; a directory stands for its *.toml files (sorted, not recursive,
+    without *.report.toml)."""
     out: list[Path] = []
     for p in inputs:
         if p.is_dir():
-            out.extend(sorted(q for q in p.glob("*.toml") if q.is_file()))
+            out.extend(_toml_files(p))
         else:
             out.append(p)
     return out
+
+
+def display_names(files: list[Path]) -> list[str]:
+    """How each input is named in the summary: its file name, or its path as given where two
+    inputs share a name (``a/r.toml`` and ``b/r.toml``)."""
+    from collections import Counter
+
+    count = Counter(f.name for f in files)
+    return [f.name if count[f.name] == 1 else str(f) for f in files]
 
 
 def report_name(source: Path, taken: set[str]) -> str:
@@ -57,11 +100,17 @@ def advise_one(source: Path, target: Path, catalog_dir: Path | None) -> Outcome:
     from advisor.core.registry import headline
     from advisor.core.report import to_toml, write_atomic
     from advisor.core.requirements import read_requirements
+    from advisor.io_safety import same_file, show
 
     try:
+        if same_file(source, target):
+            raise InputError(f"{show(target, 200)}: is the input itself; it is not replaced")
         report = advise(read_requirements(source), catalog_dir)
         write_atomic(target, to_toml(report))
-        return Outcome(str(source), ExitCode.OK, str(target), headline(report), ())
+        from advisor.ignored import IGNORED_PREFIX
+
+        notes = tuple(w for w in report.warnings if w.startswith(IGNORED_PREFIX))
+        return Outcome(str(source), ExitCode.OK, str(target), headline(report), notes)
     except InfeasibleError as exc:
         return Outcome(str(source), exc.exit_code, None, exc.summary, tuple(exc.reasons))
     except AdvisorError as exc:
@@ -72,8 +121,12 @@ def advise_one(source: Path, target: Path, catalog_dir: Path | None) -> Outcome:
             str(source),
             ExitCode.INVALID_INPUT,
             None,
-            f"{target}: cannot write ({exc.strerror})",
+            f"{show(target, 200)}: cannot write ({exc.strerror})",
             (),
+        )
+    except RecursionError:
+        return Outcome(
+            str(source), ExitCode.INVALID_INPUT, None, "nested too deeply to be read", ()
         )
     except Exception as exc:  # a bug in one file must not stop the others
         return Outcome(
@@ -85,41 +138,165 @@ def advise_one(source: Path, target: Path, catalog_dir: Path | None) -> Outcome:
         )
 
 
+def _identities(paths: list[Path]) -> set[tuple[int, int]]:
+    """(device, inode) of the paths that exist, to recognise one file under two names."""
+    out = set()
+    for p in paths:
+        try:
+            st = os.stat(p)
+        except OSError:
+            continue
+        out.add((st.st_dev, st.st_ino))
+    return out
+
+
+def _died(source: Path) -> Outcome:
+    return Outcome(
+        str(source),
+        ExitCode.INTERNAL_ERROR,
+        None,
+        "the worker process advising this file died (killed, or out of memory); no report",
+        (),
+    )
+
+
+def _ignore_sigint() -> None:
+    """Workers leave Ctrl-C to the parent, which stops the run and says what was written."""
+    import signal
+
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+
+
+def usable_cpus() -> int:
+    try:
+        return len(os.sched_getaffinity(0))
+    except (AttributeError, OSError):
+        return os.cpu_count() or 1
+
+
+def _run_pool(
+    jobs: int,
+    todo: list[tuple[int, Path, Path]],
+    catalog_dir: Path | None,
+    outcomes: dict[int, Outcome],
+) -> tuple[list[tuple[int, Path, Path]], list[tuple[int, Path, Path]]]:
+    """Advise ``todo`` with ``jobs`` workers, at most ``jobs`` files in flight, recording each
+    outcome as it arrives. When a worker dies (the pool is then broken) returns the files in
+    flight and those not started; else two empty lists."""
+    from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
+    from concurrent.futures.process import BrokenProcessPool
+
+    pending = list(reversed(todo))
+    pool = ProcessPoolExecutor(max_workers=jobs, initializer=_ignore_sigint)
+    flight: dict = {}
+    try:
+        while pending or flight:
+            while pending and len(flight) < jobs:
+                item = pending.pop()
+                flight[pool.submit(advise_one, item[1], item[2], catalog_dir)] = item
+            done, _ = wait(flight, return_when=FIRST_COMPLETED)
+            broken = False
+            for fut in done:
+                item = flight.pop(fut)
+                try:
+                    outcomes[item[0]] = fut.result()
+                except BrokenProcessPool:
+                    flight[fut] = item
+                    broken = True
+            if broken:
+                return list(flight.values()), list(reversed(pending))
+        return [], []
+    except KeyboardInterrupt:  # let the files in progress finish, and count their reports
+        pool.shutdown(wait=True, cancel_futures=True)
+        for fut, item in flight.items():
+            if fut.done() and not fut.cancelled() and fut.exception() is None:
+                outcomes[item[0]] = fut.result()
+        raise
+    finally:
+        pool.shutdown(wait=True, cancel_futures=True)
+
+
 def run_many(
-    inputs: list[Path], out_dir: Path, catalog_dir: Path | None, jobs: int = 1
+    inputs: list[Path],
+    out_dir: Path,
+    catalog_dir: Path | None,
+    jobs: int = 1,
+    notify=None,
 ) -> tuple[int, list[Outcome]]:
+    """Advise every file; the worst exit code and one Outcome per file, in input order.
+
+    ``jobs`` is capped at the number of files and of usable CPUs. A worker that dies (killed,
+    out of memory) loses only its own file: the files in flight with it are advised again,
+    each in a worker of its own, and a file whose own worker dies again is reported as failed.
+    Ctrl-C raises :class:`Interrupted` with the count of reports written.
+    """
+    from advisor.io_safety import show
+
     files = expand(inputs)
     out_dir.mkdir(parents=True, exist_ok=True)
     taken: set[str] = set()
     targets = [out_dir / report_name(f, taken) for f in files]
-    if jobs > 1 and len(files) > 1:
-        with ProcessPoolExecutor(max_workers=jobs) as pool:
-            outcomes = list(
-                pool.map(advise_one, files, targets, [catalog_dir] * len(files), chunksize=4)
+    jobs = max(1, min(jobs, len(files), usable_cpus()))
+    outcomes: dict[int, Outcome] = {}
+    todo = []
+    given = _identities(files)
+    for i, (f, t) in enumerate(zip(files, targets, strict=True)):
+        clash = _identities([t]) & given
+        if clash:  # a.toml's report would replace an input named a.report.toml
+            outcomes[i] = Outcome(
+                str(f),
+                ExitCode.INVALID_INPUT,
+                None,
+                f"its report {show(t, 200)} would replace an input file; nothing was written",
+                (),
             )
-    else:
-        outcomes = [advise_one(f, t, catalog_dir) for f, t in zip(files, targets, strict=True)]
-    worst = max((o.code for o in outcomes), key=lambda c: SEVERITY[ExitCode(c)], default=0)
-    return int(worst), outcomes
+        else:
+            todo.append((i, f, t))
+    try:
+        if jobs > 1:
+            while todo:
+                held, todo = _run_pool(jobs, todo, catalog_dir, outcomes)
+                if not held:
+                    break
+                if notify is not None:
+                    notify(
+                        f"a worker process died; {len(held)} file(s) it may have held are re-run"
+                    )
+                for item in held:  # each alone: only the file that kills its worker fails
+                    if _run_pool(1, [item], catalog_dir, outcomes)[0]:
+                        outcomes[item[0]] = _died(item[1])
+        else:
+            for i, f, t in todo:
+                outcomes[i] = advise_one(f, t, catalog_dir)
+    except KeyboardInterrupt:
+        written = sum(o.code == ExitCode.OK for o in outcomes.values())
+        raise Interrupted(written, len(files)) from None
+    ordered = [outcomes[i] for i in range(len(files))]
+    worst = max((o.code for o in ordered), key=lambda c: SEVERITY[ExitCode(c)], default=0)
+    return int(worst), ordered
 
 
 def print_summary(outcomes: list[Outcome], out_dir: Path) -> None:
     from rich.console import Console
     from rich.table import Table
+    from rich.text import Text
+
+    from advisor.io_safety import plain
 
     status = {
-        0: "[green]design[/]",
-        2: "[red]invalid[/]",
-        3: "[yellow]infeasible[/]",
-        1: "[red]bug[/]",
+        0: Text("design", style="green"),
+        2: Text("invalid", style="red"),
+        3: Text("infeasible", style="yellow"),
+        1: Text("bug", style="red"),
     }
-    t = Table(title=f"{len(outcomes)} requirement files → {out_dir}", title_justify="left")
+    t = Table(title=plain(f"{len(outcomes)} requirement files → {out_dir}"), title_justify="left")
     t.add_column("file")
     t.add_column("result")
     t.add_column("exit", justify="right")
     t.add_column("design or reason")
-    for o in outcomes:
-        t.add_row(Path(o.source).name, status[o.code], str(o.code), o.headline)
+    names = display_names([Path(o.source) for o in outcomes])
+    for o, name in zip(outcomes, names, strict=True):
+        t.add_row(plain(name), status[o.code], str(o.code), plain(o.headline))
     console = Console(file=sys.stdout)
     console.print(t)
     counts = {k: sum(o.code == k for o in outcomes) for k in (0, 3, 2, 1)}

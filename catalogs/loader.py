@@ -4,7 +4,6 @@ import itertools
 import json
 import math
 import os
-import tomllib
 import zlib
 from functools import cache
 from pathlib import Path
@@ -74,20 +73,31 @@ class Catalogs(NamedTuple):
         return sorted((m for m in self.motors if m.poles == poles), key=lambda m: m.rated_power_kW)
 
 
+#: A catalog is read whole; one larger than this is not a catalog (``/dev/zero``).
+CATALOG_MAX_BYTES = 16 << 20
+
+
 def _read(path: Path) -> dict[str, Any]:
+    """A catalog file read as safely as a requirement (regular file, bounded size, no deep
+    nesting; see :mod:`advisor.io_safety`)."""
+    from advisor.core.errors import InputError
+    from advisor.io_safety import parse_toml, read_input, show
+
     try:
-        with path.open("rb") as fh:
-            return tomllib.load(fh)
-    except OSError as exc:
-        raise CatalogError(f"catalog {path}: cannot be read ({exc.strerror})") from None
-    except tomllib.TOMLDecodeError as exc:
-        raise CatalogError(f"catalog {path}: broken TOML: {exc}") from None
+        where = f"catalog {show(path, 200)}"
+        return parse_toml(read_input(path, CATALOG_MAX_BYTES, what="catalog "), where)
+    except CatalogError:
+        raise
+    except InputError as exc:
+        raise CatalogError(str(exc)) from None
 
 
 def _fail(path: Path, where: str, exc) -> CatalogError:
     err = exc.errors()[0]
     loc = ".".join(str(p) for p in err["loc"])
-    field = f"field {loc} = {err['input']!r}: " if loc else ""
+    from advisor.io_safety import show
+
+    field = f"field {loc} = {show(repr(err['input']))}: " if loc else ""
     msg = err["msg"].removeprefix("Value error, ")
     return CatalogError(f"catalog {path}, {where}: {field}{msg}")
 

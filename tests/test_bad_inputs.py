@@ -1,5 +1,6 @@
 """The bad-input corpus: every file in tests/bad_inputs/ with the exit code and the words of
-the message expected for it (tests/bad_inputs/expected.txt)."""
+the message expected for it (tests/bad_inputs/expected.txt). Every file ends in exit 2 or 3
+with at most 6 lines of at most 300 characters on stderr, no traceback."""
 
 import tomllib
 from pathlib import Path
@@ -25,6 +26,11 @@ def test_bad_input(name, capsys):
     rc = main(["--batch", str(HERE / f"{name}.toml")])
     err = capsys.readouterr().err
     assert rc == exp["exit"], err
+    assert rc in (2, 3)
     assert "Traceback" not in err and "internal error" not in err
+    lines = err.splitlines()
+    assert 1 <= len(lines) <= 6, err  # a few lines, whatever the file holds
+    assert all(len(line) <= 300 for line in lines), max(map(len, lines))
+    assert "\x1b" not in err  # control characters are shown escaped, never sent
     for word in exp["words"]:
         assert word in err, f"{word!r} not in {err!r}"

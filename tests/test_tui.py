@@ -112,7 +112,7 @@ async def test_every_change_is_saved_and_offered_back():
         await pilot.click("#kind-rotary")
         await pilot.press("ctrl+n")
         await _type(pilot, app, "f-rotary-torque-Nm", "750")
-    saved = drafts.load_draft()
+    saved = drafts.load_draft().doc
     assert saved["application"]["kind"] == "rotary" and saved["rotary"]["torque_Nm"] == 750
     again = DriveAdvisorApp()
     async with again.run_test(size=SIZE) as pilot:

@@ -229,8 +229,9 @@ async def test_a_wrong_typed_value_is_shown_in_its_field(tmp_path):
         assert app.step == 1 and app.focused is app.query_one("#f-rotary-torque-Nm")
         assert app.query_one("#f-rotary-torque-Nm", Input).value == "True"
         assert "is not a number" in _text(app.query_one("#f-rotary-torque-Nm-err", Label))
-        err = _text(app.query_one("#f-gearbox-rolling-body-err", Label))
-        assert "'cylinder' in the file is not one of ball, roller" in err
+        # a choice no list can show is set aside on opening, and said so on the first step
+        said = _text(app.query_one("#step-0-error", Static))
+        assert "gearbox.rolling_body = 'cylinder': must be one of ball, roller" in said
 
 
 def test_fixes_for_the_engine_messages():

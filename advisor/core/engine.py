@@ -11,6 +11,7 @@ from advisor.core.errors import InfeasibleError
 from advisor.core.report import CheckOut, DecisionOut, Report, ReportHeader
 from advisor.core.requirements import Requirements
 from advisor.core.rulebook import Trace
+from advisor.ignored import ignored
 from catalogs import load_catalogs
 
 
@@ -56,7 +57,7 @@ def advise(req: Requirements, catalog_dir: Path | None = None) -> Report:
             )
             for c in checks
         ],
-        warnings=warnings,
+        warnings=[*ignored(req), *warnings],
         decisions=[
             DecisionOut.make(
                 id=d.id,

@@ -6,12 +6,12 @@ changed input shows as a readable diff.
 """
 
 import math
-import os
-from pathlib import Path
 from typing import Any
 
 import tomli_w
 from pydantic import BaseModel, ConfigDict
+
+from advisor.io_safety import write_atomic as write_atomic  # re-exported: the report writer
 
 REPORT_FORMAT = 1
 
@@ -105,32 +105,3 @@ def _plain(obj: Any) -> Any:
 def to_toml(report: Report) -> str:
     """The report as TOML text (no nulls: TOML has none)."""
     return tomli_w.dumps(_plain(report))
-
-
-def write_atomic(path: Path, text: str) -> None:
-    """Write ``text`` to ``path`` so that a reader sees the old file or the new one, never a
-    half-written one: write a temporary file beside it, flush it to disk, then rename."""
-    import tempfile  # only the -o path needs it; keep the stdout path light
-
-    path = Path(path)
-    directory = path.parent if str(path.parent) else Path(".")
-    # a writer killed outright (SIGKILL, power loss) cannot remove its temporary file; the
-    # next write of the same report does
-    for stale in directory.glob(f".{path.name}.*.tmp"):
-        try:
-            stale.unlink()
-        except OSError:
-            pass
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=directory)
-    try:
-        with os.fdopen(fd, "w", encoding="utf-8", newline="\n") as fh:
-            fh.write(text)
-            fh.flush()
-            os.fsync(fh.fileno())
-        os.replace(tmp, path)
-    except BaseException:
-        try:
-            os.unlink(tmp)
-        except FileNotFoundError:
-            pass
-        raise

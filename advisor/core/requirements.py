@@ -6,7 +6,6 @@ application kind needs must be present.
 """
 
 import math
-import tomllib
 from pathlib import Path
 from typing import Annotated, Any, Literal
 
@@ -14,6 +13,12 @@ from pydantic import BaseModel, ConfigDict, Field, ValidationError, field_valida
 from pydantic_core import PydanticCustomError
 
 from advisor.core.errors import InputError
+from advisor.io_safety import read_toml, show, show_repr
+
+#: At most this many unknown keys are listed (50,000 typos are not 50,000 lines) ...
+MAX_UNKNOWN_SHOWN = 3
+#: ... and at most this many problems in all, the last line saying how many more.
+MAX_PROBLEMS_SHOWN = 5
 
 #: Stands for the registered kinds in a description (filled in when a message is written).
 _KINDS = "{kinds}"
@@ -213,7 +218,8 @@ def _where(loc: tuple[Any, ...]) -> str:
 
 def format_validation_error(exc: ValidationError, root: Any) -> list[str]:
     """One line per problem: the field, the value given and what is allowed."""
-    lines = []
+    lines: list[str] = []
+    unknown: list[str] = []
     for err in exc.errors():
         raw_loc = tuple(err["loc"])
         loc, info, holder = _walk(raw_loc, root)
@@ -229,8 +235,10 @@ def format_validation_error(exc: ValidationError, root: Any) -> list[str]:
             lines.append(f"{where}: missing; required{desc}")
             continue
         if typ == "extra_forbidden":
-            allowed = ", ".join(holder.model_fields) if holder is not None else ""
-            lines.append(f"{where}: unknown key; allowed keys here: {allowed}")
+            unknown.append(where)
+            if len(unknown) <= MAX_UNKNOWN_SHOWN:
+                allowed = ", ".join(holder.model_fields) if holder is not None else ""
+                lines.append(f"{show(where)}: unknown key; allowed keys here: {allowed}")
             continue
         value = err.get("input")
         shown = _show(value)
@@ -246,6 +254,11 @@ def format_validation_error(exc: ValidationError, root: Any) -> list[str]:
             lines.append(what)
         else:
             lines.append(f"{where} = {shown}: {what}{desc}")
+    if len(unknown) > MAX_UNKNOWN_SHOWN:
+        lines.append(f"… and {len(unknown) - MAX_UNKNOWN_SHOWN:,} more unknown keys")
+    if len(lines) > MAX_PROBLEMS_SHOWN:
+        more = len(lines) - MAX_PROBLEMS_SHOWN + 1
+        lines = [*lines[: MAX_PROBLEMS_SHOWN - 1], f"… and {more:,} more problems"]
     return lines
 
 
@@ -254,14 +267,22 @@ def _num_text(v: Any) -> str:
 
 
 def _show(value: Any) -> str:
+    """A value as echoed in a message: short, escaped, and never rounded onto a limit."""
     if isinstance(value, float):  # as typed where short, else compact (1e+12, not 1000000000000.0)
         r = repr(value)
-        return r if len(r) <= 10 or not math.isfinite(value) else format(value, ".6g")
+        if len(r) <= 10 or not math.isfinite(value):
+            return r
+        compact = format(value, ".6g")  # only if it is the same number (50.000000000001 ≠ 50)
+        return compact if float(compact) == value else r
     if isinstance(value, dict):
         return "{…}"
     if isinstance(value, bool):
         return "true" if value else "false"
-    return repr(value)
+    if isinstance(value, str):
+        return show_repr(value)
+    if isinstance(value, list) and len(value) > 8:
+        return show(repr(value[:8])[:-1] + f", … {len(value):,} items]")
+    return show(repr(value))
 
 
 def parse_requirements(data: dict[str, Any]) -> Requirements:
@@ -272,26 +293,20 @@ def parse_requirements(data: dict[str, Any]) -> Requirements:
     except ValidationError as exc:
         raise InputError(*format_validation_error(exc, _Head)) from None
     model = requirements_model(kind)
+    from advisor.ignored import contradictions
+
+    conflicts = contradictions(data)
     try:
-        return model.model_validate(data)
+        req = model.model_validate(data)
     except ValidationError as exc:
-        raise InputError(*format_validation_error(exc, model)) from None
+        raise InputError(*conflicts, *format_validation_error(exc, model)) from None
+    if conflicts:
+        raise InputError(*conflicts)
+    return req
 
 
 def read_requirements(path: Path) -> Requirements:
-    """Read and validate a requirement file; every failure is an :class:`InputError`."""
-    try:
-        raw = path.read_bytes()
-    except FileNotFoundError:
-        raise InputError(f"{path}: no such file") from None
-    except IsADirectoryError:
-        raise InputError(f"{path}: is a directory, expected a requirement file (.toml)") from None
-    except OSError as exc:
-        raise InputError(f"{path}: cannot be read ({exc.strerror})") from None
-    try:
-        data = tomllib.loads(raw.decode("utf-8"))
-    except UnicodeDecodeError:
-        raise InputError(f"{path}: not a UTF-8 text file") from None
-    except tomllib.TOMLDecodeError as exc:
-        raise InputError(f"{path}: broken TOML: {exc}") from None
-    return parse_requirements(data)
+    """Read and validate a requirement file; every failure is an :class:`InputError`
+    (reading itself is :func:`advisor.io_safety.read_toml`: regular files of at most 1 MiB,
+    no deep nesting)."""
+    return parse_requirements(read_toml(path))

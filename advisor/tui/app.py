@@ -35,6 +35,7 @@ from textual.widgets import (
 )
 
 from advisor.core.errors import InfeasibleError, InputError
+from advisor.io_safety import plain, show
 from advisor.tui import draft as drafts
 from advisor.tui import fields as F
 from advisor.tui import fixes, views
@@ -96,6 +97,10 @@ Numbers are SI with the unit shown beside each field.
 """
 
 
+#: At most this many loading problems are listed (then how many more).
+MAX_PROBLEMS = 8
+
+
 def _input(value: str, id: str) -> Input:
     """An input whose cursor does not blink (a steady screen, and steady snapshots)."""
     box = Input(value, id=id)
@@ -140,7 +145,7 @@ class ConfirmScreen(ModalScreen[bool]):
 
     def compose(self) -> ComposeResult:
         with Vertical(id="dialog"):
-            yield Static(self.question, id="question")
+            yield Static(plain(self.question), id="question")
             with Horizontal():
                 yield Button(f"{self.yes} (y)", id="yes", variant="primary")
                 yield Button(f"{self.no} (n)", id="no")
@@ -204,7 +209,7 @@ class ExportScreen(ModalScreen[None]):
             path = path.with_name(path.name.replace(".report.toml", ".toml"))
         if path.exists():
             self.app.push_screen(
-                ConfirmScreen(f"{path} exists. Replace it?", "Replace", "Keep it"),
+                ConfirmScreen(f"{show(path, 200)} exists. Replace it?", "Replace", "Keep it"),
                 lambda yes: self._write(path, what) if yes else self._kept(),
             )
         else:
@@ -223,10 +228,13 @@ class ExportScreen(ModalScreen[None]):
             app.write_export(path, what)
         except OSError as exc:
             self.query_one("#export-error", Static).update(
-                f"{path}: cannot write ({exc.strerror}); nothing was written"
+                plain(f"{path}: cannot write ({exc.strerror}); nothing was written")
             )
             return
-        app.notify(f"{what} written to {path}", title="Exported")
+        except InputError as exc:  # a device, a FIFO, a directory: refused, nothing written
+            self.query_one("#export-error", Static).update(plain(str(exc)))
+            return
+        app.notify(f"{what} written to {path}", title="Exported", markup=False)
         self.dismiss()
 
 
@@ -253,9 +261,13 @@ class DriveAdvisorApp(App[None]):
         catalog_dir: Path | None = None,
         save_drafts: bool = True,
         offer_draft: bool = True,
+        problems: list[str] | None = None,
     ) -> None:
         super().__init__()
-        self.doc: dict[str, Any] = copy.deepcopy(doc) if doc else {}
+        # any document (a file, a draft, a test's dict) is shaped so that no widget breaks
+        shaped, found = drafts.shape(copy.deepcopy(doc)) if doc else ({}, [])
+        self.doc: dict[str, Any] = shaped
+        self.load_problems: list[str] = [*(problems or []), *found]
         self.source = source
         self.catalog_dir = catalog_dir
         self.save_drafts = save_drafts
@@ -279,11 +291,13 @@ class DriveAdvisorApp(App[None]):
             fixes.fill_fixed(self.doc, self.kind)
         self._last_doc: Any = copy.deepcopy(F.prune(self.doc))  # as last saved (or opened)
         # the draft to offer, read before anything could save over it; none saved meanwhile
-        self._offered: dict[str, Any] | None = None
+        self._offered: drafts.Loaded | None = None
         if self.offer_draft:
-            saved = drafts.load_draft(source)
-            if saved and (source is None or F.prune(saved) != F.prune(self.doc)):
-                self._offered = saved
+            loaded = drafts.load_draft(source)
+            if loaded.doc is None and loaded.problems:  # unreadable: set aside, say so
+                self.load_problems += loaded.problems
+            elif loaded.doc and (source is None or F.prune(loaded.doc) != F.prune(self.doc)):
+                self._offered = loaded
 
     # ------------------------------------------------------------------ layout
     def compose(self) -> ComposeResult:
@@ -328,12 +342,13 @@ class DriveAdvisorApp(App[None]):
     async def on_mount(self) -> None:
         await self._build_steps()
         self._show_step()
-        if self._offered is not None:
-            saved = self._offered
+        self._show_problems(self.load_problems)
+        if self._offered is not None and self._offered.doc:
+            saved = self._offered.doc
             kind = saved.get("application", {}).get("kind", "?")
-            title = saved.get("application", {}).get("title", "")
+            title = show(saved.get("application", {}).get("title", ""))
             what = (
-                f"Unsaved changes to {self.source.name} from your last session were found"
+                f"Unsaved changes to {show(self.source.name)} from your last session were found"
                 if self.source is not None
                 else "A draft from your last session was found"
             )
@@ -346,20 +361,32 @@ class DriveAdvisorApp(App[None]):
                 self._resume,
             )
 
+    def _show_problems(self, problems: list[str]) -> None:
+        """What loading a file or draft changed or could not use: on the first step and as a
+        notification, as plain text (never markup)."""
+        if not problems:
+            return
+        shown = problems[:MAX_PROBLEMS] + (
+            [f"… and {len(problems) - MAX_PROBLEMS:,} more"] if len(problems) > MAX_PROBLEMS else []
+        )
+        text = "\n".join(shown)
+        self.query_one("#step-0-error", Static).update(plain(text))
+        self.notify(text, title="Loaded with problems", severity="warning", markup=False)
+
     async def _resume(self, yes: bool | None) -> None:
-        saved, self._offered = self._offered or {}, None
-        if yes:
-            self.doc = saved
-            kind = saved.get("application", {}).get("kind")
+        loaded, self._offered = self._offered, None
+        if yes and loaded is not None and loaded.doc is not None:
+            self.doc = loaded.doc
+            app = self.doc.get("application", {})
+            kind = app.get("kind")
             if kind in F.titles():
                 fixes.fill_fixed(self.doc, kind)
             for k in F.titles():
                 self.query_one(f"#kind-{k}", RadioButton).value = k == kind
-            self.query_one("#f-application-title", Input).value = saved.get("application", {}).get(
-                "title", ""
-            )
+            self.query_one("#f-application-title", Input).value = app.get("title", "")
             await self._build_steps()
             self._show_step()
+            self._show_problems(loaded.problems)
             self._last_doc = None
             self._changed()  # the document resumed is the draft
         else:
@@ -521,7 +548,11 @@ class DriveAdvisorApp(App[None]):
             try:
                 drafts.save_draft(F.prune(self.doc), self.source)
             except OSError as exc:
-                self.notify(f"the draft cannot be saved ({exc.strerror})", severity="warning")
+                self.notify(
+                    f"the draft cannot be saved ({exc.strerror})", severity="warning", markup=False
+                )
+            except InputError as exc:  # the draft's place is a directory, a FIFO, a device
+                self.notify(f"the draft cannot be saved: {exc}", severity="warning", markup=False)
         if self.report is not None:
             self._show_result_status()
 
@@ -539,7 +570,7 @@ class DriveAdvisorApp(App[None]):
             self.field_errors[f.id] = err
         label = self.query(f"#{f.id}-err")
         if label:
-            label.first(Label).update(err or "")
+            label.first(Label).update(plain(err or ""))
         return err
 
     @on(RadioSet.Changed, "#kind")
@@ -643,7 +674,9 @@ class DriveAdvisorApp(App[None]):
             )
             if owner and target is not None and target in F.fields_for(kind, step):
                 if target.id not in self.field_errors:  # the field's own words come first
-                    self.query_one(f"#{target.id}-err", Label).update(line.split(": ", 1)[-1])
+                    self.query_one(f"#{target.id}-err", Label).update(
+                        plain(line.split(": ", 1)[-1])
+                    )
             else:
                 step_msgs.append(line)
             ok = False
@@ -665,7 +698,7 @@ class DriveAdvisorApp(App[None]):
             row = Horizontal(Static(line, markup=False), *buttons, classes="fix")
             row.fix_buttons = buttons  # type: ignore[attr-defined]
             rows.append(row)
-        self.query_one(f"#step-{step}-error", Static).update("\n".join(plain_lines))
+        self.query_one(f"#step-{step}-error", Static).update(plain("\n".join(plain_lines)))
         if lines == self._step_lines.get(step):
             return  # the same messages: keep the rows (and the focus on their buttons)
         self._step_lines[step] = lines
@@ -810,7 +843,7 @@ class DriveAdvisorApp(App[None]):
         self.query_one("#main", ContentSwitcher).current = "wizard"
         self._show_step()
         self.query_one("#review-error", Static).update(
-            "The requirement is not complete or not valid:\n" + "\n".join(messages)
+            plain("The requirement is not complete or not valid:\n" + "\n".join(messages))
         )
         self._done()
 
@@ -833,8 +866,10 @@ class DriveAdvisorApp(App[None]):
 
     def _crashed(self, exc: Exception) -> None:
         self.query_one("#review-error", Static).update(
-            f"internal error in the calculation ({type(exc).__name__}: {exc}); your input is "
-            "kept — please report it with the exported requirements"
+            plain(
+                f"internal error in the calculation ({type(exc).__name__}: {exc}); your input "
+                "is kept — please report it with the exported requirements"
+            )
         )
         self.notify(f"internal error: {type(exc).__name__}", severity="error")
         self._done()
@@ -871,7 +906,7 @@ class DriveAdvisorApp(App[None]):
             widgets.append(Static(Text(sec.title, style="bold underline")))
             widgets.append(Static(sec.table))
             if sec.why:
-                widgets.append(Static(Text.assemble(("▶ chosen: ", "bold"), sec.why)))
+                widgets.append(Static(Text.assemble(("▶ chosen: ", "bold"), plain(sec.why))))
             if sec.note:
                 widgets.append(Static(sec.note, classes="note", markup=False))
             buttons = []
@@ -967,14 +1002,14 @@ class DriveAdvisorApp(App[None]):
 
 
 def run(path: Path | None, catalog_dir: Path | None) -> int:
-    """``advisor`` and ``advisor REQ.toml``: the wizard, prefilled from a file if given."""
-    import tomllib
+    """``advisor`` and ``advisor REQ.toml``: the wizard, prefilled from a file if given.
 
-    doc = None
+    The file is read like a batch input (:func:`advisor.io_safety.read_toml`); one that
+    cannot be read at all is an :class:`InputError` (exit 2, one line); wrong-typed values
+    open with the problems shown."""
+    doc, problems = None, []
     if path is not None:
-        try:
-            doc = tomllib.loads(path.read_text(encoding="utf-8"))
-        except (OSError, UnicodeDecodeError, tomllib.TOMLDecodeError) as exc:
-            raise InputError(f"{path}: cannot be opened in the wizard ({exc})") from None
-    DriveAdvisorApp(doc, path, catalog_dir).run()
-    return 0
+        doc, problems, _ = drafts.open_doc(path)
+    app = DriveAdvisorApp(doc, path, catalog_dir, problems=problems)
+    app.run()
+    return 1 if app.return_code else 0

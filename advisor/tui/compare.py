@@ -37,8 +37,11 @@ def table(*columns: str) -> Table:
     return t
 
 
-def mark(chosen: bool, text: str) -> str:
-    return f"{CHOSEN} {text}" if chosen else f"  {text}"
+def mark(chosen: bool, text: str) -> Any:
+    """A first cell: the chosen one marked ▶; names from users and catalogs as plain text."""
+    from advisor.io_safety import plain
+
+    return plain(f"{CHOSEN} {text}" if chosen else f"  {text}")
 
 
 def one_way(report) -> list[Section]:

@@ -9,6 +9,7 @@ from rich.text import Text
 
 from advisor.core import registry
 from advisor.core.registry import headline
+from advisor.io_safety import plain
 
 
 def kv(title: str, rows: list[tuple[str, Any]]) -> Table:
@@ -20,12 +21,13 @@ def kv(title: str, rows: list[tuple[str, Any]]) -> Table:
     return t
 
 
-def _fmt(v: Any) -> str:
+def _fmt(v: Any) -> Text:
+    """A cell as plain text: names come from users and catalogs and are never markup."""
     if isinstance(v, bool):
-        return "yes" if v else "no"
+        return plain("yes" if v else "no")
     if isinstance(v, float):
-        return f"{v:.4g}"
-    return str(v)
+        return plain(f"{v:.4g}")
+    return plain(v)
 
 
 def plural(n: int, word: str) -> str:
@@ -52,21 +54,21 @@ def summary(report, previous=None) -> Group:
     worst = min(report.checks, key=lambda c: c.margin) if report.checks else None
     passed = sum(c.passed for c in report.checks)
     lines = [
-        Text(report.report.title or report.report.application, style="bold"),
-        Text(headline(report)),
+        plain(report.report.title or report.report.application, "bold"),
+        plain(headline(report)),
         Text(f"status: {report.report.status}, {plural(passed, 'check')} passed"),
     ]
     hold = holding(report)
     if hold:
-        lines.append(Text(hold))
+        lines.append(plain(hold))
     if worst is not None:
-        lines.append(Text(f"lowest margin: {worst.name} — {worst.margin:.3f}"))
+        lines.append(plain(f"lowest margin: {worst.name} — {worst.margin:.3f}"))
     for w in report.warnings:
-        lines.append(Text(f"⚠ {w}", style="yellow"))
+        lines.append(plain(f"⚠ {w}", "yellow"))
     changed = changes(previous, report) if previous is not None else []
     if changed:
         lines.append(Text("\nChanged since the previous result:", style="bold"))
-        lines.extend(Text(f" • {c}") for c in changed)
+        lines.extend(plain(f" • {c}") for c in changed)
     return Group(*lines)
 
 
@@ -125,9 +127,9 @@ def infeasible(exc) -> Text:
             break
     text = Text("No feasible design", style="bold")
     if head:
-        text.append(f": {head}")
+        text.append_text(plain(f": {head}"))
     for r in exc.reasons:
-        text.append(f"\n • {r}")
+        text.append_text(plain(f"\n • {r}"))
     return text
 
 
@@ -193,8 +195,10 @@ def decisions(report) -> Table:
     t.add_column("decision and rationale", ratio=1)
     for d in report.decisions:
         t.add_row(
-            f"{d.id}\n{d.title}",
-            Text.assemble((d.decision, "bold"), "\n", d.rationale, "\n", (d.source, "dim")),
+            plain(f"{d.id}\n{d.title}"),
+            Text.assemble(
+                plain(d.decision, "bold"), "\n", plain(d.rationale), "\n", plain(d.source, "dim")
+            ),
         )
     return t
 
@@ -205,7 +209,7 @@ def checks(report) -> Table:
         t.add_column(col, justify="left" if col == "check" else "right")
     for c in report.checks:
         t.add_row(
-            c.name,
+            plain(c.name),
             f"{c.value:.4g} {c.unit}".strip(),
             f"{c.limit:.4g} {c.unit}".strip(),
             f"{c.margin:.3f}",

@@ -97,7 +97,13 @@ class ScrewReq(_Strict):
         m = THREAD_RE.match(v.strip())
         if not m:
             raise ValueError("must be a trapezoidal thread written like Tr16x2 (d x P in mm)")
-        return f"Tr{float(m.group(1)):g}x{float(m.group(2)):g}"
+        d, pitch = float(m.group(1)), float(m.group(2))
+        if round(d, 2) != d or round(pitch, 2) != pitch:  # GOST 24738 sizes: 2 decimals at most
+            raise ValueError(
+                "is not a GOST 24738 size: diameter and pitch are whole millimetres or "
+                "halves (Tr16x2, Tr10x1.5)"
+            )
+        return f"Tr{d:g}x{pitch:g}"
 
 
 class LinearRequirements(_Strict):

@@ -4,6 +4,7 @@ from typing import Any
 
 from rich.table import Table
 
+from advisor.io_safety import plain
 from advisor.tui.views import PlotData
 
 
@@ -16,11 +17,11 @@ def components(report) -> list[Any]:
         t.add_column(col, justify="right")
     for c in mo.candidates:
         t.add_row(
-            c.name,
+            plain(c.name),  # named by the user: data, never markup
             f"{c.optimal_ratio:.4g}",
             f"{c.estimated_ratio:.4g}",
             f"{c.move_time_s:.4g}",
-            c.profile,
+            plain(c.profile),
         )
     parts.append(t)
     return parts
