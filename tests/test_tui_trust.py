@@ -73,7 +73,7 @@ async def test_a_field_in_error_stops_compute_and_the_draft_never_holds_a_half_v
         assert app.query_one("#main").current == "wizard" and app.step == 1
         assert app.focused is app.query_one("#f-rotary-torque-Nm")  # taken to the field
         assert "'8OO' is not a number" in _text(app.query_one("#f-rotary-torque-Nm-err", Label))
-        saved = drafts.load_draft(VALVE)
+        saved = drafts.load_draft(VALVE).doc
         assert "torque_Nm" not in saved["rotary"]  # neither 8.0 nor the old 1000
         # ctrl+s refuses the same way
         await pilot.press("ctrl+s")
@@ -158,8 +158,8 @@ async def test_opening_a_file_keeps_the_draft_of_a_new_requirement():
         await pilot.press("ctrl+n")
         await _retype(pilot, app, "f-rotary-torque-Nm", "900")
         await pilot.pause()
-    assert drafts.load_draft() == {"application": {"kind": "linear", "title": "unsaved work"}}
-    assert drafts.load_draft(VALVE)["rotary"]["torque_Nm"] == 900.0
+    assert drafts.load_draft().doc == {"application": {"kind": "linear", "title": "unsaved work"}}
+    assert drafts.load_draft(VALVE).doc["rotary"]["torque_Nm"] == 900.0
     # the file's own draft is offered when the file is opened again
     app = DriveAdvisorApp(_doc(), VALVE)
     async with app.run_test(size=SIZE) as pilot:
