@@ -939,7 +939,7 @@ class DriveAdvisorApp(App[None]):
         elif self._inputs_changed():
             text = "[reverse] ! [/] The inputs changed since this result: ctrl+r recomputes."
         else:
-            text = f"The design of the inputs as they are now ({self.last_compute_s:.2f} s)."
+            text = "The design of the inputs as they are now."
         self.query_one("#result-status", Static).update(text)
 
     def _fill(self, **panes: Any) -> None:
