@@ -391,3 +391,30 @@ def test_plot_markers_tell_series_apart_without_colour():
     assert views.markers(data) == ["•", "+", "◆"]
     assert views.legend(data) == "• a   + b   ◆ working point"
     assert views.plural(1, "check") == "1 check" and views.plural(2, "check") == "2 checks"
+
+
+async def test_keys_arriving_in_a_burst_act_in_order():
+    """A loaded machine delivers keys in bursts: ctrl+u then a path, all queued at once.
+    textual ran ctrl+u's deletion after the path was typed (and deleted it); here it acts
+    first, as typed. The same for backspace in a wizard field."""
+    from textual import events
+
+    def burst(app, keys):
+        for key in keys:
+            char = {"ctrl+u": "\x15", "backspace": "\x7f", "full_stop": "."}.get(key, key)
+            app.post_message(events.Key(key, char))
+
+    app = DriveAdvisorApp(_doc(), VALVE, save_drafts=False)
+    async with app.run_test(size=SIZE) as pilot:
+        await _computed(app, pilot)
+        await pilot.press("ctrl+s")
+        await pilot.pause()
+        burst(app, ["ctrl+u", *"e2e", "full_stop", *"toml"])
+        await pilot.pause(0.3)
+        assert app.screen.query_one("#export-path", Input).value == "e2e.toml"
+        await pilot.press("escape", "ctrl+e", "ctrl+n")
+        box = app.query_one("#f-rotary-torque-Nm", Input)
+        assert app.focused is box
+        burst(app, ["ctrl+u", "8", "backspace", "9", "0", "0"])
+        await pilot.pause(0.3)
+        assert box.value == "900"

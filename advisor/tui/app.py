@@ -13,7 +13,7 @@ from typing import Any, ClassVar
 import tomli_w
 from rich.markup import escape
 from rich.text import Text
-from textual import on
+from textual import events, on
 from textual.app import App, ComposeResult
 from textual.binding import Binding
 from textual.containers import Horizontal, Vertical, VerticalScroll
@@ -101,9 +101,29 @@ Numbers are SI with the unit shown beside each field.
 MAX_PROBLEMS = 8
 
 
+class SteadyInput(Input):
+    """An input whose editing keys act in the order they were typed.
+
+    textual runs a widget's own key bindings (ctrl+u, backspace, arrows, enter) only once
+    the key has bubbled up to the app, hop by hop, while a printable key is inserted at once:
+    on a loaded machine, or under a fast typist, the characters typed after ctrl+u landed
+    first and were then deleted with it (the tmux test lost its export path so). Here the
+    input's own bindings run as the key arrives."""
+
+    async def _on_key(self, event: events.Key) -> None:
+        bindings = self._bindings.key_to_bindings.get(event.key, [])
+        if bindings and not event.is_printable:
+            event.stop()
+            event.prevent_default()
+            await self.run_action(bindings[0].action)
+            return
+        await super()._on_key(event)
+
+
 def _input(value: str, id: str) -> Input:
-    """An input whose cursor does not blink (a steady screen, and steady snapshots)."""
-    box = Input(value, id=id)
+    """An input whose cursor does not blink (a steady screen, and steady snapshots) and
+    whose keys act in order (:class:`SteadyInput`)."""
+    box = SteadyInput(value, id=id)
     box.cursor_blink = False
     return box
 
