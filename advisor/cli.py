@@ -26,7 +26,8 @@ def build_parser() -> argparse.ArgumentParser:
         prog=PROG,
         description="Rules-based design advisor for electromechanical drives.",
         epilog="Exit codes: 0 design found, 2 invalid input, 3 no feasible design. "
-        "`advisor schema` prints the JSON Schema of requirement files.",
+        "`advisor schema` prints the JSON Schema of requirement files. "
+        "Product-family studies: advisor family FAMILY.toml --out DIR (see advisor family -h).",
     )
     p.add_argument(
         "requirements",
@@ -77,8 +78,13 @@ def _err(message: str) -> None:
     :data:`LINE_CHARS` characters (a message never floods the terminal)."""
     from advisor.io_safety import clip, printable
 
+    room = LINE_CHARS - len(PROG) - 2  # "advisor: " comes first
     for line in message.splitlines() or [message]:
-        print(f"{PROG}: {clip(printable(line), LINE_CHARS)}", file=sys.stderr)
+        text = printable(line)
+        if len(text) > room:  # clip's "… (N characters)" counted in the room
+            tail = f"… ({len(text):,} characters)"
+            text = clip(text, room - len(tail) + 1)
+        print(f"{PROG}: {text}", file=sys.stderr)
 
 
 #: The longest line the command prints on stderr.
@@ -235,6 +241,10 @@ def main(argv: list[str] | None = None) -> int:
     argv = sys.argv[1:] if argv is None else argv
     if argv[:1] == ["schema"]:
         return run_schema(argv[1:])
+    if argv[:1] == ["family"]:  # product-family studies (Dask): imported only on this path
+        from advisor.family.cli import main as family_main
+
+        return family_main(argv[1:])
     parser = build_parser()
     try:
         args = parser.parse_args(argv)

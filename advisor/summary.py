@@ -34,7 +34,7 @@ def print_summary(report: Report, path: Path, console: Console | None = None) ->
         worst = min(report.checks, key=lambda c: c.margin)
         t.add_row("lowest margin", plain(f"{worst.name}: {worst.margin:.3f}"))
     else:
-        t.add_row("lowest margin", "no checks")
+        t.add_row("lowest margin", "none: no check applies to this design")
     console.print(t)
     for w in report.warnings:
         console.print(Text.assemble(("warning:", "yellow"), " ", plain(w)))

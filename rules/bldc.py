@@ -71,11 +71,14 @@ def choose_speed(
     )
 
 
-#: Relative tolerance of the loss limit: a frame at its own reference point is exactly at
-#: the limit, and floating-point rounding must not decide which side it falls.
-LIMIT_REL_TOL = 1e-9
+#: Relative tolerance of the loss limit, a stated design allowance: the loss model's inputs
+#: (phase resistance, steel loss figures, magnet losses) are known to three significant
+#: figures, so a frame within 0.1 % of its reference losses is at its rating. A frame run at
+#: its own reference point (the seed 000 rudder) is exactly at the limit; without this band a
+#: requirement perturbed by 1e-9 would flip from a design to none (issue 12, item 5).
+LIMIT_REL_TOL = 1e-3
 
 
 def within_limit(losses_W: float, limit_W: float) -> bool:
-    """Losses within the limit, up to :data:`LIMIT_REL_TOL` (rounding, not engineering)."""
+    """Losses within the limit, up to the stated allowance :data:`LIMIT_REL_TOL`."""
     return losses_W <= limit_W * (1.0 + LIMIT_REL_TOL)

@@ -243,3 +243,17 @@ def test_too_lossy_message_stays_short():
     lines = str(e.value).splitlines()
     assert len(lines) == 6 and all(len(x) <= 300 for x in lines)
     assert "and 2 more candidate speeds" in lines[4]
+
+
+@pytest.mark.parametrize("rel", [-1e-9, 1e-9, 1e-6, 5e-4])
+def test_the_reference_point_is_no_knife_edge(rel):
+    """The rudder runs the seed's frame exactly at its reference point: 1620 N·m through
+    q = 1000 at η = 0.9² is 1620 / 810 = 2.0 N·m, the reference torque, so its losses equal
+    the limit (228.42 W). A requirement perturbed by up to the stated 0.1 % allowance
+    (rules/bldc.py LIMIT_REL_TOL) keeps the same design: 5000 rpm, total losses ∝ M² for the
+    ohmic part, within 2·rel of the limit."""
+    report = _advise(_rotary(1620 * (1 + rel), [5000, 10000]))
+    assert report.design.motor.speed_rpm == 5000
+    assert report.design.motor.losses_W.total == pytest.approx(
+        228.42 * (1 + 2 * rel * 68.97 / 228.42), rel=1e-4
+    )

@@ -1,7 +1,10 @@
 """Catalogs: every row has a source; broken or inconsistent rows are refused with file, row
 and field named."""
 
+import itertools
+import math
 import shutil
+import tomllib
 
 import pytest
 
@@ -33,7 +36,25 @@ def test_every_motor_row_is_consistent():
 def test_gost_12139_series():
     powers = load_catalogs().rated_powers_kW
     assert {0.37, 0.55, 0.75, 1.1} <= set(powers)
-    assert 0.5 not in powers  # the paper's fig. 4 shows 0.5 kW, which the series lacks
+    # 0.5 kW (seed 001, fig. 4) is a value of the additional series (clause 1.3), not of the
+    # main series the advisor selects from
+    assert 0.5 not in powers
+    data = tomllib.loads((HERE / "gost_12139_84_powers.toml").read_text(encoding="utf-8"))
+    assert 0.5 in data["additional_rated_powers_kW"]
+    assert "clause 1.3" in data["additional_source"]
+
+
+def test_4a_powers_are_the_main_series_and_the_additional_one_would_not_change_seed_001():
+    # the evidence for selecting from the main series: every 4A motor is rated on it
+    cat = load_catalogs()
+    assert {m.rated_power_kW for m in cat.motors} <= set(cat.rated_powers_kW)
+    # seed 001 needs 5.085 N·m × 1200 rpm = 0.639 kW: 0.75 kW covers it; in the main series
+    # and in the main series merged with 0.5 kW its neighbours are the same, 0.55 and 1.1 kW
+    need = 5.085 * 1200 * math.pi / 30 / 1000
+    assert need == pytest.approx(0.639, abs=5e-4)
+    for series in (sorted(cat.rated_powers_kW), sorted({*cat.rated_powers_kW, 0.5})):
+        i = next(k for k, p in enumerate(series) if p >= need)
+        assert series[i - 1 : i + 2] == [0.55, 0.75, 1.1]
 
 
 def _user_dir(tmp_path, name, text):
@@ -172,3 +193,56 @@ def test_user_bearing_with_unknown_friction_series_is_refused(tmp_path):
     d = _user_dir(tmp_path, "skf_bearings.toml", text)
     with pytest.raises(CatalogError, match="field friction = 'tapered'"):
         load_catalogs(d)
+
+
+def test_estimated_4a_inertias_grow_with_the_frame():
+    cat = load_catalogs()
+    for poles in (2, 4, 6, 8):
+        line = sorted(cat.motors_with_poles(poles), key=lambda m: m.rated_power_kW)
+        for a, b in itertools.pairwise(line):
+            assert a.inertia_kgm2 < b.inertia_kgm2, (a.model, b.model)
+    by = {m.model: m for m in cat.motors}
+
+    def between(lo: str, mid: str, hi: str) -> float:
+        # the file's rule: log–log interpolation in rated torque between the kept rows
+        a, m, b = by[lo], by[mid], by[hi]
+        t = math.log(m.rated_torque_Nm / a.rated_torque_Nm) / math.log(
+            b.rated_torque_Nm / a.rated_torque_Nm
+        )
+        return a.inertia_kgm2 * (b.inertia_kgm2 / a.inertia_kgm2) ** t
+
+    # 4A63B4: M_n = 370/(1365·π/30) = 2.589 N·m between 4A63A4 (1.730 N·m, 0.0012 kg·m²) and
+    # 4A71A4 (3.779 N·m, 0.0013 kg·m²): t = ln(2.589/1.730)/ln(3.779/1.730) = 0.5158,
+    # J = 0.0012·(13/12)^0.5158 = 0.001251
+    assert between("4A63A4", "4A63B4", "4A71A4") == pytest.approx(0.001251, abs=1e-6)
+    assert by["4A63B4"].inertia_kgm2 == pytest.approx(
+        between("4A63A4", "4A63B4", "4A71A4"), rel=0.01
+    )
+    assert by["4A71A6"].inertia_kgm2 == pytest.approx(
+        between("4A63B6", "4A71A6", "4A71B6"), rel=0.01
+    )
+
+
+def test_skf_rows_d40_to_50_from_the_catalogue():
+    cat = load_catalogs()
+    # SKF General Catalogue (2006, Russian edition), d 40–60 mm table: C, C0, Pu, speeds, mass
+    # and the printed f0 (text of github.com/ArtemFilin1990/Mar, lines 17948–18019)
+    table = {
+        "6008": (40, 68, 15, 17.8, 11.6, 0.49, 22000, 14000, 0.19, 15),
+        "6009": (45, 75, 16, 22.1, 14.6, 0.64, 20000, 12000, 0.25, 15),
+        "6010": (50, 80, 16, 22.9, 16.0, 0.71, 18000, 11000, 0.26, 15),
+        "6208": (40, 80, 18, 32.5, 19.0, 0.80, 18000, 11000, 0.37, 14),
+        "6209": (45, 85, 19, 35.1, 21.6, 0.92, 17000, 11000, 0.41, 14),
+        "6210": (50, 90, 20, 37.1, 23.2, 0.98, 15000, 10000, 0.46, 14),
+    }
+    for name, (d, D, B, C, C0, Pu, nr, nl, m, f0) in table.items():
+        b = cat.bearing(name)
+        got = (b.d_mm, b.D_mm, b.B_mm, b.C_kN, b.C0_kN, b.Pu_kN)
+        assert got == (d, D, B, C, C0, Pu), name
+        assert (b.reference_speed_rpm, b.limiting_speed_rpm, b.mass_kg, b.f0) == (nr, nl, m, f0)
+        assert "f0" not in b.estimated and b.source == ["skf-gc-40"]
+    b = cat.bearing("7210 BECBP")  # 50×90×20, 40°, C 40 kN, C0 31 kN, Pu 1.32 kN, 9000 rpm
+    assert (b.d_mm, b.D_mm, b.B_mm, b.contact_angle_deg) == (50, 90, 20, 40)
+    assert (b.C_kN, b.C0_kN, b.Pu_kN, b.limiting_speed_rpm, b.mass_kg) == (40, 31, 1.32, 9000, 0.47)
+    for name in (*table, "7210 BECBP"):
+        assert all(s in cat.bearing_sources for s in cat.bearing(name).source)

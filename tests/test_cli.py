@@ -234,3 +234,20 @@ def test_closed_pipe_is_quiet():
     )
     assert r.stdout == "warnings ="[:10]
     assert "Traceback" not in r.stderr and "internal error" not in r.stderr
+
+
+def test_a_long_message_line_is_cut_to_the_stated_width(capsys):
+    from advisor.cli import LINE_CHARS, _err
+
+    _err("x" * 1000)
+    line = capsys.readouterr().err.rstrip("\n")
+    assert len(line) == LINE_CHARS, line
+    assert line.startswith("advisor: xxx") and line.endswith("… (1,000 characters)")
+
+
+def test_unknown_bearing_names_the_catalog_in_runs():
+    from advisor.applications.spinning_rotor.advice import designation_runs
+
+    # consecutive numbers of one series (same suffix, same width) make a run; others stand
+    names = ["7000 CD", "7200 BECBP", "7201 BECBP", "7202 BECBP", "6000", "6001", "6003", "X1"]
+    assert designation_runs(names) == "7000 CD, 7200 … 7202 BECBP, 6000 … 6001, 6003, X1"

@@ -43,19 +43,63 @@ def test_exact_optimum_solves_eq6_and_minimises_eq4():
 
 
 def test_graphical_method_fixed_point_is_the_exact_optimum():
-    exact = mo.optimal_ratio_trapezoidal(A, 10.0)
-    assert mo.fixed_point(A, 10.0) == pytest.approx(exact, rel=1e-10)
-    # the first reading of the graph, K(μ0)·∛A, is within the seed's range K = 1…1.35
+    # by hand: i0 = ∛1181.25 = 10.5709, μ0 = 5/10.5709 = 0.47299, μ0² = 0.22372;
+    # the curves of figs. 4–5 cross where x⁴ − x − μ0² = 0 (x = √K):
+    # x = 1.0656: 1.28937 − 1.0656 − 0.22372 = 0.00004 → K1 = x² = 1.1355,
+    # i = K1·i0 = 1.1355·10.5709 = 12.003, the root of eq. (6) (12.0031)
+    fp = mo.graphical_fixed_point(A, 10.0)
+    assert fp.k == pytest.approx(1.1355, abs=1e-4)
+    assert fp.ratio == pytest.approx(12.003, abs=1e-3)
+    assert fp.ratio == pytest.approx(mo.optimal_ratio_trapezoidal(A, 10.0), rel=1e-12)
+    # it is a fixed point of i = K(m/i)·∛A: K read at μ1 = m/i gives K1 back
+    assert mo.k_factor(5.0 / fp.ratio) == pytest.approx(fp.k, rel=1e-12)
+    assert fp.mu == pytest.approx(5.0 / fp.ratio)
+    # the first step, K read at μ0, is what the report shows beside it
     est, i0, k = mo.graphical_estimate(A, 10.0)
     assert i0 == pytest.approx(1181.25 ** (1 / 3))
     assert 1.0 <= k <= 1.35
-    # μ0 = 5/10.574 = 0.4729 → K = (1/(1 − 0.2236)²)^(1/3) = 1.1837 → 12.52
-    assert est == pytest.approx(12.52, abs=0.01)
+    # μ0 = 0.4730 → K = (1/(1 − 0.22372)²)^(1/3) = 1.1839 → 12.515
+    assert est == pytest.approx(12.515, abs=1e-3)
     # and the time curve is flat there: 4 % off in ratio costs 0.22 % of time
     # (1.20848 s at 12.515 against 1.20588 s at 12.003)
     assert (
-        mo.move_time_trapezoidal(A, 10.0, est) / mo.move_time_trapezoidal(A, 10.0, exact) < 1.0025
+        mo.move_time_trapezoidal(A, 10.0, est) / mo.move_time_trapezoidal(A, 10.0, fp.ratio)
+        < 1.0025
     )
+
+
+def test_fixed_point_where_plain_iteration_diverges():
+    # i ← K(m/i)·∛A converges only while |dK/di·i0| = (4/3)μ²/(1 − μ²) < 1, i.e. μ < 0.655;
+    # a heavy load, m = 1000/20 = 50: A = 2·150²·0.01·(2500 + 500)/(10·20) = 6750,
+    # i0 = 18.899, μ0 = 50/18.899 = 2.6457 (off the chart), μ0² = 6.9996,
+    # x⁴ − x − 6.9996 = 0 → x = 1.7183,
+    # K1 = 2.9526, i = 55.80 (μ1 = 0.896)
+    heavy = mo.Drive(150.0, 0.01, 20.0, 5.0, 1000.0)
+    assert mo.coefficient_a(heavy, 10.0) == pytest.approx(6750.0)
+    fp = mo.graphical_fixed_point(heavy, 10.0)
+    assert fp.k == pytest.approx(2.9526, abs=1e-4)
+    assert fp.ratio == pytest.approx(55.80, abs=0.01)
+    assert fp.ratio == pytest.approx(mo.optimal_ratio_trapezoidal(heavy, 10.0), rel=1e-12)
+    # the first step K(μ0)·i0 = (1/(1 − 6.9996)²)^(1/3)·18.899 = 0.30287·18.899 = 5.724 < 50:
+    # a ratio at which the motor cannot move the load
+    first, _, _ = mo.graphical_estimate(heavy, 10.0)
+    assert first == pytest.approx(5.724, abs=1e-3)
+    assert not mo.first_step_moves_load(heavy, first)
+    assert mo.first_step_moves_load(heavy, fp.ratio)
+
+
+def test_triangular_ratio_counts_the_load_torque():
+    # motor A, I = 500, m = 5: i² = [(3·25 + 500) + √(575² + 4·500·25)]/2
+    # = [575 + √380625]/2 = [575 + 616.948]/2 = 595.974 → i = 24.4126
+    assert mo.triangular_ratio(A) == pytest.approx(24.4126, abs=1e-4)
+    # it is the minimum of the triangular time law, found independently
+    assert mo.optimal_ratio_triangular(A, 0.2) == pytest.approx(24.4126, abs=1e-4)
+    # the inertia match √I = 22.36 ignores the load torque and is slower
+    t = mo.move_time_triangular(A, 0.2, 24.4126)
+    assert mo.move_time_triangular(A, 0.2, math.sqrt(500)) > t
+    # the two limits: no load torque → √I; no load inertia → √3·m
+    assert mo.triangular_ratio(A._replace(load_torque_Nm=0.0)) == pytest.approx(math.sqrt(500))
+    assert mo.triangular_ratio(A._replace(load_inertia_kgm2=0.0)) == pytest.approx(math.sqrt(3) * 5)
 
 
 def test_k_is_1_to_1_35_for_mu_0_to_0_6():
@@ -117,6 +161,11 @@ def test_example_picks_the_fastest_motor(report):
     assert a["move_time_s"] == pytest.approx(
         mo.move_time_trapezoidal(A, 10.0, a["optimal_ratio"]), rel=1e-5
     )
+    # the graphical method's answer (fixed point) with its first step beside it, motor A:
+    # 12.003 against 12.515 (test_graphical_method_fixed_point_is_the_exact_optimum)
+    assert a["estimated_ratio"] == pytest.approx(12.003, abs=1e-3)
+    assert a["estimated_ratio_first_step"] == pytest.approx(12.515, abs=1e-3)
+    assert a["first_step_moves_load"] is True
     assert m["profile_actual"] == "trapezoidal"
     assert len(m["curve"]["ratio"]) == len(m["curve"]["move_time_s"]) == 61
     assert min(m["curve"]["move_time_s"]) >= m["move_time_s"] * (1 - 1e-6)
@@ -162,10 +211,105 @@ def test_catalog_candidates_when_none_given():
 
 
 def test_bad_positioning_inputs():
-    with pytest.raises(InputError, match=r"positioning.travel_rad = 0.0: must be > 0"):
+    with pytest.raises(InputError, match=r"positioning.travel_rad = 0.0: must be ≥ 0.0001"):
         parse_requirements(_req(travel_rad=0.0))
     with pytest.raises(InputError, match="used twice"):
         m = {"name": "A", "speed_rad_s": 1.0, "inertia_kgm2": 1.0, "accel_torque_Nm": 1.0}
         parse_requirements(_req(motors=[m, m]))
     with pytest.raises(InputError, match=r"positioning.profile = 'sinusoidal'"):
         parse_requirements(_req(profile="sinusoidal"))
+
+
+def test_estimated_inertias_decide_only_through_mo_04():
+    from rules.motion import robust_motor
+
+    # A is nominally fastest (1.10 s), but with inertias ±30 % A spans 1.00…1.20 s and B
+    # 1.05…1.15 s: either could be the fastest; B is the faster in the worst case
+    f = robust_motor("A", {"A": 1.0, "B": 1.05, "C": 1.5}, {"A": 1.2, "B": 1.15, "C": 1.9}, 0.3)
+    assert f.value == ("B", ("B", "A"))
+    assert "cannot separate 2 motors" in f.decision and "maker's data" in f.decision
+    # A spans 1.00…1.04 s and nothing else can get below 1.05 s: A stands
+    f = robust_motor("A", {"A": 1.0, "B": 1.05}, {"A": 1.04, "B": 1.2}, 0.3)
+    assert f.value == ("A", ("A",)) and "do not decide" in f.rationale
+
+
+def test_catalog_choice_when_the_estimate_cannot_separate_motors():
+    from catalogs import load_catalogs
+
+    req = _req(travel_rad=0.5, load_torque_Nm=10.0)
+    req["positioning"]["motors"] = []
+    rep = advise(parse_requirements(req))
+    mo04 = next(d for d in rep.decisions if d.id == "MO-04")
+    assert "cannot separate" in mo04.decision
+    assert mo04.decision.startswith(f"Motor {rep.design.motion.motor}:")
+    assert "MO-02" not in [d.id for d in rep.decisions]
+    assert any("decision MO-04" in w for w in rep.warnings)
+    # the motor taken is the one with the least time when every inertia is 30 % above its
+    # estimate, each at its own optimal ratio (computed here independently)
+    worst = {}
+    for m in load_catalogs().motors:
+        d = mo.Drive(
+            m.rated_speed_rpm * math.pi / 30,
+            m.inertia_kgm2 * 1.3,
+            m.starting_torque_ratio * m.rated_torque_Nm,
+            5.0,
+            10.0,
+        )
+        i = mo.optimal_ratio_trapezoidal(d, 0.5)
+        if mo.move_time(d, 0.5, i)[1] == "triangular":
+            i = mo.optimal_ratio_triangular(d, 0.5)
+        worst[m.model] = mo.move_time(d, 0.5, i)[0]
+    assert rep.design.motion.motor == min(worst, key=worst.get)
+
+
+def test_catalog_choice_that_the_estimate_does_not_change():
+    req = _req()
+    req["positioning"]["motors"] = []
+    rep = advise(parse_requirements(req))
+    ids = [d.id for d in rep.decisions]
+    assert ids == ["MO-04", "MO-01", "MO-03"]  # MO-04 takes the motor decision
+    assert rep.decisions[0].decision.startswith(
+        f"Motor {rep.design.motion.motor} stays the fastest"
+    )
+    times = {c.name: c.move_time_s for c in rep.design.motion.candidates}
+    assert rep.design.motion.motor == min(times, key=times.get)
+
+
+def test_no_load_torque_has_no_checks_and_the_summary_says_so(tmp_path, capsys):
+    # issue 13: with M_p = 0 no check applies; the summary used to fail after the report was
+    # written (exit 1)
+    from advisor.cli import main
+
+    src = tmp_path / "r.toml"
+    src.write_text(
+        '[application]\nkind = "positioning"\n[positioning]\ntravel_rad = 10\n'
+        "load_inertia_kgm2 = 5\nload_torque_Nm = 0\n[[positioning.motors]]\n"
+        'name = "A"\nspeed_rad_s = 150\ninertia_kgm2 = 0.01\naccel_torque_Nm = 20\n',
+        encoding="utf-8",
+    )
+    rc = main(["--batch", str(src), "-o", str(tmp_path / "out.toml")])
+    out, err = capsys.readouterr()
+    assert rc == 0, err
+    assert "no check applies" in out
+    rep = tomllib.loads((tmp_path / "out.toml").read_text(encoding="utf-8"))
+    assert rep.get("checks", []) == []
+    # m = 0: the graphical method needs no K (K = 1), i = ∛A with A = 2·150²·0.01·500/(10·20)
+    # = 1125 → i = 10.400
+    assert rep["design"]["motion"]["estimated_ratio"] == pytest.approx(1125 ** (1 / 3), rel=1e-5)
+    assert rep["design"]["motion"]["optimal_ratio"] == pytest.approx(10.400, abs=1e-3)
+
+
+def test_fixed_point_with_a_negligible_load_torque():
+    # found by the whole-range property test: μ0 ≈ 4e-17, so 1 + μ0 rounds to 1 and the
+    # bracket was empty. Near x = 1, x⁴ − x ≈ 3·(x − 1), so K1 = x² ≈ 1 + 2μ0²/3 → 1 and the
+    # fixed point is i0 = ∛A.
+    d = mo.Drive(1e4, 1e-9, 1e6, 1e7, 1e-6)
+    fp = mo.graphical_fixed_point(d, 1e-4)
+    assert fp.k == 1.0
+    assert fp.ratio == pytest.approx(mo.coefficient_a(d, 1e-4) ** (1 / 3), rel=1e-15)
+    # μ0 = 1e-4: K1 − 1 = 2μ0²/3 = 6.6667e-9 to first order (the next term is O(μ0⁴))
+    m = 1e-4 * 1181.25 ** (1 / 3)  # motor A's i0 = ∛A with the torque ratio making μ0 = 1e-4
+    light = A._replace(load_torque_Nm=m * 20.0)
+    i0 = mo.coefficient_a(light, 10.0) ** (1 / 3)
+    mu0 = light.torque_ratio / i0
+    assert mo.graphical_fixed_point(light, 10.0).k - 1 == pytest.approx(2 * mu0**2 / 3, rel=1e-6)

@@ -8,7 +8,8 @@ References
 ----------
 [1] Seed 003 (003_9e41cc3901572aaa.txt): eqs. (1)–(4) move time of a trapezoidal speed graph,
     (6)–(7) the optimum, (8)–(9a) the graphical method i = K·∛A with K = ∛(1/(1 − μ²)²)
-    (the OCR prints (I − μ²); it is (1 − μ²), from i⁴(1 − m²/i²)²), (12)–(13) engineering units.
+    (the OCR prints (I − μ²); it is (1 − μ²), from i⁴(1 − m²/i²)²), (10)–(11) and figs. 4–5
+    the intersection of the curves (the method's answer), (12)–(13) engineering units.
 """
 
 import math
@@ -126,32 +127,88 @@ def k_factor(mu: float) -> float:
 
 
 def graphical_estimate(d: Drive, path_rad: float) -> tuple[float, float, float]:
-    """The seed's engineering estimate: i0 = ∛A, μ0 = m/i0, i ≈ K(μ0)·i0 (eq. (9)).
+    """The first step of the seed's graphical method: i0 = ∛A, μ0 = m/i0, i ≈ K(μ0)·i0.
 
-    Returns ``(estimate, i0, K)``. The graphical construction of figs. 4–5 solves the fixed
-    point i = K(m/i)·∛A, which is the exact optimum; reading K at μ0 is its first step.
+    Returns ``(first_step, i0, K(μ0))``. It is not the method's answer (that is the
+    intersection of the curves, :func:`graphical_fixed_point`). Where μ0 ≥ 1, i.e. i0 ≤ m,
+    K(μ0) is read off the chart's range (μ = 0…0.6) and the first step can fall below m, a
+    ratio at which the motor cannot move the load; :func:`first_step_moves_load` tells.
     """
     i0 = coefficient_a(d, path_rad) ** (1.0 / 3.0)
     k = k_factor(d.torque_ratio / i0)
     return k * i0, i0, k
 
 
-def fixed_point(d: Drive, path_rad: float, tol: float = 1e-12, max_iter: int = 500) -> float:
-    """Iterate i ← K(m/i)·∛A from i0: the graphical method carried to convergence."""
-    root_a = coefficient_a(d, path_rad) ** (1.0 / 3.0)
-    i = root_a
-    for _ in range(max_iter):
-        nxt = k_factor(d.torque_ratio / i) * root_a
-        if abs(nxt - i) <= tol * nxt:
-            return nxt
-        i = nxt
-    return i
+def first_step_moves_load(d: Drive, first_step: float) -> bool:
+    """Whether a ratio exceeds m = M_p/M_λ, the least ratio at which the motor moves the load."""
+    return first_step > d.torque_ratio
+
+
+class FixedPoint(NamedTuple):
+    ratio: float  # i = K1·i0
+    k: float  # K1
+    mu: float  # μ1 = m/i
+
+
+def graphical_fixed_point(d: Drive, path_rad: float) -> FixedPoint:
+    """The answer of the seed's graphical method: the intersection of K = φ(μ) (eq. (9a)) and
+    μ = f(μ0, K) (eqs. (10), (10a)) — figs. 4 and 5, read there to ΔK/2 = 1 %; here exactly.
+
+    With i = K·i0 and m = μ0·i0 the curve f is μ = μ0/K, and φ is K = (1 − μ²)^(−2/3). At the
+    intersection K^(3/2)·(1 − μ0²/K²) = 1, i.e. with x = √K
+
+        x⁴ − x − μ0² = 0,
+
+    whose left side rises for x ≥ 1 (derivative 4x³ − 1 > 0) from −μ0² at x = 1 to
+    (1 + μ0)⁴ − 1 − μ0 − μ0² ≥ 0 at x = 1 + μ0: one root, bracketed and found by bisection
+    (on y = x − 1, to keep the precision of a small μ0).
+    It is the optimum of eq. (6): i³·(1 − μ²)² = A is (i² − m²)²/i = A.
+    """
+    i0 = coefficient_a(d, path_rad) ** (1.0 / 3.0)
+    mu0 = d.torque_ratio / i0
+    mu0_sq = mu0 * mu0
+    # solved for y = x − 1 ≥ 0, as y·(x³ + x² + x) = μ0², which keeps its precision when
+    # μ0 is small (then y ≈ μ0²/3 and x itself would round to 1)
+    y = bisect(
+        lambda y: y * ((1.0 + y) ** 3 + (1.0 + y) ** 2 + (1.0 + y)) - mu0_sq,
+        0.0,
+        mu0,
+        xtol=1e-16 * min(1.0, mu0_sq),
+    )
+    k = (1.0 + y) ** 2
+    return FixedPoint(k * i0, k, mu0 / k)
+
+
+def triangular_ratio(d: Drive) -> float:
+    """Ratio of the fastest triangular move, counting the load torque (closed form).
+
+    Over the whole path α the motor accelerates with a₁ = (M_λ − M_p/i)/J and brakes with
+    a₂ = (M_λ + M_p/i)/J, J = J0 + J_p/i² (the phases of seed 003, eq. (3)). With θ = α·i the
+    motor's path, θ = v²/(2a₁) + v²/(2a₂) and t = v/a₁ + v/a₂ give t² = 2θ·(1/a₁ + 1/a₂), and
+
+        1/a₁ + 1/a₂ = J·2M_λ/(M_λ² − M_p²/i²),
+        t² = (4α·J0/M_λ) · i·(i² + I)/(i² − m²),   I = J_p/J0, m = M_p/M_λ.
+
+    So t is least where F(i) = i·(i² + I)/(i² − m²) is. F' = 0 gives
+    (3i² + I)(i² − m²) − 2i²(i² + I) = 0, i.e. i⁴ − (3m² + I)·i² − I·m² = 0, a quadratic
+    in u = i² with one positive root:
+
+        i² = [(3m² + I) + √((3m² + I)² + 4·I·m²)] / 2.
+
+    Without load torque (m = 0) this is the inertia match i = √I; without load inertia
+    (I = 0) it is i = √3·m. The root always exceeds m (i² ≥ 3m²), so the motor moves the load.
+    The ratio is clamped to the range searched, RATIO_MIN … RATIO_MAX.
+    """
+    m2, big_i = d.torque_ratio**2, d.inertia_ratio
+    b = 3.0 * m2 + big_i
+    u = 0.5 * (b + math.sqrt(b * b + 4.0 * big_i * m2))
+    return min(max(math.sqrt(u), RATIO_MIN), RATIO_MAX)
 
 
 def optimal_ratio_triangular(d: Drive, path_rad: float) -> float:
-    """Minimum of the triangular time law over i > m (golden-section search on log i; the
-    law is unimodal: it grows without bound as i → m and as i → ∞). Without load torque the
-    optimum is the inertia match i = √(J_p/J0)."""
+    """Minimum of the triangular time law over i > m, found numerically (golden-section search
+    on log i; the law is unimodal: it grows without bound as i → m and as i → ∞). It agrees
+    with the closed form :func:`triangular_ratio`, which a test checks."""
     m = d.torque_ratio
     lo = math.log(max(m * (1.0 + 1e-9), RATIO_MIN))
     hi = math.log(RATIO_MAX)

@@ -18,22 +18,30 @@ from catalogs import Catalogs
 from rules import motion as mo_rules
 
 
-def _candidates(req: Requirements, cat: Catalogs) -> tuple[list[tuple[str, mo.Drive]], list[str]]:
+def _candidates(
+    req: Requirements, cat: Catalogs
+) -> tuple[list[tuple[str, mo.Drive]], list[str], set[str]]:
+    """The candidate drives, the warnings about them and the names whose inertia is an
+    estimate."""
     pos = req.positioning
     if pos.motors:
-        return [
-            (
-                m.name,
-                mo.Drive(
-                    m.speed_rad_s,
-                    m.inertia_kgm2,
-                    m.accel_torque_Nm,
-                    pos.load_inertia_kgm2,
-                    pos.load_torque_Nm,
-                ),
-            )
-            for m in pos.motors
-        ], []
+        return (
+            [
+                (
+                    m.name,
+                    mo.Drive(
+                        m.speed_rad_s,
+                        m.inertia_kgm2,
+                        m.accel_torque_Nm,
+                        pos.load_inertia_kgm2,
+                        pos.load_torque_Nm,
+                    ),
+                )
+                for m in pos.motors
+            ],
+            [],
+            set(),
+        )
     drives = [
         (
             m.model,
@@ -47,22 +55,25 @@ def _candidates(req: Requirements, cat: Catalogs) -> tuple[list[tuple[str, mo.Dr
         )
         for m in cat.motors
     ]
+    estimated = {m.model for m in cat.motors if "inertia_kgm2" in m.estimated}
     note = (
         "no [[positioning.motors]] given: candidates are the induction motors of the catalog at "
         "their rated speed with their starting torque; their rotor inertias are estimated values"
     )
-    return drives, [note]
+    return drives, [note], estimated
 
 
 def _solve(d: mo.Drive, path: float, asked: str) -> dict:
-    """Optimal ratio under the asked time law, then under the law that actually happens."""
+    """Optimal ratio under the asked time law, then under the law that actually happens; the
+    seed's estimate for the asked law and the graphical method's first step beside it."""
+    first, i0, _ = mo.graphical_estimate(d, path)
+    fp = mo.graphical_fixed_point(d, path)
     if asked == "trapezoidal":
         i = mo.optimal_ratio_trapezoidal(d, path)
-        estimate, i0, k = mo.graphical_estimate(d, path)
+        estimate = fp.ratio
     else:
         i = mo.optimal_ratio_triangular(d, path)
-        i0, k = mo.graphical_estimate(d, path)[1:]
-        estimate = math.sqrt(d.inertia_ratio) if d.inertia_ratio > 0 else i  # inertia match
+        estimate = mo.triangular_ratio(d)
     exact = i
     actual = "trapezoidal" if path >= mo.transient_path(d, i) else "triangular"
     if asked == "triangular" and actual == "trapezoidal":
@@ -80,32 +91,85 @@ def _solve(d: mo.Drive, path: float, asked: str) -> dict:
         "exact": exact,
         "ratio": i,
         "estimate": estimate,
+        "first_step": first,
+        "first_step_moves_load": mo.first_step_moves_load(d, first),
         "i0": i0,
-        "k": k,
+        "k": fp.k,
         "time": t,
         "actual": happened,
     }
 
 
+def _inertia_band(d: mo.Drive, path: float, asked: str, band: float) -> tuple[float, float]:
+    """Move times at the motor's optimal ratio with its inertia at the low and the high end of
+    the band of an estimate."""
+    lo = d._replace(inertia_kgm2=d.inertia_kgm2 * (1.0 - band))
+    hi = d._replace(inertia_kgm2=d.inertia_kgm2 * (1.0 + band))
+    return _solve(lo, path, asked)["time"], _solve(hi, path, asked)["time"]
+
+
 def advise_positioning(req: Requirements, cat: Catalogs, trace: Trace):
     pos = req.positioning
     path = pos.travel_rad
-    drives, warnings = _candidates(req, cat)
-    # A = 0 (eq. (7)) means a load so small against the motor that the time keeps falling as
-    # the ratio goes to zero: there is no finite optimum to give
-    finite = [(n, d) for n, d in drives if mo.coefficient_a(d, path) > 0]
-    if not finite:
+    drives, warnings, estimated = _candidates(req, cat)
+    # A motor whose torque only balances the load near the top of the ratios searched cannot
+    # be given a ratio that moves the load with any margin
+    usable = [(n, d) for n, d in drives if d.torque_ratio < mo.RATIO_MAX / 2.0]
+    if not usable:
+        m_min = min(d.torque_ratio for _, d in drives)
         raise InfeasibleError(
-            "no feasible design: the load is negligible against every motor",
+            "no feasible design: no motor can move the load through a ratio up to "
+            f"{mo.RATIO_MAX:g}",
             [
-                f"A of eq. (7) is 0 for {', '.join(n for n, _ in drives)}: the move time falls "
-                "without limit as the ratio goes to zero; give the load's inertia and torque"
+                f"the least ratio at which a motor balances the load, m = M_p/M_λ, is "
+                f"{m_min:.4g} (needs a ratio below {mo.RATIO_MAX / 2:g}); give a stronger motor "
+                "or check the load torque"
             ],
         )
-    solved = {name: (d, _solve(d, path, pos.profile)) for name, d in finite}
-    best = trace.apply(mo_rules.fastest_motor, {n: s["time"] for n, (_, s) in solved.items()})
+    dropped = len(drives) - len(usable)
+    if dropped:
+        warnings.append(
+            f"{dropped} motor(s) left out: each needs a ratio above {mo.RATIO_MAX / 2:g} only to "
+            "balance the load torque"
+        )
+    solved = {name: (d, _solve(d, path, pos.profile)) for name, d in usable}
+    times = {n: s["time"] for n, (_, s) in solved.items()}
+    best = min(times, key=times.__getitem__)
+    if best not in estimated:
+        best = trace.apply(mo_rules.fastest_motor, times)
+    else:
+        # the estimate would decide: MO-04 takes the decision (it states the motor adopted,
+        # with the nominal fastest in its rationale)
+        bands = {
+            n: _inertia_band(d, path, pos.profile, mo_rules.INERTIA_BAND)
+            if n in estimated
+            else (s["time"], s["time"])
+            for n, (d, s) in solved.items()
+        }
+        best, contenders = trace.apply(
+            mo_rules.robust_motor,
+            best,
+            {n: b[0] for n, b in bands.items()},
+            {n: b[1] for n, b in bands.items()},
+            mo_rules.INERTIA_BAND,
+        )
+        if len(contenders) > 1:
+            warnings.append(
+                f"the estimated rotor inertias (±{mo_rules.INERTIA_BAND * 100:.0f} %) cannot "
+                f"separate {len(contenders)} motors: {best} is taken by its worst-case time "
+                "(decision MO-04); confirm the inertias with the maker's data"
+            )
     d, s = solved[best]
-    trace.apply(mo_rules.ratio_per_motor, best, s["ratio"], s["estimate"], s["actual"])
+    trace.apply(
+        mo_rules.ratio_per_motor,
+        best,
+        s["ratio"],
+        s["estimate"],
+        s["first_step"],
+        d.torque_ratio,
+        s["actual"],
+        pos.profile,
+    )
     trace.apply(
         mo_rules.profile_check, pos.profile, s["actual"], path, mo.transient_path(d, s["ratio"])
     )
@@ -119,6 +183,13 @@ def advise_positioning(req: Requirements, cat: Catalogs, trace: Trace):
             f"the fastest ratio lies at the edge of the range searched ({mo.RATIO_MIN:g} … "
             f"{mo.RATIO_MAX:g}): the load is negligible or overwhelming against motor {best}"
         )
+    below = [n for n, (_, ss) in solved.items() if not ss["first_step_moves_load"]]
+    if below:
+        names = ", ".join(below[:5]) + (f" and {len(below) - 5} more" if len(below) > 5 else "")
+        warnings.append(
+            "the graphical method's first step K(μ0)·∛A is not above m = M_p/M_λ, a ratio that "
+            f"cannot move the load, for {names}: use the fixed point (estimated_ratio)"
+        )
     lo = max(d.torque_ratio * 1.02, s["ratio"] / 6.0, mo.RATIO_MIN)
     hi = min(max(s["ratio"] * 6.0, lo * 36.0), mo.RATIO_MAX)
     ratios = [lo * (hi / lo) ** (k / 60) for k in range(61)]
@@ -126,6 +197,8 @@ def advise_positioning(req: Requirements, cat: Catalogs, trace: Trace):
         motor=best,
         optimal_ratio=s["ratio"],
         estimated_ratio=s["estimate"],
+        estimated_ratio_first_step=s["first_step"],
+        first_step_moves_load=s["first_step_moves_load"],
         ratio_i0=s["i0"],
         k_factor=s["k"],
         coefficient_A=mo.coefficient_a(d, path),
@@ -143,6 +216,8 @@ def advise_positioning(req: Requirements, cat: Catalogs, trace: Trace):
                 accel_torque_Nm=dd.accel_torque_Nm,
                 optimal_ratio=ss["ratio"],
                 estimated_ratio=ss["estimate"],
+                estimated_ratio_first_step=ss["first_step"],
+                first_step_moves_load=ss["first_step_moves_load"],
                 move_time_s=ss["time"],
                 profile=ss["actual"],
             )

@@ -10,6 +10,8 @@ class MotionCandidateOut(_Out):
     accel_torque_Nm: float
     optimal_ratio: float
     estimated_ratio: float
+    estimated_ratio_first_step: float
+    first_step_moves_load: bool
     move_time_s: float
     profile: str
 
@@ -23,6 +25,8 @@ class MotionOut(_Out):
     motor: str
     optimal_ratio: float
     estimated_ratio: float
+    estimated_ratio_first_step: float
+    first_step_moves_load: bool
     ratio_i0: float
     k_factor: float
     coefficient_A: float

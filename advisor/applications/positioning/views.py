@@ -13,13 +13,15 @@ def components(report) -> list[Any]:
     parts: list[Any] = []
     mo = d.motion
     t = Table(title="Candidate motors", title_justify="left")
-    for col in ("motor", "optimal ratio", "estimate", "move time s", "profile"):
+    cols = ("motor", "optimal ratio", "estimate", "first step", "move time s", "profile")
+    for col in cols:
         t.add_column(col, justify="right")
     for c in mo.candidates:
         t.add_row(
             plain(c.name),  # named by the user: data, never markup
             f"{c.optimal_ratio:.4g}",
             f"{c.estimated_ratio:.4g}",
+            f"{c.estimated_ratio_first_step:.4g}" + ("" if c.first_step_moves_load else " < m"),
             f"{c.move_time_s:.4g}",
             plain(c.profile),
         )

@@ -29,11 +29,29 @@ MM = 1e-3
 RPM = 30.0 / math.pi
 
 
+def designation_runs(designations: list[str]) -> str:
+    """The catalog's designations in few words: consecutive numbers of one series as a run,
+    ``6200 … 6210``, ``7200 … 7210 BECBP``; others as they are, in catalog order."""
+    runs: list[list] = []  # [first, last, number, suffix]
+    for des in designations:
+        head, _, suffix = des.partition(" ")
+        if head.isdigit() and runs and runs[-1][2] is not None:
+            first, _, number, last_suffix = runs[-1]
+            if suffix == last_suffix and int(head) == number + 1 and len(head) == len(first):
+                runs[-1][1:3] = [head, int(head)]
+                continue
+        runs.append([head, head, int(head) if head.isdigit() else None, suffix])
+    parts = [
+        f + (f" … {la}" if la != f else "") + (f" {sx}" if sx else "") for f, la, _, sx in runs
+    ]
+    return ", ".join(parts)
+
+
 def _bearing(req: Requirements, cat: Catalogs) -> tuple[Bearing, float]:
     r = req.rotor
     b = cat.bearing(r.bearing)
     if b is None:
-        known = ", ".join(x.designation for x in cat.bearings)
+        known = designation_runs([x.designation for x in cat.bearings])
         raise InputError(
             f"rotor.bearing = {r.bearing!r}: not in the bearing catalog; known: {known}"
         )

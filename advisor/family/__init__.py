@@ -1,0 +1,24 @@
+"""Product-family studies: ``advisor family FAMILY.toml --out DIR``.
+
+A family is a base requirement plus axes (dotted requirement keys, each with a list of
+values or a range); its variants are the product of the axes. The variants are advised in
+chunks on a ``dask.distributed`` cluster (a local one by default) and gathered into
+``designs.csv``, ``summary.toml`` and ``family.html``.
+
+Modules, from the inside out:
+
+- :mod:`advisor.family.adapter`: the ONE call into the engine (``advise_one``);
+- :mod:`advisor.family.outputs`: the key outputs of each application, from its report;
+- :mod:`advisor.family.spec`: reading the family file, the axes and the variants;
+- :mod:`advisor.family.chunks`: what one task does (advise a block of variants);
+- :mod:`advisor.family.study`: the run on Dask, resume and progress;
+- :mod:`advisor.family.summary` and :mod:`advisor.family.html`: the results.
+
+Dask and matplotlib are imported only here, never on the batch path.
+"""
+
+import os
+
+# as on the batch path: pydantic need not scan every installed package for plugins (the
+# workers import this package before any model)
+os.environ.setdefault("PYDANTIC_DISABLE_PLUGINS", "__all__")

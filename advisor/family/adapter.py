@@ -1,0 +1,120 @@
+"""The one call from a family study into the engine, and requirement validation for axes.
+
+Everything a family study needs from the engine goes through this module, built on the same
+functions as ``advisor --batch``: :func:`advisor.core.requirements.parse_requirements` (the
+TOML reading of the batch path minus the file), :func:`advisor.core.engine.advise` and the
+report's TOML conversion. A row of ``designs.csv`` therefore equals what the batch command
+gives for that variant alone.
+
+It is also the one module of the family package that knows where the engine's modules live:
+the rest imports the errors and the report helpers from here.
+"""
+
+from typing import Any, NamedTuple
+
+from advisor.core.errors import AdvisorError, ExitCode, InfeasibleError, InputError
+from advisor.core.report import round_sig, write_atomic
+
+__all__ = [
+    "AdvisorError",
+    "ExitCode",
+    "InfeasibleError",
+    "InputError",
+    "Outcome",
+    "advise_one",
+    "field_problems",
+    "round_sig",
+    "write_atomic",
+]
+
+STATUS = {
+    ExitCode.OK: "design",
+    ExitCode.INFEASIBLE: "infeasible",
+    ExitCode.INVALID_INPUT: "invalid",
+    ExitCode.INTERNAL_ERROR: "internal_error",
+}
+
+
+class Outcome(NamedTuple):
+    exit_code: int  # as ``advisor --batch`` would exit for this requirement
+    status: str  # design, infeasible, invalid or internal_error
+    reason: str  # empty for a design; else the batch command's message in one line
+    report: dict[str, Any] | None  # the report as TOML data (what the batch TOML parses to)
+    text: str | None  # the report TOML, byte for byte the batch output (when asked for)
+
+
+def one_line(message: str) -> str:
+    """A multi-line message (headline, then ``  - reason`` lines) as one CSV-friendly line."""
+    parts = [p.strip().removeprefix("- ") for p in message.splitlines() if p.strip()]
+    return "; ".join(parts)
+
+
+def advise_one(
+    requirement: dict[str, Any], catalog_dir: str | None = None, with_text: bool = False
+) -> Outcome:
+    """Advise one requirement (a TOML document as a dict); every failure becomes an Outcome."""
+    from pathlib import Path
+
+    import tomli_w
+
+    from advisor.core.engine import advise
+    from advisor.core.report import _plain
+    from advisor.core.requirements import parse_requirements
+
+    try:
+        req = parse_requirements(requirement)
+        report = advise(req, Path(catalog_dir) if catalog_dir else None)
+        data = _plain(report)  # exactly what advisor.core.report.to_toml dumps
+        text = tomli_w.dumps(data) if with_text else None
+        return Outcome(ExitCode.OK, STATUS[ExitCode.OK], "", data, text)
+    except InfeasibleError as exc:
+        return Outcome(exc.exit_code, STATUS[ExitCode.INFEASIBLE], one_line(str(exc)), None, None)
+    except AdvisorError as exc:
+        code = ExitCode(exc.exit_code)
+        return Outcome(code, STATUS[code], one_line(str(exc)), None, None)
+    except Exception as exc:  # a bug in one variant must not stop the study
+        return Outcome(
+            ExitCode.INTERNAL_ERROR,
+            STATUS[ExitCode.INTERNAL_ERROR],
+            f"internal error ({type(exc).__name__}: {exc})",
+            None,
+            None,
+        )
+
+
+class FieldProblem(NamedTuple):
+    where: str  # ``rotary.torque_Nm``; "" for a problem of the whole requirement
+    message: str  # the batch command's one-line message
+    cross_field: bool  # raised by a check that relates several fields (a model validator)
+
+
+def field_problems(requirement: dict[str, Any]) -> list[FieldProblem]:
+    """Validation problems of a requirement, located, as the batch command words them."""
+    from pydantic import ValidationError
+
+    from advisor.core.requirements import (
+        _Head,
+        _walk,
+        _where,
+        format_validation_error,
+        requirements_model,
+    )
+
+    try:
+        kind = _Head.model_validate(requirement).application.kind
+        model: Any = requirements_model(kind)
+    except ValidationError as exc:
+        model, errors = _Head, exc
+    else:
+        try:
+            model.model_validate(requirement)
+            return []
+        except ValidationError as exc:
+            errors = exc
+    out = []
+    for err, line in zip(errors.errors(), format_validation_error(errors, model), strict=True):
+        loc, info, _ = _walk(tuple(err["loc"]), model)
+        holds_table = info is not None and hasattr(info.annotation, "model_fields")
+        cross = err["type"] == "value_error" and (not loc or holds_table)
+        out.append(FieldProblem(_where(loc), line, cross))
+    return out

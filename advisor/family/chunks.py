@@ -1,0 +1,84 @@
+"""One task of a family study: advise a block of variants in one process.
+
+:func:`run_chunk` is what a Dask worker runs; it takes the family (small: bases and axes)
+and a range of variant numbers, builds each variant itself, and returns the CSV rows (and,
+when asked, the report texts). The scheduler never sees a task per variant.
+"""
+
+import csv
+import io
+import json
+import time
+from typing import Any, NamedTuple
+
+from advisor.family.adapter import advise_one
+from advisor.family.outputs import COLUMNS, key_outputs
+from advisor.family.spec import Family
+
+HEAD = ("variant", "member", "application")
+TAIL = ("status", "exit_code", "reason")
+
+
+def columns(family: Family) -> list[str]:
+    """The header of designs.csv: variant, member, application, axes, status, outputs."""
+    return [*HEAD, *family.axis_keys(), *TAIL, *COLUMNS]
+
+
+def cell(value: Any) -> str:
+    """A CSV cell: blank for none, numbers as Python writes them, lists as JSON."""
+    if value is None:
+        return ""
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, list | dict):
+        return json.dumps(value)
+    return str(value)
+
+
+def report_name(index: int) -> str:
+    return f"v{index:07d}.report.toml"
+
+
+class ChunkResult(NamedTuple):
+    number: int
+    rows: list[list[str]]
+    reports: list[tuple[str, str]]  # (file name, report TOML) when asked for
+    seconds: float  # time spent advising, for the cost model
+
+
+def run_chunk(
+    family: Family, number: int, start: int, stop: int, catalog_dir: str | None, reports: bool
+) -> ChunkResult:
+    """Advise variants ``start`` … ``stop - 1``."""
+    t0 = time.perf_counter()
+    keys = family.axis_keys()
+    rows, texts = [], []
+    for index in range(start, stop):
+        member, coords, req = family.variant(index)
+        o = advise_one(req, catalog_dir, with_text=reports)
+        axis = {a.key: a.values[k] for a, k in zip(member.axes, coords, strict=True)}
+        outputs = key_outputs(o.report) if o.report is not None else {}
+        rows.append(
+            [
+                str(index),
+                member.name,
+                member.application,
+                *(cell(axis.get(k)) for k in keys),
+                o.status,
+                str(int(o.exit_code)),
+                o.reason,
+                *(cell(outputs.get(c)) for c in COLUMNS),
+            ]
+        )
+        if o.text is not None:
+            texts.append((report_name(index), o.text))
+    return ChunkResult(number, rows, texts, time.perf_counter() - t0)
+
+
+def rows_csv(rows: list[list[str]], header: list[str] | None = None) -> str:
+    buf = io.StringIO()
+    w = csv.writer(buf, lineterminator="\n")
+    if header is not None:
+        w.writerow(header)
+    w.writerows(rows)
+    return buf.getvalue()

@@ -1,0 +1,369 @@
+"""Product-family studies on a real dask.distributed LocalCluster (issue 18)."""
+
+import contextlib
+import io
+import os
+import signal
+import subprocess
+import sys
+import tomllib
+
+import pytest
+from helpers import EXAMPLES
+
+if not os.environ.get("CI"):  # CI installs the [family] extra: there a missing Dask fails
+    pytest.importorskip("distributed", reason="install the extra: pip install -e '.[family]'")
+
+from advisor.cli import main
+from advisor.family.chunks import cell, columns
+from advisor.family.outputs import COLUMNS, key_outputs
+from advisor.family.spec import axis_values, parse_family, read_family
+from advisor.family.study import join_chunks, run_study
+from advisor.family.summary import changes, read_rows, summarize
+
+# Two applications, 504 variants: the cheap linear and positioning paths carry the count,
+# a small rotary member (≈ 15 ms a variant) shows the third; some variants are infeasible
+# (linear: a Tr16x2 steel-steel nut at high force) and some invalid (rotary: output faster
+# than the motor's slowest candidate speed).
+FAMILY = f"""
+[family]
+name = "Test range"
+
+[[family.members]]
+name = "screw"
+base = "{EXAMPLES / "linear_screw_actuator.toml"}"
+[family.members.axes]
+"linear.force_N" = {{ from = 500, to = 12000, steps = 25, scale = "log" }}
+"linear.travel_time_s" = [2, 5, 10, 20, 40]
+"screw.material_pair" = ["steel_bronze", "steel_steel", "hardened_steel_bronze"]
+
+[[family.members]]
+name = "positioning"
+base = "{EXAMPLES / "positioning_drive.toml"}"
+[family.members.axes]
+"positioning.travel_rad" = {{ from = 1, to = 100, steps = 20, scale = "log" }}
+"positioning.load_inertia_kgm2" = [0.5, 1, 2, 5, 10, 20]
+
+[[family.members]]
+name = "rudder"
+base = "{EXAMPLES / "rudder_actuator.toml"}"
+[family.members.axes]
+"rotary.torque_Nm" = [200, 1620, 3000]
+"rotary.speed_rpm" = [5, 20, 6000]
+"""
+N_VARIANTS = 25 * 5 * 3 + 20 * 6 + 3 * 3
+CHUNK = 25
+
+
+@pytest.fixture(scope="module")
+def client():
+    from dask.distributed import Client, LocalCluster
+
+    cluster = LocalCluster(
+        n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None
+    )
+    c = Client(cluster)
+    yield c
+    c.close()
+    cluster.close()
+
+
+@pytest.fixture(scope="module")
+def family(tmp_path_factory):
+    path = tmp_path_factory.mktemp("fam") / "range.toml"
+    path.write_text(FAMILY, encoding="utf-8")
+    return read_family(path)
+
+
+@pytest.fixture(scope="module")
+def reference(client, family, tmp_path_factory):
+    """The uninterrupted study, with every report written."""
+    out = tmp_path_factory.mktemp("ref")
+    res = run_study(family, out, client, CHUNK, reports=True)
+    assert res.computed == res.chunks == -(-N_VARIANTS // CHUNK)
+    join_chunks(family, out, CHUNK)
+    return out
+
+
+def test_family_of_504_variants_over_three_applications(family, reference):
+    assert family.size == N_VARIANTS >= 500
+    rows = read_rows(reference / "designs.csv")
+    assert [int(r["variant"]) for r in rows] == list(range(N_VARIANTS))
+    assert {r["application"] for r in rows} == {"linear", "positioning", "rotary"}
+    assert list(rows[0]) == columns(family)
+    statuses = {r["status"] for r in rows}
+    assert statuses == {"design", "infeasible", "invalid"}
+    # the rotary member: 6000 rpm at the output is not below the motor speeds: invalid
+    rudder = [r for r in rows if r["member"] == "rudder"]
+    assert {r["status"] for r in rudder if r["rotary.speed_rpm"] == "6000"} == {"invalid"}
+    assert all(r["exit_code"] == "2" for r in rudder if r["rotary.speed_rpm"] == "6000")
+    # axes of the other members are blank in a row
+    assert all(r["rotary.torque_Nm"] == "" for r in rows if r["member"] != "rudder")
+    doc = summarize(family, rows, {})
+    assert sum(doc["counts"].values()) == N_VARIANTS
+    assert [m["variants"] for m in doc["members"]] == [375, 120, 9]
+    # the invalid region of the rudder member: exactly the 6000 rpm column, every torque
+    invalid = [g for g in doc["members"][2]["without_design"] if g["status"] == "invalid"]
+    assert len(invalid) == 1 and invalid[0]["variants"] == 3
+    assert invalid[0]["axes"] == {"rotary.torque_Nm": [200, 1620, 3000], "rotary.speed_rpm": [6000]}
+    assert "is not below the slowest motor.candidate_speeds_rpm" in invalid[0]["example"]
+
+
+def _batch(tmp_path, requirement):
+    import tomli_w
+
+    p = tmp_path / "variant.toml"
+    p.write_text(tomli_w.dumps(requirement), encoding="utf-8")
+    out, err = io.StringIO(), io.StringIO()
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+        rc = main(["--batch", str(p)])
+    return p, rc, out.getvalue(), err.getvalue()
+
+
+def test_every_sampled_row_equals_the_batch_command_alone(family, reference, tmp_path):
+    rows = read_rows(reference / "designs.csv")
+    sample = [
+        *range(0, N_VARIANTS, 23),
+        next(i for i, r in enumerate(rows) if r["status"] == "infeasible"),
+        next(i for i, r in enumerate(rows) if r["status"] == "invalid"),
+        N_VARIANTS - 1,
+    ]
+    seen = set()
+    for i in sample:
+        req = family.variant(i)[2]
+        row = rows[i]
+        path, rc, out, err = _batch(tmp_path, req)
+        assert row["exit_code"] == str(rc), i
+        seen.add(row["status"])
+        if rc == 0:
+            report = tomllib.loads(out)
+            want = key_outputs(report)
+            assert [row[c] for c in COLUMNS] == [cell(want[c]) for c in COLUMNS], i
+            assert (reference / "reports" / f"v{i:07d}.report.toml").read_text() == out
+        else:
+            lines = [line.removeprefix("advisor: ").strip() for line in err.splitlines()]
+            assert row["reason"] == "; ".join(x.removeprefix("- ") for x in lines), i
+            assert all(row[c] == "" for c in COLUMNS)
+    assert seen == {"design", "infeasible", "invalid"}
+    # and one variant through a separate process, exactly as a user would run it
+    j = max(i for i, r in enumerate(rows) if r["status"] == "design" and r["member"] == "rudder")
+    req = family.variant(j)[2]
+    path, *_ = _batch(tmp_path, req)
+    alone = subprocess.run(
+        [sys.executable, "-m", "advisor", "--batch", str(path)], capture_output=True, text=True
+    )
+    assert alone.returncode == 0
+    assert (reference / "reports" / f"v{j:07d}.report.toml").read_text() == alone.stdout
+
+
+def test_resume_after_interruption(client, family, reference, tmp_path):
+    out = tmp_path / "study"
+    out.mkdir()
+
+    def stop_after_three(n):
+        if n == 3:
+            raise KeyboardInterrupt
+
+    with pytest.raises(KeyboardInterrupt):
+        run_study(family, out, client, CHUNK, reports=True, on_chunk=stop_after_three)
+    written = sorted((out / "chunks").glob("c*.csv"))
+    assert len(written) == 3
+    res = run_study(family, out, client, CHUNK, reports=True)
+    assert res.computed == res.chunks - 3  # the written chunks were not computed again
+    join_chunks(family, out, CHUNK)
+    assert (out / "designs.csv").read_bytes() == (reference / "designs.csv").read_bytes()
+    assert len(list((out / "reports").iterdir())) == len(list((reference / "reports").iterdir()))
+    # a third run has nothing left to do
+    assert run_study(family, out, client, CHUNK, reports=True).computed == 0
+
+
+def test_a_different_study_in_the_same_folder_is_refused(client, family, reference):
+    from advisor.core.errors import InputError
+
+    with pytest.raises(InputError, match="holds chunks of another study"):
+        run_study(family, reference, client, CHUNK + 1, reports=True)
+
+
+def test_a_worker_killed_mid_study_costs_nothing(client, family, reference, tmp_path):
+    out = tmp_path / "killed"
+    out.mkdir()
+    pids = client.run(os.getpid)
+    killed = []
+
+    def kill_one(n):
+        if n == 2 and not killed:
+            pid = next(iter(pids.values()))
+            os.kill(pid, signal.SIGKILL)  # the nanny starts a new worker
+            killed.append(pid)
+
+    res = run_study(family, out, client, CHUNK, on_chunk=kill_one)
+    assert killed and res.computed == res.chunks
+    join_chunks(family, out, CHUNK)
+    assert (out / "designs.csv").read_bytes() == (reference / "designs.csv").read_bytes()
+    assert not list(out.glob("**/*.tmp"))
+    # the cluster is whole again for whatever runs next
+    client.wait_for_workers(2, timeout=60)
+
+
+# ------------------------------------------------------------------ axes and summary
+
+
+def test_log_range_by_hand():
+    # 100 → 2000 in 20 log steps: ratio 20^(1/19) = 1.170780; 100·1.170780 = 117.078
+    a = axis_values("rotary.torque_Nm", {"from": 100, "to": 2000, "steps": 20, "scale": "log"})
+    assert a.values[:3] == (100, 117.078, 137.073) and a.values[-1] == 2000
+    assert len(a.values) == 20
+    # a whole-number linear range stays whole: 2, 4, 6, 8
+    assert axis_values("k", {"from": 2, "to": 8, "steps": 4}).values == (2, 4, 6, 8)
+
+
+def test_changes_found_along_each_axis(tmp_path):
+    doc = tomllib.loads((EXAMPLES / "rudder_actuator.toml").read_text())
+    doc["family"] = {"axes": {"rotary.torque_Nm": [100, 200, 300], "rotary.speed_rpm": [2, 5]}}
+    fam = parse_family(doc, tmp_path / "f.toml")
+    m = fam.members[0]
+    # a made-up grid of stage counts, torque × speed (speed fastest):
+    #   100: 3 2 | 200: 3 2 | 300: 4 3
+    found = changes(m, ["3", "2", "3", "2", "4", "3"])
+    assert {(c["axis"], tuple(c["between"]), c["from"], c["to"], c["lines"]) for c in found} == {
+        ("rotary.speed_rpm", (2, 5), 3, 2, 2),  # on the lines torque = 100 and 200
+        ("rotary.speed_rpm", (2, 5), 4, 3, 1),  # on the line torque = 300
+        ("rotary.torque_Nm", (200, 300), 3, 4, 1),  # at speed 2
+        ("rotary.torque_Nm", (200, 300), 2, 3, 1),  # at speed 5
+    }
+    assert all(c["of_lines"] == (3 if c["axis"] == "rotary.speed_rpm" else 2) for c in found)
+    # a blank (no design) is not a change of choice
+    assert changes(m, ["3", "", "3", "3", "3", "3"]) == []
+
+
+BAD_AXES = [
+    ('"rotary.torqe_Nm" = [1, 2]', "rotary.torqe_Nm: unknown key"),
+    ('"rotary.torque_Nm" = []', "empty list"),
+    ('"rotary.torque_Nm" = { from = 5, to = 5, steps = 3 }', "empty range"),
+    (
+        '"rotary.torque_Nm" = [100, 2e6]',
+        "value 2000000.0: rotary.torque_Nm = 2000000.0: must be ≤ 1e+06",
+    ),
+    (
+        '"rotary.torque_Nm" = { from = 0, to = 5, steps = 3, scale = "log" }',
+        "log range needs from > 0",
+    ),
+    ('"rotary.torque_Nm" = { from = 1, to = 5, steps = 3, scale = "cubic" }', "scale = 'cubic'"),
+    ('"rotary.torque_Nm" = { from = 1, to = 5 }', "range without 'steps'"),
+    ('"motor.kind" = ["bldc", "induction"]', "'motor.kind' value 'induction'"),
+]
+
+
+@pytest.mark.parametrize(("axis", "words"), BAD_AXES)
+def test_bad_axis_is_one_line_exit_2_before_any_work(tmp_path, capsys, axis, words):
+    base = (EXAMPLES / "rudder_actuator.toml").read_text()
+    p = tmp_path / "fam.toml"
+    p.write_text(f"[family]\nname = 'x'\n[family.axes]\n{axis}\n\n{base}", encoding="utf-8")
+    out = tmp_path / "out"
+    assert main(["family", str(p), "--out", str(out)]) == 2
+    err = capsys.readouterr().err
+    assert len(err.strip().splitlines()) == 1 and words in err, err
+    assert not out.exists()  # refused before any work: no folder, no cluster
+
+
+def test_bad_base_and_file_errors(tmp_path, capsys):
+    p = tmp_path / "fam.toml"
+    base = (
+        (EXAMPLES / "rudder_actuator.toml")
+        .read_text()
+        .replace("stage_efficiency = 0.9", "stage_efficiency = 7")
+    )
+    p.write_text(f"[family.axes]\n'rotary.speed_rpm' = [5]\n{base}", encoding="utf-8")
+    assert main(["family", str(p), "--out", str(tmp_path / "o")]) == 2
+    assert "base requirement: gearbox.stage_efficiency = 7" in capsys.readouterr().err
+    p.write_text(base)
+    assert main(["family", str(p), "--out", str(tmp_path / "o")]) == 2
+    assert "no [family] table" in capsys.readouterr().err
+    assert main(["family", str(tmp_path / "none.toml"), "--out", str(tmp_path / "o")]) == 2
+    assert "no such file" in capsys.readouterr().err
+    assert main(["family", str(p)]) == 2  # --out is required
+    assert not (tmp_path / "o").exists()
+
+
+def test_cli_end_to_end_with_its_own_local_cluster_then_a_scheduler(client, tmp_path):
+    fam = tmp_path / "fam.toml"
+    base = (EXAMPLES / "linear_screw_actuator.toml").read_text()
+    fam.write_text(
+        "[family]\nname = 'Screw jacks'\nchunk_size = 4\n[family.axes]\n"
+        "'linear.force_N' = [1000, 3500, 9000]\n'linear.travel_time_s' = [2, 5, 10]\n\n" + base
+    )
+    out = tmp_path / "out"
+    r = subprocess.run(
+        [sys.executable, "-m", "advisor", "family", str(fam), "--out", str(out), "--workers", "1"],
+        capture_output=True,
+        text=True,
+        timeout=300,
+    )
+    assert r.returncode == 0, r.stderr
+    assert "9 variants:" in r.stdout and "3 of 3 chunks computed" in r.stdout
+    assert "chunks 3/3, variants 9/9" in r.stderr  # the progress bar's last line
+    summary = tomllib.loads((out / "summary.toml").read_text())
+    assert summary["family"]["variants"] == 9 and sum(summary["counts"].values()) == 9
+    page = (out / "family.html").read_text()
+    assert page.count("<svg") >= 3 and "Screw jacks" in page
+    assert len(read_rows(out / "designs.csv")) == 9
+    # a rerun on an existing cluster resumes: nothing left to compute, same results
+    before = (out / "designs.csv").read_bytes()
+    address = client.scheduler.address
+    r2 = subprocess.run(
+        [
+            sys.executable,
+            "-m",
+            "advisor",
+            "family",
+            str(fam),
+            "--out",
+            str(out),
+            "--scheduler",
+            address,
+            "--quiet",
+            "--no-html",
+        ],
+        capture_output=True,
+        text=True,
+        timeout=300,
+    )
+    assert r2.returncode == 0 and "0 of 3 chunks computed" in r2.stdout
+    assert (out / "designs.csv").read_bytes() == before
+
+
+def test_batch_path_imports_no_dask_or_matplotlib():
+    code = (
+        "import sys, io, contextlib\n"
+        "from advisor.cli import main\n"
+        "with contextlib.redirect_stdout(io.StringIO()):\n"
+        f"    rc = main(['--batch', {str(EXAMPLES / 'valve_actuator_hold.toml')!r}])\n"
+        "assert rc == 0\n"
+        "print(','.join(m for m in ('dask', 'distributed', 'matplotlib') if m in sys.modules))\n"
+    )
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    assert r.stdout.strip() == ""
+
+
+def test_key_outputs_of_the_valve_example_by_hand():
+    out = io.StringIO()
+    with contextlib.redirect_stdout(out):
+        assert main(["--batch", str(EXAMPLES / "valve_actuator_hold.toml")]) == 0
+    row = key_outputs(tomllib.loads(out.getvalue()))
+    # the report: reducer 3.47718 kg, roller clutch 0.0728396 kg → 3.5500196 → 3.55002 kg
+    assert row["mass_kg"] == 3.55002
+    assert (row["motor"], row["pole_pairs"], row["ratio"], row["stages"]) == (
+        "bldc 3000 rpm",
+        6,
+        600.0,
+        2,
+    )
+    assert (row["outer_diameter_mm"], row["losses_W"]) == (132.647, 132.248)
+    assert row["one_way"] == "roller_clutch (motor side)" and row["screw_thread"] is None
+
+
+def test_the_example_family_file():
+    fam = read_family(EXAMPLES / "families" / "valve_actuators.toml")
+    assert fam.size == 60 and fam.members[0].application == "rotary"
+    assert [a.key for a in fam.members[0].axes] == ["rotary.torque_Nm", "rotary.speed_rpm"]
