@@ -418,3 +418,19 @@ async def test_keys_arriving_in_a_burst_act_in_order():
         burst(app, ["ctrl+u", "8", "backspace", "9", "0", "0"])
         await pilot.pause(0.3)
         assert box.value == "900"
+
+
+def test_the_loss_curve_passes_through_every_candidate_speed():
+    """The curve is computed as the candidates are: at each candidate speed it gives the
+    report's own losses (the rudder: 228.42 W at 5000 rpm, the reference point of seed 000
+    whose losses are the frame's limit)."""
+    from advisor.applications.rotary.views import loss_curve
+    from advisor.core.engine import advise
+    from advisor.core.requirements import read_requirements
+
+    report = advise(read_requirements(EXAMPLES / "rudder_actuator.toml"))
+    curve = {round(c["speed_rpm"], 6): c for c in loss_curve(report)}
+    assert len(curve) > 30  # a curve, not two points
+    for cand in report.design.motor.candidates:
+        assert curve[cand.speed_rpm]["total"] == pytest.approx(cand.losses_W.total, rel=1e-12)
+    assert curve[5000.0]["total"] == pytest.approx(228.42, abs=0.01)

@@ -38,21 +38,69 @@ def components(report) -> list[Any]:
     return parts
 
 
+def loss_curve(report, points: int = 40) -> list[dict]:
+    """The losses of the reference motor rewound for each speed from a quarter of the lowest
+    candidate to twice the highest, computed exactly as the candidates are (seed 000, eqs.
+    (4), (5), (9); the reducer split by the rules at each speed). Empty when the catalog
+    steel differs from the report's (a user catalog the view does not know)."""
+    from advisor.applications.rotary import advice as ra
+    from advisor.calc import bldc
+    from advisor.calc import reducer as rd
+    from advisor.calc import wavegear as wg
+    from advisor.core.requirements import parse_requirements
+    from catalogs import load_catalogs
+
+    req = parse_requirements(report.requirements)
+    ref, gb = req.motor.reference, req.gearbox
+    steel = ra._steel(req, load_catalogs())
+    if abs(steel.p15_50_W_kg - report.design.motor.steel.p15_50_W_kg) > 1e-9:
+        return []
+    steel_mass = bldc.stator_steel_mass(
+        ref.stator_steel_area_mm2, ref.stack_length_mm, ref.stacking_factor, ref.steel_density_kg_m3
+    )
+    terms = bldc.fit_eq5(steel.p10_50_W_kg, steel.p15_50_W_kg, steel.p10_400_W_kg)
+    params = rd.ReducerParams(
+        torque_Nm=req.rotary.torque_Nm,
+        k_rb=wg.ROLLING_BODY_FACTOR[gb.rolling_body],
+        stage_efficiency=gb.stage_efficiency,
+        density_kg_m3=gb.density_kg_m3,
+        fill_factor=gb.fill_factor,
+    )
+    speeds = [c.speed_rpm for c in report.design.motor.candidates]
+    lo, hi = min(speeds) / 4, max(speeds) * 2
+    grid = sorted({*speeds, *(lo * (hi / lo) ** (k / (points - 1)) for k in range(points))})
+    out = []
+    for n in grid:
+        c = ra._candidate(n, req, steel, steel_mass, terms, params)
+        if c["split"]:  # a speed no reducer of the rules realises has no torque, no losses
+            out.append({"speed_rpm": n, **c["losses"]})
+    return out
+
+
 def plots(report) -> list[PlotData]:
     d = report.design
     cands = sorted(d.motor.candidates, key=lambda c: c.speed_rpm)
-    speeds = [c.speed_rpm for c in cands]
-    main = PlotData(
-        "Motor losses against speed",
-        "motor speed, rpm",
-        "loss, W",
-        [
-            ("ohmic", speeds, [c.losses_W.ohmic for c in cands]),
-            ("iron", speeds, [c.losses_W.iron for c in cands]),
-            ("magnets", speeds, [c.losses_W.magnets for c in cands]),
-            ("total", speeds, [c.losses_W.total for c in cands]),
-        ],
+    curve = loss_curve(report) or [
+        {"speed_rpm": c.speed_rpm, **c.losses_W.model_dump()} for c in cands
+    ]
+    speeds = [c["speed_rpm"] for c in curve]
+    series = [
+        (name, speeds, [c[key] for c in curve])
+        for name, key in (
+            ("ohmic", "ohmic"),
+            ("iron", "iron"),
+            ("magnets", "magnets"),
+            ("total", "total"),
+        )
+    ]
+    series += [
+        (f"candidate {c.speed_rpm:g} rpm (total)", [c.speed_rpm], [c.losses_W.total]) for c in cands
+    ]
+    series.append(
+        ("working point", [d.motor.speed_rpm], [d.motor.losses_W.total]),
     )
+    series.append(("frame's limit", [speeds[0], speeds[-1]], [d.motor.loss_limit_W] * 2))
+    main = PlotData("Motor losses against speed", "motor speed, rpm", "loss, W", series)
     fig = d.gearbox.fig1
     fig1 = PlotData(
         "Reducer stage volume per unit torque against q (seed 000, fig. 1)",
