@@ -8,74 +8,81 @@ SEED_001 = "001_085658f38eaaea54.txt"
 
 
 class PoleOption(NamedTuple):
+    """The best drive with one pole count: its thread, motor and travel time."""
+
     pole_pairs: int
     synchronous_speed_rpm: float
-    motor_model: str | None  # smallest catalog motor of this pole count that covers the power
-    rated_speed_rpm: float | None
+    thread: str | None  # None: no thread of this pole count is driven by a catalog motor
+    motor_model: str | None
+    rated_power_kW: float | None
+    travel_time_s: float | None
 
 
 @rule("IM-01", "Number of pole pairs", SEED_001)
-def choose_pole_pairs(required_speed_rpm: float, options: list[PoleOption]) -> Finding[int | None]:
-    """The largest p (slowest motor) whose rated speed — synchronous speed less the slip of
-    the motor that would be used — still reaches the required speed."""
-    fits = [
-        o
-        for o in options
-        if o.rated_speed_rpm is not None and o.rated_speed_rpm >= required_speed_rpm
-    ]
+def choose_pole_pairs(
+    chosen: int, required_speed_rpm: float, options: list[PoleOption]
+) -> Finding[int]:
+    """The pole count of the drive chosen with the thread (SCR-04): seed 001 lets the screw
+    speed fix p; with the pitch (and the starts) free, every pole count gets its own best
+    thread, and the one with the smallest motor wins."""
     table = {
         f"p={o.pole_pairs}": (
-            f"{o.synchronous_speed_rpm:g} rpm sync, {o.motor_model} {o.rated_speed_rpm:g} rpm"
+            f"{o.synchronous_speed_rpm:g} rpm sync: {o.thread} + {o.motor_model} "
+            f"({o.rated_power_kW:g} kW, stroke in {o.travel_time_s:.3g} s)"
             if o.motor_model
-            else f"{o.synchronous_speed_rpm:g} rpm sync, no motor covers the power"
+            else f"{o.synchronous_speed_rpm:g} rpm sync: no motor of this speed drives a "
+            "passing thread"
         )
         for o in options
     }
-    if not fits:
-        return Finding(
-            None,
-            f"No pole count reaches {required_speed_rpm:.0f} rpm at rated slip.",
-            "Even the 2-pole motor's rated speed is below the required screw speed; a coarser "
-            "pitch or more thread starts would lower it.",
-            table,
-        )
-    best = max(fits, key=lambda o: o.pole_pairs)
+    table["pole_pairs"] = chosen
+    best = next(o for o in options if o.pole_pairs == chosen)
+    others = [o for o in options if o.motor_model and o.pole_pairs != chosen]
     return Finding(
-        best.pole_pairs,
-        f"p = {best.pole_pairs} ({2 * best.pole_pairs} poles, synchronous "
-        f"{best.synchronous_speed_rpm:g} rpm).",
-        f"The screw must turn at {required_speed_rpm:.0f} rpm. With the slip of the candidate "
-        f"motor ({best.motor_model}, {best.rated_speed_rpm:g} rpm at rated load) this is the "
-        "slowest motor that still reaches it; a slower one cannot, and a faster one would "
-        "need more torque margin for nothing and shorten the travel time further.",
+        chosen,
+        f"p = {chosen} ({2 * chosen} poles, synchronous {best.synchronous_speed_rpm:g} rpm).",
+        f"The chosen screw must turn at {required_speed_rpm:.4g} rpm to make the stroke in "
+        f"time; the {2 * chosen}-pole motor drives it directly with the smallest motor of all "
+        "pole counts"
+        + (
+            " (the others: "
+            + "; ".join(f"p={o.pole_pairs} needs {o.rated_power_kW:g} kW" for o in others)
+            + ")"
+            if others
+            else ""
+        )
+        + ".",
         table,
     )
 
 
 @rule("IM-02", "Rated power and the design space", "GOST 12139-84; " + SEED_001)
 def rated_power_band(
-    required_power_kW: float, series_kW: list[float]
-) -> Finding[tuple[float | None, list[float]]]:
-    """The nearest rated power of the series that covers the requirement, with its lower and
-    higher neighbours: the three motors whose characteristics bound the choice (seed 001)."""
-    above = [p for p in series_kW if p >= required_power_kW - 1e-12]
-    if not above:
-        return Finding(
-            (None, []),
-            f"No rated power of GOST 12139-84 reaches {required_power_kW:.3f} kW.",
-            "The requirement exceeds the series.",
-        )
-    nearest = above[0]
-    i = series_kW.index(nearest)
+    required_power_kW: float,
+    working_power_kW: float,
+    rated_power_kW: float,
+    series_kW: list[float],
+) -> Finding[list[float]]:
+    """The rated power of the chosen motor with its lower and higher neighbours of the series:
+    the three motors whose characteristics bound the choice (seed 001, fig. 4). The power
+    stated is the design's: the load torque at the motor's own working speed."""
+    i = series_kW.index(rated_power_kW)
     band = series_kW[max(0, i - 1) : i + 2]
     return Finding(
-        (nearest, band),
-        f"Rated power {nearest:g} kW, with neighbours {', '.join(f'{p:g}' for p in band)} kW.",
-        f"The screw needs {required_power_kW:.3f} kW at the required speed (torque × speed, i.e. "
-        "the output power through the screw efficiency). The nearest rated power that is not "
-        "below it is taken; a lower one could carry the load only overloaded. Seed 001 plots the "
+        band,
+        f"Rated power {rated_power_kW:g} kW, with neighbours "
+        f"{', '.join(f'{p:g}' for p in band)} kW.",
+        f"The screw needs {required_power_kW:.4g} kW at the required speed; coupled directly, "
+        f"the motor turns it at its own working speed, where the load takes "
+        f"{working_power_kW:.4g} kW. The rated power is that of the smallest catalog motor "
+        "that carries the load torque, starts it and reaches the speed. Seed 001 plots the "
         "chosen motor with its lower and higher neighbours to show the design space.",
-        {"required_power_kW": round(required_power_kW, 4)},
+        {
+            "required_power_kW": required_power_kW,
+            "working_power_kW": working_power_kW,
+            "rated_power_kW": rated_power_kW,
+            "band_kW": band,
+        },
     )
 
 
@@ -104,6 +111,11 @@ def choose_motor(options: list[MotorOption]) -> Finding[str | None]:
                 "under load and runs on the stable branch of its characteristic"
                 + (f"; skipped: {', '.join(skipped)}" if skipped else "")
                 + ".",
+                {
+                    "model": o.model,
+                    "rated_power_kW": o.rated_power_kW,
+                    "rated_torque_margin": o.rated_torque_margin,
+                },
             )
     return Finding(
         None,

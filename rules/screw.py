@@ -36,7 +36,7 @@ def friction_coefficient(
             f"f = {given:g}, as given in the requirement.",
             f"The catalog range for {pair} ({lubrication}) is {low:g}…{high:g}; the given value "
             f"is {note}.",
-            {"given": given, "range": [low, high]},
+            {"friction_coefficient": given, "range": [low, high]},
         )
     mid = round((low + high) / 2.0, 4)
     return Finding(
@@ -45,7 +45,12 @@ def friction_coefficient(
         f"for {pair} ({lubrication}).",
         "No coefficient was given; the middle of the published range is the expected value, "
         "and the low end is kept for the self-locking check.",
-        {"pair": pair, "lubrication": lubrication, "range": [low, high]},
+        {
+            "friction_coefficient": mid,
+            "pair": pair,
+            "lubrication": lubrication,
+            "range": [low, high],
+        },
     )
 
 
@@ -58,117 +63,164 @@ def friction_model(asked: str) -> Finding[str]:
             "Asked for in the requirement, to reproduce the paper. The seed's formula halves the "
             "lead angle where the half flank angle belongs; it underestimates the torque of a "
             "trapezoidal thread by about 3 %. The standard-model torque is reported beside it.",
+            {"friction_model": "paper"},
         )
     return Finding(
         "standard",
         "Reduced friction tan φ' = f / cos(α/2) with α = 30° (trapezoidal flank angle).",
         "The friction force on a flank inclined at α/2 is raised by 1/cos(α/2); this is the "
         "textbook form for trapezoidal threads. Seed 001 prints cos(ψ/2), a slip.",
+        {"friction_model": "standard"},
     )
 
 
-class ThreadOption(NamedTuple):
-    """What the thread rule needs to know about one candidate."""
+class DriveOption(NamedTuple):
+    """One way of making the drive: a thread (with its number of starts) and the smallest
+    catalog motor of one pole count that drives it directly."""
 
-    name: str
+    thread: str
     d_mm: float
     pitch_mm: float
-    preferred: bool
-    passed: bool
-    failed: tuple[str, ...]
+    starts: int
     self_locking_at_low_friction: bool
-    motor_torque_Nm: float | None  # rated torque of the motor it needs; None: no motor fits
-    motor_model: str | None
+    screw_torque_Nm: float
+    motor_model: str
+    pole_pairs: int
+    rated_power_kW: float
+    rated_torque_Nm: float
+    travel_time_s: float
+
+    @property
+    def label(self) -> str:
+        return thread_label(self.thread, self.starts)
+
+    @property
+    def motor_size(self) -> tuple[float, float]:
+        """The size of the motor: its rated power (the GOST 12139-84 series), then its rated
+        torque (the frame of an induction motor follows its torque)."""
+        return (self.rated_power_kW, self.rated_torque_Nm)
+
+    @property
+    def screw_weight(self) -> tuple[float, int, float, float]:
+        """The lightness of the screw: its diameter (mass ∝ d²), then fewer starts (simpler
+        to cut), then less torque, then the finer pitch."""
+        return (self.d_mm, self.starts, self.screw_torque_Nm, self.pitch_mm)
+
+    def describe(self) -> str:
+        return (
+            f"{self.label} + {self.motor_model} ({self.rated_power_kW:g} kW, "
+            f"{2 * self.pole_pairs}-pole, stroke in {self.travel_time_s:.3g} s)"
+        )
+
+
+def thread_label(thread: str, starts: int) -> str:
+    """``Tr20x4`` for one start, ``Tr20x8(P4)`` (GOST 24739-81 notation: lead, then pitch)
+    for several."""
+    if starts == 1:
+        return thread
+    d, p = thread[2:].split("x")
+    return f"Tr{d}x{float(p) * starts:g}(P{p})"
+
+
+def drive_order(o: DriveOption, hold: bool) -> tuple:
+    """The order of preference: where holding without power is asked, a screw that holds by
+    itself first; then the smallest motor; then the lightest screw that it drives."""
+    return (not o.self_locking_at_low_friction if hold else False, o.motor_size, o.screw_weight)
+
+
+#: Runners-up listed in the decision.
+RUNNERS_UP = 4
 
 
 @rule(
     "SCR-04",
-    "Thread of the screw",
-    "GOST 24738-81 (diameter-pitch plan); Ivanov, Детали машин; " + SEED_001,
+    "Thread and motor, chosen together",
+    "GOST 24738-81 (diameter-pitch plan), GOST 24739-81 (multi-start); Ivanov, Детали машин; "
+    + SEED_001,
 )
-def choose_thread(
-    options: list[ThreadOption], hold_without_power: bool, imposed: str | None
-) -> Finding[str | None]:
-    """Smallest diameter with a pitch that passes every check and has a motor; among its
-    pitches the one whose motor is smallest (rated torque — an induction motor's size
-    follows its torque), or, where holding without power is asked for, the finest pitch that
-    stays self-locking at the low end of the friction range."""
+def choose_drive(
+    options: list[DriveOption],
+    hold_without_power: bool,
+    imposed: str | None,
+    imposed_starts: int | None,
+) -> Finding[DriveOption | None]:
+    """Seed 001 chooses the pitch so that the screw speed suits a speed step of the motor
+    (its pole pairs). Over every thread that passes its checks, every number of starts the
+    requirement leaves free, and every pole count: the smallest motor first, then the
+    lightest screw that it drives. A heavier load can only remove options, so more force
+    never gives a smaller motor."""
+    free = [o for o in options if imposed_starts is None or o.starts == imposed_starts]
+    own = _best(free, hold_without_power)
+    pool = [o for o in free if imposed is None or o.thread == imposed]
+    best = _best(pool, hold_without_power)
+    inputs: dict = {
+        "hold_without_power": hold_without_power,
+        "starts": imposed_starts if imposed_starts is not None else "free (1…4)",
+        "options": len(pool),
+    }
     if imposed is not None:
-        opt = next((o for o in options if o.name == imposed), None)
-        verdict = (
-            "passes every check"
-            if opt and opt.passed
-            else f"fails: {', '.join(opt.failed) if opt else 'not evaluated'}"
-        )
-        own = _choose(options, hold_without_power)
-        own_note = f" Left to itself the advisor would choose {own[0]}." if own else ""
-        return Finding(
-            imposed,
-            f"Thread {imposed}, imposed by the requirement; it {verdict}.",
-            "An imposed thread is kept and checked like any other, so its margins are in the "
-            "report." + own_note,
-            {"imposed": imposed, "advisor_choice": own[0] if own else None},
-        )
-    chosen = _choose(options, hold_without_power)
-    if chosen is None:
+        inputs["imposed"] = imposed
+        inputs["advisor_choice"] = own.thread if own else None
+    if best is None:
         return Finding(
             None,
-            "No GOST 24738-81 thread passes every check with a motor that can drive it.",
-            "Every diameter up to 100 mm failed a check or needs a screw speed no 50 Hz "
-            "induction motor reaches.",
+            "No thread that passes every check can be driven by a catalog motor."
+            if imposed is None
+            else f"No catalog motor drives the imposed thread {imposed}.",
+            "Every thread of GOST 24738-81 up to 100 mm either failed a check or needs a "
+            "screw speed or torque that no 50 Hz induction motor of the catalog gives.",
+            inputs,
         )
-    name, why = chosen
-    return Finding(name, f"Thread {name}.", why, {"hold_without_power": hold_without_power})
-
-
-def _choose(options: list[ThreadOption], hold: bool) -> tuple[str, str] | None:
-    by_d: dict[float, list[ThreadOption]] = {}
-    for o in options:
-        by_d.setdefault(o.d_mm, []).append(o)
-    for d in sorted(by_d):
-        ok = [o for o in by_d[d] if o.passed and o.motor_torque_Nm is not None]
-        if not ok:
-            continue
-        smaller = [o for dd, os in by_d.items() if dd < d for o in os]
-        why_d = (
-            f"d = {d:g} mm is the smallest diameter with a pitch that passes every check"
-            + (f" (smaller ones fail: {_first_failures(smaller)})" if smaller else "")
+    ranked = sorted(pool, key=lambda o: drive_order(o, hold_without_power))
+    runners = [o.describe() for o in ranked[1 : 1 + RUNNERS_UP]]
+    inputs.update(
+        {
+            "thread": best.thread,
+            "starts_chosen": best.starts,
+            "motor": best.motor_model,
+            "rated_power_kW": best.rated_power_kW,
+            "pole_pairs": best.pole_pairs,
+            "runners_up": runners,
+        }
+    )
+    smaller = [o for o in pool if o.motor_size < best.motor_size]
+    lighter_same_motor = "; it is the lightest screw this motor drives"
+    why = (
+        (
+            f"Thread {imposed}, imposed by the requirement; the smallest motor that drives it "
+            f"is {best.motor_model}."
+            + (f" Left to itself the advisor would choose {own.describe()}." if own else "")
+        )
+        if imposed is not None
+        else (
+            f"{best.motor_model} ({best.rated_power_kW:g} kW, {2 * best.pole_pairs} poles) is "
+            "the smallest motor that drives a thread passing every check directly"
+            + lighter_same_motor
             + "."
         )
-        if hold:
-            locking = [o for o in ok if o.self_locking_at_low_friction]
-            pool = locking or ok
-            best = min(pool, key=lambda o: o.pitch_mm)
-            tail = (
-                " It stays self-locking at the low end of the friction range."
-                if best.self_locking_at_low_friction
-                else " No passing pitch is self-locking at the low end of the friction range: "
-                "the load needs a one-way device to be held without power."
-            )
-            return best.name, (
-                why_d + f" Holding without power is required, so the finest pitch "
-                f"({best.pitch_mm:g} mm) is taken: the smallest lead angle, the largest "
-                "self-locking margin." + tail
-            )
-        best = min(ok, key=lambda o: (o.motor_torque_Nm, o.pitch_mm))
-        others = ", ".join(
-            f"{o.name} → {o.motor_model} ({o.motor_torque_Nm:.2f} N·m)" for o in ok if o is not best
-        )
-        return best.name, (
-            why_d + f" Of its pitches, {best.pitch_mm:g} mm needs the smallest motor: "
-            f"{best.motor_model} with {best.motor_torque_Nm:.2f} N·m rated torque"
-            + (f" (against {others})" if others else "")
-            + "; an induction motor's size follows its rated torque."
-        )
-    return None
-
-
-def _first_failures(options: list[ThreadOption]) -> str:
-    worst = options[-3:]
-    return "; ".join(
-        f"{o.name}: {', '.join(o.failed) if o.failed else 'no motor reaches its speed'}"
-        for o in worst
     )
+    if hold_without_power:
+        why += (
+            " Holding without power is asked: only screws self-locking at the low end of the "
+            "friction range were considered."
+            if best.self_locking_at_low_friction
+            else " Holding without power is asked, but no screw that a catalog motor drives is "
+            "self-locking at the low end of the friction range: a one-way device holds the load."
+        )
+    if smaller and hold_without_power:
+        why += f" {len(smaller)} option(s) with a smaller motor do not hold by themselves."
+    why += (
+        " Seed 001 chooses the pitch so that the screw speed suits one of the motor's speed "
+        "steps; the motor is the costly part, so it is minimised first (rated power, then "
+        "rated torque), and the screw after it (diameter, starts, torque)."
+    )
+    if runners:
+        why += " Runners-up: " + "; ".join(runners) + "."
+    return Finding(best, f"Thread {best.label} with {best.motor_model}.", why, inputs)
+
+
+def _best(options: list[DriveOption], hold: bool) -> DriveOption | None:
+    return min(options, key=lambda o: drive_order(o, hold), default=None)
 
 
 @rule("SCR-05", "Holding the load without power", "Ivanov, Детали машин; " + SEED_001)
@@ -182,6 +234,7 @@ def holding(
             + ("self-locking." if self_locking else "not self-locking."),
             "Reported for information: a self-locking screw stops the load from back-driving "
             "the motor when it is switched off.",
+            {"hold_without_power": False, "self_locking": self_locking},
         )
     if self_locking_at_low:
         return Finding(
@@ -190,6 +243,7 @@ def holding(
             "friction range.",
             "The lead angle stays below the reduced friction angle for every friction "
             "coefficient the material pair may show, so no one-way device is needed.",
+            {"hold_without_power": True, "self_locking_at_low_friction": True},
         )
     return Finding(
         False,
@@ -197,4 +251,5 @@ def holding(
         "At the low end of the friction range the lead angle exceeds the friction angle: "
         "the load may back-drive the screw. A one-way device (brake or irreversible clutch) is "
         "needed at the motor side.",
+        {"hold_without_power": True, "self_locking_at_low_friction": False},
     )

@@ -94,8 +94,11 @@ def _replace(old: str, new: str) -> str:
 BAD_INPUTS = [
     # (requirement text, words the one-line message must contain)
     ("[application\nkind = 'linear'", ["broken TOML", "line 1"]),
-    (_replace("force_N = 3500", "force_N = -3500"), ["linear.force_N = -3500", "must be > 0", "N"]),
-    (_replace("force_N = 3500", "force_N = 0"), ["linear.force_N = 0", "must be > 0"]),
+    (
+        _replace("force_N = 3500", "force_N = -3500"),
+        ["linear.force_N = -3500", "must be ≥ 1", "1 N … 5 MN"],
+    ),
+    (_replace("force_N = 3500", "force_N = 0"), ["linear.force_N = 0", "must be ≥ 1"]),
     (_replace("force_N = 3500", "force_N = nan"), ["linear.force_N = nan", "finite"]),
     (_replace("stroke_m = 0.2", "stroke_m = inf"), ["linear.stroke_m = inf", "finite"]),
     (
@@ -119,7 +122,7 @@ BAD_INPUTS = [
     ),
     (
         _replace("friction_coefficient = 0.15", "friction_coefficient = -0.1"),
-        ["screw.friction_coefficient = -0.1", "> 0"],
+        ["screw.friction_coefficient = -0.1", "≥ 0.01"],
     ),
     (_replace('thread = "Tr16x2"', 'thread = "M16"'), ["screw.thread = 'M16'", "Tr16x2"]),
     (
@@ -183,11 +186,11 @@ def test_infeasible_exit_3_with_reasons(tmp_path, capsys):
 
 
 def test_imposed_thread_that_fails_exit_3(tmp_path, capsys):
-    # a steel nut (5 MPa allowed) on Tr16x2 needs 3500/(π·15·1·5) = 14.9 turns > 10
+    # a steel nut (5 MPa allowed) on Tr16x2 needs 3500/(π·15·1·5) = 14.85 → 15 whole turns > 10
     rc = main(["--batch", str(_bad(tmp_path, _replace('"steel_bronze"', '"steel_steel"')))])
     err = capsys.readouterr().err
     assert rc == ExitCode.INFEASIBLE
-    assert "Tr16x2" in err and "engaged nut turns: 14.85" in err
+    assert "Tr16x2" in err and "engaged nut turns: 15 against the limit 10" in err
 
 
 def test_unwritable_output_is_reported(tmp_path, capsys):

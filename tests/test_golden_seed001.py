@@ -117,23 +117,31 @@ def test_holding_takes_the_finest_self_locking_pitch():
     assert "holds the load without power" in holding.decision
 
 
-def test_pole_pair_rule_uses_the_slip():
-    # 1450 rpm: below the 4-pole synchronous 1500 but above its rated 1390 → 2 poles
-    options = [
-        im_rules.PoleOption(1, 3000, "A2", 2840),
-        im_rules.PoleOption(2, 1500, "A4", 1390),
-        im_rules.PoleOption(3, 1000, "A6", 915),
-    ]
-    assert im_rules.choose_pole_pairs(1450, options).value == 1
-    assert im_rules.choose_pole_pairs(1200, options).value == 2
-    assert im_rules.choose_pole_pairs(900, options).value == 3
-    assert im_rules.choose_pole_pairs(2900, options).value is None
+def test_motor_speed_under_the_load_uses_the_slip():
+    # 4A71B4: 0.75 kW, rated 1390 rpm, s_n = 1 - 1390/1500 = 0.0733. At its rated torque
+    # (5.1525 N·m) it cannot reach 1450 rpm; at 2 N·m the slip is about s_n·2/5.1525 = 0.028
+    # on the near-linear part of the curve, i.e. ≈ 1457 rpm (the refined curve: 1470 rpm).
+    from advisor.calc.sizing import drive_working_speed, fit_motor
+    from catalogs import load_catalogs
+
+    m = next(m for m in load_catalogs().motors if m.model == "4A71B4")
+    fit = fit_motor(m)
+    assert drive_working_speed(fit, 5.15, 1450) is None
+    n = drive_working_speed(fit, 2.0, 1450)
+    assert n is not None and n == pytest.approx(1457, rel=0.01)
+    assert drive_working_speed(fit, 5.2, 1000) is None  # above its rated torque
 
 
-def test_power_band_rule():
+def test_power_band_rule_states_the_designs_power():
     series = [0.25, 0.37, 0.55, 0.75, 1.1]
-    f = im_rules.rated_power_band(0.639, series)
-    assert f.value == (0.75, [0.55, 0.75, 1.1])
-    assert im_rules.rated_power_band(0.75, series).value == (0.75, [0.55, 0.75, 1.1])
-    assert im_rules.rated_power_band(0.1, series).value == (0.25, [0.25, 0.37])
-    assert im_rules.rated_power_band(2.0, series).value == (None, [])
+    f = im_rules.rated_power_band(0.639, 0.742, 0.75, series)
+    assert f.value == [0.55, 0.75, 1.1]
+    assert f.inputs == {
+        "required_power_kW": 0.639,
+        "working_power_kW": 0.742,
+        "rated_power_kW": 0.75,
+        "band_kW": [0.55, 0.75, 1.1],
+    }
+    assert "0.75 kW" in f.decision and "0.742 kW" in f.rationale
+    assert im_rules.rated_power_band(0.1, 0.2, 0.25, series).value == [0.25, 0.37]
+    assert im_rules.rated_power_band(1.0, 1.05, 1.1, series).value == [0.75, 1.1]

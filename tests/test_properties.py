@@ -285,7 +285,8 @@ def rotor_requirements(draw):
         "bearing": bearing,
         "bearing_count": draw(st.integers(2, 4)),
         "ball_plane_to_cg_mm": draw(st.floats(1.0, 200.0, **finite)),
-        "slew_rate_rad_s": draw(st.floats(0.0, 5.0, **finite)),
+        # 0 (no slew) or from 1e-6 rad/s (the model's range)
+        "slew_rate_rad_s": draw(st.just(0.0) | st.floats(1e-6, 5.0, **finite)),
         "axis_angle_deg": draw(st.floats(0.0, 180.0, **finite)),
         "slew_angle_deg": draw(st.floats(1.0, 360.0, **finite)),
         "run_up_time_s": draw(st.floats(0.5, 600.0, **finite)),

@@ -33,7 +33,7 @@ def test_the_readme_key_tables_are_current():
     assert with_key_tables(readme) == readme, "regenerate: advisor schema --markdown"
     # one line per key, e.g. the rotary stage efficiency with its default and range
     assert "| `gearbox.stage_efficiency` | number |  | 0.9 | > 0.3, ≤ 1 |" in key_tables()
-    assert "| `linear.support_span_m` | number | m | required | > 0, ≤ 20 |" in key_tables()
+    assert "| `linear.support_span_m` | number | m | required | ≥ 0.001, ≤ 20 |" in key_tables()
 
 
 def _resolve(schema: dict, node: dict) -> dict:

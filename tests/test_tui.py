@@ -64,6 +64,8 @@ async def test_typing_the_seed_001_values_finds_tr16x2_at_1200_rpm():
         await pilot.press("ctrl+n")
         assert app.step == 2
         await _type(pilot, app, "f-screw-thread", "Tr16x2")
+        # the paper's screw has one start; left free, two starts would take a 0.55 kW motor
+        await _type(pilot, app, "f-screw-starts", "1")
         await pilot.press("ctrl+n", "ctrl+n")
         assert app.step == 4
         await _computed(app, pilot)
@@ -98,7 +100,7 @@ async def test_invalid_input_is_shown_inline_and_next_waits():
         await pilot.press("ctrl+n")
         assert app.step == 1  # Next waited
         err = _text(app.query_one("#f-linear-force-N-err", Label))
-        assert "must be > 0" in err
+        assert "must be ≥ 1" in err and "1 N … 5 MN" in err
         await _type(pilot, app, "f-linear-stroke-m", "abc")
         assert "not a number" in _text(app.query_one("#f-linear-stroke-m-err", Label))
         # Back keeps what was typed

@@ -13,7 +13,7 @@ register(
         headline="advisor.applications.linear.report:headline",
         summary_rows="advisor.applications.linear.report:summary_rows",
         views="advisor.applications.linear.views",
-        steps=("Load and stroke", "Screw and holding", "Motor and friction"),
+        steps=("Load and stroke", "Screw and holding", "Motor and friction", "Duty cycle"),
     )
 )
 register(
@@ -24,7 +24,7 @@ register(
         pipeline="advisor.applications.rotary.advice:advise_rotary",
         headline="advisor.applications.rotary.report:headline",
         views="advisor.applications.rotary.views",
-        steps=("Torque and speed", "Envelope and holding", "Motor and reducer"),
+        steps=("Torque and speed", "Envelope and holding", "Motor and reducer", "Duty cycle"),
     )
 )
 register(
@@ -35,7 +35,7 @@ register(
         pipeline="advisor.applications.positioning.advice:advise_positioning",
         headline="advisor.applications.positioning.report:headline",
         views="advisor.applications.positioning.views",
-        steps=("Move and load", "", "Candidate motors"),
+        steps=("Move and load", "", "Candidate motors", "Duty cycle"),
     )
 )
 register(
@@ -46,6 +46,6 @@ register(
         pipeline="advisor.applications.spinning_rotor.advice:advise_spinning_rotor",
         headline="advisor.applications.spinning_rotor.report:headline",
         views="advisor.applications.spinning_rotor.views",
-        steps=("Rotor and manoeuvre", "Aerodynamic drag", "Bearings"),
+        steps=("Rotor and manoeuvre", "Aerodynamic drag", "Bearings", "Duty cycle"),
     )
 )

@@ -7,9 +7,11 @@ Numbers of the seed's example (7000 CD pair, h = 10 mm) are reproduced in
 ``tests/test_golden_seed002.py``.
 """
 
-import itertools
+import functools
 import math
 from typing import NamedTuple
+
+from advisor.calc.roots import brent
 
 G = 9.80665
 BALL_DENSITY_kg_m3 = 7850.0
@@ -178,11 +180,144 @@ class Rotor(NamedTuple):
 
 
 def resisting_torque(rotor: Rotor, speed: float, slewing: bool) -> float:
-    """Bearing friction of all bearings plus aerodynamic drag at ``speed`` (eq. (5))."""
+    """Bearing friction of all bearings plus aerodynamic drag at ``speed`` (eq. (5)), term by
+    term from the loads; :func:`resistance` gives the same as a polynomial in ω."""
     moment = rotor.slew_per_speed * speed if slewing else 0.0
     loads = bearing_loads(rotor.weight_share_N, moment, rotor.balls, rotor.plane_to_cg_m, speed)
     bearing = friction_moment(loads, rotor.balls, rotor.rolling_friction_m).total_Nm
     return rotor.bearings * bearing + rotor.aero_k * max(speed, 0.0) ** 1.5
+
+
+class Resistance(NamedTuple):
+    """M_res(ω) = a0 + a1·ω + a2·ω² + k·ω^1.5, N·m (eq. (5) with eq. (4)).
+
+    Every load of eq. (4) is a polynomial in ω: the weight is constant, the gyroscopic
+    reaction (H = J·ω) and the preload it raises are linear, the centrifugal force is
+    quadratic; eq. (4) is linear in the loads, and the aerodynamic term is k·ω^1.5.
+    """
+
+    a0: float
+    a1: float
+    a2: float
+    k: float
+
+    def __call__(self, speed):
+        """The torque at ``speed`` (a float or a numpy array, ≥ 0)."""
+        return self.a0 + speed * (self.a1 + self.a2 * speed) + self.k * speed * speed**0.5
+
+    def at_root(self, v):
+        """The torque at ω = v² (v a float or a numpy array): a polynomial in v."""
+        v2 = v * v
+        return self.a0 + v2 * (self.a1 + self.a2 * v2) + self.k * v2 * v
+
+    def drop(self, speed: float, u):
+        """M_res(speed) − M_res(speed − u) for 0 ≤ u ≤ speed (u a float or a numpy array),
+        without the cancellation of the plain difference: ω^1.5 − (ω − u)^1.5 =
+        u·(3ω² − 3ωu + u²)/(ω^1.5 + (ω − u)^1.5)."""
+        rest = speed - u
+        cubes = u * (3.0 * speed * (speed - u) + u * u)
+        return u * (self.a1 + self.a2 * (speed + rest)) + self.k * cubes / (
+            speed * speed**0.5 + rest * rest**0.5
+        )
+
+    def slope(self, speed: float) -> float:
+        """dM_res/dω at ``speed``."""
+        return self.a1 + 2.0 * self.a2 * speed + 1.5 * self.k * math.sqrt(speed)
+
+
+def resistance(rotor: Rotor, slewing: bool) -> Resistance:
+    """The coefficients of :class:`Resistance` for ``rotor``, with or without the slew."""
+    n, balls, lam = rotor.bearings, rotor.balls, rotor.rolling_friction_m
+    # the loads at ω = 0, the part proportional to ω (the reaction to a moment of
+    # slew_per_speed, with its preload) and the part proportional to ω² (centrifugal)
+    still = bearing_loads(rotor.weight_share_N, 0.0, balls, rotor.plane_to_cg_m, 0.0)
+    per_speed = (
+        bearing_loads(0.0, rotor.slew_per_speed, balls, rotor.plane_to_cg_m, 0.0)
+        if slewing
+        else Loads(0.0, 0.0, 0.0)
+    )
+    per_speed2 = Loads(0.0, 0.0, centrifugal_force(1.0, balls))
+    return Resistance(
+        n * friction_moment(still, balls, lam).total_Nm,
+        n * friction_moment(per_speed, balls, lam).total_Nm,
+        n * friction_moment(per_speed2, balls, lam).total_Nm,
+        rotor.aero_k,
+    )
+
+
+# ------------------------------------------------------------------ quadrature of eq. (5)
+#: Gauss–Legendre nodes per panel. The integrands below are analytic with their nearest
+#: singularity at least a panel's width away, so 16 nodes give about 1e-15 (the error falls
+#: like ρ^-32 with ρ ≥ 3 for every panel used here).
+GL_NODES = 16
+#: Width of a panel in s = ln(ω − ω'): the integrand's poles lie π off the real axis there.
+LOG_PANEL = 2.0
+
+
+@functools.cache
+def _gauss_legendre() -> tuple:
+    import numpy as np
+
+    x, w = np.polynomial.legendre.leggauss(GL_NODES)
+    return x, w
+
+
+@functools.cache
+def _unit_panels(panels: int, first: float = 0.0) -> tuple:
+    """Nodes and weights on [0, 1] of ``panels`` Gauss–Legendre panels, flat: equal panels, or
+    with ``first`` > 0 a first panel [0, first] and one more up to 1. Read only."""
+    import numpy as np
+
+    x, w = _gauss_legendre()
+    edges = np.array([0.0, first, 1.0]) if first else np.linspace(0.0, 1.0, panels + 1)
+    half = 0.5 * np.diff(edges)[:, None]
+    nodes, weights = (
+        (0.5 * (edges[:-1] + edges[1:])[:, None] + half * x).ravel(),
+        (half * w).ravel(),
+    )
+    nodes.flags.writeable = weights.flags.writeable = False
+    return nodes, weights
+
+
+def _segments(lo, hi):
+    """Nodes and weights of one Gauss–Legendre panel on each [lo[i], hi[i]] (arrays)."""
+    x, w = _gauss_legendre()
+    half = 0.5 * (hi - lo)[:, None]
+    return 0.5 * (hi + lo)[:, None] + half * x, half * w
+
+
+def _time_between(res: Resistance, j: float, drive_torque: float, w0, w1):
+    """∫ J dω/(M − M_res(ω)) from each w0[i] to w1[i] (numpy arrays of speeds ≥ 0), in
+    v = √ω, where M_res is a polynomial: J·2v dv/(M − M_res(v²))."""
+    import numpy as np
+
+    v, wt = _segments(np.sqrt(w0), np.sqrt(w1))
+    return (wt * (2.0 * j) * v / (drive_torque - res.at_root(v))).sum(axis=1)
+
+
+def _run_up_integral(res: Resistance, j: float, drive_torque: float, speed: float) -> float:
+    """t = ∫₀^ω J dω'/(M − M_res(ω')) with M > M_res(ω): see :func:`run_up_time`."""
+    import numpy as np
+
+    delta = drive_torque - res(speed)
+    half = 0.5 * speed
+    # lower half in v = √ω' on two panels, [0, ½√(ω/2)] and up to √(ω/2): the integrand
+    # varies by at most a factor of two there
+    top = math.sqrt(half)
+    nodes, weights = _unit_panels(2, 0.5)
+    v = top * nodes
+    lower = float(np.dot(weights, v / (drive_torque - res.at_root(v)))) * 2.0 * j * top
+    slope = res.slope(speed)
+    sliver = speed * 1e-3 if slope <= 0.0 else min(speed * 1e-3, 1e-6 * delta / slope)
+    # upper half in s = ln(ω − ω'): J·e^s/(M − M_res(ω − e^s)), smooth however small δ is;
+    # M − M_res(ω − u) taken as δ + (M_res(ω) − M_res(ω − u)) against cancellation
+    s0, s1 = math.log(sliver), math.log(half)
+    nodes, weights = _unit_panels(max(1, math.ceil((s1 - s0) / LOG_PANEL)))
+    u = np.exp(s0 + (s1 - s0) * nodes)
+    upper = float(np.dot(weights, u / (delta + res.drop(speed, u)))) * j * (s1 - s0)
+    # the last sliver, where M − M_res ≈ δ + slope·(ω − ω'), in closed form
+    last = j * sliver / delta if slope <= 0.0 else j / slope * math.log1p(slope * sliver / delta)
+    return lower + upper + last
 
 
 def run_up_time(rotor: Rotor, drive_torque: float, speed: float, slewing: bool = False) -> float:
@@ -191,44 +326,14 @@ def run_up_time(rotor: Rotor, drive_torque: float, speed: float, slewing: bool =
     Eq. (5) is separable: t = ∫₀^ω J dω / (M − M_res(ω)) (the tests compare it with
     solve_ivp). The resistance rises with speed, so the integrand peaks at the top, where it
     nears 1/δ, δ = M − M_res(ω): the upper half is integrated in s = ln(ω − ω'), in which it is
-    smooth however small δ is, and the last sliver (M − M_res ≈ δ there) in closed form.
+    smooth however small δ is, and the last sliver (M − M_res ≈ δ + slope·(ω − ω') there) in
+    closed form; the lower half in v = √ω', where M_res is a polynomial. Both by
+    Gauss–Legendre panels, vectorised.
     """
-    import warnings
-
-    from scipy.integrate import IntegrationWarning
-
-    resist_top = resisting_torque(rotor, speed, slewing)
-    delta = drive_torque - resist_top
-    if delta <= 0.0:
+    res = resistance(rotor, slewing)
+    if drive_torque - res(speed) <= 0.0:
         return math.inf
-    j = rotor.inertia_kgm2
-
-    def rate(w: float) -> float:
-        return j / (drive_torque - resisting_torque(rotor, w, slewing))
-
-    half = 0.5 * speed
-    with warnings.catch_warnings():
-        # near a torque that only just beats the resistance the integrand is steep; the
-        # log substitution keeps the result accurate, quad's roundoff notes are noise here
-        warnings.simplefilter("ignore", IntegrationWarning)
-        return _run_up_integral(rate, speed, half, resist_top, delta, rotor, slewing)
-
-
-def _run_up_integral(rate, speed, half, resist_top, delta, rotor, slewing) -> float:
-    from scipy.integrate import quad
-
-    j = rotor.inertia_kgm2
-    lower, _ = quad(rate, 0.0, half, limit=200)
-    step = speed * 1e-6
-    slope = max((resist_top - resisting_torque(rotor, speed - step, slewing)) / step, 0.0)
-    sliver = speed * 1e-3 if slope == 0.0 else min(speed * 1e-3, 1e-6 * delta / slope)
-    upper, _ = quad(
-        lambda x: rate(speed - math.exp(x)) * math.exp(x),
-        math.log(sliver),
-        math.log(half),
-        limit=200,
-    )
-    return lower + upper + j * sliver / delta
+    return _run_up_integral(res, rotor.inertia_kgm2, drive_torque, speed)
 
 
 def torque_for_run_up(rotor: Rotor, speed: float, time_s: float, slewing: bool = False) -> float:
@@ -237,21 +342,20 @@ def torque_for_run_up(rotor: Rotor, speed: float, time_s: float, slewing: bool =
     The time grows like ln(1/(M − M_res(ω))) as the torque nears the resistance at speed, so
     the root is sought in x = ln(M − M_res(ω)), where the time is a smooth function.
     """
-    from scipy.optimize import brentq
-
-    resist = resisting_torque(rotor, speed, slewing)
+    res, j = resistance(rotor, slewing), rotor.inertia_kgm2
+    resist = res(speed)
 
     def excess(x: float) -> float:
-        return run_up_time(rotor, resist + math.exp(x), speed, slewing) - time_s
+        return _run_up_integral(res, j, resist + math.exp(x), speed) - time_s
 
     lo = math.log(resist * 1e-12 + 1e-300)
     if excess(lo) <= 0.0:
         # the time allows a torque within 1e-12 of the resistance at speed: that is the answer
         return resist + math.exp(lo)
-    hi = math.log(max(resist, 2.0 * rotor.inertia_kgm2 * speed / time_s))
+    hi = math.log(max(resist, 2.0 * j * speed / time_s))
     while excess(hi) > 0.0:
         hi += math.log(2.0)
-    x = brentq(excess, lo, hi, xtol=1e-12, rtol=1e-12)
+    x = brent(excess, lo, hi, xtol=1e-12)
     for _ in range(60):  # land on the side that meets the time
         if excess(x) <= 0.0:
             break
@@ -262,17 +366,21 @@ def torque_for_run_up(rotor: Rotor, speed: float, time_s: float, slewing: bool =
 def _segment_time(rotor: Rotor, drive_torque: float, w0: float, w1: float, slewing: bool) -> float:
     """∫ J dω/(M − M_res(ω)) from w0 to w1 (eq. (5)); positive for a run-up (w1 > w0, M above
     the resistance) and for a run-down (w1 < w0, M below it)."""
-    import warnings
+    import numpy as np
 
-    from scipy.integrate import IntegrationWarning, quad
+    res = resistance(rotor, slewing)
+    return float(
+        _time_between(res, rotor.inertia_kgm2, drive_torque, np.array([w0]), np.array([w1]))[0]
+    )
 
-    j = rotor.inertia_kgm2
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore", IntegrationWarning)
-        value, _ = quad(
-            lambda w: j / (drive_torque - resisting_torque(rotor, w, slewing)), w0, w1, limit=200
-        )
-    return value
+
+def _cumulative_times(res: Resistance, j: float, drive_torque: float, speeds: list[float]):
+    """Times at ``speeds`` from the first, each piece by :func:`_time_between`."""
+    import numpy as np
+
+    w = np.asarray(speeds, dtype=float)
+    pieces = _time_between(res, j, drive_torque, w[:-1], w[1:])
+    return [0.0, *np.cumsum(pieces).tolist()]
 
 
 def run_up_curve(
@@ -288,9 +396,9 @@ def run_up_curve(
     if not math.isfinite(total):
         raise ValueError("the drive torque does not exceed the resistance at the target speed")
     speeds = [speed * k / (points - 1) for k in range(points)]
-    times = [0.0]
-    for w0, w1 in itertools.pairwise(speeds[:-1]):
-        times.append(times[-1] + _segment_time(rotor, drive_torque, w0, w1, False))
+    times = _cumulative_times(
+        resistance(rotor, False), rotor.inertia_kgm2, drive_torque, speeds[:-1]
+    )
     times.append(max(total, times[-1]))
     return times, speeds
 
@@ -302,14 +410,17 @@ def slew_response(
     ``drive_torque`` (the stabiliser saturated): eq. (5) with the gyroscopic term, H = J·ω
     falling with ω. Returns the curve down to within 0.1 % of the speed where the rotor
     settles, and that speed."""
+    res = resistance(rotor, True)
+    if res(speed) - drive_torque <= 1e-9 * drive_torque:
+        # the slew costs nothing measurable: the torque it lacks is within rounding of the
+        # resistance (where the balance speed itself would be rounding noise)
+        return [0.0], [speed], speed
     settle = balance_speed(rotor, drive_torque, speed, True)
-    if speed - settle <= 1e-9 * speed:  # the slew costs nothing measurable
+    if speed - settle <= 1e-9 * speed:
         return [0.0], [speed], settle
     drop = speed - settle
     speeds = [speed - drop * (1.0 - 10.0 ** (-3.0 * k / (points - 1))) for k in range(points)]
-    times = [0.0]
-    for w0, w1 in itertools.pairwise(speeds):
-        times.append(times[-1] + _segment_time(rotor, drive_torque, w0, w1, True))
+    times = _cumulative_times(res, rotor.inertia_kgm2, drive_torque, speeds)
     return times, speeds, settle
 
 
@@ -317,32 +428,30 @@ def speed_after(
     times: list[float], speeds: list[float], rotor: Rotor, drive_torque: float, duration_s: float
 ) -> float:
     """The speed a slew of ``duration_s`` leaves, from the curve of :func:`slew_response`."""
-    from scipy.optimize import brentq
-
     if duration_s <= 0.0 or len(times) == 1:
         return speeds[0]
     if duration_s >= times[-1]:
         return speeds[-1]
     k = next(i for i, t in enumerate(times) if t >= duration_s)
     w_hi, t_hi = speeds[k - 1], times[k - 1]
-    return brentq(
+    return brent(
         lambda w: t_hi + _segment_time(rotor, drive_torque, w_hi, w, True) - duration_s,
         speeds[k],
         w_hi,
-        xtol=1e-12 * speeds[0],
+        xtol=1e-12 * speeds[0] / max(1.0, speeds[0]),
     )
 
 
 def balance_speed(rotor: Rotor, drive_torque: float, speed: float, slewing: bool) -> float:
     """The speed at which the resistance equals the drive torque (≤ ``speed``): where the rotor
     settles with the drive at its limit."""
-    from scipy.optimize import brentq
+    res = resistance(rotor, slewing)
 
     def excess(w: float) -> float:
-        return drive_torque - resisting_torque(rotor, w, slewing)
+        return drive_torque - res(w)
 
     if excess(speed) >= 0.0:
         return speed
     if excess(0.0) <= 0.0:
         return 0.0
-    return brentq(excess, 0.0, speed, xtol=1e-9 * speed)
+    return brent(excess, 0.0, speed, xtol=1e-9 * speed / max(1.0, speed))

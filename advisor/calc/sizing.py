@@ -2,6 +2,7 @@
 evaluated on its load. Pure functions of numbers and catalog rows; no decisions here."""
 
 import math
+from functools import lru_cache
 from typing import NamedTuple, Protocol
 
 from advisor.calc import induction as im
@@ -37,6 +38,30 @@ def _upper(id: str, name: str, value: float, limit: float, unit: str, source: st
 def _lower(id: str, name: str, value: float, limit: float, unit: str, source: str) -> Check:
     """A check of the form value ≥ limit; margin = value / limit."""
     return Check(id, name, value, limit, unit, value / limit, source)
+
+
+#: Relative tolerance under which a geometric turn count counts as whole (1.2·15/2 is
+#: 9.000000000000002 in floating point, and is 9 turns, not 10).
+WHOLE_TURN_TOLERANCE = 1e-9
+
+
+def nut_whole_turns(turns_for_pressure: float, turns_for_height: float) -> int:
+    """Engaged turns of the nut: the turns the flank pressure needs and the turns the minimum
+    height ratio ψ_min·d2/P needs, each rounded up to whole turns. Ivanov [3] sizes the nut
+    with z = F/(π·d2·H1·[p]); a nut is made with whole turns, and rounding up keeps the flank
+    pressure strictly below [p] except where z is a whole number exactly, so that a design
+    does not depend on the last bit of the force (issue 12, item 5).
+
+    Seed 001's Tr16x2 bronze nut at 3500 N: z = 3500/(π·15·1·10) = 7.43 → 8 for the
+    pressure, 1.2·15/2 = 9 for the height: 9 turns.
+
+    >>> nut_whole_turns(7.427, 1.2 * 0.015 / 0.002)
+    9
+    >>> nut_whole_turns(9.0001, 9.0)
+    10
+    """
+    by_height = math.ceil(turns_for_height * (1.0 - WHOLE_TURN_TOLERANCE))
+    return max(math.ceil(turns_for_pressure), by_height, 1)
 
 
 class ScrewMaterial(NamedTuple):
@@ -101,7 +126,7 @@ def evaluate_thread(
 
     Checks (all with margin = allowed / actual):
     core von Mises stress ≤ σ_y / S; axial force ≤ P_cr / S_b (Euler or Johnson);
-    flank pressure ≤ [p] with the nut sized as H = max(ψ_min·d2, z_req·P);
+    flank pressure ≤ [p] with the nut of :func:`nut_whole_turns` turns, H = z·P;
     nut height ratio H/d2 ≤ ψ_max; engaged turns ≤ z_max.
     """
     p = thread.pitch_mm * MM
@@ -115,11 +140,11 @@ def evaluate_thread(
     revs = sc.revolutions(stroke_m, p, starts)
     speed = sc.screw_speed_rpm(revs, travel_time_s)
 
-    # Nut: enough turns for the flank pressure, at least the minimum height ratio.
+    # Nut: whole engaged turns, enough for the flank pressure and the minimum height ratio.
     h1 = thread.H1_mm * MM
     z_req = sc.nut_turns_required(force_N, d2, h1, material.allowable_pressure_Pa)
-    height = max(material.nut_height_ratio_min * d2, z_req * p)
-    turns = height / p
+    turns = float(nut_whole_turns(z_req, material.nut_height_ratio_min * d2 / p))
+    height = turns * p
     pressure = sc.nut_bearing_pressure(force_N, d2, h1, turns)
 
     core = sc.core_equivalent_stress(force_N, torque, d3)
@@ -286,3 +311,57 @@ def evaluate_motor(
         slips=slips,
         torques_Nm=[curve.torque(x) for x in slips],
     )
+
+
+class MotorFit(NamedTuple):
+    """A catalog motor with its fitted characteristic, for screening many loads quickly."""
+
+    motor: MotorRow
+    curve: im.KlossCurve
+    rated_torque_Nm: float
+    starting_torque_Nm: float
+    synchronous_speed_rpm: float
+
+
+def fit_motor(motor: MotorRow) -> MotorFit:
+    """The refined Kloss curve of a catalog motor (see :func:`evaluate_motor`); the fit (a
+    bisection) is cached by the ratings it depends on."""
+    curve = _fit(
+        motor.rated_torque_Nm,
+        motor.rated_slip,
+        motor.breakdown_torque_ratio,
+        motor.starting_torque_ratio,
+    )
+    return MotorFit(
+        motor, curve, motor.rated_torque_Nm, curve.torque(1.0), motor.synchronous_speed_rpm
+    )
+
+
+_fit = lru_cache(maxsize=1024)(im.fit_kloss)
+
+
+def drive_working_speed(
+    fit: MotorFit, load_torque_Nm: float, required_speed_rpm: float
+) -> float | None:
+    """The working speed of a motor driving the load directly, or ``None`` when it cannot
+    drive it continuously. The same tests as :attr:`MotorEvaluation.problems`: rated torque
+    and starting torque not below the load, a stable working point, and a working speed not
+    below the required one.
+
+    Hand check, 4A71B4 (0.75 kW, 1390 rpm) on seed 001's 5.085 N·m at 1200 rpm: rated
+    torque 5.152 N·m ≥ 5.085, so it drives the screw at a little above 1390 rpm.
+
+    >>> from catalogs import load_catalogs
+    >>> m = next(m for m in load_catalogs().motors if m.model == "4A71B4")
+    >>> round(drive_working_speed(fit_motor(m), 5.085, 1200.0))
+    1392
+    >>> drive_working_speed(fit_motor(m), 5.2, 1200.0) is None
+    True
+    """
+    if fit.rated_torque_Nm / load_torque_Nm < 1.0 or fit.starting_torque_Nm / load_torque_Nm < 1.0:
+        return None
+    s = fit.curve.stable_slip(load_torque_Nm)
+    if s is None:
+        return None
+    n = fit.synchronous_speed_rpm * (1.0 - s)
+    return n if n >= required_speed_rpm else None

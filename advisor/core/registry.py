@@ -10,8 +10,8 @@ and listing the applications costs nothing. The four shipped applications are re
 from importlib import import_module
 from typing import Any, NamedTuple
 
-#: The wizard's steps 1 to 3 where an application names none of its own.
-DEFAULT_STEPS = ("Loads and motion", "Envelope and holding", "Motor preferences")
+#: The wizard's asking steps (1 to 4) where an application names none of its own.
+DEFAULT_STEPS = ("Loads and motion", "Envelope and holding", "Motor preferences", "Duty cycle")
 
 
 class Application(NamedTuple):
@@ -26,7 +26,7 @@ class Application(NamedTuple):
     headline: Any  # "module:function" (report) -> the design in a few words
     summary_rows: Any = None  # "module:function" (report) -> [(name, text)] for -o
     views: Any = None  # "module" with components(report) and plots(report), for the wizard
-    steps: tuple[str, str, str] = DEFAULT_STEPS  # the wizard's names of its steps 1 to 3
+    steps: tuple[str, ...] = DEFAULT_STEPS  # the wizard's names of its asking steps, in order
 
 
 _APPLICATIONS: dict[str, Application] = {}

@@ -339,9 +339,9 @@ class DriveAdvisorApp(App[None]):
                         self.doc.get("application", {}).get("title", ""), "f-application-title"
                     )
                     yield Static("", id="step-0-error", classes="error")
-                for s in (1, 2, 3):
+                for s in F.ASKED:
                     yield VerticalScroll(id=f"step-{s}", classes="step")
-                with VerticalScroll(id="step-4", classes="step"):
+                with VerticalScroll(id=f"step-{F.REVIEW}", classes="step"):
                     yield Static("", id="review-text")
                     yield Static("", id="review-error", classes="error")
             with Vertical(id="results"):
@@ -420,7 +420,7 @@ class DriveAdvisorApp(App[None]):
     async def _build_steps(self) -> None:
         kind = self.kind if self.kind in F.titles() else None
         self.field_errors.clear()
-        for s in (1, 2, 3):
+        for s in F.ASKED:
             box = self.query_one(f"#step-{s}", VerticalScroll)
             await box.remove_children()
             widgets: list[Any] = []
@@ -464,8 +464,11 @@ class DriveAdvisorApp(App[None]):
                 )
                 F.put(self.doc, f.path, None)
                 value = None
+            blank = f.default is None  # no default to show: the field may stay unchosen
             current = value if value in f.choices else self._shown_choice(f)
-            control = Select([(c, c) for c in f.choices], value=current, allow_blank=False, id=f.id)
+            if blank and value not in f.choices:
+                current = Select.NULL
+            control = Select([(c, c) for c in f.choices], value=current, allow_blank=blank, id=f.id)
         else:
             control = _input(F.to_text(f, value), f.id)
             control.placeholder = f.shown_default
@@ -495,7 +498,7 @@ class DriveAdvisorApp(App[None]):
             for i, (s, name) in enumerate(walk):
                 if s == self.step:
                     out.append(f"[reverse] {i + 1} {name} [/]")
-                elif level == 0 or s == 4:
+                elif level == 0 or s == F.REVIEW:
                     out.append(f"{i + 1} {name}")
                 elif level == 1:
                     out.append(f"{i + 1} {name.split()[0]}")
@@ -519,7 +522,7 @@ class DriveAdvisorApp(App[None]):
             text = self._step_bar(self.size.width or 80)
         self.query_one("#steps", Static).update(text)
         self.query_one("#wizard", ContentSwitcher).current = f"step-{self.step}"
-        if self.step == 4:
+        if self.step == F.REVIEW:
             self.query_one("#review-text", Static).update(self._review_text())
         if focus and not on_results:
             self._focus_step()
@@ -629,7 +632,12 @@ class DriveAdvisorApp(App[None]):
     @on(Select.Changed)
     def _select_changed(self, event: Select.Changed) -> None:
         f = self._field_by_id(event.select.id)
-        if f is None or not isinstance(event.value, str):
+        if f is None:
+            return
+        if not isinstance(event.value, str):  # blanked: the field is left out again
+            if F.get(self.doc, f.path) is not None:
+                F.put(self.doc, f.path, None)
+                self._changed()
             return
         if F.get(self.doc, f.path) is None and event.value == self._shown_choice(f):
             return  # the shown default, not a choice the user made: keep the file as it was
@@ -672,7 +680,7 @@ class DriveAdvisorApp(App[None]):
                 self.query_one("#step-0-error", Static).update("choose an application")
                 return False
             return True
-        if step == 4:
+        if step == F.REVIEW:
             return True
         kind = self.kind
         assert kind is not None
@@ -775,7 +783,7 @@ class DriveAdvisorApp(App[None]):
             self._go_to_problem(self.step, "Not yet")
             return
         walk = [s for s, _ in self._walk()]
-        if self.step < 4:
+        if self.step < F.REVIEW:
             self.step = walk[walk.index(self.step) + 1] if self.step in walk else self.step + 1
             self._show_step()
         else:
@@ -859,7 +867,7 @@ class DriveAdvisorApp(App[None]):
         self._show_step(focus=False)
 
     def _invalid(self, messages: list[str]) -> None:
-        self.step = 4
+        self.step = F.REVIEW
         self.query_one("#main", ContentSwitcher).current = "wizard"
         self._show_step()
         self.query_one("#review-error", Static).update(

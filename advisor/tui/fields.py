@@ -12,6 +12,9 @@ from advisor.core import registry
 from advisor.core.questions import Question, fixed_values, wizard_questions
 
 STEPS = ("Application", *registry.DEFAULT_STEPS, "Review")
+#: The steps that ask the model's fields, and the review.
+ASKED = tuple(range(1, len(STEPS) - 1))
+REVIEW = len(STEPS) - 1
 
 
 class Field(Question):
@@ -56,16 +59,16 @@ def fields_for(kind: str, step: int) -> tuple[Field, ...]:
 
 def steps_for(kind: str | None) -> list[tuple[int, str]]:
     """The steps the wizard walks for ``kind``: (step number, name), the application's own
-    names for steps 1 to 3, a step with no question skipped (no "nothing to set")."""
+    names for its asking steps, a step with no question skipped (no "nothing to set")."""
     if kind is None:
         return list(enumerate(STEPS))
     names = registry.application(kind).steps
-    middle = [(s, names[s - 1]) for s in (1, 2, 3) if fields_for(kind, s)]
-    return [(0, STEPS[0]), *middle, (4, STEPS[4])]
+    middle = [(s, names[s - 1]) for s in ASKED if fields_for(kind, s)]
+    return [(0, STEPS[0]), *middle, (REVIEW, STEPS[REVIEW])]
 
 
 def all_fields(kind: str) -> list[Field]:
-    return [f for step in (1, 2, 3) for f in fields_for(kind, step)]
+    return [f for step in ASKED for f in fields_for(kind, step)]
 
 
 def starting_doc(kind: str) -> dict[str, Any]:
@@ -95,7 +98,7 @@ def title_field() -> Field:
 def row_note(kind: str, step: int) -> str:
     """A word on the rows of a list of tables asked in this step (candidate motors)."""
     rows = {f.row[:-1] for f in fields_for(kind, step) if f.row is not None}
-    return "".join(
+    return " ".join(
         f"Rows of {'.'.join(r)} may stay empty; a row once started needs every value."
         for r in sorted(rows)
     )
@@ -200,7 +203,7 @@ def error_step(dotted: str, kind: str) -> int | None:
     """The step that asks about a path: its field's step, else the first step asking a field
     of the same table (``gearbox.colour`` → the step asking ``gearbox.*``); None for none."""
     parts = tuple(dotted.split("."))
-    asked = [(s, f.path) for s in (1, 2, 3) for f in fields_for(kind, s)]
+    asked = [(s, f.path) for s in ASKED for f in fields_for(kind, s)]
     for k in range(len(parts), 0, -1):
         steps = [s for s, path in asked if path[:k] == parts[:k]]
         if steps:
@@ -219,7 +222,7 @@ def error_owner(line: str, kind: str, upto_step: int) -> str | None:
     dotted = ".".join(parts)
     step = error_step(dotted, kind)
     if step is None:  # nothing asked about it: the first step with questions takes it
-        step = next((s for s in (1, 2, 3) if fields_for(kind, s)), 1)
+        step = next((s for s in ASKED if fields_for(kind, s)), 1)
     if step > upto_step:
         return None
     if any(f.dotted == dotted for f in fields_for(kind, step)):

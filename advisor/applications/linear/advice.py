@@ -20,10 +20,13 @@ from advisor.calc import screw as sc
 from advisor.calc.sizing import (
     Check,
     MotorEvaluation,
+    MotorFit,
     ScrewMaterial,
     ThreadEvaluation,
+    drive_working_speed,
     evaluate_motor,
     evaluate_thread,
+    fit_motor,
 )
 from advisor.core.errors import InfeasibleError, InputError
 from advisor.core.requirements import Requirements
@@ -35,73 +38,84 @@ from rules import screw as screw_rules
 
 
 class MotorPlan(NamedTuple):
-    pole_pairs: int | None
-    required_power_kW: float
+    pole_pairs: int
+    required_power_kW: float  # load torque × required screw speed
     band_kW: list[float]
     evaluations: dict[float, MotorEvaluation | None]  # by rated power; None: not in catalog
-    selected: InductionMotor | None
+    selected: InductionMotor
 
 
-def plan_motor(ev: ThreadEvaluation, cat: Catalogs, frequency_Hz: float, trace: Trace) -> MotorPlan:
-    """Pole pairs, rated power band and catalog motor for one thread's torque and speed."""
-    load = ev.torque_Nm
-    n_req = ev.speed_rpm
-    p_req_kW = load * n_req * math.pi / 30.0 / 1e3
+STARTS_FREE = (1, 2, 3, 4)
 
-    pole_options = []
-    for pp in (1, 2, 3, 4):
-        line = [m for m in cat.motors_with_poles(2 * pp) if m.rated_power_kW >= p_req_kW - 1e-12]
-        first = line[0] if line else None
-        pole_options.append(
-            im_rules.PoleOption(
-                pp,
-                im.synchronous_speed_rpm(frequency_Hz, pp),
-                first.model if first else None,
-                first.rated_speed_rpm if first else None,
-            )
-        )
-    pp = trace.apply(im_rules.choose_pole_pairs, n_req, pole_options)
-    if pp is None:
-        return MotorPlan(None, p_req_kW, [], {}, None)
 
-    series = list(cat.rated_powers_kW)
-    nearest, band = trace.apply(im_rules.rated_power_band, p_req_kW, series)
+def drive_options(
+    evaluations: list[ThreadEvaluation], fits: dict[int, list[MotorFit]]
+) -> list[screw_rules.DriveOption]:
+    """Every (thread, starts) that passes its checks, with the smallest motor of each pole
+    count that drives it directly (the lines in ``fits`` are in order of rated power)."""
+    out = []
+    for ev in evaluations:
+        if not ev.passed:
+            continue
+        for pp, line in fits.items():
+            for fit in line:
+                n = drive_working_speed(fit, ev.torque_Nm, ev.speed_rpm)
+                if n is None:
+                    continue
+                m = fit.motor
+                out.append(
+                    screw_rules.DriveOption(
+                        thread=ev.thread.name,
+                        d_mm=ev.thread.d_mm,
+                        pitch_mm=ev.thread.pitch_mm,
+                        starts=ev.starts,
+                        self_locking_at_low_friction=ev.self_locking_at_low_friction,
+                        screw_torque_Nm=ev.torque_Nm,
+                        motor_model=m.model,
+                        pole_pairs=pp,
+                        rated_power_kW=m.rated_power_kW,
+                        rated_torque_Nm=m.rated_torque_Nm,
+                        travel_time_s=60.0 * ev.revolutions / n,
+                    )
+                )
+                break
+    return out
+
+
+def plan_motor(
+    ev: ThreadEvaluation, motor: InductionMotor, cat: Catalogs, frequency_Hz: float, trace: Trace
+) -> MotorPlan:
+    """The chosen motor's pole pairs, its rated-power band and the evaluated neighbours."""
+    pp = motor.pole_pairs
     line = {m.rated_power_kW: m for m in cat.motors_with_poles(2 * pp)}
-    if nearest is None:
-        return MotorPlan(pp, p_req_kW, [], {}, None)
 
     def evaluate(power: float) -> MotorEvaluation | None:
         m = line.get(power)
-        return None if m is None else evaluate_motor(m, load, n_req, ev.revolutions)
+        return None if m is None else evaluate_motor(m, ev.torque_Nm, ev.speed_rpm, ev.revolutions)
 
-    # Walk up the series from the nearest power until a catalog motor carries the load.
-    start = series.index(nearest)
-    evaluations: dict[float, MotorEvaluation | None] = {}
+    sel = evaluate(motor.rated_power_kW)
+    assert sel is not None and sel.working_speed_rpm is not None
+    series = list(cat.rated_powers_kW)
+    p_req_kW = ev.torque_Nm * ev.speed_rpm * math.pi / 30.0 / 1e3
+    p_work_kW = ev.torque_Nm * sel.working_speed_rpm * math.pi / 30.0 / 1e3
+    band = trace.apply(im_rules.rated_power_band, p_req_kW, p_work_kW, motor.rated_power_kW, series)
+    evaluations = {power: evaluate(power) for power in band}
+    # IM-03 looks at the line from the lower neighbour up to the chosen motor: the joint
+    # choice took the first one that drives the screw, so the rule must agree with it.
     options = []
-    for power in series[start:]:
-        if power > max(line, default=0):
-            break
-        evaluations[power] = evaluate(power)
-        e = evaluations[power]
+    for m in sorted(line.values(), key=lambda m: m.rated_power_kW):
+        if m.rated_power_kW < band[0] or m.rated_power_kW > motor.rated_power_kW:
+            continue
+        e = evaluations.get(m.rated_power_kW) or evaluate(m.rated_power_kW)
+        assert e is not None
         options.append(
             im_rules.MotorOption(
-                power,
-                e.motor.model if e else None,
-                tuple(e.problems) if e else ("not in the catalog",),
-                e.rated_torque_margin if e else None,
+                m.rated_power_kW, m.model, tuple(e.problems), e.rated_torque_margin
             )
         )
-        if e is not None and e.suitable:
-            break
     model = trace.apply(im_rules.choose_motor, options)
-    selected = next((m for m in line.values() if m.model == model), None)
-    if selected is not None:
-        i = series.index(selected.rated_power_kW)
-        band = series[max(0, i - 1) : i + 2]
-        for power in band:
-            if power not in evaluations:
-                evaluations[power] = evaluate(power)
-    return MotorPlan(pp, p_req_kW, band, evaluations, selected)
+    assert model == motor.model, (model, motor.model)
+    return MotorPlan(pp, p_req_kW, band, evaluations, motor)
 
 
 def _material(
@@ -180,7 +194,7 @@ def advise_linear(
             f"(Tr8 … Tr100 with the pitches the standard gives); nearest: {nearest}"
         )
 
-    def evaluate(t) -> ThreadEvaluation:
+    def evaluate(t, starts: int) -> ThreadEvaluation:
         return evaluate_thread(
             t,
             force_N=lin.force_N,
@@ -189,63 +203,82 @@ def advise_linear(
             span_m=lin.support_span_m,
             end_fixity=lin.end_fixity,
             buckling_safety_factor=lin.buckling_safety_factor,
-            starts=s.starts,
+            starts=starts,
             friction_model=model,
             material=material,
         )
 
     freq = req.motor.supply_frequency_Hz
-    evaluations = {t.name: evaluate(t) for t in cat.threads}
-    options = []
-    plans: dict[str, MotorPlan] = {}
-    smallest_ok_d: float | None = None
-    for name, ev in evaluations.items():
-        d = ev.thread.d_mm
-        if smallest_ok_d is not None and d > smallest_ok_d and name != s.thread:
-            options.append(_option(ev, None))
-            continue
-        plan = plan_motor(ev, cat, freq, Trace()) if ev.passed or name == s.thread else None
-        if plan is not None:
-            plans[name] = plan
-        options.append(_option(ev, plan))
-        if ev.passed and plan is not None and plan.selected is not None and smallest_ok_d is None:
-            smallest_ok_d = d
-
+    starts_options = (s.starts,) if s.starts is not None else STARTS_FREE
+    evaluations = [evaluate(t, z) for t in cat.threads for z in starts_options]
+    fits = {pp: [fit_motor(m) for m in cat.motors_with_poles(2 * pp)] for pp in (1, 2, 3, 4)}
+    fits = {pp: line for pp, line in fits.items() if line}
+    options = drive_options(evaluations, fits)
+    if s.thread is not None:
+        imposed = [ev for ev in evaluations if ev.thread.name == s.thread]
+        if not any(ev.passed for ev in imposed):
+            ev = min(imposed, key=lambda e: len(e.failed))
+            raise InfeasibleError(
+                f"no feasible design: the imposed thread {s.thread} fails its checks",
+                [_describe(c) for c in ev.failed],
+            )
     chosen = trace.apply(
-        screw_rules.choose_thread, options, req.application.hold_without_power, s.thread
+        screw_rules.choose_drive, options, req.application.hold_without_power, s.thread, s.starts
     )
     if chosen is None:
-        raise _no_thread(evaluations, plans, cat, lin.force_N)
-    ev = evaluations[chosen]
-    if not ev.passed:
-        raise InfeasibleError(
-            f"no feasible design: the imposed thread {chosen} fails its checks",
-            [_describe(c) for c in ev.failed],
-        )
+        raise _no_drive(evaluations, s.thread, cat, lin.force_N)
+    ev = next(
+        e for e in evaluations if e.thread.name == chosen.thread and e.starts == chosen.starts
+    )
     trace.apply(
         screw_rules.holding,
         req.application.hold_without_power,
         ev.self_locking,
         ev.self_locking_at_low_friction,
-        chosen,
+        chosen.label,
     )
-    plan = plan_motor(ev, cat, freq, trace)
-    if plan.selected is None:
-        raise InfeasibleError(
-            f"no feasible design: no 50 Hz induction motor of the catalog drives {chosen}",
-            [
-                f"screw speed {ev.speed_rpm:.0f} rpm, torque {ev.torque_Nm:.3f} N·m, "
-                f"power {plan.required_power_kW:.3f} kW",
-                "the fastest catalog motor runs at "
-                f"{max(m.rated_speed_rpm for m in cat.motors):g} rpm and the largest gives "
-                f"{max(m.rated_power_kW for m in cat.motors):g} kW",
-            ],
+    pool = [o for o in options if s.thread is None or o.thread == s.thread]
+    hold = req.application.hold_without_power
+    pole_options = []
+    for pp in fits:
+        best = min(
+            (o for o in pool if o.pole_pairs == pp),
+            key=lambda o: screw_rules.drive_order(o, hold),
+            default=None,
         )
+        pole_options.append(
+            im_rules.PoleOption(
+                pp,
+                im.synchronous_speed_rpm(freq, pp),
+                best.label if best else None,
+                best.motor_model if best else None,
+                best.rated_power_kW if best else None,
+                best.travel_time_s if best else None,
+            )
+        )
+    trace.apply(im_rules.choose_pole_pairs, chosen.pole_pairs, ev.speed_rpm, pole_options)
+    motor = next(m for m in cat.motors if m.model == chosen.motor_model)
+    plan = plan_motor(ev, motor, cat, freq, trace)
+    chosen_name = chosen.label
 
     warnings: list[str] = []
+    duty = None
+    if req.duty is not None:  # issue 15: the motor sized for the cycle
+        from advisor.duty.linear import advise_duty
+
+        holder = "screw" if ev.self_locking_at_low_friction else None
+        holder = holder or ("one_way" if req.application.hold_without_power else None)
+        duty, motor, duty_checks, duty_warnings = advise_duty(
+            req, ev, plan.selected, cat, holder, trace
+        )
+        warnings += duty_warnings
+        if motor is not plan.selected:
+            power = motor.rated_power_kW
+            evaluations = {**plan.evaluations, power: _eval_motor(motor, ev)}
+            plan = plan._replace(selected=motor, evaluations=evaluations)
     one_way = None
     if req.application.hold_without_power:
-        one_way, dev_warnings = _one_way(req, trace, ev, chosen, material.friction_low)
+        one_way, dev_warnings = _one_way(req, trace, ev, chosen_name, material.friction_low)
         warnings += dev_warnings
     if s.friction_model == "paper":
         warnings.append(
@@ -257,6 +290,7 @@ def advise_linear(
         screw=_screw_out(ev, req, material, f_range, advisor_choice),
         motor=_motor_out(plan, ev, cat, freq),
         one_way=one_way,
+        duty=duty,
     )
     sel = plan.evaluations[plan.selected.rated_power_kW]
     assert sel is not None
@@ -290,28 +324,65 @@ def advise_linear(
             screw_rules.SEED_001,
         ),
     ]
-    if sel.travel_time_s and sel.travel_time_s < 0.7 * lin.travel_time_s:
-        warnings.append(
-            f"the motor makes the stroke in {sel.travel_time_s:.2f} s, much faster than the "
-            f"{lin.travel_time_s:g} s asked for: an induction motor on 50 Hz has no speed "
-            "between its pole steps."
-        )
+    if sel.travel_time_s and sel.travel_time_s < FAST_SHARE * lin.travel_time_s:
+        warnings.append(_too_fast(ev, sel, plan, evaluations, cat, lin.travel_time_s))
+    if duty is not None:
+        checks += duty_checks
     return design, checks, warnings
 
 
-def _option(ev: ThreadEvaluation, plan: MotorPlan | None) -> screw_rules.ThreadOption:
-    sel = plan.selected if plan else None
-    return screw_rules.ThreadOption(
-        name=ev.thread.name,
-        d_mm=ev.thread.d_mm,
-        pitch_mm=ev.thread.pitch_mm,
-        preferred=ev.thread.preferred,
-        passed=ev.passed,
-        failed=tuple(f"{c.id} margin {c.margin:.2f}" for c in ev.failed),
-        self_locking_at_low_friction=ev.self_locking_at_low_friction,
-        motor_torque_Nm=sel.rated_torque_Nm if sel else None,
-        motor_model=sel.model if sel else None,
+def _eval_motor(motor: InductionMotor, ev: ThreadEvaluation) -> MotorEvaluation:
+    return evaluate_motor(motor, ev.torque_Nm, ev.speed_rpm, ev.revolutions)
+
+
+#: A stroke made in less than this share of the time asked for is flagged.
+FAST_SHARE = 0.7
+
+#: Efficiency assumed for one spur reduction stage, in the saving a reducer would bring.
+REDUCER_EFFICIENCY = 0.97
+
+
+def _too_fast(
+    ev: ThreadEvaluation,
+    sel: MotorEvaluation,
+    plan: MotorPlan,
+    evaluations: list[ThreadEvaluation],
+    cat: Catalogs,
+    travel_time_s: float,
+) -> str:
+    """Say that the direct drive is much faster than asked, whether any lead would suit a
+    motor speed step, and what a reduction stage would save."""
+    assert sel.travel_time_s is not None and sel.working_speed_rpm is not None
+    v_mm_s = ev.revolutions * ev.thread.pitch_mm * ev.starts / travel_time_s
+    slowest = min(cat.motors, key=lambda m: m.rated_speed_rpm)
+    lead_needed_mm = v_mm_s * 60.0 / slowest.rated_speed_rpm
+    passing = [e for e in evaluations if e.passed]
+    finest = min(passing, key=lambda e: e.thread.pitch_mm * e.starts)
+    finest_lead = finest.thread.pitch_mm * finest.starts
+    text = (
+        f"the motor makes the stroke in {sel.travel_time_s:.3g} s, much faster than the "
+        f"{travel_time_s:g} s asked for: an induction motor on 50 Hz has no speed between its "
+        "pole steps"
     )
+    if lead_needed_mm < finest_lead:
+        text += (
+            f". No lead suits: even the slowest catalog motor ({slowest.rated_speed_rpm:g} rpm) "
+            f"would need a lead of {lead_needed_mm:.3g} mm, and the finest that passes the "
+            f"checks is {finest_lead:g} mm ({finest.thread.name})"
+        )
+    ratio = sel.working_speed_rpm / ev.speed_rpm
+    need_kW = plan.required_power_kW / REDUCER_EFFICIENCY
+    smaller = [m for m in cat.motors if m.rated_power_kW >= need_kW]
+    if smaller:
+        best = min(smaller, key=lambda m: (m.rated_power_kW, m.rated_torque_Nm))
+        if best.rated_power_kW < plan.selected.rated_power_kW:
+            text += (
+                f". A reduction stage of about {ratio:.3g}:1 (η = {REDUCER_EFFICIENCY:g} "
+                f"assumed) would let a {best.rated_power_kW:g} kW motor "
+                f"({plan.required_power_kW / REDUCER_EFFICIENCY:.3g} kW needed) drive the "
+                f"same screw instead of {plan.selected.rated_power_kW:g} kW"
+            )
+    return text + "."
 
 
 def _describe(c: Check) -> str:
@@ -333,17 +404,15 @@ def _remedy(force_N: float, failed: set[str]) -> str:
     return f"a force of {force_N:g} N needs " + ", or ".join(cures)
 
 
-def _no_thread(
-    evaluations: dict[str, ThreadEvaluation],
-    plans: dict[str, MotorPlan],
-    cat: Catalogs,
-    force_N: float,
+def _no_drive(
+    evaluations: list[ThreadEvaluation], imposed: str | None, cat: Catalogs, force_N: float
 ) -> InfeasibleError:
-    """Why no thread could be chosen: the checks, or the motors."""
-    passing = [ev for ev in evaluations.values() if ev.passed]
+    """Why no thread and motor could be chosen: the checks, or the motors."""
+    pool = [ev for ev in evaluations if imposed is None or ev.thread.name == imposed]
+    passing = [ev for ev in pool if ev.passed]
     if not passing:
         # every thread fails a check: the largest one shows what limits the design
-        biggest = max(evaluations.values(), key=lambda e: (e.thread.d_mm, e.thread.pitch_mm))
+        biggest = max(pool, key=lambda e: (e.thread.d_mm, e.thread.pitch_mm, -e.starts))
         return InfeasibleError(
             "no feasible design: no GOST 24738-81 thread (Tr8 … Tr100) passes every check",
             [f"{biggest.thread.name}: {_describe(c)}" for c in biggest.failed]
@@ -351,10 +420,10 @@ def _no_thread(
         )
     speeds = sorted(ev.speed_rpm for ev in passing)
     fastest = max(m.rated_speed_rpm for m in cat.motors)
-    slowest = min(m.rated_speed_rpm for m in cat.motors)
     biggest_kw = max(m.rated_power_kW for m in cat.motors)
+    names = {ev.thread.name for ev in passing}
     reasons = [
-        f"{len(passing)} threads pass the strength checks; they need {speeds[0]:.4g} … "
+        f"{len(names)} threads pass the strength checks; they need {speeds[0]:.4g} … "
         f"{speeds[-1]:.4g} rpm at the screw"
     ]
     if speeds[0] > fastest:
@@ -362,18 +431,13 @@ def _no_thread(
             f"the fastest 50 Hz motor of the catalog runs at {fastest:g} rpm: allow a longer "
             "travel time or use more thread starts"
         )
-    elif speeds[-1] < slowest * 0.2:
-        reasons.append(
-            f"the slowest motor runs at {slowest:g} rpm, far above the screw speed; a direct "
-            "drive cannot reach it — add a reducer"
-        )
     else:
-        powers = [p.required_power_kW for p in plans.values() if p.selected is None]
-        if powers:
-            reasons.append(
-                f"the power needed ({min(powers):.3g} kW or more at a reachable speed) exceeds "
-                f"what the catalog's motors give (up to {biggest_kw:g} kW) at that speed"
-            )
+        reachable = [ev for ev in passing if ev.speed_rpm <= fastest]
+        least = min(ev.torque_Nm * ev.speed_rpm * math.pi / 30.0 / 1e3 for ev in reachable)
+        reasons.append(
+            f"the power needed ({least:.3g} kW or more at a reachable speed) exceeds what the "
+            f"catalog's motors give (up to {biggest_kw:g} kW) at that speed"
+        )
     return InfeasibleError(
         "no feasible design: no catalog motor can drive a thread that passes its checks",
         reasons,

@@ -1,6 +1,7 @@
 """Report tables of the linear actuator (imported only on the linear path)."""
 
 from advisor.core.report import _Out
+from advisor.duty.report import DutyOut
 from advisor.one_way.report import OneWayOut
 
 
@@ -119,12 +120,15 @@ class LinearDesignOut(_Out):
     screw: ScrewOut
     motor: InductionMotorOut
     one_way: "OneWayOut | None" = None
+    duty: DutyOut | None = None
 
 
 def headline(report) -> str:
-    """The design in a few words: thread, motor, pole pairs."""
+    """The design in a few words: thread (with its starts when more than one), motor, pole
+    pairs."""
     s, m = report.design.screw, report.design.motor
-    return f"{s.thread}, {m.model} {m.rated_power_kW:g} kW, p = {m.pole_pairs}"
+    starts = f" ({s.starts} starts)" if s.starts > 1 else ""
+    return f"{s.thread}{starts}, {m.model} {m.rated_power_kW:g} kW, p = {m.pole_pairs}"
 
 
 def summary_rows(report) -> list[tuple[str, str]]:
@@ -133,7 +137,9 @@ def summary_rows(report) -> list[tuple[str, str]]:
     return [
         (
             "screw",
-            f"{s.thread}{' (imposed)' if s.imposed else ''}, {s.speed_rpm:.0f} rpm, "
+            f"{s.thread}{' (imposed)' if s.imposed else ''}"
+            f"{f', {s.starts} starts, lead {s.lead_mm:g} mm' if s.starts > 1 else ''}, "
+            f"{s.speed_rpm:.0f} rpm, "
             f"{s.torque_Nm:.3f} N·m ({s.friction_model}; standard {s.torque_standard_Nm:.3f}), "
             f"η = {s.efficiency:.3f}, {'self-locking' if s.self_locking else 'not self-locking'}",
         ),

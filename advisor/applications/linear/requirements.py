@@ -6,23 +6,36 @@ from typing import Annotated, Literal
 from pydantic import Field, field_validator, model_validator
 
 from advisor.core.requirements import ApplicationReq, OneWayReq, _num, _Strict, ask
+from advisor.duty.requirements import LinearDutyReq
 
 
 class LinearReq(_Strict):
+    """The linear stage. Every number has a physically meaningful range (issue 13): a screw
+    actuator of this advisor pushes 1 N … 5 MN over 1 mm … 20 m in 10 ms … about 28 h."""
+
     force_N: Annotated[
-        float, _num(gt=0, le=5e6, desc="rated axial force, N", label="Axial force", step=1)
+        float,
+        _num(ge=1, le=5e6, desc="rated axial force, N; 1 N … 5 MN", label="Axial force", step=1),
     ]
-    stroke_m: Annotated[float, _num(gt=0, le=20, desc="stroke, m", label="Stroke", step=1)]
+    stroke_m: Annotated[
+        float, _num(ge=1e-3, le=20, desc="stroke, m; 1 mm … 20 m", label="Stroke", step=1)
+    ]
     travel_time_s: Annotated[
         float,
-        _num(gt=0, le=1e5, desc="time for the full stroke, s", label="Time for the stroke", step=1),
+        _num(
+            ge=0.01,
+            le=1e5,
+            desc="time for the full stroke, s; 0.01 … 100000 s",
+            label="Time for the stroke",
+            step=1,
+        ),
     ]
     support_span_m: Annotated[
         float,
         _num(
-            gt=0,
+            ge=1e-3,
             le=20,
-            desc="distance between the screw supports, m",
+            desc="distance between the screw supports, m; 1 mm … 20 m",
             label="Unsupported screw length",
             step=1,
         ),
@@ -32,7 +45,7 @@ class LinearReq(_Strict):
         Field(description="how the screw ends are held, for buckling"),
     ] = "pinned-pinned"
     buckling_safety_factor: Annotated[
-        float, _num(ge=1, le=20, desc="required margin against buckling")
+        float, _num(ge=1, le=20, desc="required margin against buckling; 1 … 20")
     ] = 3.0
 
     @model_validator(mode="after")
@@ -66,14 +79,23 @@ class ScrewReq(_Strict):
     friction_coefficient: Annotated[
         float | None,
         _num(
-            gt=0,
+            ge=0.01,
             le=0.6,
-            desc="thread friction coefficient f",
+            desc="thread friction coefficient f; 0.01 … 0.6",
             label="Thread friction coefficient f",
             step=3,
         ),
     ] = None
-    starts: Annotated[int, Field(ge=1, le=4, description="number of thread starts")] = 1
+    starts: Annotated[
+        int | None,
+        ask(
+            "number of thread starts, 1 … 4; left out, the advisor chooses it",
+            label="Thread starts (empty: chosen)",
+            step=2,
+            ge=1,
+            le=4,
+        ),
+    ] = None
     friction_model: Annotated[
         Literal["standard", "paper"],
         ask("reduced friction formula", label="Friction formula", step=3),
@@ -117,3 +139,7 @@ class LinearRequirements(_Strict):
     motor: Annotated[InductionMotorReq, Field(description="the [motor] table: kind = 'induction'")]
     screw: ScrewReq = ScrewReq()
     one_way: OneWayReq = OneWayReq()
+    duty: Annotated[
+        LinearDutyReq | None,
+        Field(description="the [duty] table: segments with cycles_per_hour, or duty_type"),
+    ] = None

@@ -14,6 +14,7 @@ def components(report) -> list[Any]:
             "Screw",
             [
                 ("thread", s.thread + (" (imposed)" if s.imposed else "")),
+                *([("starts", f"{s.starts} (lead {s.lead_mm:g} mm)")] if s.starts > 1 else []),
                 ("speed", f"{s.speed_rpm:.0f} rpm"),
                 ("torque", f"{s.torque_Nm:.4g} N·m ({s.friction_model})"),
                 ("efficiency", s.efficiency),
@@ -50,7 +51,9 @@ def plots(report) -> list[PlotData]:
         "torque, N·m",
         series,
     )
-    return [main]
+    from advisor.duty.views import plots as duty_plots
+
+    return [main, *duty_plots(getattr(d, "duty", None))]
 
 
 def compare(report) -> list[Any]:

@@ -240,4 +240,19 @@ def advise_positioning(req: Requirements, cat: Catalogs, trace: Trace):
                 mo_rules.SEED_003 + ", eq. (3)",
             )
         )
-    return PositioningDesignOut.make(motion=motion), checks, warnings
+    duty = None
+    if req.duty is not None:  # issue 15: the move repeated every cycle_time_s
+        from advisor.duty.positioning import advise_duty, rated_torques
+
+        duty, duty_checks, duty_warnings = advise_duty(
+            usable,
+            rated_torques(req, cat),
+            {n: ss["ratio"] for n, (_, ss) in solved.items()},
+            path,
+            req.duty.cycle_time_s,
+            best,
+            trace,
+        )
+        checks += duty_checks
+        warnings += duty_warnings
+    return PositioningDesignOut.make(motion=motion, duty=duty), checks, warnings

@@ -1,6 +1,7 @@
 """Report tables of the positioning drive (imported only on that path)."""
 
 from advisor.core.report import _Out
+from advisor.duty.report import DutyOut
 
 
 class MotionCandidateOut(_Out):
@@ -42,6 +43,7 @@ class MotionOut(_Out):
 
 class PositioningDesignOut(_Out):
     motion: MotionOut
+    duty: DutyOut | None = None
 
 
 def headline(report) -> str:

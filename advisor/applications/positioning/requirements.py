@@ -9,6 +9,7 @@ from typing import Annotated, Literal
 from pydantic import Field, field_validator, model_validator
 
 from advisor.core.requirements import ApplicationReq, _num, _Strict, ask
+from advisor.duty.requirements import PositioningDutyReq
 
 #: The smallest non-zero load inertia and load torque taken as a load; below them the value
 #: is either 0 (no such load) or a typing error.
@@ -50,6 +51,16 @@ class CandidateMotor(_Strict):
             step=3,
         ),
     ]
+    rated_torque_Nm: Annotated[
+        float | None,
+        _num(
+            gt=0,
+            le=1e6,
+            desc="continuous (S1) torque, N·m; required when [duty] is given",
+            label="rated torque",
+            step=3,
+        ),
+    ] = None
 
 
 class PositioningReq(_Strict):
@@ -132,3 +143,18 @@ class PositioningRequirements(_Strict):
         PositioningReq,
         Field(description="the [positioning] table: travel_rad, load_inertia_kgm2, load_torque_Nm"),
     ]
+    duty: Annotated[
+        PositioningDutyReq | None,
+        Field(description="the [duty] table: cycle_time_s (optional: the move repeated)"),
+    ] = None
+
+    @model_validator(mode="after")
+    def _rated_for_duty(self) -> "PositioningRequirements":
+        if self.duty is not None:
+            for k, m in enumerate(self.positioning.motors, 1):
+                if m.rated_torque_Nm is None:
+                    raise ValueError(
+                        f"positioning.motors[{k}].rated_torque_Nm: missing; required when "
+                        "[duty] is given (continuous (S1) torque, N·m)"
+                    )
+        return self

@@ -43,7 +43,9 @@ def plots(report) -> list[PlotData]:
         (f"optimum of {c.name}", [c.optimal_ratio], [c.move_time_s]) for c in d.motion.candidates
     ]
     main = PlotData("Move time against ratio", "ratio i", "move time, s", series)
-    return [main]
+    from advisor.duty.views import plots as duty_plots
+
+    return [main, *duty_plots(getattr(d, "duty", None))]
 
 
 def _curve(report, c) -> tuple[list[float], list[float]]:

@@ -124,6 +124,12 @@ def advise_rotary(req: Requirements, cat: Catalogs, trace: Trace):
     limit, basis = bm.loss_limit(mot, steel, steel_mass, terms)
     if not any(bl_rules.within_limit(c["losses"]["total"], limit) for c in reducible):
         raise bm.too_lossy(reducible, limit, basis, n_opt)
+    if req.duty is not None:  # issue 15: only the speeds whose motor passes the cycle
+        from advisor.duty import rotary as dr
+
+        frame_for = dr.frames(ref, steel, steel_mass, terms, limit)
+        holds = req.application.hold_without_power
+        reducible = dr.passing_speeds(req, reducible, frame_for, holds, limit)
     speed = trace.apply(
         bl_rules.choose_speed,
         {c["speed_rpm"]: c["losses"]["total"] for c in reducible},
@@ -209,7 +215,15 @@ def advise_rotary(req: Requirements, cat: Catalogs, trace: Trace):
         one_way, dev_checks, dev_warnings = _one_way(req, trace, design, working, limit, basis)
         checks += dev_checks
         warnings += dev_warnings
-    return RotaryDesignOut.make(motor=motor, gearbox=gearbox, one_way=one_way), checks, warnings
+    duty = None
+    if req.duty is not None:
+        duty, duty_checks, duty_warnings = dr.advise_duty(
+            req, design.total_ratio, design.efficiency, speed, frame_for(speed), holds, trace
+        )
+        checks += duty_checks
+        warnings += duty_warnings
+    design_out = RotaryDesignOut.make(motor=motor, gearbox=gearbox, one_way=one_way, duty=duty)
+    return design_out, checks, warnings
 
 
 def _one_way(req, trace, design: rd.Reducer, working: dict, limit: float, basis: str):

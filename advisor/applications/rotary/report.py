@@ -1,6 +1,7 @@
 """Report tables of the rotary application (imported only on the rotary path)."""
 
 from advisor.core.report import _Out
+from advisor.duty.report import DutyOut
 from advisor.one_way.report import OneWayOut
 
 
@@ -141,6 +142,7 @@ class RotaryDesignOut(_Out):
     motor: BldcMotorOut
     gearbox: GearboxOut
     one_way: OneWayOut | None = None
+    duty: DutyOut | None = None
 
 
 def headline(report) -> str:

@@ -9,6 +9,7 @@ from typing import Annotated, Literal
 from pydantic import Field, model_validator
 
 from advisor.core.requirements import ApplicationReq, OneWayReq, _num, _Strict, ask
+from advisor.duty.requirements import RotaryDutyReq
 
 
 class RotaryReq(_Strict):
@@ -135,6 +136,10 @@ class RotaryRequirements(_Strict):
     motor: Annotated[BldcMotorReq, Field(description="the [motor] table: kind = 'bldc'")]
     gearbox: GearboxReq = GearboxReq()
     one_way: OneWayReq = OneWayReq()
+    duty: Annotated[
+        RotaryDutyReq | None,
+        Field(description="the [duty] table: segments with cycles_per_hour, or duty_type"),
+    ] = None
 
     @model_validator(mode="after")
     def _reducer_reduces(self) -> "RotaryRequirements":

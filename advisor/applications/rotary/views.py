@@ -111,7 +111,9 @@ def plots(report) -> list[PlotData]:
             for n, vols in zip(fig.rows, fig.volume_per_torque_cm3_per_Nm, strict=True)
         ],
     )
-    return [main, fig1]
+    from advisor.duty.views import plots as duty_plots
+
+    return [main, fig1, *duty_plots(getattr(d, "duty", None))]
 
 
 def compare(report) -> list[Any]:

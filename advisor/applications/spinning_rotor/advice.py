@@ -237,7 +237,7 @@ def advise_spinning_rotor(req: Requirements, cat: Catalogs, trace: Trace):
         run_up_torque_Nm=run_up_torque,
         required_torque_Nm=required,
         run_up_time_s=run_up_time,
-        run_up_time_at_steady_torque_s=at_steady,
+        run_up_time_at_steady_torque_s=at_steady if math.isfinite(at_steady) else None,
         bearing_life_h=life,
         bearing=BearingOut.make(
             designation=b.designation,

@@ -84,7 +84,9 @@ class RotorOut(_Out):
     run_up_torque_Nm: float
     required_torque_Nm: float
     run_up_time_s: float
-    run_up_time_at_steady_torque_s: float
+    # absent when the steady torque only equals the resistance at speed (no slew): the rotor
+    # then approaches the speed without ever reaching it
+    run_up_time_at_steady_torque_s: float | None = None
     bearing_life_h: float
     bearing: BearingOut
     slew: SlewOut

@@ -1,11 +1,25 @@
 """Requirements of the spinning-rotor drive (seed 002): an idling high-speed rotor whose
 bearings carry the gyroscopic reaction when its housing is turned."""
 
-from typing import Annotated
+from typing import Annotated, Any
 
-from pydantic import Field, model_validator
+from pydantic import Field, field_validator, model_validator
 
 from advisor.core.requirements import ApplicationReq, _num, _Strict, ask
+
+
+def _rng(lo: float, hi: float, desc: str, *, open_lo: bool = False, **question: Any) -> Any:
+    """A number in [lo, hi] (or (lo, hi] with ``open_lo``), the range stated in the description
+    so that an error names it: the ranges bound what the advisor treats as a physical rotor.
+    ``question``: the wizard's metadata, as for :func:`advisor.core.requirements.ask`."""
+    low = f"above {lo:g}" if open_lo else f"from {lo:g}"
+    if open_lo:
+        return _num(gt=lo, le=hi, desc=f"{desc}; {low} to {hi:g}", **question)
+    return _num(ge=lo, le=hi, desc=f"{desc}; {low} to {hi:g}", **question)
+
+
+#: The slowest slew taken as one (Earth's rate is 7.3e-5 rad/s); below it give 0, no slew.
+MIN_SLEW_RATE_rad_s = 1e-6
 
 
 class AeroReq(_Strict):
@@ -13,43 +27,39 @@ class AeroReq(_Strict):
 
     loss_W: Annotated[
         float | None,
-        _num(
-            ge=0,
-            le=1e6,
-            desc="aerodynamic loss at the design speed, W",
+        _rng(
+            0,
+            1e6,
+            "aerodynamic loss at the design speed, W",
             label="Aerodynamic loss at speed",
             step=2,
         ),
     ] = None
     outer_radius_mm: Annotated[
         float | None,
-        _num(
-            gt=0,
-            le=1e4,
-            desc="outer radius of the rotor cup R_o, mm",
-            label="…or cup outer radius",
-            step=2,
+        _rng(
+            1, 2000, "outer radius of the rotor cup R_o, mm", label="…or cup outer radius", step=2
         ),
     ] = None
     outer_length_mm: Annotated[
         float | None,
-        _num(
-            ge=0,
-            le=1e4,
-            desc="length of the cup's outer surface l_o, mm",
+        _rng(
+            0,
+            5000,
+            "length of the cup's outer surface l_o, mm",
             label="…and cup outer length",
             step=2,
         ),
     ] = None
-    inner_radius_mm: Annotated[
-        float, _num(ge=0, le=1e4, desc="inner radius of the cup R_i, mm")
-    ] = 0.0
+    inner_radius_mm: Annotated[float, _rng(0, 2000, "inner radius of the cup R_i, mm")] = 0.0
     inner_length_mm: Annotated[
-        float, _num(ge=0, le=1e4, desc="length of the cup's inner surface l_i, mm")
+        float, _rng(0, 5000, "length of the cup's inner surface l_i, mm")
     ] = 0.0
-    air_density_kg_m3: Annotated[float, _num(gt=0, le=100, desc="air density ρ, kg/m³")] = 1.204
+    air_density_kg_m3: Annotated[
+        float, _rng(1e-3, 50, "density of the gas around the rotor ρ, kg/m³")
+    ] = 1.204
     air_viscosity_m2_s: Annotated[
-        float, _num(gt=0, le=1e-2, desc="kinematic viscosity of air ν, m²/s")
+        float, _rng(1e-6, 0.1, "kinematic viscosity of that gas ν, m²/s")
     ] = 1.516e-5
 
     @model_validator(mode="after")
@@ -74,29 +84,17 @@ class AeroReq(_Strict):
 
 
 class RotorReq(_Strict):
-    mass_kg: Annotated[float, _num(gt=0, le=1e4, desc="rotor mass, kg", label="Rotor mass", step=1)]
+    mass_kg: Annotated[float, _rng(1e-3, 1e4, "rotor mass, kg", label="Rotor mass", step=1)]
     angular_momentum_kgm2_s: Annotated[
         float | None,
-        _num(
-            gt=0,
-            le=1e6,
-            desc="kinetic moment H at speed, kg·m²/s",
-            label="Kinetic moment H",
-            step=1,
-        ),
+        _rng(1e-6, 1e6, "kinetic moment H at speed, kg·m²/s", label="Kinetic moment H", step=1),
     ] = None
     inertia_kgm2: Annotated[
         float | None,
-        _num(
-            gt=0,
-            le=1e4,
-            desc="axial moment of inertia J, kg·m²",
-            label="…or axial inertia J",
-            step=1,
-        ),
+        _rng(1e-9, 1e4, "axial moment of inertia J, kg·m²", label="…or axial inertia J", step=1),
     ] = None
     speed_rad_s: Annotated[
-        float, _num(gt=0, le=2e4, desc="design speed ω, rad/s", label="Design speed", step=1)
+        float, _rng(10, 2e4, "design speed ω, rad/s", label="Design speed", step=1)
     ]
     bearing: Annotated[
         str,
@@ -110,14 +108,15 @@ class RotorReq(_Strict):
         ),
     ]
     bearing_count: Annotated[
-        int, ask("bearings carrying the rotor", label="Bearings", step=3, ge=2, le=8)
+        int,
+        ask("bearings carrying the rotor; from 2 to 8", label="Bearings", step=3, ge=2, le=8),
     ] = 2
     ball_plane_to_cg_mm: Annotated[
         float,
-        _num(
-            gt=0,
-            le=1e4,
-            desc="distance h from the ball plane to the centre of mass, mm",
+        _rng(
+            0.1,
+            2000,
+            "distance h from the ball plane to the centre of mass, mm",
             label="Ball plane to centre of mass h",
             step=1,
         ),
@@ -127,68 +126,64 @@ class RotorReq(_Strict):
         _num(
             ge=0,
             le=100,
-            desc="external angular velocity Ω of the housing, rad/s",
+            desc="external angular velocity Ω of the housing, rad/s; 0 (no slew) or from "
+            f"{MIN_SLEW_RATE_rad_s:g} to 100",
             label="Slew rate of the housing Ω",
             step=1,
         ),
     ]
-    axis_angle_deg: Annotated[
-        float, _num(ge=0, le=180, desc="angle α between H and Ω, degrees")
-    ] = 90.0
+    axis_angle_deg: Annotated[float, _rng(0, 180, "angle α between H and Ω, degrees")] = 90.0
     slew_angle_deg: Annotated[
         float,
-        _num(
-            gt=0,
-            le=36000,
-            desc="angle the housing turns through in one slew, degrees",
+        _rng(
+            0.01,
+            36000,
+            "angle the housing turns through in one slew, degrees",
             label="Angle of one slew",
             step=1,
         ),
     ] = 90.0
     run_up_time_s: Annotated[
         float,
-        _num(
-            gt=0,
-            le=1e5,
-            desc="required time to reach speed, s",
-            label="Required run-up time",
-            step=1,
-        ),
+        _rng(0.1, 1e5, "required time to reach speed, s", label="Required run-up time", step=1),
     ]
     rolling_friction_mm: Annotated[
         float,
-        _num(
-            gt=0,
-            le=1,
-            desc="rolling friction coefficient λ of eq. (4), mm",
+        _rng(
+            1e-3,
+            1,
+            "rolling friction coefficient λ of eq. (4), mm",
             label="Rolling friction λ",
             step=3,
         ),
     ] = 0.028
     contact_angle_deg: Annotated[
         float | None,
-        _num(
-            gt=0,
-            le=60,
-            desc="operating contact angle β under preload, degrees",
+        _rng(
+            5,
+            45,
+            "operating contact angle β under preload, degrees",
             label="Operating contact angle (deep groove)",
             step=3,
         ),
     ] = None
     lubricant_viscosity_mm2_s: Annotated[
-        float, _num(gt=0, le=1e4, desc="oil viscosity at operating temperature, mm²/s")
+        float, _rng(0.5, 5000, "oil viscosity at operating temperature, mm²/s")
     ] = 10.0
     required_life_h: Annotated[
         float | None,
-        _num(
-            gt=0,
-            le=1e7,
-            desc="required basic rating life L10h, h",
-            label="Required life L10h",
-            step=3,
-        ),
+        _rng(1, 1e7, "required basic rating life L10h, h", label="Required life L10h", step=3),
     ] = None
     aero: Annotated[AeroReq, Field(description="the [rotor.aero] table: loss_W or cup geometry")]
+
+    @field_validator("slew_rate_rad_s")
+    @classmethod
+    def _slew_or_none(cls, v: float) -> float:
+        if 0.0 < v < MIN_SLEW_RATE_rad_s:
+            raise ValueError(
+                f"must be 0 (no slew) or at least {MIN_SLEW_RATE_rad_s:g} (Earth's rate is 7.3e-05)"
+            )
+        return v
 
     @model_validator(mode="after")
     def _momentum_or_inertia(self) -> "RotorReq":

@@ -1,0 +1,325 @@
+"""The ``[duty]`` table: a cycle the drive repeats (issue 15). Without it nothing changes.
+
+Positioning repeats seed 003's move: ``cycle_time_s`` (one move of ``positioning.travel_rad``,
+then rest until the cycle ends). Linear and rotary drives give either a list of segments
+(move, dwell, hold) repeated ``cycles_per_hour`` times, or an IEC 60034-1 duty type with its
+parameters.
+"""
+
+from typing import Annotated, Literal
+
+from pydantic import model_validator
+
+from advisor.core.requirements import _num, _Strict, ask
+
+STEP = 4  # the wizard step that asks the duty
+
+
+class PositioningDutyReq(_Strict):
+    cycle_time_s: Annotated[
+        float,
+        _num(
+            gt=0,
+            le=1e6,
+            desc="time of one cycle: one move of positioning.travel_rad, then rest, s",
+            label="Cycle time",
+            step=STEP,
+        ),
+    ]
+
+
+class _Segment(_Strict):
+    kind: Annotated[
+        Literal["move", "dwell", "hold"],
+        ask(
+            "move the load, dwell (no load held), or hold the load at rest",
+            label="segment",
+            step=STEP,
+        ),
+    ]
+    time_s: Annotated[
+        float,
+        _num(
+            gt=0,
+            le=1e6,
+            desc="duration of the segment (a move: the time it may take), s",
+            label="time",
+            step=STEP,
+        ),
+    ]
+
+
+class LinearSegmentReq(_Segment):
+    distance_m: Annotated[
+        float | None,
+        _num(gt=0, le=20, desc="path of a move, m (a move: required)", label="distance", step=STEP),
+    ] = None
+    direction: Annotated[
+        Literal["against", "with"],
+        ask(
+            "a move against the load force (the motor drives) or with it (the load drives)",
+            label="direction",
+            step=STEP,
+        ),
+    ] = "against"
+    force_N: Annotated[
+        float | None,
+        _num(
+            ge=0,
+            le=5e6,
+            desc="axial load of the segment, N; default linear.force_N",
+            label="force",
+            step=STEP,
+        ),
+    ] = None
+
+    @model_validator(mode="after")
+    def _move_has_distance(self) -> "LinearSegmentReq":
+        if self.kind == "move" and self.distance_m is None:
+            raise ValueError("duty.segments: a move needs distance_m (its path, m)")
+        return self
+
+
+class RotarySegmentReq(_Segment):
+    angle_deg: Annotated[
+        float | None,
+        _num(
+            gt=0,
+            le=1e7,
+            desc="angle of a move at the output, degrees (a move: required)",
+            label="angle",
+            step=STEP,
+        ),
+    ] = None
+    profile: Annotated[
+        Literal["trapezoidal", "triangular"],
+        ask("speed graph of a move", label="speed graph", step=STEP),
+    ] = "trapezoidal"
+    accel_fraction: Annotated[
+        float,
+        _num(
+            gt=0,
+            lt=0.5,
+            desc="share of a trapezoidal move spent accelerating (and braking)",
+            label="accelerating share",
+            step=STEP,
+        ),
+    ] = 0.25
+    direction: Annotated[
+        Literal["against", "with"],
+        ask(
+            "a move against the load torque (the motor drives) or with it (the load drives)",
+            label="direction",
+            step=STEP,
+        ),
+    ] = "against"
+    torque_Nm: Annotated[
+        float | None,
+        _num(
+            ge=0,
+            le=1e6,
+            desc="output load torque of the segment, N·m; default rotary.torque_Nm",
+            label="load torque",
+            step=STEP,
+        ),
+    ] = None
+
+    @model_validator(mode="after")
+    def _move_has_angle(self) -> "RotarySegmentReq":
+        if self.kind == "move" and self.angle_deg is None:
+            raise ValueError("duty.segments: a move needs angle_deg (its angle at the output)")
+        return self
+
+
+class LoadShareReq(_Strict):
+    load_share: Annotated[
+        float,
+        _num(ge=0, le=10, desc="load as a share of the rated load", label="load share", step=STEP),
+    ]
+    time_share: Annotated[
+        float,
+        _num(gt=0, le=1, desc="share of the time at that load", label="time share", step=STEP),
+    ]
+
+
+DutyType = Literal["S1", "S2", "S3", "S4", "S5", "S6", "S7", "S8", "S9", "S10"]
+
+
+class _CycleDuty(_Strict):
+    duty_type: Annotated[
+        DutyType | None,
+        ask(
+            "IEC 60034-1 duty type S1…S10 instead of segments",
+            label="IEC duty type",
+            step=STEP,
+            example="S3",
+        ),
+    ] = None
+    cycles_per_hour: Annotated[
+        float | None,
+        _num(
+            gt=0,
+            le=36000,
+            desc="how often the segments repeat, 1/h",
+            label="Cycles per hour",
+            step=STEP,
+        ),
+    ] = None
+    cyclic_duration_factor: Annotated[
+        float | None,
+        _num(
+            gt=0,
+            le=1,
+            desc="share of the cycle under load (S3–S6), e.g. 0.4",
+            label="Cyclic duration factor",
+            step=STEP,
+        ),
+    ] = None
+    starts_per_hour: Annotated[
+        float | None,
+        _num(
+            gt=0, le=36000, desc="starts per hour (S4, S5, S7)", label="Starts per hour", step=STEP
+        ),
+    ] = None
+    duration_min: Annotated[
+        float | None,
+        _num(
+            gt=0,
+            le=1e4,
+            desc="time under load of an S2 duty, min",
+            label="S2 time under load",
+            unit="min",
+            step=STEP,
+        ),
+    ] = None
+    cycle_time_s: Annotated[
+        float,
+        _num(
+            gt=0,
+            le=1e6,
+            desc="cycle time of an S3–S6 duty, s (IEC: 10 min)",
+            label="Cycle time (S3, S6, S9, S10)",
+            step=STEP,
+        ),
+    ] = 600.0
+    loads: Annotated[
+        list[LoadShareReq],
+        ask("S9, S10: the loads as shares of the rated load with their time shares", max_length=20),
+    ] = []  # noqa: RUF012 - pydantic copies field defaults
+
+    @model_validator(mode="after")
+    def _one_form(self):
+        segs = getattr(self, "segments", [])
+        t = self.duty_type
+        if t is None and not segs:
+            raise ValueError("duty: give segments (move, dwell, hold) or a duty_type (S1…S10)")
+        if t is not None and segs:
+            raise ValueError("duty: give either segments or duty_type, not both")
+        if segs:
+            if self.cycles_per_hour is None:
+                raise ValueError("duty.cycles_per_hour: missing; required with segments")
+            total = sum(s.time_s for s in segs)
+            if total > 3600.0 / self.cycles_per_hour * (1 + 1e-9):
+                raise ValueError(
+                    f"duty: the segments take {total:g} s, longer than the cycle of "
+                    f"3600/{self.cycles_per_hour:g} = {3600.0 / self.cycles_per_hour:.4g} s"
+                )
+            if not any(s.kind == "move" for s in segs):
+                raise ValueError("duty.segments: the cycle needs at least one move")
+            return self
+        need = {
+            "S2": ["duration_min"],
+            "S3": ["cyclic_duration_factor"],
+            "S4": ["cyclic_duration_factor", "starts_per_hour"],
+            "S5": ["cyclic_duration_factor", "starts_per_hour"],
+            "S6": ["cyclic_duration_factor"],
+            "S7": ["starts_per_hour"],
+            "S9": ["loads"],
+            "S10": ["loads"],
+        }.get(t, [])
+        for key in need:
+            if not getattr(self, key):
+                raise ValueError(f"duty.{key}: missing; required for duty_type = {t!r}")
+        if t == "S8":
+            raise ValueError(
+                "duty.duty_type = 'S8': S8 is the duty of a pole-changing motor with related "
+                "load and speed changes; give the cycle as segments instead"
+            )
+        if t in ("S9", "S10") and abs(sum(x.time_share for x in self.loads) - 1.0) > 1e-6:
+            raise ValueError(
+                f"duty.loads: the time shares add up to "
+                f"{sum(x.time_share for x in self.loads):g}; they must add up to 1"
+            )
+        return self
+
+
+class LinearDutyReq(_CycleDuty):
+    segments: Annotated[
+        list[LinearSegmentReq],
+        ask(
+            "the cycle: moves, dwells and holds in order",
+            max_length=100,
+            extra={"row-label": "Segment"},
+        ),
+    ] = []  # noqa: RUF012 - pydantic copies field defaults
+    moving_mass_kg: Annotated[
+        float, _num(ge=0, le=1e6, desc="mass the nut moves, kg", label="Moving mass", step=STEP)
+    ] = 0.0
+    standstill_cooling_factor: Annotated[
+        float,
+        _num(
+            gt=0,
+            le=1,
+            desc="β0: cooling of the self-ventilated motor at standstill against at speed",
+            label="Cooling at standstill β0",
+            step=STEP,
+        ),
+    ] = 0.5
+
+
+class RotaryDutyReq(_CycleDuty):
+    segments: Annotated[
+        list[RotarySegmentReq],
+        ask(
+            "the cycle: moves, dwells and holds in order",
+            max_length=100,
+            extra={"row-label": "Segment"},
+        ),
+    ] = []  # noqa: RUF012 - pydantic copies field defaults
+    load_inertia_kgm2: Annotated[
+        float,
+        _num(
+            ge=0,
+            le=1e7,
+            desc="inertia of the load at the output, kg·m²",
+            label="Load inertia",
+            step=STEP,
+        ),
+    ] = 0.0
+    motor_inertia_kgm2: Annotated[
+        float,
+        _num(
+            gt=0, le=1e3, desc="rotor inertia of the motor, kg·m²", label="Motor inertia", step=STEP
+        ),
+    ]
+    thermal_time_constant_s: Annotated[
+        float,
+        _num(
+            gt=0,
+            le=1e5,
+            desc="thermal time constant of the motor, s",
+            label="Thermal time constant",
+            step=STEP,
+        ),
+    ]
+    peak_torque_factor: Annotated[
+        float,
+        _num(
+            ge=1,
+            le=10,
+            desc="peak torque the motor and drive give, as a multiple of the torque at the "
+            "frame's loss limit (servo catalogs: about 3)",
+            label="Peak/continuous torque",
+            step=STEP,
+        ),
+    ] = 3.0

@@ -1,0 +1,353 @@
+"""The rotary actuator's duty (issue 15): the PM brushless motor and its wave-gear reducer
+through a cycle of moves, dwells and holds, or an IEC 60034-1 duty type.
+
+Per phase, the torque the output needs is M_out = J_L·ε_out ± M_L (the load torque against
+or with the motion); at the motor it is M_out/(q·η) while the motor drives (M_out > 0) and
+M_out·η/q when the load drives back (M_out < 0: braking the load's inertia, a load that
+helps), plus J_M·ε_m (:mod:`advisor.calc.duty`, the reflection convention; the back-driven
+efficiency of the wave gear is taken equal to its forward one). Holding at standstill asks
+M_L·η/q (friction helps the motor hold), nothing where a one-way device holds.
+
+Thermal: the cycle-averaged losses (copper from each phase's torque, so from the RMS torque;
+iron and magnets from the speed profile, averaged over each ramp by Simpson's rule) against
+the frame's limit, the same limit as the point check (:mod:`advisor.applications.rotary.motor`).
+A first-order model, ΔT' = (P − ΔT/R)/C with τ = R·C stated in the requirement and R set so
+the limit losses give the insulation class F rise of 105 K (IEC 60034-1, table of limits of
+temperature rise, class 155 (F) by resistance), shows the rise over repeated cycles.
+"""
+
+import math
+
+from advisor.calc import duty as du
+from advisor.calc.sizing import Check
+from advisor.core.errors import InfeasibleError
+from advisor.core.rulebook import Trace
+from advisor.duty.report import DutyOut, ThermalOut, phases_out
+from rules import duty as du_rules
+
+RPM = 30.0 / math.pi
+#: IEC 60034-1: the limit of temperature rise of class 155 (F) insulation, by resistance.
+CLASS_F_RISE_K = 105.0
+
+
+class Frame:
+    """The frame wound for one speed: its losses at a torque and a speed."""
+
+    def __init__(self, ref, iron_at, speed_rpm: float, limit_W: float) -> None:
+        from advisor.applications.rotary import motor as bm
+
+        self.ref, self.iron_at, self.speed_rpm, self.limit_W = ref, iron_at, speed_rpm, limit_W
+        self._losses_at = bm.losses_at
+        self.ohmic_ref = ref.conducting_phases * ref.phase_resistance_ohm * ref.current_A**2
+
+    def core(self, rpm: float) -> float:
+        """Iron and magnet losses at a speed (0 at standstill)."""
+        if rpm <= 0:
+            return 0.0
+        return self._losses_at(self.ref, self.iron_at(rpm), rpm, 0.0)["total"]
+
+    def copper(self, torque: float) -> float:
+        return self.ohmic_ref * (torque / self.ref.torque_Nm) ** 2
+
+    def phase_losses(self, p: du.Phase) -> tuple[float, float]:
+        """(copper, iron + magnets) mean over a phase; a ramp by Simpson's rule on 5 points."""
+        a, b = abs(p.speed_start_rad_s) * RPM, abs(p.speed_end_rad_s) * RPM
+        if a == b:
+            core = self.core(a)
+        else:
+            pts = [self.core(a + (b - a) * k / 4.0) for k in range(5)]
+            core = (pts[0] + 4 * pts[1] + 2 * pts[2] + 4 * pts[3] + pts[4]) / 12.0
+        return self.copper(p.torque_Nm), core
+
+    def continuous_torque(self) -> float:
+        """The torque at which the losses at the frame's speed reach its limit."""
+        room = self.limit_W - self.core(self.speed_rpm)
+        return self.ref.torque_Nm * math.sqrt(room / self.ohmic_ref) if room > 0 else 0.0
+
+
+def _at_motor(m_out: float, q: float, eta: float) -> float:
+    return (
+        du.reflected_torque(m_out, q, eta, driving=True)
+        if m_out >= 0
+        else -(du.reflected_torque(-m_out, q, eta, driving=False))
+    )
+
+
+def _move_phases(
+    label: str, seg, load_Nm: float, j_load: float, j_motor: float, q: float, eta: float
+) -> list[du.Phase]:
+    """Accelerate, run, decelerate over the segment's angle in its time (output side)."""
+    theta = math.radians(seg.angle_deg)
+    if seg.profile == "triangular":
+        ta, tc = seg.time_s / 2.0, 0.0
+    else:
+        ta = seg.accel_fraction * seg.time_s
+        tc = seg.time_s - 2.0 * ta
+    w_out = theta / (ta + tc)
+    eps = w_out / ta
+    m_l = load_Nm if seg.direction == "against" else -load_Nm
+    w_m = w_out * q
+    out = []
+    for name, t, w0, w1, sign in (
+        ("accelerate", ta, 0.0, w_m, 1.0),
+        ("run", tc, w_m, w_m, 0.0),
+        ("decelerate", ta, w_m, 0.0, -1.0),
+    ):
+        if t <= 0:
+            continue
+        torque = _at_motor(j_load * eps * sign + m_l, q, eta) + j_motor * eps * q * sign
+        out.append(du.Phase(f"{label}: {name}", t, w0, w1, torque))
+    return out
+
+
+def cycle(req, q: float, eta: float, speed_rpm: float, frame: Frame, holder: bool):
+    """The phases of one cycle at the motor, and the problems found building it."""
+    duty, rot = req.duty, req.rotary
+    jl, jm = duty.load_inertia_kgm2, duty.motor_inertia_kgm2
+    phases: list[du.Phase] = []
+    problems: list[str] = []
+    w_max = speed_rpm / RPM
+    if duty.segments:
+        for n, seg in enumerate(duty.segments, 1):
+            load = rot.torque_Nm if seg.torque_Nm is None else seg.torque_Nm
+            label = f"{n} {seg.kind}"
+            if seg.kind == "move":
+                ph = _move_phases(label, seg, load, jl, jm, q, eta)
+                top = max(p.speed_end_rad_s for p in ph)
+                if top > w_max * (1 + 1e-9):
+                    problems.append(
+                        f"segment {n}: {seg.angle_deg:g}° in {seg.time_s:g} s needs "
+                        f"{top * RPM:.0f} rpm at the motor (q = {q:.4g}), above its "
+                        f"{speed_rpm:g} rpm"
+                    )
+                phases += ph
+            elif seg.kind == "hold" and not holder:
+                phases.append(du.Phase(label, seg.time_s, 0.0, 0.0, load * eta / q))
+            else:
+                phases.append(du.Phase(label, seg.time_s, 0.0, 0.0, 0.0))
+        rest = 3600.0 / duty.cycles_per_hour - sum(s.time_s for s in duty.segments)
+        if rest > 1e-9:
+            phases.append(du.Phase("rest", rest, 0.0, 0.0, 0.0))
+        return phases, problems
+    # an IEC duty type at the rated point: the output torque at the output speed
+    t = duty.duty_type
+    w = w_max
+    run_torque = rot.torque_Nm / (q * eta)
+    cdf = duty.cyclic_duration_factor or 1.0
+    period = 3600.0 / duty.starts_per_hour if t in ("S4", "S5", "S7") else duty.cycle_time_s
+    on = cdf * period if t != "S7" else period
+    if t in ("S1", "S2"):
+        return [du.Phase("run", period, w, w, run_torque)], problems
+    if t == "S3":
+        return [du.Phase("run", on, w, w, run_torque), du.Phase("rest", period - on, 0, 0, 0)], []
+    if t == "S6":
+        return [
+            du.Phase("run", on, w, w, run_torque),
+            du.Phase("no load", period - on, w, w, 0),
+        ], []
+    if t in ("S4", "S5", "S7"):
+        peak = duty.peak_torque_factor * frame.continuous_torque()
+        j = jm + jl / (q * q * eta)
+        ta = j * w / (peak - run_torque) if peak > run_torque else math.inf
+        tb = (jm + jl * eta / (q * q)) * w / (peak + run_torque) if t != "S4" else 0.0
+        if ta + tb > on:
+            problems.append(
+                f"{t}: starting at the peak torque {peak:.3g} N·m takes {ta:.3g} s, braking "
+                f"{tb:.3g} s: more than the time under load, {on:.4g} s"
+            )
+            return [], problems
+        out = [du.Phase("start", ta, 0.0, w, peak), du.Phase("run", on - ta - tb, w, w, run_torque)]
+        if tb:
+            out.append(du.Phase("electric brake", tb, w, 0.0, -peak))
+        if period > on:
+            out.append(du.Phase("rest", period - on, 0.0, 0.0, 0.0))
+        return out, problems
+    return [
+        du.Phase(f"load {k}", x.time_share * period, w, w, x.load_share * run_torque)
+        for k, x in enumerate(duty.loads, 1)
+    ], problems
+
+
+def evaluate(req, q: float, eta: float, speed_rpm: float, frame: Frame, holder: bool) -> dict:
+    phases, problems = cycle(req, q, eta, speed_rpm, frame, holder)
+    if not phases:
+        return {"phases": [], "problems": problems}
+    t = du.cycle_time(phases)
+    parts = [(frame.phase_losses(p), p.time_s) for p in phases]
+    copper = sum(c * dt for (c, _), dt in parts) / t
+    core = sum(k * dt for (_, k), dt in parts) / t
+    total = copper + core
+    peak = du.peak_torque(phases)
+    peak_limit = req.duty.peak_torque_factor * frame.continuous_torque()
+    if total > frame.limit_W * (1 + 1e-9):
+        problems.append(
+            f"{speed_rpm:g} rpm: cycle-averaged losses {total:.4g} W (copper {copper:.4g}, "
+            f"iron and magnets {core:.4g}) above the frame's limit {frame.limit_W:.4g} W"
+        )
+    if peak > peak_limit * (1 + 1e-9):
+        problems.append(
+            f"{speed_rpm:g} rpm: peak torque {peak:.4g} N·m above {peak_limit:.4g} N·m "
+            f"({req.duty.peak_torque_factor:g} × the continuous {frame.continuous_torque():.4g})"
+        )
+    return {
+        "phases": phases,
+        "problems": problems,
+        "copper": copper,
+        "core": core,
+        "total": total,
+        "peak": peak,
+        "peak_limit": peak_limit,
+        "losses": [(sum(frame.phase_losses(p)), p.time_s) for p in phases],
+    }
+
+
+def passing_speeds(req, cands: list[dict], frame_for, holder: bool, limit_W: float) -> list[dict]:
+    """The candidate speeds whose motor passes the cycle with its rule reducer (and the point
+    check); exit 3 with the numbers when none does."""
+    ok, reasons = [], []
+    for c in cands:
+        if c["losses"]["total"] > limit_W * (1 + 1e-9):
+            continue
+        e = evaluate(req, c["q_total"], c["eta"], c["speed_rpm"], frame_for(c["speed_rpm"]), holder)
+        if e["problems"]:
+            reasons += e["problems"]
+        else:
+            ok.append(c)
+    if not ok:
+        raise InfeasibleError(
+            "no feasible design: no candidate motor speed passes the duty cycle",
+            [
+                *reasons,
+                "give a larger frame in [motor.reference], motor.max_losses_W for a better "
+                "cooling, or a lighter cycle",
+            ],
+        )
+    return ok
+
+
+def advise_duty(
+    req, q: float, eta: float, speed_rpm: float, frame: Frame, holder: bool, trace: Trace
+):
+    """The duty of the adopted design: the table, the checks and the warnings."""
+    duty = req.duty
+    e = evaluate(req, q, eta, speed_rpm, frame, holder)
+    if e["problems"]:
+        raise InfeasibleError(
+            "no feasible design: the adopted drive fails the duty cycle", e["problems"]
+        )
+    phases = e["phases"]
+    if duty.duty_type:
+        trace.apply(
+            du_rules.duty_type,
+            duty.duty_type,
+            du.IEC_DUTY_TYPES[duty.duty_type],
+            "At the rated point (rotary.torque_Nm at rotary.speed_rpm); S2 taken as S1; S4, "
+            "S5 and S7 start (and brake) at the peak torque; S9, S10 as shares of the rated "
+            "output torque.",
+        )
+    t_cycle = du.cycle_time(phases)
+    util = e["total"] / frame.limit_W
+    rms = du.rms_torque(phases)
+    trace.apply(
+        du_rules.thermal,
+        util,
+        f"Cycle-averaged losses {e['total']:.4g} W (copper {e['copper']:.4g} W from the "
+        f"phases' torques, i.e. from the RMS torque {rms:.4g} N·m; iron and magnets "
+        f"{e['core']:.4g} W from the speed profile) against the frame's limit "
+        f"{frame.limit_W:.4g} W, the limit of the point check.",
+    )
+    trace.apply(
+        du_rules.peak,
+        e["peak"],
+        e["peak_limit"],
+        f"The largest motor torque of the cycle against {duty.peak_torque_factor:g} × the "
+        f"continuous torque of the frame at {speed_rpm:g} rpm, "
+        f"{frame.continuous_torque():.4g} N·m (duty.peak_torque_factor).",
+    )
+    ir = duty.load_inertia_kgm2 / (q * q * eta) / duty.motor_inertia_kgm2
+    within = trace.apply(du_rules.inertia_ratio, ir)
+    warnings = []
+    if not within:
+        warnings.append(
+            f"duty: the load's inertia at the motor is {ir:.3g} times the motor's (guideline "
+            f"{du_rules.INERTIA_RATIO_GUIDELINE:g})"
+        )
+    # first-order thermal model over repeated cycles, R from the limit and class F
+    tau = duty.thermal_time_constant_s
+    r_th = CLASS_F_RISE_K / frame.limit_W
+    n = max(1, min(2000, math.ceil(5.0 * tau / t_cycle)))
+    hist = du.thermal_rise(e["losses"], r_th, tau, n)
+    step = max(1, len(hist) // 400)
+    hist = hist[::step] + ([hist[-1]] if (len(hist) - 1) % step else [])
+    peak_rise = du.periodic_peak_rise(e["losses"], r_th, tau)
+    if peak_rise > CLASS_F_RISE_K * (1 + 1e-9):
+        warnings.append(
+            f"duty: within a cycle the winding peaks at {peak_rise:.4g} K rise (first-order "
+            f"model, τ = {tau:g} s), above the {CLASS_F_RISE_K:g} K of class F, although the "
+            "cycle's mean losses pass: the cycle is long against the motor's time constant"
+        )
+    out_J, back_J = du.energies(phases)
+    checks = [
+        Check(
+            "duty_losses",
+            "cycle-averaged losses of the motor within the frame's limit",
+            e["total"],
+            frame.limit_W,
+            "W",
+            frame.limit_W / e["total"] if e["total"] > 0 else math.inf,
+            "issue 15; seed 000 eqs. (4), (5), (9); the frame's limit of the point check",
+        ),
+        Check(
+            "duty_peak_torque",
+            "peak motor torque of the cycle within the peak the motor gives",
+            e["peak"],
+            e["peak_limit"],
+            "N·m",
+            e["peak_limit"] / e["peak"] if e["peak"] > 0 else math.inf,
+            "issue 15; duty.peak_torque_factor",
+        ),
+    ]
+    out = DutyOut.make(
+        motor=f"{speed_rpm:g} rpm",
+        ratio=q,
+        cycle_time_s=t_cycle,
+        move_time_s=sum(p.time_s for p in phases if p.speed_start_rad_s or p.speed_end_rad_s),
+        peak_torque_Nm=e["peak"],
+        peak_torque_limit_Nm=e["peak_limit"],
+        rms_torque_Nm=rms,
+        thermal_utilisation=util,
+        thermal_basis="cycle-averaged losses over the frame's limit",
+        inertia_ratio=ir,
+        inertia_ratio_guideline=du_rules.INERTIA_RATIO_GUIDELINE,
+        energy_per_cycle_J=out_J,
+        regenerated_per_cycle_J=back_J,
+        mean_speed_rpm=du.mean_speed(phases) * RPM,
+        cycles_per_hour=3600.0 / t_cycle,
+        duty_type=duty.duty_type or "cycle",
+        losses_W={"copper": e["copper"], "iron_and_magnets": e["core"], "total": e["total"]},
+        loss_limit_W=frame.limit_W,
+        thermal=ThermalOut.make(
+            time_constant_s=tau,
+            time_constant_basis="duty.thermal_time_constant_s (the requirement)",
+            resistance_K_W=r_th,
+            steady_rise_K=e["total"] * r_th,
+            peak_rise_K=peak_rise,
+            limit_rise_K=CLASS_F_RISE_K,
+            time_s=[h[0] for h in hist],
+            rise_K=[h[1] for h in hist],
+        ),
+        phases=phases_out(phases),
+    )
+    return out, checks, warnings
+
+
+def frames(ref, steel, steel_mass: float, terms, limit_W: float):
+    """rpm -> the Frame wound for that speed, with the iron loss model of the point check."""
+    from advisor.applications.rotary import motor as bm
+    from advisor.calc import bldc
+
+    def iron_at(rpm: float) -> float:
+        f = bldc.flux_frequency_Hz(rpm, ref.pole_pairs)
+        return steel_mass * bm.specific_iron_loss(ref, steel, terms, f)[0]
+
+    return lambda rpm: Frame(ref, iron_at, rpm, limit_W)

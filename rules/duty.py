@@ -1,0 +1,116 @@
+"""Rules of a duty cycle (issue 15): the motor and ratio for the cycle, the thermal verdict,
+the inertia ratio against its guideline, the starts an induction motor allows."""
+
+from advisor.core.rulebook import Finding, rule
+
+IEC_60034_1 = "IEC 60034-1 (GOST IEC 60034-1-2014), duty types S1–S10"
+KLYUCHEV = "Klyuchev, «Теория электропривода»: method of equivalent torque"
+INERTIA_GUIDE = (
+    "servo sizing practice: load/motor inertia ≤ 10 for a standard axis, ≤ 5 for high "
+    "precision (e.g. autoengcalc.in servo load calculator; KEB, 'Sizing servo motors', 2023)"
+)
+#: The guideline of servo practice for the reflected load over the motor's inertia.
+INERTIA_RATIO_GUIDELINE = 10.0
+
+
+@rule("DU-01", "Motor and ratio for the cycle", "issue 15; seed 003 (the move)")
+def motor_for_cycle(rows: dict[str, tuple[float, float, bool, str]]) -> Finding[str]:
+    """rows: name -> (move time, ratio, passes the cycle, why not)."""
+    ok = {n: r for n, r in rows.items() if r[2]}
+    best = min(ok, key=lambda n: ok[n][0])
+    ranked = sorted(rows.items(), key=lambda kv: kv[1][0])
+    shown = ranked[:5] + [kv for kv in ranked[5:] if not kv[1][2]][:3]
+    table = "; ".join(
+        f"{n}: {r[0]:.4g} s at i = {r[1]:.4g}" + ("" if r[2] else f" ({r[3]})") for n, r in shown
+    )
+    if len(ranked) > len(shown):
+        table += f"; and {len(ranked) - len(shown)} more motors"
+    return Finding(
+        best,
+        f"Motor {best} at i = {ok[best][1]:.4g}: the fastest move whose motor passes the cycle.",
+        "Each motor's move is the fastest of seed 003 at the ratio where its RMS torque over "
+        f"the cycle stays within its rated torque and the move fits in the cycle — {table}.",
+    )
+
+
+@rule("DU-08", "Induction motor for the cycle", "issue 15; " + IEC_60034_1)
+def motor_for_cycle_linear(
+    rows: dict[str, tuple[float, list[str]]], point_motor: str, inertia_basis: str
+) -> Finding[str]:
+    """rows: model -> (rated power, problems), smallest first from the point's motor."""
+    best = next(n for n, (_, problems) in rows.items() if not problems)
+    tried = "; ".join(
+        f"{n} ({p:g} kW): " + ("passes" if not pr else ", ".join(pr))
+        for n, (p, pr) in rows.items()
+        if n == best or pr
+    )
+    return Finding(
+        best,
+        f"Motor {best} for the cycle"
+        + (" (the rated point's motor)." if best == point_motor else f", not {point_motor}."),
+        "The smallest motor of the rated point's pole count, from the point's motor up, whose "
+        "equivalent torque, starts per hour and starting torque pass the cycle — "
+        f"{tried}. Load inertia at the motor: {inertia_basis}.",
+    )
+
+
+@rule("DU-02", "Ratio of least RMS torque", "issue 15; seed 003 (phase torques)")
+def least_rms_ratio(
+    motor: str, ratio: float, rms_Nm: float, chosen: float, chosen_rms_Nm: float
+) -> Finding[float]:
+    return Finding(
+        ratio,
+        f"{motor}: i = {ratio:.4g} gives the least RMS torque, {rms_Nm:.4g} N·m "
+        f"(at the chosen i = {chosen:.4g}: {chosen_rms_Nm:.4g} N·m).",
+        "RMS² = (M_λ²·(t_acc + t_brake) + (M_p/i)²·t_run)/T: a larger ratio lowers the "
+        "running torque M_p/i, and past the inertia match the transients tend to 2·ω0·J0/M_λ, "
+        "while the move lengthens; the least RMS often lies where the move fills the whole "
+        "cycle. That ratio runs coolest, the chosen one moves fastest.",
+    )
+
+
+@rule("DU-03", "Inertia ratio", INERTIA_GUIDE)
+def inertia_ratio(ratio: float, guideline: float = INERTIA_RATIO_GUIDELINE) -> Finding[bool]:
+    within = ratio <= guideline
+    return Finding(
+        within,
+        f"Load/motor inertia at the motor {ratio:.3g} "
+        + ("within" if within else "above")
+        + f" the guideline of {guideline:g}.",
+        "The load's inertia reflected to the motor (J_load/q², through η where the drive has "
+        "one) over the motor's: above about 10 a stiff, well-tuned control loop gets hard; it "
+        "is a rule of practice, not a limit of physics, so it warns and does not refuse.",
+        {"inertia_ratio": ratio, "guideline": guideline},
+    )
+
+
+@rule("DU-04", "Thermal verdict of the cycle", KLYUCHEV + "; " + IEC_60034_1)
+def thermal(utilisation: float, basis: str) -> Finding[float]:
+    return Finding(
+        utilisation,
+        f"Thermal utilisation {utilisation:.3g} ({'passes' if utilisation <= 1 else 'fails'}).",
+        basis,
+    )
+
+
+@rule("DU-05", "Peak torque of the cycle", "issue 15; seed 003")
+def peak(peak_Nm: float, limit_Nm: float, basis: str) -> Finding[float]:
+    return Finding(
+        peak_Nm,
+        f"Peak torque {peak_Nm:.4g} N·m against {limit_Nm:.4g} N·m.",
+        basis,
+    )
+
+
+@rule("DU-06", "Starts per hour", IEC_60034_1 + " (S4, S5: inertia factor FI)")
+def starts(required: float, allowed: float, basis: str) -> Finding[bool]:
+    return Finding(
+        required <= allowed,
+        f"{required:.4g} starts/h against {allowed:.4g} allowed.",
+        basis,
+    )
+
+
+@rule("DU-07", "The duty as a cycle", IEC_60034_1)
+def duty_type(name: str, description: str, how: str) -> Finding[str]:
+    return Finding(name, f"Duty {name}: {description}.", how)
