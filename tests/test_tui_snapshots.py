@@ -43,9 +43,9 @@ async def _compute(pilot) -> None:
     app = pilot.app
     start = app.results_version
     await pilot.press("ctrl+r")
-    for _ in range(500):
+    for _ in range(3000):  # a loaded machine can take seconds for the first compute
         await pilot.pause(0.02)
-        if app.results_version > start:
+        if app.results_version > start and not app.computing:
             break
     await pilot.pause()
 
