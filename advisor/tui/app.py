@@ -584,8 +584,8 @@ class DriveAdvisorApp(App[None]):
         error (what is computed is exactly what the fields show). ``quiet``: an empty field
         says nothing yet (a new requirement is not all "required")."""
         value, err = F.parse_text(f, text)
-        if quiet and not text.strip():
-            err = None
+        if not text.strip():  # empty: the engine says whether it is required (its table may
+            err = None  # be optional, as a duty cycle is) and marks the field if so
         F.put(self.doc, f.path, value if err is None else None)
         if err is None:
             self.field_errors.pop(f.id, None)
