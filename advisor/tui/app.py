@@ -587,12 +587,13 @@ class DriveAdvisorApp(App[None]):
         if not text.strip():  # empty: the engine says whether it is required (its table may
             err = None  # be optional, as a duty cycle is) and marks the field if so
         F.put(self.doc, f.path, value if err is None else None)
-        if err is None:
-            self.field_errors.pop(f.id, None)
-        else:
+        was = self.field_errors.pop(f.id, None)
+        if err is not None:
             self.field_errors[f.id] = err
         label = self.query(f"#{f.id}-err")
-        if label:
+        # an empty field keeps what the engine said of it ("missing; required"), unless it
+        # showed an error of its own text
+        if label and (err is not None or text.strip() or was is not None):
             label.first(Label).update(plain(err or ""))
         return err
 
