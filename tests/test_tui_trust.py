@@ -281,9 +281,7 @@ async def test_step_names_fit_the_application_and_no_step_is_empty():
         assert "Aerodynamic drag" in bar or "3" in bar
         await pilot.press("ctrl+n", "ctrl+n")
         assert "Aerodynamic drag" in _text(app.query_one("#steps", Static))
-        assert "5 Review" in _text(app.query_one("#steps", Static)) or "› 5" in _text(
-            app.query_one("#steps", Static)
-        )
+        assert "Review" in _text(app.query_one("#steps", Static))  # named even at 80
     app = DriveAdvisorApp(
         tomllib.loads((EXAMPLES / "positioning_drive.toml").read_text()), save_drafts=False
     )
@@ -291,8 +289,7 @@ async def test_step_names_fit_the_application_and_no_step_is_empty():
         await pilot.press("ctrl+n", "ctrl+n")
         assert app.step == 3  # step 2 has no question for a positioning drive: skipped
         assert "Candidate motors" in _text(app.query_one("#steps", Static))
-        await pilot.press("ctrl+n")
-        assert "4 Review" in _text(app.query_one("#steps", Static))
+        assert "Review" in _text(app.query_one("#steps", Static))
 
 
 async def test_export_dialog_path_has_focus_enter_saves_and_keep_keeps_the_path(tmp_path):
