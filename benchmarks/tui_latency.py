@@ -1,49 +1,162 @@
-"""TUI recompute latency: from the key (ctrl+r after an edit) to the updated results, through
-textual's Pilot, for each example. Medians over repeated edits."""
+"""The wizard's latency as a user sees it: in a real pseudo-terminal, from the keystroke
+written to the terminal to the screen painted back. Nothing of textual's test harness is in
+the loop: the wizard runs as ``python -m advisor EXAMPLE`` on the slave side of a pty (as in
+a terminal emulator), keys are written to the master side and the painted output is read
+from it until the text that only the new screen shows has arrived.
 
-import asyncio
+Per example:
+
+- **first screen**: from starting the process to the first step painted;
+- **first compute**: ctrl+r on that first screen to the results painted (cold: the
+  application's modules, catalogs and the engine are loaded on that key);
+- **recompute**: an edit (a new title), then ctrl+r to the results painted, the median and
+  the maximum over repeats.
+
+Goals (issue 14): first screen ≤ 0.5 s; keystroke → results painted ≤ 100 ms, the first
+compute included.
+"""
+
+import fcntl
 import os
+import pty
+import re
+import select
 import statistics
+import struct
+import sys
 import tempfile
+import termios
 import time
-import tomllib
+from pathlib import Path
 
 from _results import examples
 
+COLS, ROWS = 120, 40
+ANSI = re.compile(rb"\x1b\[[0-9;?<>=]*[ -/]*[@-~]|\x1b[()][0-9A-Za-z]|\x1b[=>78]|\x1b\].*?\x07")
+TIMEOUT_S = 60.0
 
-async def _one(example, repeats: int) -> dict:
-    from textual.widgets import Input
 
-    from advisor.tui.app import DriveAdvisorApp
+class Terminal:
+    """The wizard on the slave side of a pseudo-terminal of COLS × ROWS."""
 
-    app = DriveAdvisorApp(
-        tomllib.loads(example.read_text(encoding="utf-8")),
-        example,
-        save_drafts=False,
-        offer_draft=False,
-    )
-    times = []
-    async with app.run_test(size=(120, 40)) as pilot:
-        for k in range(repeats + 1):
-            # an edit: the title changes (the engine recomputes everything from the inputs)
-            app.query_one("#f-application-title", Input).value = f"what-if {k}"
-            await pilot.pause()
-            start, seen = time.perf_counter(), app.results_version
-            await pilot.press("ctrl+r")
-            while app.results_version == seen:
-                await asyncio.sleep(0.001)
-            await pilot.pause()  # the results are on screen
-            if k:  # the first one warms the caches
-                times.append(time.perf_counter() - start)
-    return {"median_ms": 1e3 * statistics.median(times), "max_ms": 1e3 * max(times)}
+    def __init__(self, example: Path, state_dir: str) -> None:
+        env = {
+            **os.environ,
+            "TERM": "xterm-256color",
+            "COLUMNS": str(COLS),
+            "LINES": str(ROWS),
+            "XDG_STATE_HOME": state_dir,
+            "TEXTUAL_ANIMATIONS": "none",
+        }
+        self.started = time.perf_counter()
+        pid, fd = pty.fork()
+        if pid == 0:  # the child: the wizard, its terminal sized before it starts
+            fcntl.ioctl(0, termios.TIOCSWINSZ, struct.pack("HHHH", ROWS, COLS, 0, 0))
+            os.execve(sys.executable, [sys.executable, "-m", "advisor", str(example)], env)
+        self.pid, self.fd = pid, fd
+        self.seen = b""
+
+    def _read(self, until: float) -> None:
+        while time.perf_counter() < until:
+            ready, _, _ = select.select([self.fd], [], [], max(0.0, until - time.perf_counter()))
+            if not ready:
+                return
+            try:
+                chunk = os.read(self.fd, 65536)
+            except OSError:
+                return
+            if not chunk:
+                return
+            self.seen += chunk
+            return
+
+    def wait_for(self, text: str) -> float:
+        """Read until ``text`` is painted; the time it arrived (perf_counter)."""
+        want = text.encode()
+        end = time.perf_counter() + TIMEOUT_S
+        while time.perf_counter() < end:
+            if want in ANSI.sub(b"", self.seen):
+                return time.perf_counter()
+            self._read(end)
+        raise TimeoutError(f"{text!r} was never painted")
+
+    def drain(self, quiet_s: float = 0.3) -> None:
+        """Read until the screen has been still for ``quiet_s``; forget what was read."""
+        while True:
+            before = len(self.seen)
+            self._read(time.perf_counter() + quiet_s)
+            if len(self.seen) == before:
+                break
+        self.seen = b""
+
+    def send(self, keys: str) -> float:
+        """Write keys as a terminal would; the time they were written."""
+        self.seen = b""
+        t = time.perf_counter()
+        os.write(self.fd, keys.encode())
+        return t
+
+    def close(self) -> None:
+        try:
+            os.write(self.fd, b"\x11")  # ctrl+q
+            time.sleep(0.3)
+        except OSError:
+            pass
+        try:
+            os.kill(self.pid, 9)
+        except ProcessLookupError:
+            pass
+        os.waitpid(self.pid, 0)
+        os.close(self.fd)
+
+
+CTRL_R, CTRL_E, TAB = "\x12", "\x05", "\t"
+
+
+def measure(example: Path, repeats: int) -> dict:
+    with tempfile.TemporaryDirectory() as state:
+        term = Terminal(example, state)
+        try:
+            first_screen = term.wait_for("What must the drive do?") - term.started
+            term.drain()
+            t = term.send(CTRL_R)
+            first_compute = term.wait_for("status: ") - t
+            times = []
+            for k in range(repeats):
+                term.drain()
+                # back to the inputs (step 1: the kind has the focus), tab to the title,
+                # type a new one (the box selects its text on focus: typing replaces it)
+                title = f"what-if {k:03d}"
+                term.send(CTRL_E)
+                term.wait_for("What must the drive do?")
+                term.drain()
+                term.send(TAB)
+                term.drain()
+                term.send(title)
+                term.wait_for(title)
+                term.drain()
+                t = term.send(CTRL_R)
+                times.append(term.wait_for(title) - t)
+        finally:
+            term.close()
+    return {
+        "first_screen_ms": 1e3 * first_screen,
+        "first_compute_ms": 1e3 * first_compute,
+        "median_ms": 1e3 * statistics.median(times),
+        "max_ms": 1e3 * max(times),
+    }
 
 
 def tui_latency(repeats: int) -> dict:
-    with tempfile.TemporaryDirectory() as tmp:
-        os.environ["XDG_STATE_HOME"] = tmp
-        return {ex.name: asyncio.run(_one(ex, repeats)) for ex in examples()}
+    return {ex.name: measure(ex, repeats) for ex in examples()}
 
 
 if __name__ == "__main__":
-    for name, r in tui_latency(10).items():
-        print(f"{name}: {r['median_ms']:.1f} ms median, {r['max_ms']:.1f} ms max")
+    print(f"load average before: {os.getloadavg()[0]:.2f}, {os.cpu_count()} CPUs")
+    for name, r in tui_latency(int(sys.argv[1]) if len(sys.argv) > 1 else 10).items():
+        print(
+            f"{name}: first screen {r['first_screen_ms']:.0f} ms, first compute "
+            f"{r['first_compute_ms']:.0f} ms, recompute {r['median_ms']:.0f} ms median "
+            f"({r['max_ms']:.0f} ms max)"
+        )
+    print(f"load average after: {os.getloadavg()[0]:.2f}")

@@ -29,7 +29,7 @@ def _info(model, path):
 
 
 def _label(app, f) -> str:
-    row = app.query_one(f"#{f.id}").parent.parent
+    row = next(a for a in app.query_one(f"#{f.id}").ancestors if a.has_class("field"))
     assert isinstance(row, Horizontal)
     return str(row.query_one("Label.name", Label).content)
 

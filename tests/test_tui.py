@@ -238,4 +238,5 @@ def test_each_application_has_its_plots():
     assert titles["rudder_actuator"][0] == "Motor losses against speed"
     assert "fig. 1" in titles["rudder_actuator"][1]
     assert titles["positioning_drive"] == ["Move time against ratio"]
-    assert titles["gyro_compensator"] == ["Run-up of the rotor"]
+    # the run-up (seconds) on its own axis, apart from a sustained slew (minutes)
+    assert titles["gyro_compensator"] == ["Run-up of the rotor", "Speed during a sustained slew"]

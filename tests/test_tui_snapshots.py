@@ -1,6 +1,8 @@
-"""Snapshots of the wizard (pytest-textual-snapshot): every step, the results of every
-example, an invalid input, the export dialog and the help screen, at 120×40, with nothing on
-screen that changes between runs (no clock, no blinking cursor, fixed paths).
+"""Snapshots of the wizard (pytest-textual-snapshot): every step of every application and
+the results of every example at 80×24 and at 120×40, the comparison view, an infeasible
+result, an invalid input, a file fixed inside the wizard, the export dialog and the help
+screen, with nothing on screen that changes between runs (no clock, no timing, no blinking
+cursor, fixed paths).
 
 Update after an intended change with ``pytest tests/test_tui_snapshots.py --snapshot-update``
 and review the SVGs in ``tests/__snapshots__``."""
@@ -14,6 +16,14 @@ from textual.widgets import Input
 from advisor.tui.app import DriveAdvisorApp
 
 SIZE = (120, 40)
+SIZES = {"80x24": (80, 24), "120x40": (120, 40)}
+#: One example per application (every step of each is shot).
+APPS = {
+    "linear": "linear_screw_actuator.toml",
+    "rotary": "valve_actuator_hold.toml",
+    "positioning": "positioning_drive.toml",
+    "spinning_rotor": "gyro_compensator.toml",
+}
 
 
 @pytest.fixture(autouse=True)
@@ -33,29 +43,74 @@ async def _compute(pilot) -> None:
     app = pilot.app
     start = app.results_version
     await pilot.press("ctrl+r")
-    for _ in range(500):
+    for _ in range(3000):  # a loaded machine can take seconds for the first compute
         await pilot.pause(0.02)
-        if app.results_version > start:
+        if app.results_version > start and not app.computing:
             break
     await pilot.pause()
 
 
-@pytest.mark.parametrize("steps", [0, 1, 2, 3, 4, 5])
-def test_wizard_step(snap_compare, steps):
+def _steps_of(kind: str) -> int:
+    from advisor.tui import fields as F
+
+    return len(F.steps_for(kind))
+
+
+@pytest.mark.parametrize("size", sorted(SIZES))
+@pytest.mark.parametrize(
+    "kind,step", [(k, s) for k in APPS for s in range(_steps_of(k))], ids=lambda v: str(v)
+)
+def test_wizard_step(snap_compare, kind, step, size):
+    assert snap_compare(_app(APPS[kind]), press=["ctrl+n"] * step, terminal_size=SIZES[size])
+
+
+@pytest.mark.parametrize("size", sorted(SIZES))
+@pytest.mark.parametrize("example", sorted(p.name for p in EXAMPLES.glob("*.toml")))
+def test_results(snap_compare, example, size):
+    assert snap_compare(_app(example), run_before=_compute, terminal_size=SIZES[size])
+
+
+@pytest.mark.parametrize("size", sorted(SIZES))
+@pytest.mark.parametrize("example", ["rudder_actuator.toml", "valve_actuator_hold.toml"])
+def test_compare_view(snap_compare, example, size):
+    async def run_before(pilot):
+        await _compute(pilot)
+        pilot.app.query_one("#result-tabs").active = "tab-compare"
+        await pilot.pause()
+
+    assert snap_compare(_app(example), run_before=run_before, terminal_size=SIZES[size])
+
+
+@pytest.mark.parametrize("size", sorted(SIZES))
+@pytest.mark.parametrize("tab", ["summary", "plot"])
+def test_infeasible_result(snap_compare, tab, size):
+    """After a feasible result, an infeasible one: no plot of the previous design stays."""
+
+    async def run_before(pilot):
+        await _compute(pilot)
+        pilot.app.query_one("#f-envelope-max-outer-diameter-mm", Input).value = "20"
+        await pilot.pause()
+        await _compute(pilot)
+        pilot.app.query_one("#result-tabs").active = f"tab-{tab}"
+        await pilot.pause()
+
     assert snap_compare(
-        _app("linear_screw_actuator.toml"), press=["ctrl+n"] * steps, terminal_size=SIZE
+        _app("valve_actuator_hold.toml"), run_before=run_before, terminal_size=SIZES[size]
     )
 
 
-@pytest.mark.parametrize("example", sorted(p.name for p in EXAMPLES.glob("*.toml")))
-def test_results(snap_compare, example):
-    assert snap_compare(_app(example), run_before=_compute, terminal_size=SIZE)
+def test_unknown_key_offers_a_rename(snap_compare):
+    src = EXAMPLES / "linear_screw_actuator.toml"
+    doc = tomllib.loads(src.read_text(encoding="utf-8"))
+    doc["linear"]["strok_m"] = doc["linear"].pop("stroke_m")
+    app = DriveAdvisorApp(doc, src, save_drafts=False, offer_draft=False)
+    assert snap_compare(app, press=["ctrl+n", "ctrl+n"], terminal_size=(80, 24))
 
 
 def test_components_of_the_valve(snap_compare):
     async def run_before(pilot):
         await _compute(pilot)
-        pilot.app.query_one("#results").active = "tab-components"
+        pilot.app.query_one("#result-tabs").active = "tab-components"
         await pilot.pause()
 
     assert snap_compare(_app("valve_actuator_hold.toml"), run_before=run_before, terminal_size=SIZE)

@@ -13,6 +13,7 @@ register(
         headline="advisor.applications.linear.report:headline",
         summary_rows="advisor.applications.linear.report:summary_rows",
         views="advisor.applications.linear.views",
+        steps=("Load and stroke", "Screw and holding", "Motor and friction", "Duty cycle"),
     )
 )
 register(
@@ -23,6 +24,7 @@ register(
         pipeline="advisor.applications.rotary.advice:advise_rotary",
         headline="advisor.applications.rotary.report:headline",
         views="advisor.applications.rotary.views",
+        steps=("Torque and speed", "Envelope and holding", "Motor and reducer", "Duty cycle"),
     )
 )
 register(
@@ -33,6 +35,7 @@ register(
         pipeline="advisor.applications.positioning.advice:advise_positioning",
         headline="advisor.applications.positioning.report:headline",
         views="advisor.applications.positioning.views",
+        steps=("Move and load", "", "Candidate motors", "Duty cycle"),
     )
 )
 register(
@@ -43,5 +46,6 @@ register(
         pipeline="advisor.applications.spinning_rotor.advice:advise_spinning_rotor",
         headline="advisor.applications.spinning_rotor.report:headline",
         views="advisor.applications.spinning_rotor.views",
+        steps=("Rotor and manoeuvre", "Aerodynamic drag", "Bearings", "Duty cycle"),
     )
 )

@@ -10,6 +10,9 @@ and listing the applications costs nothing. The four shipped applications are re
 from importlib import import_module
 from typing import Any, NamedTuple
 
+#: The wizard's asking steps (1 to 4) where an application names none of its own.
+DEFAULT_STEPS = ("Loads and motion", "Envelope and holding", "Motor preferences", "Duty cycle")
+
 
 class Application(NamedTuple):
     """One application: what the wizard lists, how its file is read, how it is advised and
@@ -23,6 +26,7 @@ class Application(NamedTuple):
     headline: Any  # "module:function" (report) -> the design in a few words
     summary_rows: Any = None  # "module:function" (report) -> [(name, text)] for -o
     views: Any = None  # "module" with components(report) and plots(report), for the wizard
+    steps: tuple[str, ...] = DEFAULT_STEPS  # the wizard's names of its asking steps, in order
 
 
 _APPLICATIONS: dict[str, Application] = {}

@@ -11,8 +11,9 @@ from pathlib import Path
 from typing import Any, ClassVar
 
 import tomli_w
+from rich.markup import escape
 from rich.text import Text
-from textual import on
+from textual import events, on
 from textual.app import App, ComposeResult
 from textual.binding import Binding
 from textual.containers import Horizontal, Vertical, VerticalScroll
@@ -37,7 +38,7 @@ from advisor.core.errors import InfeasibleError, InputError
 from advisor.io_safety import plain, show
 from advisor.tui import draft as drafts
 from advisor.tui import fields as F
-from advisor.tui import views
+from advisor.tui import fixes, views
 
 CSS = """
 Screen { layout: vertical; }
@@ -46,18 +47,31 @@ Screen { layout: vertical; }
 .step { padding: 0 1; }
 .field { height: auto; margin: 0; }
 .field Vertical { height: auto; width: 1fr; }
-.field Label.name { width: 46; padding: 1 1 0 0; }
-.field Input { width: 30; }
-.field Select { width: 30; }
-.error { color: $error; height: auto; padding: 0 0 0 1; }
-#step-error { color: $error; height: auto; }
-.note { color: $text-muted; height: auto; }
+.field Label.name { width: 2fr; max-width: 46; padding: 1 1 0 0; }
+.field Vertical { width: 3fr; }
+.field Input { width: 100%; max-width: 34; }
+.field Select { width: 100%; max-width: 34; }
+.error { color: $error; height: auto; width: 1fr; padding: 0 0 0 1; }
+.fixes { height: auto; }
+.fix { height: auto; }
+.fix Static { width: 1fr; height: auto; color: $error; padding: 1 1 0 0; }
+.fix Button { margin-right: 1; }
+.note { color: $text-muted; height: auto; width: 1fr; }
 #review-text { height: auto; }
+#result-status { height: auto; padding: 0 1; }
+#plot-switcher { height: 1fr; }
+.plot-pane { height: 1fr; }
+.plot-legend { height: auto; padding: 0 1; }
+#compare-box Static { height: auto; }
+.uses { height: auto; }
+.uses Button { margin-right: 1; }
+.switch-row { height: auto; }
+.switch-row Label.state { padding: 1 1; }
 ModalScreen { align: center middle; }
 #dialog { width: 80; height: auto; border: thick $primary; padding: 1 2; background: $surface; }
 #dialog Horizontal { height: auto; margin-top: 1; }
 #dialog Button { margin-right: 1; }
-PlotextPlot { height: 24; }
+PlotextPlot { height: 1fr; min-height: 10; }
 """
 
 HELP = """\
@@ -66,12 +80,19 @@ HELP = """\
   ctrl+n   next step (waits until the step is valid)
   ctrl+b   previous step (keeps what you typed)
   ctrl+r   compute the design (from any step; again after an edit)
-  ctrl+e   back to the inputs from the results
+  ctrl+e   back to the inputs from the results (Compare: "Use …"
+           imposes an alternative in the requirement and computes it)
   ctrl+s   export the report (TOML, JSON, Markdown or HTML) or the requirements
+  [ / ]    previous / next plot on the Plot view
   f1       this help           ctrl+q   quit
+  enter moves to the next field (on the last one, to the next step);
   tab / shift+tab move between fields; arrows choose in lists
 
-Every change is saved as a draft and offered back at the next start.
+Nothing is computed or exported while a field shows an error: ctrl+r and
+ctrl+s take you to it first.
+
+Every change is saved as a draft (one per file opened, one for a new
+requirement) and offered back at the next start.
 Numbers are SI with the unit shown beside each field.
 """
 
@@ -80,11 +101,43 @@ Numbers are SI with the unit shown beside each field.
 MAX_PROBLEMS = 8
 
 
+class SteadyInput(Input):
+    """An input whose editing keys act in the order they were typed.
+
+    textual runs a widget's own key bindings (ctrl+u, backspace, arrows, enter) only once
+    the key has bubbled up to the app, hop by hop, while a printable key is inserted at once:
+    on a loaded machine, or under a fast typist, the characters typed after ctrl+u landed
+    first and were then deleted with it (the tmux test lost its export path so). Here the
+    input's own bindings run as the key arrives."""
+
+    async def _on_key(self, event: events.Key) -> None:
+        bindings = self._bindings.key_to_bindings.get(event.key, [])
+        if bindings and not event.is_printable:
+            event.stop()
+            event.prevent_default()
+            await self.run_action(bindings[0].action)
+            return
+        await super()._on_key(event)
+
+
 def _input(value: str, id: str) -> Input:
-    """An input whose cursor does not blink (a steady screen, and steady snapshots)."""
-    box = Input(value, id=id)
+    """An input whose cursor does not blink (a steady screen, and steady snapshots) and
+    whose keys act in order (:class:`SteadyInput`)."""
+    box = SteadyInput(value, id=id)
     box.cursor_blink = False
     return box
+
+
+class Choice(RadioButton):
+    """A radio button whose state reads without colour (NO_COLOR): ● chosen, blank not."""
+
+    @property
+    def BUTTON_INNER(self) -> str:  # type: ignore[override]
+        return "●" if self.value else " "
+
+
+def _on_off(value: bool) -> str:
+    return "yes" if value else "no"
 
 
 class HelpScreen(ModalScreen[None]):
@@ -126,17 +179,21 @@ class ConfirmScreen(ModalScreen[bool]):
 
 
 class ExportScreen(ModalScreen[None]):
-    BINDINGS: ClassVar = [Binding("escape", "dismiss", "Cancel")]
+    """Where to write the report (or the requirements). The path box has the focus from the
+    start, so nothing typed is lost; enter in it saves (the report where there is one)."""
 
-    def __init__(self, default: Path, has_report: bool) -> None:
+    BINDINGS: ClassVar = [Binding("escape", "dismiss", "Cancel")]
+    AUTO_FOCUS = "#export-path"
+
+    def __init__(self, default: Path, has_report: bool, why_no_report: str = "") -> None:
         super().__init__()
-        self.default, self.has_report = default, has_report
+        self.default, self.has_report, self.why_no_report = default, has_report, why_no_report
 
     def compose(self) -> ComposeResult:
         with Vertical(id="dialog"):
             yield Label("Export to (.toml; a report also .json, .md or .html; asks to replace):")
             yield _input(str(self.default), "export-path")
-            yield Static("", id="export-error", classes="error")
+            yield Static(self.why_no_report, id="export-error", classes="error")
             with Horizontal():
                 yield Button(
                     "Save report", id="save-report", variant="primary", disabled=not self.has_report
@@ -144,16 +201,28 @@ class ExportScreen(ModalScreen[None]):
                 yield Button("Save requirements", id="save-requirements")
                 yield Button("Cancel", id="cancel")
 
+    def on_mount(self) -> None:
+        # at once, not after the first paint: keys typed as soon as the dialog shows land here
+        self.set_focus(self.query_one("#export-path", Input))
+
     @on(Button.Pressed, "#cancel")
     def _cancel(self) -> None:
         self.dismiss()
 
+    @on(Input.Submitted, "#export-path")
+    def _enter(self) -> None:
+        self._save_as("report" if self.has_report else "requirements")
+
     @on(Button.Pressed, "#save-report, #save-requirements")
     def _save(self, event: Button.Pressed) -> None:
-        what = "report" if event.button.id == "save-report" else "requirements"
-        text = self.query_one("#export-path", Input).value.strip()
+        self._save_as("report" if event.button.id == "save-report" else "requirements")
+
+    def _save_as(self, what: str) -> None:
+        box = self.query_one("#export-path", Input)
+        text = box.value.strip()
         if not text:
             self.query_one("#export-error", Static).update("give a file name")
+            self.set_focus(box)
             return
         path = Path(text).expanduser()
         if what == "requirements" and path.name.endswith(".report.toml"):
@@ -161,10 +230,16 @@ class ExportScreen(ModalScreen[None]):
         if path.exists():
             self.app.push_screen(
                 ConfirmScreen(f"{show(path, 200)} exists. Replace it?", "Replace", "Keep it"),
-                lambda yes: self._write(path, what) if yes else None,
+                lambda yes: self._write(path, what) if yes else self._kept(),
             )
         else:
             self._write(path, what)
+
+    def _kept(self) -> None:
+        """The existing file stays; the path typed stays too, in the box, to be changed."""
+        box = self.query_one("#export-path", Input)
+        self.query_one("#export-error", Static).update("not replaced: change the name")
+        self.set_focus(box)
 
     def _write(self, path: Path, what: str) -> None:
         app = self.app
@@ -198,6 +273,8 @@ class DriveAdvisorApp(App[None]):
         Binding("ctrl+r", "compute", "Compute", priority=True),
         Binding("ctrl+e", "edit", "Edit inputs", priority=True),
         Binding("ctrl+s", "export", "Export", priority=True),
+        Binding("left_square_bracket", "plot(-1)", "Prev plot", show=False),
+        Binding("right_square_bracket", "plot(1)", "Next plot", show=False),
         Binding("f1", "help", "Help"),
         Binding("ctrl+q", "quit", "Quit", priority=True),
     ]
@@ -216,16 +293,36 @@ class DriveAdvisorApp(App[None]):
         shaped, found = drafts.shape(copy.deepcopy(doc)) if doc else ({}, [])
         self.doc: dict[str, Any] = shaped
         self.load_problems: list[str] = [*(problems or []), *found]
-        self._draft: drafts.Loaded | None = None
         self.source = source
         self.catalog_dir = catalog_dir
         self.save_drafts = save_drafts
-        self.offer_draft = offer_draft and doc is None
+        # a new requirement is offered the untitled draft; a file, its own draft (if any)
+        self.offer_draft = offer_draft and (doc is None or source is not None)
         self.step = 0
         self.report = None
+        self.previous_report = None
+        self.computed_doc: dict[str, Any] | None = None  # the input of the result shown
+        self.no_result_why = "nothing computed yet: ctrl+r computes the design"
+        self.field_errors: dict[str, str] = {}  # widget id → what its field shows as wrong
+        self.fixes: dict[str, fixes.Fix] = {}  # button id → what it does to the document
+        self.use_options: dict[str, Any] = {}  # button id → the alternative it imposes
+        self.fix_buttons: dict[int, list[Button]] = {}  # step → its fix buttons shown
+        self._step_lines: dict[int, list[str]] = {}  # step → the messages shown on it
+        self.plot_index = 0
         self.computing = False
         self.results_version = 0
         self.last_compute_s = 0.0
+        if self.kind in F.titles():
+            fixes.fill_fixed(self.doc, self.kind)
+        self._last_doc: Any = copy.deepcopy(F.prune(self.doc))  # as last saved (or opened)
+        # the draft to offer, read before anything could save over it; none saved meanwhile
+        self._offered: drafts.Loaded | None = None
+        if self.offer_draft:
+            loaded = drafts.load_draft(source)
+            if loaded.doc is None and loaded.problems:  # unreadable: set aside, say so
+                self.load_problems += loaded.problems
+            elif loaded.doc and (source is None or F.prune(loaded.doc) != F.prune(self.doc)):
+                self._offered = loaded
 
     # ------------------------------------------------------------------ layout
     def compose(self) -> ComposeResult:
@@ -237,7 +334,7 @@ class DriveAdvisorApp(App[None]):
                     yield Label("What must the drive do?")
                     with RadioSet(id="kind"):
                         for k, text in F.titles().items():
-                            yield RadioButton(
+                            yield Choice(
                                 text,
                                 id=f"kind-{k}",
                                 value=self.doc.get("application", {}).get("kind") == k,
@@ -252,39 +349,42 @@ class DriveAdvisorApp(App[None]):
                 with VerticalScroll(id=f"step-{F.REVIEW}", classes="step"):
                     yield Static("", id="review-text")
                     yield Static("", id="review-error", classes="error")
-            with TabbedContent(id="results"):
-                for name in ("Summary", "Components", "Decisions", "Checks", "Plot"):
-                    with TabPane(name, id=f"tab-{name.lower()}"):
-                        if name == "Plot":
-                            yield Static("", id="plot-note", classes="note")
-                            yield VerticalScroll(id="plot-box")
-                        else:
-                            with VerticalScroll():
-                                yield Static("", id=f"view-{name.lower()}")
+            with Vertical(id="results"):
+                yield Static("", id="result-status")
+                with TabbedContent(id="result-tabs"):
+                    for name in ("Summary", "Components", "Compare", "Decisions", "Checks", "Plot"):
+                        with TabPane(name, id=f"tab-{name.lower()}"):
+                            if name == "Compare":
+                                yield VerticalScroll(id="compare-box")
+                            elif name == "Plot":
+                                yield Static("", id="plot-note", classes="note")
+                                yield ContentSwitcher(id="plot-switcher")
+                            else:
+                                with VerticalScroll():
+                                    yield Static("", id=f"view-{name.lower()}")
         yield Footer()
 
     async def on_mount(self) -> None:
         await self._build_steps()
         self._show_step()
         self._show_problems(self.load_problems)
-        if self.offer_draft:
-            self._draft = loaded = drafts.load_draft()
-            if loaded.doc is None and loaded.problems:  # unreadable: set aside, say so
-                self._show_problems(loaded.problems)
-            elif loaded.doc:
-                app = loaded.doc.get("application", {})
-                kind = app.get("kind", "?")
-                title = show(app.get("title", ""))
-                self.push_screen(
-                    ConfirmScreen(
-                        f"A draft from your last session was found: {kind}"
-                        + (f", “{title}”" if title else "")
-                        + ".\nResume it?",
-                        "Resume",
-                        "Start fresh",
-                    ),
-                    self._resume,
-                )
+        if self._offered is not None and self._offered.doc:
+            saved = self._offered.doc
+            kind = saved.get("application", {}).get("kind", "?")
+            title = show(saved.get("application", {}).get("title", ""))
+            what = (
+                f"Unsaved changes to {show(self.source.name)} from your last session were found"
+                if self.source is not None
+                else "A draft from your last session was found"
+            )
+            self.push_screen(
+                ConfirmScreen(
+                    f"{what}: {kind}" + (f", “{title}”" if title else "") + ".\nResume it?",
+                    "Resume",
+                    "Start fresh" if self.source is None else "Open the file as saved",
+                ),
+                self._resume,
+            )
 
     def _show_problems(self, problems: list[str]) -> None:
         """What loading a file or draft changed or could not use: on the first step and as a
@@ -299,25 +399,32 @@ class DriveAdvisorApp(App[None]):
         self.notify(text, title="Loaded with problems", severity="warning", markup=False)
 
     async def _resume(self, yes: bool | None) -> None:
-        loaded = self._draft
+        loaded, self._offered = self._offered, None
         if yes and loaded is not None and loaded.doc is not None:
             self.doc = loaded.doc
             app = self.doc.get("application", {})
             kind = app.get("kind")
+            if kind in F.titles():
+                fixes.fill_fixed(self.doc, kind)
             for k in F.titles():
                 self.query_one(f"#kind-{k}", RadioButton).value = k == kind
             self.query_one("#f-application-title", Input).value = app.get("title", "")
             await self._build_steps()
+            self._show_step()
             self._show_problems(loaded.problems)
+            self._last_doc = None
+            self._changed()  # the document resumed is the draft
         else:
-            drafts.clear_draft()
+            drafts.clear_draft(self.source)
 
     @property
     def kind(self) -> str | None:
-        return self.doc.get("application", {}).get("kind")
+        kind = self.doc.get("application", {}).get("kind")
+        return kind if isinstance(kind, str) else None
 
     async def _build_steps(self) -> None:
-        kind = self.kind
+        kind = self.kind if self.kind in F.titles() else None
+        self.field_errors.clear()
         for s in F.ASKED:
             box = self.query_one(f"#step-{s}", VerticalScroll)
             await box.remove_children()
@@ -325,25 +432,43 @@ class DriveAdvisorApp(App[None]):
             if kind is None:
                 widgets.append(Static("Choose the application first.", classes="note"))
             else:
-                specs = F.fields_for(kind, s)
-                if not specs:
-                    widgets.append(
-                        Static("Nothing to set for this application here.", classes="note")
-                    )
                 note = F.row_note(kind, s)
                 if note:
                     widgets.append(Static(note, classes="note"))
-                for f in specs:
+                for f in F.fields_for(kind, s):
                     widgets.append(self._field_widget(f))
             widgets.append(Static("", id=f"step-{s}-error", classes="error"))
+            widgets.append(Vertical(id=f"step-{s}-fixes", classes="fixes"))
             await box.mount(*widgets)
+        if kind is not None:
+            # what the fields show is what the document holds, from the first screen on
+            for f in F.all_fields(kind):
+                w = self.query_one(f"#{f.id}")
+                if isinstance(w, Input):
+                    self._sync_input(f, w.value, quiet=True)
 
     def _field_widget(self, f: F.Field) -> Horizontal:
         value = F.get(self.doc, f.path)
         label = f.label + (f" [{f.unit}]" if f.unit else "") + (" (optional)" if f.optional else "")
+        wrong = ""
         if f.kind == "bool":
-            control: Any = Switch(bool(f.default if value is None else value), id=f.id)
+            if value is not None and not isinstance(value, bool):
+                wrong = f"{value!r} in the file is not true or false; shown: the default"
+                F.put(self.doc, f.path, None)
+                value = None
+            on = bool(f.default if value is None else value)
+            control: Any = Horizontal(
+                Switch(on, id=f.id),
+                Label(_on_off(on), id=f"{f.id}-state", classes="state"),
+                classes="switch-row",
+            )
         elif f.kind == "choice":
+            if value is not None and value not in f.choices:
+                wrong = f"{value!r} in the file is not one of {', '.join(f.choices)}; shown: " + (
+                    "the default" if f.optional else "the first; choose"
+                )
+                F.put(self.doc, f.path, None)
+                value = None
             blank = f.default is None  # no default to show: the field may stay unchosen
             current = value if value in f.choices else self._shown_choice(f)
             if blank and value not in f.choices:
@@ -352,9 +477,10 @@ class DriveAdvisorApp(App[None]):
         else:
             control = _input(F.to_text(f, value), f.id)
             control.placeholder = f.shown_default
+        err = Label(wrong, id=f"{f.id}-err", classes="error", markup=False)
         return Horizontal(
             Label(label, classes="name", markup=False),
-            Vertical(control, Label("", id=f"{f.id}-err", classes="error")),
+            Vertical(control, err),
             classes="field",
         )
 
@@ -363,17 +489,68 @@ class DriveAdvisorApp(App[None]):
         """The choice shown while the file has none: the model's default."""
         return f.default if f.default in f.choices else f.choices[0]
 
-    def _show_step(self) -> None:
-        names = " › ".join(
-            f"[reverse] {i + 1} {n} [/]" if i == self.step else f"{i + 1} {n}"
-            for i, n in enumerate(F.STEPS)
-        )
+    # ------------------------------------------------------------------ steps
+    def _walk(self) -> list[tuple[int, str]]:
+        return F.steps_for(self.kind if self.kind in F.titles() else None)
+
+    def _step_bar(self, width: int) -> str:
+        walk = self._walk()
+
+        def bar(level: int) -> str:
+            """0: every name; 1: first words; 2: numbers only, the current step and Review
+            named."""
+            out = []
+            for i, (s, name) in enumerate(walk):
+                if s == self.step:
+                    out.append(f"[reverse] {i + 1} {name} [/]")
+                elif level == 0 or s == F.REVIEW:
+                    out.append(f"{i + 1} {name}")
+                elif level == 1:
+                    out.append(f"{i + 1} {name.split()[0]}")
+                else:
+                    out.append(f"{i + 1}")
+            return " › ".join(out)
+
+        for level in (0, 1):
+            text = bar(level)
+            if len(Text.from_markup(text).plain) <= width - 2:
+                return text
+        return bar(2)
+
+    def _show_step(self, focus: bool = True) -> None:
         on_results = self.query_one("#main", ContentSwitcher).current == "results"
-        results = "[reverse] Results [/] — ← → views, ctrl+e edit inputs, ctrl+s export"
-        self.query_one("#steps", Static).update(results if on_results else names)
+        if self.computing:
+            text = "[reverse] Computing… [/] the design of the inputs shown"
+        elif on_results:
+            text = "[reverse] Results [/] ← → views · ctrl+e inputs · ctrl+s export"
+        else:
+            text = self._step_bar(self.size.width or 80)
+        self.query_one("#steps", Static).update(text)
         self.query_one("#wizard", ContentSwitcher).current = f"step-{self.step}"
         if self.step == F.REVIEW:
             self.query_one("#review-text", Static).update(self._review_text())
+        if focus and not on_results:
+            self._focus_step()
+
+    def on_resize(self) -> None:
+        if self.is_mounted:
+            self._show_step(focus=False)
+
+    def _focus_step(self, target: Any = None) -> None:
+        """Focus ``target`` or the first field of the step shown: keys typed next land there."""
+        if target is None:
+            box = self.query_one(f"#step-{self.step}")
+            if self.step == 0:
+                target = self.query_one("#kind", RadioSet)
+            else:
+                target = next(
+                    (w for w in box.query("Input, Select, Switch, Button") if w.can_focus), None
+                )
+        if target is not None:
+            if target.is_mounted:
+                self.set_focus(target)
+            else:  # just mounted (a fix button): focus it once it is
+                target.call_after_refresh(self.set_focus, target)
 
     def _review_text(self) -> str:
         from rich.markup import escape
@@ -386,20 +563,44 @@ class DriveAdvisorApp(App[None]):
         if wid == "f-application-title":
             return F.title_field()
         kind = self.kind
-        if kind is None or wid is None:
+        if kind not in F.titles() or wid is None:
             return None
         return next((f for f in F.all_fields(kind) if f.id == wid), None)
 
     def _changed(self) -> None:
-        if self.save_drafts:
+        now = F.prune(self.doc)
+        if now == self._last_doc:  # a widget reporting what it already showed: no change
+            return
+        self._last_doc = copy.deepcopy(now)
+        if self.save_drafts and self._offered is None:  # not while a draft is being offered
             try:
-                drafts.save_draft(F.prune(self.doc))
+                drafts.save_draft(F.prune(self.doc), self.source)
             except OSError as exc:
                 self.notify(
                     f"the draft cannot be saved ({exc.strerror})", severity="warning", markup=False
                 )
             except InputError as exc:  # the draft's place is a directory, a FIFO, a device
                 self.notify(f"the draft cannot be saved: {exc}", severity="warning", markup=False)
+        if self.report is not None:
+            self._show_result_status()
+
+    def _sync_input(self, f: F.Field, text: str, quiet: bool = False) -> str | None:
+        """Put what a field shows into the document: its value, or nothing while it shows an
+        error (what is computed is exactly what the fields show). ``quiet``: an empty field
+        says nothing yet (a new requirement is not all "required")."""
+        value, err = F.parse_text(f, text)
+        if not text.strip():  # empty: the engine says whether it is required (its table may
+            err = None  # be optional, as a duty cycle is) and marks the field if so
+        F.put(self.doc, f.path, value if err is None else None)
+        was = self.field_errors.pop(f.id, None)
+        if err is not None:
+            self.field_errors[f.id] = err
+        label = self.query(f"#{f.id}-err")
+        # an empty field keeps what the engine said of it ("missing; required"), unless it
+        # showed an error of its own text
+        if label and (err is not None or text.strip() or was is not None):
+            label.first(Label).update(plain(err or ""))
+        return err
 
     @on(RadioSet.Changed, "#kind")
     async def _kind_changed(self, event: RadioSet.Changed) -> None:
@@ -410,6 +611,7 @@ class DriveAdvisorApp(App[None]):
         self.doc = {"application": {"kind": kind, **keep}, **F.starting_doc(kind)}
         await self._build_steps()
         self.query_one("#step-0-error", Static).update("")
+        self._show_step(focus=False)
         self._changed()
 
     @on(Input.Changed)
@@ -417,13 +619,21 @@ class DriveAdvisorApp(App[None]):
         f = self._field_by_id(event.input.id)
         if f is None:
             return
-        value, err = F.parse_text(f, event.value)
-        label = self.query(f"#{f.id}-err")
-        if label:
-            label.first(Label).update(plain(err or ""))
-        if err is None:
-            F.put(self.doc, f.path, value)
-            self._changed()
+        self._sync_input(f, event.value)
+        self._changed()
+
+    @on(Input.Submitted)
+    def _input_submitted(self, event: Input.Submitted) -> None:
+        """enter: the next field; on the step's last one, the next step."""
+        if event.input.id == "export-path" or self._field_by_id(event.input.id) is None:
+            return
+        event.stop()
+        box = self.query_one(f"#step-{self.step}")
+        chain = [w for w in box.query("Input, Select, Switch") if w.can_focus]
+        if event.input in chain and chain.index(event.input) < len(chain) - 1:
+            self.set_focus(chain[chain.index(event.input) + 1])
+        else:
+            self.action_next()
 
     @on(Select.Changed)
     def _select_changed(self, event: Select.Changed) -> None:
@@ -438,6 +648,7 @@ class DriveAdvisorApp(App[None]):
         if F.get(self.doc, f.path) is None and event.value == self._shown_choice(f):
             return  # the shown default, not a choice the user made: keep the file as it was
         F.put(self.doc, f.path, event.value)
+        self.query_one(f"#{f.id}-err", Label).update("")
         self._changed()
 
     @on(Switch.Changed)
@@ -445,12 +656,31 @@ class DriveAdvisorApp(App[None]):
         f = self._field_by_id(event.switch.id)
         if f is not None:
             F.put(self.doc, f.path, bool(event.value))
+            self.query_one(f"#{f.id}-state", Label).update(_on_off(bool(event.value)))
+            self.query_one(f"#{f.id}-err", Label).update("")
             self._changed()
+
+    @on(Button.Pressed, ".fix Button")
+    async def _fix_pressed(self, event: Button.Pressed) -> None:
+        fix = self.fixes.get(event.button.id or "")
+        if fix is None:
+            return
+        fixes.apply(self.doc, fix)
+        self._changed()
+        self.notify(fix.label, title="Changed in the requirement", markup=False)
+        self._step_lines.clear()
+        await self._build_steps()  # a renamed key now shows in its field
+        self._show_step(focus=False)
+        if not self._validate(self.step):
+            self._go_to_problem(self.step, "Still to fix")
+        else:
+            self._focus_step()
 
     # ------------------------------------------------------------------ validation
     def _validate(self, step: int) -> bool:
         """Field errors of the step, then the engine's own validation of what is known so
-        far; messages about later steps wait for those steps."""
+        far; messages about later steps wait for those steps. A message no field resolves
+        comes with buttons that do (remove or rename an unknown key …)."""
         if step == 0:
             if self.kind is None:
                 self.query_one("#step-0-error", Static).update("choose an application")
@@ -464,11 +694,9 @@ class DriveAdvisorApp(App[None]):
         for f in F.fields_for(kind, step):
             w = self.query_one(f"#{f.id}")
             if isinstance(w, Input):
-                value, err = F.parse_text(f, w.value)
-                self.query_one(f"#{f.id}-err", Label).update(plain(err or ""))
-                if err is None:  # what is on screen is what is checked
-                    F.put(self.doc, f.path, value)
-                ok = ok and err is None
+                ok = self._sync_input(f, w.value) is None and ok
+            elif f.id in self.field_errors:
+                ok = False
         step_msgs: list[str] = []
         for line in self._engine_errors():
             owner = F.error_owner(line, kind, step)
@@ -479,12 +707,40 @@ class DriveAdvisorApp(App[None]):
                 None,
             )
             if owner and target is not None and target in F.fields_for(kind, step):
-                self.query_one(f"#{target.id}-err", Label).update(plain(line.split(": ", 1)[-1]))
+                if target.id not in self.field_errors:  # the field's own words come first
+                    self.query_one(f"#{target.id}-err", Label).update(
+                        plain(line.split(": ", 1)[-1])
+                    )
             else:
                 step_msgs.append(line)
             ok = False
-        self.query_one(f"#step-{step}-error", Static).update(plain("\n".join(step_msgs)))
+        self._show_step_messages(step, step_msgs)
         return ok
+
+    def _show_step_messages(self, step: int, lines: list[str]) -> None:
+        plain_lines, rows = [], []
+        for line in lines:
+            found = fixes.fixes_for(line, self.doc, self.kind)
+            if not found:
+                plain_lines.append(line)
+                continue
+            buttons = []
+            for fix in found:
+                bid = f"fix-{len(self.fixes)}"
+                self.fixes[bid] = fix
+                buttons.append(Button(fix.label, id=bid, compact=True))
+            row = Horizontal(Static(line, markup=False), *buttons, classes="fix")
+            row.fix_buttons = buttons  # type: ignore[attr-defined]
+            rows.append(row)
+        self.query_one(f"#step-{step}-error", Static).update(plain("\n".join(plain_lines)))
+        if lines == self._step_lines.get(step):
+            return  # the same messages: keep the rows (and the focus on their buttons)
+        self._step_lines[step] = lines
+        self.fix_buttons[step] = [b for r in rows for b in r.fix_buttons]
+        box = self.query_one(f"#step-{step}-fixes", Vertical)
+        box.remove_children()
+        if rows:
+            box.mount(*rows)
 
     def _engine_errors(self) -> list[str]:
         from advisor.core.requirements import parse_requirements
@@ -495,25 +751,57 @@ class DriveAdvisorApp(App[None]):
             return exc.messages
         return []
 
+    def _first_problem(self) -> int | None:
+        """The first step (in the order walked) with an error on screen, checked the way
+        ctrl+n checks it; None when every step is valid."""
+        for s, _ in self._walk():
+            if not self._validate(s):
+                return s
+        return None
+
+    def _go_to_problem(self, step: int, doing: str) -> None:
+        """Show the step with the problem and focus what needs fixing."""
+        self.query_one("#main", ContentSwitcher).current = "wizard"
+        self.step = step
+        self._show_step(focus=False)
+        box = self.query_one(f"#step-{step}")
+        target = None
+        if step == 0:
+            target = self.query_one("#kind", RadioSet)
+        else:
+            # a fix offered (an unknown key) often explains the field errors: it comes first
+            target = next(iter(self.fix_buttons.get(step, [])), None)
+            for lbl in box.query(".field Label.error") if target is None else []:
+                if str(lbl.render()).strip():
+                    wid = (lbl.id or "").removesuffix("-err")
+                    target = self.query_one(f"#{wid}")
+                    break
+        self._focus_step(target)
+        self.bell()
+        self.notify(f"{doing}: fix what is marked first", severity="warning")
+
     # ------------------------------------------------------------------ actions
     def action_next(self) -> None:
         if self.query_one("#main", ContentSwitcher).current == "results":
             return
         if not self._validate(self.step):
             self.bell()
+            self._go_to_problem(self.step, "Not yet")
             return
+        walk = [s for s, _ in self._walk()]
         if self.step < F.REVIEW:
-            self.step += 1
+            self.step = walk[walk.index(self.step) + 1] if self.step in walk else self.step + 1
             self._show_step()
         else:
             self.action_compute()
 
     def action_back(self) -> None:
         main = self.query_one("#main", ContentSwitcher)
+        walk = [s for s, _ in self._walk()]
         if main.current == "results":
             main.current = "wizard"
         elif self.step > 0:
-            self.step -= 1
+            self.step = walk[walk.index(self.step) - 1] if self.step in walk else self.step - 1
         self._show_step()
 
     def action_edit(self) -> None:
@@ -523,9 +811,22 @@ class DriveAdvisorApp(App[None]):
     def action_help(self) -> None:
         self.push_screen(HelpScreen())
 
+    def _inputs_changed(self) -> bool:
+        return self.computed_doc is not None and F.prune(self.doc) != self.computed_doc
+
     def action_export(self) -> None:
+        problem = self._first_problem()
+        if problem is not None:
+            self._go_to_problem(problem, "Not exported")
+            return
         stem = self.source.stem if self.source else (self.kind or "drive")
-        self.push_screen(ExportScreen(Path.cwd() / f"{stem}.report.toml", self.report is not None))
+        has_report = self.report is not None and not self._inputs_changed()
+        why = ""
+        if self.report is None:
+            why = f"no report: {self.no_result_why}"
+        elif not has_report:
+            why = "the inputs changed since the result: ctrl+r before saving the report"
+        self.push_screen(ExportScreen(Path.cwd() / f"{stem}.report.toml", has_report, why))
 
     def write_export(self, path: Path, what: str) -> None:
         from advisor.core.report import to_toml, write_atomic
@@ -542,34 +843,40 @@ class DriveAdvisorApp(App[None]):
     def action_compute(self) -> None:
         if self.computing:
             return
+        problem = self._first_problem()
+        if problem is not None:
+            self._go_to_problem(problem, "Not computed")
+            return
         self.computing = True
         self._started = time.perf_counter()
+        self._show_step(focus=False)
         self.query_one("#review-error", Static).update("computing…")
-        self.run_worker(self._advise, thread=True, exclusive=True, group="advise")
+        doc = copy.deepcopy(F.prune(self.doc))
+        self.run_worker(lambda: self._advise(doc), thread=True, exclusive=True, group="advise")
 
-    def _advise(self) -> None:
+    def _advise(self, doc: dict[str, Any]) -> None:
         from advisor.core.engine import advise
         from advisor.core.requirements import parse_requirements
 
-        doc = copy.deepcopy(F.prune(self.doc))
         try:
             report = advise(parse_requirements(doc), self.catalog_dir)
         except InputError as exc:
             self.call_from_thread(self._invalid, exc.messages)
         except InfeasibleError as exc:
-            self.call_from_thread(self._infeasible, exc)
+            self.call_from_thread(self._infeasible, exc, doc)
         except Exception as exc:  # a bug in a calculation: say so, keep the app and the input
             self.call_from_thread(self._crashed, exc)
         else:
-            self.call_from_thread(self._show_report, report)
+            self.call_from_thread(self._show_report, report, doc)
 
     def _done(self) -> None:
         self.computing = False
         self.last_compute_s = time.perf_counter() - self._started
         self.results_version += 1
+        self._show_step(focus=False)
 
     def _invalid(self, messages: list[str]) -> None:
-        self.step = 4
+        self.step = F.REVIEW
         self.query_one("#main", ContentSwitcher).current = "wizard"
         self._show_step()
         self.query_one("#review-error", Static).update(
@@ -577,15 +884,21 @@ class DriveAdvisorApp(App[None]):
         )
         self._done()
 
-    def _infeasible(self, exc: InfeasibleError) -> None:
+    def _infeasible(self, exc: InfeasibleError, doc: dict[str, Any]) -> None:
+        if self.report is not None:
+            self.previous_report = self.report
         self.report = None
+        self.computed_doc = doc
+        self.no_result_why = "the requirement has no feasible design (see Summary)"
+        none = f"No design to show: {self.no_result_why}."
         self._fill(
-            summary=Text.assemble(
-                ("No feasible design.", "bold"),
-                "\n",
-                plain(exc.summary + "\n" + "\n".join(f" • {r}" for r in exc.reasons)),
-            )
+            summary=views.infeasible(exc),
+            components=none,
+            decisions=none,
+            checks=none,
         )
+        self._plot(None)
+        self._compare(None)
         self._done()
 
     def _crashed(self, exc: Exception) -> None:
@@ -598,48 +911,131 @@ class DriveAdvisorApp(App[None]):
         self.notify(f"internal error: {type(exc).__name__}", severity="error")
         self._done()
 
-    def _show_report(self, report) -> None:
+    def _show_report(self, report, doc: dict[str, Any]) -> None:
+        if self.report is not None:
+            self.previous_report = self.report
         self.report = report
+        self.computed_doc = doc
         self._fill(
-            summary=views.summary(report),
+            summary=views.summary(report, self.previous_report),
             components=views.components(report),
             decisions=views.decisions(report),
             checks=views.checks(report),
         )
         self._plot(report)
+        self._compare(report)
         self._done()
+
+    def _compare(self, report) -> None:
+        """The alternatives side by side, each with a button that imposes it."""
+        box = self.query_one("#compare-box", VerticalScroll)
+        box.remove_children()
+        self.use_options.clear()
+        if report is None:
+            box.mount(Static(f"Nothing to compare: {self.no_result_why}.", classes="note"))
+            return
+        sections = views.compare(report)
+        if not sections:
+            box.mount(Static("This application reports no alternatives.", classes="note"))
+            return
+        widgets: list[Any] = []
+        for sec in sections:
+            widgets.append(Static(Text(sec.title, style="bold underline")))
+            widgets.append(Static(sec.table))
+            if sec.why:
+                widgets.append(Static(Text.assemble(("▶ chosen: ", "bold"), plain(sec.why))))
+            if sec.note:
+                widgets.append(Static(sec.note, classes="note", markup=False))
+            buttons = []
+            for opt in sec.options:
+                bid = f"use-{self.results_version}-{len(self.use_options)}"
+                self.use_options[bid] = opt
+                buttons.append(Button(opt.label, id=bid, compact=True, classes="use"))
+            if buttons:
+                widgets.append(Horizontal(*buttons, classes="uses"))
+            widgets.append(Static(""))
+        box.mount(*widgets)
+
+    @on(Button.Pressed, ".use")
+    async def _use_pressed(self, event: Button.Pressed) -> None:
+        """Impose the alternative in the requirement, and compute it."""
+        opt = self.use_options.get(event.button.id or "")
+        if opt is None:
+            return
+        for path, value in opt.patch:
+            F.put(self.doc, path, value)
+        self._changed()
+        self._step_lines.clear()
+        await self._build_steps()
+        self.notify(f"{opt.label}: imposed in the requirement; computing", markup=False)
+        self.action_compute()
+
+    def _show_result_status(self) -> None:
+        if self.report is None:
+            text = f"[b]No design.[/b] {escape(self.no_result_why)}"
+        elif self._inputs_changed():
+            text = "[reverse] ! [/] The inputs changed since this result: ctrl+r recomputes."
+        else:
+            text = "The design of the inputs as they are now."
+        self.query_one("#result-status", Static).update(text)
 
     def _fill(self, **panes: Any) -> None:
         for name in ("summary", "components", "decisions", "checks"):
             self.query_one(f"#view-{name}", Static).update(panes.get(name, ""))
         self.query_one("#review-error", Static).update("")
         self.query_one("#main", ContentSwitcher).current = "results"
-        self.query_one("#results", TabbedContent).active = "tab-summary"
-        self.query_one("#results Tabs").focus()  # ← → move between the result views
-        self._show_step()
+        self.query_one("#result-tabs", TabbedContent).active = "tab-summary"
+        self.query_one("#result-tabs Tabs").focus()  # ← → move between the result views
+        self.last_compute_s = time.perf_counter() - self._started
+        self._show_result_status()
+        self._show_step(focus=False)
 
     def _plot(self, report) -> None:
         from textual_plotext import PlotextPlot
 
-        box = self.query_one("#plot-box", VerticalScroll)
-        box.remove_children()
-        figures = views.plots(report)
-        for data in figures:
+        switcher = self.query_one("#plot-switcher", ContentSwitcher)
+        switcher.remove_children()
+        figures = views.plots(report) if report is not None else []
+        self.plot_titles = [d.title for d in figures]
+        self.plot_index = 0
+        self.plot_version = self.results_version
+        if not figures:
+            self.query_one("#plot-note", Static).update(f"No plot: {self.no_result_why}.")
+            return
+        panes = []
+        for i, data in enumerate(figures):
             plot = PlotextPlot()
             plt = plot.plt
-            plt.title(data.title)
             plt.xlabel(data.xlabel)
             plt.ylabel(data.ylabel)
-            for label, xs, ys in data.series:
+            for marker, (_label, xs, ys) in zip(views.markers(data), data.series, strict=True):
                 if len(xs) == 1:
-                    plt.scatter(xs, ys, label=label)
+                    plt.scatter(xs, ys, marker=marker)
                 else:
-                    plt.plot(xs, ys, label=label)
-            box.mount(plot)
-        self.query_one("#plot-note", Static).update(
-            " · ".join(d.title for d in figures)
-            + ("  (scroll for more)" if len(figures) > 1 else "")
-        )
+                    plt.plot(xs, ys, marker=marker)
+            legend = Static(views.legend(data), classes="plot-legend")
+            pane_id = f"plot-{self.results_version}-{i}"  # the old panes go asynchronously
+            pane = Vertical(legend, plot, id=pane_id, classes="plot-pane")
+            pane.display = i == 0
+            panes.append(pane)
+        switcher.mount(*panes)
+        switcher.current = panes[0].id  # (the switcher shows it once mounted)
+        self._plot_note()
+
+    def _plot_note(self) -> None:
+        n = len(self.plot_titles)
+        title = self.plot_titles[self.plot_index]
+        more = f"  ([ ] plot {self.plot_index + 1} of {n})" if n > 1 else ""
+        self.query_one("#plot-note", Static).update(f"[b]{escape(title)}[/b]{more}")
+
+    def action_plot(self, step: int) -> None:
+        n = len(getattr(self, "plot_titles", []))
+        if n < 2:
+            return
+        self.plot_index = (self.plot_index + step) % n
+        switcher = self.query_one("#plot-switcher", ContentSwitcher)
+        switcher.current = f"plot-{self.plot_version}-{self.plot_index}"
+        self._plot_note()
 
 
 def run(path: Path | None, catalog_dir: Path | None) -> int:

@@ -5,8 +5,13 @@ Loading is defensive: a requirement file or draft is read like a batch input (re
 at most 1 MiB, no deep nesting), then :func:`shape` makes it a document the wizard can hold
 (tables where tables belong, values of the right kind), saying what it changed. A draft that
 cannot be read at all is set aside under a new name, never deleted.
+
+Drafts are named by what they edit: a new requirement has ``draft.toml``; an opened file has
+its own draft under ``drafts/`` (named after the file and a hash of its absolute path), so
+opening a file never replaces the unsaved draft of another requirement.
 """
 
+import hashlib
 import os
 import time
 from pathlib import Path
@@ -28,12 +33,16 @@ def state_dir() -> Path:
     return Path(base) / "drive-advisor"
 
 
-def draft_path() -> Path:
-    return state_dir() / "draft.toml"
+def draft_path(source: Path | None = None) -> Path:
+    """``draft.toml`` for a new requirement; ``drafts/<stem>-<hash>.toml`` for a file."""
+    if source is None:
+        return state_dir() / "draft.toml"
+    key = hashlib.sha256(str(Path(source).resolve()).encode()).hexdigest()[:10]
+    return state_dir() / "drafts" / f"{Path(source).stem}-{key}.toml"
 
 
-def save_draft(doc: dict[str, Any]) -> None:
-    path = draft_path()
+def save_draft(doc: dict[str, Any], source: Path | None = None) -> None:
+    path = draft_path(source)
     path.parent.mkdir(parents=True, exist_ok=True)
     write_atomic(path, tomli_w.dumps(doc))
 
@@ -195,10 +204,11 @@ def _set_aside(path: Path) -> Path | None:
     return None
 
 
-def load_draft() -> Loaded:
-    """The saved draft (None when there is none). A draft that cannot be read is set aside
-    under a new name and the problem returned, so the wizard can say so."""
-    path = draft_path()
+def load_draft(source: Path | None = None) -> Loaded:
+    """The saved draft of a new requirement, or of the file ``source`` (None when there is
+    none). A draft that cannot be read is set aside under a new name and the problem
+    returned, so the wizard can say so."""
+    path = draft_path(source)
     if not os.path.lexists(path):
         return Loaded(None, [])
     try:
@@ -211,8 +221,8 @@ def load_draft() -> Loaded:
     return Loaded(doc or None, problems)
 
 
-def clear_draft() -> None:
+def clear_draft(source: Path | None = None) -> None:
     try:
-        draft_path().unlink()
+        draft_path(source).unlink()
     except OSError:
         pass

@@ -11,14 +11,7 @@ from typing import Any
 from advisor.core import registry
 from advisor.core.questions import Question, fixed_values, wizard_questions
 
-STEPS = (
-    "Application",
-    "Loads and motion",
-    "Envelope and holding",
-    "Motor preferences",
-    "Duty cycle",
-    "Review",
-)
+STEPS = ("Application", *registry.DEFAULT_STEPS, "Review")
 #: The steps that ask the model's fields, and the review.
 ASKED = tuple(range(1, len(STEPS) - 1))
 REVIEW = len(STEPS) - 1
@@ -64,6 +57,16 @@ def fields_for(kind: str, step: int) -> tuple[Field, ...]:
     return _fields(registry.requirements_model(kind)).get(step, ())
 
 
+def steps_for(kind: str | None) -> list[tuple[int, str]]:
+    """The steps the wizard walks for ``kind``: (step number, name), the application's own
+    names for its asking steps, a step with no question skipped (no "nothing to set")."""
+    if kind is None:
+        return list(enumerate(STEPS))
+    names = registry.application(kind).steps
+    middle = [(s, names[s - 1]) for s in ASKED if fields_for(kind, s)]
+    return [(0, STEPS[0]), *middle, (REVIEW, STEPS[REVIEW])]
+
+
 def all_fields(kind: str) -> list[Field]:
     return [f for step in ASKED for f in fields_for(kind, step)]
 
@@ -72,9 +75,14 @@ def starting_doc(kind: str) -> dict[str, Any]:
     """A new requirement of ``kind``: the fields that allow one value only (the motor kind)
     filled in; everything else empty, so that the model's defaults apply."""
     doc: dict[str, Any] = {}
-    for path, value in fixed_values(registry.requirements_model(kind)).items():
+    for path, value in starting_doc_values(kind).items():
         put(doc, path, value)
     return doc
+
+
+def starting_doc_values(kind: str) -> dict[tuple[str, ...], str]:
+    """The fields that allow one value only, by path."""
+    return fixed_values(registry.requirements_model(kind))
 
 
 @cache
@@ -202,6 +210,18 @@ def parse_text(field: Field, text: str) -> tuple[Any, str | None]:
     return value, None
 
 
+def error_step(dotted: str, kind: str) -> int | None:
+    """The step that asks about a path: its field's step, else the first step asking a field
+    of the same table (``gearbox.colour`` → the step asking ``gearbox.*``); None for none."""
+    parts = tuple(dotted.split("."))
+    asked = [(s, f.path) for s in ASKED for f in fields_for(kind, s)]
+    for k in range(len(parts), 0, -1):
+        steps = [s for s, path in asked if path[:k] == parts[:k]]
+        if steps:
+            return min(steps)
+    return None
+
+
 def error_owner(line: str, kind: str, upto_step: int) -> str | None:
     """Which field (dotted path) an engine message belongs to, '' for the step as a whole,
     None when it concerns a later step only."""
@@ -211,13 +231,11 @@ def error_owner(line: str, kind: str, upto_step: int) -> str | None:
     parts = head.split(".")
     parts = [str(int(p) - 1) if p.isdigit() else p for p in parts]
     dotted = ".".join(parts)
-    seen = [f for s in range(1, upto_step + 1) for f in fields_for(kind, s)]
-    later = [f for s in range(upto_step + 1, REVIEW) for f in fields_for(kind, s)]
-    for f in seen:
-        if f.dotted == dotted:
-            return dotted
-    if any(f.dotted.startswith(dotted) for f in seen) or not any(
-        f.dotted.startswith(dotted) for f in later
-    ):
-        return ""
-    return None
+    step = error_step(dotted, kind)
+    if step is None:  # nothing asked about it: the first step with questions takes it
+        step = next((s for s in ASKED if fields_for(kind, s)), 1)
+    if step > upto_step:
+        return None
+    if any(f.dotted == dotted for f in fields_for(kind, step)):
+        return dotted
+    return ""

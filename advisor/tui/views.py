@@ -30,18 +30,107 @@ def _fmt(v: Any) -> Text:
     return plain(v)
 
 
-def summary(report) -> Group:
+def plural(n: int, word: str) -> str:
+    """``1 check``, ``2 checks``."""
+    return f"{n} {word}" if n == 1 else f"{n} {word}s"
+
+
+def holding(report) -> str | None:
+    """How the drive holds the load with the motor off, in a line (None: not asked)."""
+    req = getattr(report, "requirements", None)
+    app = req.get("application", {}) if isinstance(req, dict) else {}
+    one_way = getattr(report.design, "one_way", None)
+    if one_way is None:
+        if app.get("hold_without_power", False):
+            return "holding: asked, but the design has no one-way device"
+        return None
+    where = f" at the {one_way.location}" if one_way.location not in ("", "none") else ""
+    if one_way.type == "none":
+        return f"holding: none needed{where} ({one_way.basis})" if one_way.basis else None
+    return f"holding: {one_way.type.replace('_', ' ')}{where}, {one_way.torque_Nm:.4g} N·m"
+
+
+def summary(report, previous=None) -> Group:
     worst = min(report.checks, key=lambda c: c.margin) if report.checks else None
+    passed = sum(c.passed for c in report.checks)
     lines = [
         plain(report.report.title or report.report.application, "bold"),
         plain(headline(report)),
-        Text(f"status: {report.report.status}, {len(report.checks)} checks passed"),
+        Text(f"status: {report.report.status}, {plural(passed, 'check')} passed"),
     ]
+    hold = holding(report)
+    if hold:
+        lines.append(plain(hold))
     if worst is not None:
         lines.append(plain(f"lowest margin: {worst.name} — {worst.margin:.3f}"))
     for w in report.warnings:
         lines.append(plain(f"⚠ {w}", "yellow"))
+    changed = changes(previous, report) if previous is not None else []
+    if changed:
+        lines.append(Text("\nChanged since the previous result:", style="bold"))
+        lines.extend(plain(f" • {c}") for c in changed)
     return Group(*lines)
+
+
+def changes(before, after) -> list[str]:
+    """What differs between two results, in words: the design in a few words, then each
+    check whose value moved (by more than 0.05 %), appeared or went away."""
+    if before.report.application != after.report.application:
+        return [f"application {before.report.application} → {after.report.application}"]
+    out = [f"input {k}: {a} → {b}" for k, a, b in _input_changes(before, after)]
+    h0, h1 = headline(before), headline(after)
+    if h0 != h1:
+        out.append(f"design: {h0} → {h1}")
+    old = {c.name: c for c in before.checks}
+    new = {c.name: c for c in after.checks}
+    for name, c in new.items():
+        o = old.get(name)
+        if o is None:
+            out.append(f"{name}: new check, {c.value:.4g} {c.unit}".rstrip())
+        elif abs(c.value - o.value) > 5e-4 * max(abs(o.value), 1e-12):
+            out.append(f"{name}: {o.value:.4g} → {c.value:.4g} {c.unit}".rstrip())
+    out += [f"{name}: no longer checked" for name in old if name not in new]
+    return out
+
+
+def _flat(doc: Any, prefix: str = "") -> dict[str, Any]:
+    if isinstance(doc, dict):
+        out: dict[str, Any] = {}
+        for k, v in doc.items():
+            out.update(_flat(v, f"{prefix}.{k}" if prefix else str(k)))
+        return out
+    if isinstance(doc, list) and any(isinstance(v, dict) for v in doc):
+        out = {}
+        for i, v in enumerate(doc):
+            out.update(_flat(v, f"{prefix}[{i + 1}]"))
+        return out
+    return {prefix: doc}
+
+
+def _input_changes(before, after) -> list[tuple[str, str, str]]:
+    """The requirement values that differ between two reports: (key, before, after)."""
+    a, b = _flat(before.requirements or {}), _flat(after.requirements or {})
+    return [
+        (k, _fmt(a.get(k, "—")), _fmt(b.get(k, "—")))
+        for k in sorted(set(a) | set(b), key=lambda k: (k not in a, k))
+        if a.get(k) != b.get(k)
+    ]
+
+
+def infeasible(exc) -> Text:
+    """An infeasible requirement in words: "No feasible design" once, then why."""
+    head = exc.summary
+    lowered = head.lower()
+    for prefix in ("no feasible design: ", "no feasible design"):
+        if lowered.startswith(prefix):
+            head = head[len(prefix) :]
+            break
+    text = Text("No feasible design", style="bold")
+    if head:
+        text.append_text(plain(f": {head}"))
+    for r in exc.reasons:
+        text.append_text(plain(f"\n • {r}"))
+    return text
 
 
 def components(report) -> Group:
@@ -52,19 +141,52 @@ def components(report) -> Group:
     parts: list[Any] = list(app_views.components(report)) if app_views is not None else []
     one_way = getattr(d, "one_way", None)
     if one_way is not None:
-        rows = [
-            ("type", one_way.type),
-            ("location", one_way.location),
-            ("torque", f"{one_way.torque_Nm:.4g} N·m"),
-        ]
-        if one_way.mass_kg is not None:
-            rows += [
-                ("size", f"Ø{one_way.outer_diameter_mm:.3g} × {one_way.length_mm:.3g} mm"),
-                ("mass", f"{one_way.mass_kg:.3g} kg"),
-                ("power drawn", f"{one_way.power_W:.3g} W"),
-            ]
-        parts.append(kv("One-way device", rows))
+        parts.extend(one_way_parts(one_way))
     return Group(*parts)
+
+
+def one_way_parts(one_way) -> list[Any]:
+    """The holding device: what it is, where it sits, why, and what else would hold."""
+    if one_way.type == "none":
+        return [kv("One-way device", [("none", one_way.basis or "holding not asked")])]
+    rows: list[tuple[str, Any]] = [
+        ("type", one_way.type.replace("_", " ")),
+        ("where", one_way.location),
+        ("torque held", f"{one_way.torque_Nm:.4g} N·m"),
+    ]
+    if one_way.mass_kg is not None:
+        rows += [
+            ("size", f"Ø{one_way.outer_diameter_mm:.3g} × {one_way.length_mm:.3g} mm"),
+            ("mass", f"{one_way.mass_kg:.3g} kg"),
+            ("power drawn", f"{one_way.power_W:.3g} W"),
+        ]
+    if one_way.basis:
+        rows.append(("basis", one_way.basis))
+    parts: list[Any] = [kv("One-way device (holds the load with the motor off)", rows)]
+    others = [*([one_way.output_side] if one_way.output_side else []), *one_way.alternatives]
+    if others:
+        t = Table(title="…and what else would hold it", title_justify="left")
+        for col in ("type", "where", "torque N·m", "Ø×L mm", "mass kg", "power W"):
+            t.add_column(col, justify="left" if col in ("type", "where") else "right")
+        t.add_row(
+            "▶ " + one_way.type.replace("_", " ") + " (chosen)",
+            one_way.location,
+            f"{one_way.torque_Nm:.4g}",
+            f"{one_way.outer_diameter_mm or 0:.3g}×{one_way.length_mm or 0:.3g}",
+            f"{one_way.mass_kg or 0:.3g}",
+            f"{one_way.power_W or 0:.3g}",
+        )
+        for o in others:
+            t.add_row(
+                o.type.replace("_", " "),
+                o.location,
+                f"{o.torque_Nm:.4g}",
+                f"{o.outer_diameter_mm:.3g}×{o.length_mm:.3g}",
+                f"{o.mass_kg:.3g}",
+                f"{o.power_W:.3g}",
+            )
+        parts.append(t)
+    return parts
 
 
 def decisions(report) -> Table:
@@ -102,6 +224,32 @@ def checks(report) -> Table:
     return t
 
 
+#: One marker per series, told apart without colour (NO_COLOR): curves take the first
+#: markers, single points (a working point, an optimum) the solid shapes.
+MARKERS = ("•", "+", "x", "o", "*", "=", "#", "~")
+POINT_MARKERS = ("◆", "■", "▲", "★", "●", "▼")
+
+
+def markers(data: "PlotData") -> list[str]:
+    """The marker of each series of a plot, in order."""
+    out, curves, points = [], 0, 0
+    for _label, xs, _ys in data.series:
+        if len(xs) == 1:
+            out.append(POINT_MARKERS[points % len(POINT_MARKERS)])
+            points += 1
+        else:
+            out.append(MARKERS[curves % len(MARKERS)])
+            curves += 1
+    return out
+
+
+def legend(data: "PlotData") -> str:
+    """The legend under the plot, never over the curves: marker, then name."""
+    return "   ".join(
+        f"{m} {label}" for m, (label, _, _) in zip(markers(data), data.series, strict=True)
+    )
+
+
 class PlotData(NamedTuple):
     title: str
     xlabel: str
@@ -114,3 +262,11 @@ def plots(report) -> list[PlotData]:
     actuator adds the seed's fig. 1: reducer volume per unit torque against q)."""
     app_views = registry.views(report.report.application)
     return list(app_views.plots(report)) if app_views is not None else []
+
+
+def compare(report) -> list[Any]:
+    """The comparison sections of an application (see :mod:`advisor.tui.compare`); none
+    where its views have no ``compare``."""
+    app_views = registry.views(report.report.application)
+    fn = getattr(app_views, "compare", None)
+    return list(fn(report)) if fn is not None else []

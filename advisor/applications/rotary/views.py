@@ -38,21 +38,69 @@ def components(report) -> list[Any]:
     return parts
 
 
+def loss_curve(report, points: int = 40) -> list[dict]:
+    """The losses of the reference motor rewound for each speed from a quarter of the lowest
+    candidate to twice the highest, computed exactly as the candidates are (seed 000, eqs.
+    (4), (5), (9); the reducer split by the rules at each speed). Empty when the catalog
+    steel differs from the report's (a user catalog the view does not know)."""
+    from advisor.applications.rotary import advice as ra
+    from advisor.calc import bldc
+    from advisor.calc import reducer as rd
+    from advisor.calc import wavegear as wg
+    from advisor.core.requirements import parse_requirements
+    from catalogs import load_catalogs
+
+    req = parse_requirements(report.requirements)
+    ref, gb = req.motor.reference, req.gearbox
+    steel = ra._steel(req, load_catalogs())
+    if abs(steel.p15_50_W_kg - report.design.motor.steel.p15_50_W_kg) > 1e-9:
+        return []
+    steel_mass = bldc.stator_steel_mass(
+        ref.stator_steel_area_mm2, ref.stack_length_mm, ref.stacking_factor, ref.steel_density_kg_m3
+    )
+    terms = bldc.fit_eq5(steel.p10_50_W_kg, steel.p15_50_W_kg, steel.p10_400_W_kg)
+    params = rd.ReducerParams(
+        torque_Nm=req.rotary.torque_Nm,
+        k_rb=wg.ROLLING_BODY_FACTOR[gb.rolling_body],
+        stage_efficiency=gb.stage_efficiency,
+        density_kg_m3=gb.density_kg_m3,
+        fill_factor=gb.fill_factor,
+    )
+    speeds = [c.speed_rpm for c in report.design.motor.candidates]
+    lo, hi = min(speeds) / 4, max(speeds) * 2
+    grid = sorted({*speeds, *(lo * (hi / lo) ** (k / (points - 1)) for k in range(points))})
+    out = []
+    for n in grid:
+        c = ra._candidate(n, req, steel, steel_mass, terms, params)
+        if c["split"]:  # a speed no reducer of the rules realises has no torque, no losses
+            out.append({"speed_rpm": n, **c["losses"]})
+    return out
+
+
 def plots(report) -> list[PlotData]:
     d = report.design
     cands = sorted(d.motor.candidates, key=lambda c: c.speed_rpm)
-    speeds = [c.speed_rpm for c in cands]
-    main = PlotData(
-        "Motor losses against speed",
-        "motor speed, rpm",
-        "loss, W",
-        [
-            ("ohmic", speeds, [c.losses_W.ohmic for c in cands]),
-            ("iron", speeds, [c.losses_W.iron for c in cands]),
-            ("magnets", speeds, [c.losses_W.magnets for c in cands]),
-            ("total", speeds, [c.losses_W.total for c in cands]),
-        ],
+    curve = loss_curve(report) or [
+        {"speed_rpm": c.speed_rpm, **c.losses_W.model_dump()} for c in cands
+    ]
+    speeds = [c["speed_rpm"] for c in curve]
+    series = [
+        (name, speeds, [c[key] for c in curve])
+        for name, key in (
+            ("ohmic", "ohmic"),
+            ("iron", "iron"),
+            ("magnets", "magnets"),
+            ("total", "total"),
+        )
+    ]
+    series += [
+        (f"candidate {c.speed_rpm:g} rpm (total)", [c.speed_rpm], [c.losses_W.total]) for c in cands
+    ]
+    series.append(
+        ("working point", [d.motor.speed_rpm], [d.motor.losses_W.total]),
     )
+    series.append(("frame's limit", [speeds[0], speeds[-1]], [d.motor.loss_limit_W] * 2))
+    main = PlotData("Motor losses against speed", "motor speed, rpm", "loss, W", series)
     fig = d.gearbox.fig1
     fig1 = PlotData(
         "Reducer stage volume per unit torque against q (seed 000, fig. 1)",
@@ -66,3 +114,60 @@ def plots(report) -> list[PlotData]:
     from advisor.duty.views import plots as duty_plots
 
     return [main, fig1, *duty_plots(getattr(d, "duty", None))]
+
+
+def compare(report) -> list[Any]:
+    """Candidate motor speeds, the rule reducer against the lightest and the slimmest of the
+    design space, and the one-way device types."""
+    from advisor.tui.compare import Option, Section, decision, mark, one_way, table
+
+    d = report.design
+    m, g = d.motor, d.gearbox
+    t = table("speed rpm", "q_Σ", "stages", "η", "torque N·m", "losses W", "within limit")
+    options = []
+    for c in sorted(m.candidates, key=lambda c: c.speed_rpm):
+        chosen = c.speed_rpm == m.speed_rpm
+        t.add_row(
+            mark(chosen, f"{c.speed_rpm:g}"),
+            f"{c.total_ratio:.4g}",
+            str(c.stages),
+            f"{c.gearbox_efficiency:.3g}",
+            f"{c.torque_Nm:.4g}",
+            f"{c.losses_W.total:.4g}",
+            "yes" if c.within_loss_limit else "no",
+        )
+        if not chosen and c.within_loss_limit and c.stages:
+            patch = ((("motor", "candidate_speeds_rpm"), [c.speed_rpm]),)
+            options.append(Option(f"Use {c.speed_rpm:g} rpm", patch))
+    motors = Section(
+        "Motor speed (the reference motor rewound)",
+        t,
+        decision(report, "BL-02"),
+        tuple(options),
+        "“Use” keeps that speed alone in motor.candidate_speeds_rpm.",
+    )
+    r = table("reducer", "stages", "q (output first)", "Ø mm", "length mm", "mass kg", "η")
+    for name, s, chosen in (
+        ("rules (seed 000)", g, True),
+        ("lightest in the space", g.optimum, False),
+        ("slimmest in the space", g.optimum_min_diameter, False),
+    ):
+        ratios = ", ".join(f"{st.ratio:.4g}" for st in reversed(s.stages))
+        r.add_row(
+            mark(chosen, name),
+            str(len(s.stages)),
+            ratios,
+            f"{s.outer_diameter_mm:.4g}",
+            f"{s.length_mm:.4g}",
+            f"{s.mass_kg:.3g}",
+            f"{s.efficiency:.3g}",
+        )
+    why = " ".join(x for x in (decision(report, "WG-04"), decision(report, "WG-05")) if x)
+    reducer = Section(
+        "Reducer: the rules against the design space",
+        r,
+        why,
+        (),
+        "The requirement has no key that imposes a reducer layout: the rules decide it.",
+    )
+    return [motors, reducer, *one_way(report)]

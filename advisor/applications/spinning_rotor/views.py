@@ -43,13 +43,17 @@ def components(report) -> list[Any]:
 def plots(report) -> list[PlotData]:
     d = report.design
     r = d.rotor
-    main = PlotData(
+    # each on its own time axis: the run-up takes seconds, a sustained slew can take minutes
+    run_up = PlotData(
         "Run-up of the rotor",
         "time, s",
         "speed, rad/s",
-        [
-            ("run-up", r.run_up.time_s, r.run_up.speed_rad_s),
-            ("sustained slew", r.slew.curve.time_s, r.slew.curve.speed_rad_s),
-        ],
+        [("run-up", r.run_up.time_s, r.run_up.speed_rad_s)],
     )
-    return [main]
+    slew = PlotData(
+        "Speed during a sustained slew",
+        "time, s",
+        "speed, rad/s",
+        [("sustained slew", r.slew.curve.time_s, r.slew.curve.speed_rad_s)],
+    )
+    return [run_up, slew]

@@ -1,0 +1,433 @@
+"""The wizard an engineer can trust (issue 14), driven through textual's Pilot: it never
+computes or exports what the screen does not show, every view shows the current result or
+says why there is none, a file opened never replaces another draft, every problem a file
+can have is fixed inside the wizard, and no key is lost."""
+
+import tomllib
+
+import pytest
+from helpers import EXAMPLES
+from textual.widgets import Button, Input, Label, RadioSet, Static
+
+from advisor.tui import draft as drafts
+from advisor.tui import fixes
+from advisor.tui.app import ConfirmScreen, DriveAdvisorApp, ExportScreen
+
+SIZE = (120, 40)
+VALVE = EXAMPLES / "valve_actuator_hold.toml"
+
+
+@pytest.fixture(autouse=True)
+def _state_dir(tmp_path, monkeypatch):
+    monkeypatch.setenv("XDG_STATE_HOME", str(tmp_path / "state"))
+    monkeypatch.setenv("TEXTUAL_ANIMATIONS", "none")
+    monkeypatch.chdir(tmp_path)
+
+
+def _text(widget) -> str:
+    from rich.console import Console
+
+    console = Console(width=200, record=True, file=open(__import__("os").devnull, "w"))
+    console.print(widget.content if hasattr(widget, "content") else widget.render())
+    return console.export_text()
+
+
+def _doc(path=VALVE) -> dict:
+    return tomllib.loads(path.read_text(encoding="utf-8"))
+
+
+async def _settle(pilot, app, start: int) -> None:
+    for _ in range(500):
+        await pilot.pause(0.02)
+        if app.results_version > start and not app.computing:
+            return
+    raise AssertionError("no result")
+
+
+async def _computed(app, pilot) -> None:
+    start = app.results_version
+    await pilot.press("ctrl+r")
+    await _settle(pilot, app, start)
+
+
+async def _retype(pilot, app, widget_id: str, text: str) -> None:
+    box = app.query_one(f"#{widget_id}", Input)
+    box.focus()
+    await pilot.pause()
+    box.value = ""
+    await pilot.press(*text)
+
+
+# ------------------------------------------------------------------ never compute the unseen
+async def test_a_field_in_error_stops_compute_and_the_draft_never_holds_a_half_value():
+    """The issue's repro: torque 8OO (letter O) computed 8 N·m and the draft held 8.0."""
+    app = DriveAdvisorApp(_doc(), VALVE)
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("ctrl+n")
+        assert app.step == 1
+        await _retype(pilot, app, "f-rotary-torque-Nm", "8OO")
+        start = app.results_version
+        await pilot.press("ctrl+r")
+        await pilot.pause(0.3)
+        assert app.results_version == start and app.report is None  # nothing computed
+        assert app.query_one("#main").current == "wizard" and app.step == 1
+        assert app.focused is app.query_one("#f-rotary-torque-Nm")  # taken to the field
+        assert "'8OO' is not a number" in _text(app.query_one("#f-rotary-torque-Nm-err", Label))
+        saved = drafts.load_draft(VALVE).doc
+        assert "torque_Nm" not in saved["rotary"]  # neither 8.0 nor the old 1000
+        # ctrl+s refuses the same way
+        await pilot.press("ctrl+s")
+        await pilot.pause()
+        assert not isinstance(app.screen, ExportScreen)
+
+
+async def test_a_cleared_field_is_not_computed_with_its_old_value():
+    app = DriveAdvisorApp(_doc(), VALVE, save_drafts=False)
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("ctrl+n")
+        await _retype(pilot, app, "f-rotary-torque-Nm", "")
+        start = app.results_version
+        await pilot.press("ctrl+r")
+        await pilot.pause(0.3)
+        assert app.results_version == start  # not 1000 N·m, the value no longer shown
+        assert app.step == 1 and app.focused is app.query_one("#f-rotary-torque-Nm")
+        assert "required" in _text(app.query_one("#f-rotary-torque-Nm-err", Label))
+        # typed again, it computes exactly what is shown
+        await pilot.press(*"800")
+        await _computed(app, pilot)
+        assert app.report.requirements["rotary"]["torque_Nm"] == 800.0
+
+
+async def test_an_error_on_another_step_is_shown_before_computing():
+    app = DriveAdvisorApp(_doc(), VALVE, save_drafts=False)
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("ctrl+n", "ctrl+n")
+        assert app.step == 2
+        await _retype(pilot, app, "f-envelope-max-length-mm", "-5")
+        await pilot.press("ctrl+n", "ctrl+n")  # the engine's check stops ctrl+n on step 2
+        assert app.step == 2
+        await pilot.press("ctrl+b", "ctrl+b")
+        start = app.results_version
+        await pilot.press("ctrl+r")
+        await pilot.pause(0.3)
+        assert app.results_version == start and app.step == 2
+        assert "must be > 0" in _text(app.query_one("#f-envelope-max-length-mm-err", Label))
+
+
+async def test_an_infeasible_recompute_leaves_no_plot_of_the_previous_design():
+    app = DriveAdvisorApp(_doc(), VALVE, save_drafts=False)
+    async with app.run_test(size=SIZE) as pilot:
+        await _computed(app, pilot)
+        assert app.report is not None
+        assert len(app.query_one("#plot-switcher").children) == 2
+        await pilot.press("ctrl+e", "ctrl+n", "ctrl+n")
+        await _retype(pilot, app, "f-envelope-max-outer-diameter-mm", "20")
+        await _computed(app, pilot)
+        assert app.report is None
+        assert len(app.query_one("#plot-switcher").children) == 0
+        assert "No plot" in _text(app.query_one("#plot-note", Static))
+        for name in ("components", "decisions", "checks"):
+            assert "No design to show" in _text(app.query_one(f"#view-{name}", Static))
+        summary = _text(app.query_one("#view-summary", Static))
+        assert summary.count("No feasible design") == 1
+        assert "No design" in _text(app.query_one("#result-status", Static))
+
+
+async def test_results_say_when_the_inputs_changed_since_and_the_report_is_not_saved_stale():
+    app = DriveAdvisorApp(_doc(), VALVE, save_drafts=False)
+    async with app.run_test(size=SIZE) as pilot:
+        await _computed(app, pilot)
+        assert "as they are now" in _text(app.query_one("#result-status", Static))
+        await pilot.press("ctrl+e", "ctrl+n")
+        await _retype(pilot, app, "f-rotary-torque-Nm", "900")
+        assert "changed since this result" in _text(app.query_one("#result-status", Static))
+        await pilot.press("ctrl+s")
+        await pilot.pause()
+        assert isinstance(app.screen, ExportScreen)
+        assert app.screen.query_one("#save-report", Button).disabled
+        await pilot.press("escape")
+        await _computed(app, pilot)
+        summary = _text(app.query_one("#view-summary", Static))
+        assert "Changed since the previous result" in summary and "1000 → 900" in summary
+
+
+async def test_opening_a_file_keeps_the_draft_of_a_new_requirement():
+    drafts.save_draft({"application": {"kind": "linear", "title": "unsaved work"}})
+    app = DriveAdvisorApp(_doc(), VALVE)
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("ctrl+n")
+        await _retype(pilot, app, "f-rotary-torque-Nm", "900")
+        await pilot.pause()
+    assert drafts.load_draft().doc == {"application": {"kind": "linear", "title": "unsaved work"}}
+    assert drafts.load_draft(VALVE).doc["rotary"]["torque_Nm"] == 900.0
+    # the file's own draft is offered when the file is opened again
+    app = DriveAdvisorApp(_doc(), VALVE)
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.pause()
+        assert isinstance(app.screen, ConfirmScreen)
+        await pilot.press("y")
+        await pilot.pause()
+        assert app.query_one("#f-rotary-torque-Nm", Input).value == "900"
+
+
+# ------------------------------------------------------------------ every file can be fixed
+async def test_a_file_without_the_motor_table_gets_its_fixed_values(tmp_path):
+    doc = _doc()
+    del doc["motor"]
+    app = DriveAdvisorApp(doc, tmp_path / "no_motor.toml", save_drafts=False)
+    async with app.run_test(size=SIZE) as pilot:
+        for step in (1, 2, 3, 4):
+            await pilot.press("ctrl+n")
+            assert app.step == step
+        await _computed(app, pilot)
+        assert app.report is not None
+
+
+async def test_an_unknown_key_is_renamed_to_the_closest_known_key(tmp_path):
+    doc = _doc()
+    doc["rotary"]["sped_rpm"] = doc["rotary"].pop("speed_rpm")
+    app = DriveAdvisorApp(doc, tmp_path / "typo.toml", save_drafts=False)
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("ctrl+n", "ctrl+n")
+        assert app.step == 1  # refused: the unknown key and the missing speed
+        buttons = [str(b.label) for b in app.query(".fix Button")]
+        assert buttons == ["Rename to speed_rpm", "Remove sped_rpm"]
+        assert app.focused is app.query(".fix Button").first()
+        await pilot.press("enter")
+        await pilot.pause()
+        assert app.doc["rotary"]["speed_rpm"] == doc["rotary"]["sped_rpm"]
+        assert "sped_rpm" not in app.doc["rotary"]
+        assert app.query_one("#f-rotary-speed-rpm", Input).value != ""
+        await pilot.press("ctrl+n")
+        assert app.step == 2
+
+
+async def test_an_unknown_key_can_be_removed(tmp_path):
+    doc = _doc()
+    doc["gearbox"]["colour"] = "red"
+    app = DriveAdvisorApp(doc, tmp_path / "extra.toml", save_drafts=False)
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("ctrl+r")
+        await pilot.pause(0.3)
+        assert app.step == 3 and app.report is None
+        assert [str(b.label) for b in app.query(".fix Button")] == ["Remove colour"]
+        await pilot.click(".fix Button")
+        await pilot.pause()
+        assert "colour" not in app.doc["gearbox"]
+        await _computed(app, pilot)
+        assert app.report is not None
+
+
+async def test_a_wrong_typed_value_is_shown_in_its_field(tmp_path):
+    doc = _doc()
+    doc["rotary"]["torque_Nm"] = True
+    doc["gearbox"]["rolling_body"] = "cylinder"
+    app = DriveAdvisorApp(doc, tmp_path / "types.toml", save_drafts=False)
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("ctrl+r")
+        await pilot.pause(0.3)
+        assert app.step == 1 and app.focused is app.query_one("#f-rotary-torque-Nm")
+        assert app.query_one("#f-rotary-torque-Nm", Input).value == "True"
+        assert "is not a number" in _text(app.query_one("#f-rotary-torque-Nm-err", Label))
+        # a choice no list can show is set aside on opening, and said so on the first step
+        said = _text(app.query_one("#step-0-error", Static))
+        assert "gearbox.rolling_body = 'cylinder': must be one of ball, roller" in said
+
+
+def test_fixes_for_the_engine_messages():
+    doc = {"linear": {"strok_m": 0.2}, "application": {"kind": "linear"}}
+    line = "linear.strok_m: unknown key; allowed keys here: force_N, stroke_m, travel_time_s"
+    found = fixes.fixes_for(line, doc, "linear")
+    assert [f.label for f in found] == ["Rename to stroke_m", "Remove strok_m"]
+    fixes.apply(doc, found[0])
+    assert doc["linear"] == {"stroke_m": 0.2}
+    # a list item named from 1 in messages is index 0 in the document
+    assert fixes.message_path("positioning.motors[1].nam: unknown key") == (
+        "positioning",
+        "motors",
+        "0",
+        "nam",
+    )
+    # a value a field shows is fixed in the field, not by a button
+    assert fixes.fixes_for("linear.stroke_m = -1: must be > 0", doc, "linear") == []
+    # nothing close: only removal
+    doc = {"motor": {"zzz": 1}}
+    line = "motor.zzz: unknown key; allowed keys here: kind, supply_frequency_Hz"
+    assert [f.label for f in fixes.fixes_for(line, doc, "linear")] == ["Remove zzz"]
+
+
+# ------------------------------------------------------------------ keys and layout
+async def test_focus_starts_on_the_first_field_of_each_step_and_no_key_is_lost():
+    app = DriveAdvisorApp(save_drafts=False, offer_draft=False)
+    async with app.run_test(size=SIZE) as pilot:
+        assert app.focused is app.query_one("#kind", RadioSet)
+        await pilot.press("down", "enter")  # the second application: rotary
+        await pilot.pause()
+        assert app.kind == "rotary"
+        await pilot.press("ctrl+n", *"750", "enter", *"60")  # typed at once, no click
+        assert app.query_one("#f-rotary-torque-Nm", Input).value == "750"
+        assert app.query_one("#f-rotary-speed-rpm", Input).value == "60"
+        await pilot.press("enter")  # enter on the last field: the next step
+        assert app.step == 2
+        assert app.focused is app.query_one("#f-envelope-max-outer-diameter-mm")
+
+
+async def test_step_names_fit_the_application_and_no_step_is_empty():
+    app = DriveAdvisorApp(
+        tomllib.loads((EXAMPLES / "gyro_compensator.toml").read_text()), save_drafts=False
+    )
+    async with app.run_test(size=(80, 24)) as pilot:
+        bar = _text(app.query_one("#steps", Static))
+        assert "Aerodynamic drag" in bar or "3" in bar
+        await pilot.press("ctrl+n", "ctrl+n")
+        assert "Aerodynamic drag" in _text(app.query_one("#steps", Static))
+        assert "Review" in _text(app.query_one("#steps", Static))  # named even at 80
+    app = DriveAdvisorApp(
+        tomllib.loads((EXAMPLES / "positioning_drive.toml").read_text()), save_drafts=False
+    )
+    async with app.run_test(size=(80, 24)) as pilot:
+        await pilot.press("ctrl+n", "ctrl+n")
+        assert app.step == 3  # step 2 has no question for a positioning drive: skipped
+        assert "Candidate motors" in _text(app.query_one("#steps", Static))
+        assert "Review" in _text(app.query_one("#steps", Static))
+
+
+async def test_export_dialog_path_has_focus_enter_saves_and_keep_keeps_the_path(tmp_path):
+    app = DriveAdvisorApp(_doc(), VALVE, save_drafts=False)
+    async with app.run_test(size=SIZE) as pilot:
+        await _computed(app, pilot)
+        (tmp_path / "taken.report.toml").write_text("keep me")
+        await pilot.press("ctrl+s", "ctrl+u", *"taken.report.toml", "enter")
+        await pilot.pause()
+        assert isinstance(app.screen, ConfirmScreen)
+        await pilot.press("n")
+        await pilot.pause()
+        assert isinstance(app.screen, ExportScreen)
+        box = app.screen.query_one("#export-path", Input)
+        assert box.value == "taken.report.toml" and app.screen.focused is box
+        assert (tmp_path / "taken.report.toml").read_text() == "keep me"
+        await pilot.press("ctrl+u", *"fresh.report.toml", "enter")
+        await pilot.pause(0.2)
+        assert not isinstance(app.screen, ExportScreen)
+        assert "[design" in (tmp_path / "fresh.report.toml").read_text()
+
+
+async def test_it_shows_that_it_is_computing(monkeypatch):
+    import time
+
+    from advisor.core import engine
+
+    real = engine.advise
+
+    def slow(*args, **kwargs):
+        time.sleep(0.5)
+        return real(*args, **kwargs)
+
+    monkeypatch.setattr(engine, "advise", slow)
+    app = DriveAdvisorApp(_doc(), VALVE, save_drafts=False)
+    async with app.run_test(size=SIZE) as pilot:
+        seen = []
+        start = app.results_version
+        await pilot.press("ctrl+r")
+        await pilot.pause(0.1)
+        seen.append(_text(app.query_one("#steps", Static)))
+        await _settle(pilot, app, start)
+        assert "Computing" in seen[0]
+        assert "Computing" not in _text(app.query_one("#steps", Static))
+
+
+async def test_one_way_device_summary_and_components():
+    app = DriveAdvisorApp(_doc(), VALVE, save_drafts=False)
+    async with app.run_test(size=SIZE) as pilot:
+        await _computed(app, pilot)
+        summary = _text(app.query_one("#view-summary", Static))
+        assert "holding: roller clutch at the motor side" in summary
+        comps = _text(app.query_one("#view-components", Static))
+        assert "where" in comps and "motor side" in comps and "output side" in comps
+        assert "em clutch" in comps and "(chosen)" in comps and "basis" in comps
+
+
+# ------------------------------------------------------------------ compare
+async def test_compare_shows_the_alternatives_and_use_this_imposes_one():
+    app = DriveAdvisorApp(_doc(), VALVE, save_drafts=False)
+    async with app.run_test(size=SIZE) as pilot:
+        await _computed(app, pilot)
+        app.query_one("#result-tabs").active = "tab-compare"
+        await pilot.pause()
+        text = "\n".join(_text(w) for w in app.query("#compare-box Static"))
+        assert "▶ rules (seed 000)" in text and "lightest in the space" in text
+        assert "slimmest in the space" in text and "▶ roller clutch" in text
+        assert "▶ chosen: BL-02" in text and "OW-02" in text
+        labels = [str(b.label) for b in app.query("#compare-box Button")]
+        assert "Use em clutch" in labels
+        start = app.results_version
+        button = next(b for b in app.query("#compare-box Button") if "em clutch" in str(b.label))
+        button.press()
+        await _settle(pilot, app, start)
+        assert app.doc["one_way"]["type"] == "em_clutch"
+        assert app.report.design.one_way.type == "em_clutch"  # the next compute is that design
+        summary = _text(app.query_one("#view-summary", Static))
+        assert "input one_way.type: auto → em_clutch" in summary
+
+
+async def test_compare_after_an_infeasible_result_says_why_there_is_nothing():
+    doc = _doc()
+    doc.setdefault("envelope", {})["max_outer_diameter_mm"] = 20
+    app = DriveAdvisorApp(doc, VALVE, save_drafts=False)
+    async with app.run_test(size=SIZE) as pilot:
+        await _computed(app, pilot)
+        text = "\n".join(_text(w) for w in app.query("#compare-box Static"))
+        assert "Nothing to compare: the requirement has no feasible design" in text
+
+
+def test_plot_markers_tell_series_apart_without_colour():
+    from advisor.tui import views
+
+    data = views.PlotData("t", "x", "y", [("a", [1, 2], [1, 2]), ("b", [1, 2], [2, 1])])
+    data = data._replace(series=[*data.series, ("working point", [1.5], [1.5])])
+    assert views.markers(data) == ["•", "+", "◆"]
+    assert views.legend(data) == "• a   + b   ◆ working point"
+    assert views.plural(1, "check") == "1 check" and views.plural(2, "check") == "2 checks"
+
+
+async def test_keys_arriving_in_a_burst_act_in_order():
+    """A loaded machine delivers keys in bursts: ctrl+u then a path, all queued at once.
+    textual ran ctrl+u's deletion after the path was typed (and deleted it); here it acts
+    first, as typed. The same for backspace in a wizard field."""
+    from textual import events
+
+    def burst(app, keys):
+        for key in keys:
+            char = {"ctrl+u": "\x15", "backspace": "\x7f", "full_stop": "."}.get(key, key)
+            app.post_message(events.Key(key, char))
+
+    app = DriveAdvisorApp(_doc(), VALVE, save_drafts=False)
+    async with app.run_test(size=SIZE) as pilot:
+        await _computed(app, pilot)
+        await pilot.press("ctrl+s")
+        await pilot.pause()
+        burst(app, ["ctrl+u", *"e2e", "full_stop", *"toml"])
+        await pilot.pause(0.3)
+        assert app.screen.query_one("#export-path", Input).value == "e2e.toml"
+        await pilot.press("escape", "ctrl+e", "ctrl+n")
+        box = app.query_one("#f-rotary-torque-Nm", Input)
+        assert app.focused is box
+        burst(app, ["ctrl+u", "8", "backspace", "9", "0", "0"])
+        await pilot.pause(0.3)
+        assert box.value == "900"
+
+
+def test_the_loss_curve_passes_through_every_candidate_speed():
+    """The curve is computed as the candidates are: at each candidate speed it gives the
+    report's own losses (the rudder: 228.42 W at 5000 rpm, the reference point of seed 000
+    whose losses are the frame's limit)."""
+    from advisor.applications.rotary.views import loss_curve
+    from advisor.core.engine import advise
+    from advisor.core.requirements import read_requirements
+
+    report = advise(read_requirements(EXAMPLES / "rudder_actuator.toml"))
+    curve = {round(c["speed_rpm"], 6): c for c in loss_curve(report)}
+    assert len(curve) > 30  # a curve, not two points
+    for cand in report.design.motor.candidates:
+        assert curve[cand.speed_rpm]["total"] == pytest.approx(cand.losses_W.total, rel=1e-12)
+    assert curve[5000.0]["total"] == pytest.approx(228.42, abs=0.01)
