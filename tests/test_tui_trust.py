@@ -72,7 +72,9 @@ async def test_a_field_in_error_stops_compute_and_the_draft_never_holds_a_half_v
         assert app.results_version == start and app.report is None  # nothing computed
         assert app.query_one("#main").current == "wizard" and app.step == 1
         assert app.focused is app.query_one("#f-rotary-torque-Nm")  # taken to the field
-        assert "'8OO' is not a number" in _text(app.query_one("#f-rotary-torque-Nm-err", Label))
+        assert "'8OO': must be a number or a quantity with a unit" in _text(
+            app.query_one("#f-rotary-torque-Nm-err", Label)
+        )
         saved = drafts.load_draft(VALVE).doc
         assert "torque_Nm" not in saved["rotary"]  # neither 8.0 nor the old 1000
         # ctrl+s refuses the same way
@@ -111,7 +113,7 @@ async def test_an_error_on_another_step_is_shown_before_computing():
         await pilot.press("ctrl+r")
         await pilot.pause(0.3)
         assert app.results_version == start and app.step == 2
-        assert "must be > 0" in _text(app.query_one("#f-envelope-max-length-mm-err", Label))
+        assert "must be ≥ 1" in _text(app.query_one("#f-envelope-max-length-mm-err", Label))
 
 
 async def test_an_infeasible_recompute_leaves_no_plot_of_the_previous_design():
@@ -228,7 +230,9 @@ async def test_a_wrong_typed_value_is_shown_in_its_field(tmp_path):
         await pilot.pause(0.3)
         assert app.step == 1 and app.focused is app.query_one("#f-rotary-torque-Nm")
         assert app.query_one("#f-rotary-torque-Nm", Input).value == "True"
-        assert "is not a number" in _text(app.query_one("#f-rotary-torque-Nm-err", Label))
+        assert "must be a number or a quantity with a unit" in _text(
+            app.query_one("#f-rotary-torque-Nm-err", Label)
+        )
         # a choice no list can show is set aside on opening, and said so on the first step
         said = _text(app.query_one("#step-0-error", Static))
         assert "gearbox.rolling_body = 'cylinder': must be one of ball, roller" in said

@@ -12,7 +12,7 @@ from typing import Any
 
 from advisor.core.questions import UNIT_SUFFIXES
 from advisor.core.report import _is_curve, curve_part
-from advisor.datasheet.references import cited, readable
+from advisor.datasheet.references import readable, references
 
 #: A check whose margin is below this passes, but with little to spare: marked "tight".
 TIGHT_MARGIN = 1.1
@@ -250,7 +250,7 @@ def sheet(doc: dict[str, Any], headline: str, summary: list[tuple[str, str]]) ->
         decisions=decisions,
         checks=checks,
         warnings=list(doc.get("warnings", [])),
-        references=cited(sources),
+        references=references(doc, sources),
     )
 
 

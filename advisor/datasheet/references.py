@@ -59,3 +59,30 @@ def cited(sources: list[str]) -> list[str]:
     found = {m.group(1) for s in sources for m in _SEED_FILE.finditer(s)}
     found |= {m.group(1) for s in sources for m in re.finditer(r"\bSeed (\d{3})\b", s)}
     return [SEEDS[k] for k in sorted(found) if k in SEEDS]
+
+
+def entry_text(e: dict) -> str:
+    """One entry of the report's bibliography (``[[sources]]``) as a reference line."""
+    head = ", ".join(e.get("authors", []))
+    parts = [f"{e.get('short', e.get('id', ''))}: {head}." if head else f"{e.get('short', '')}:"]
+    if e.get("title"):
+        parts.append(f"«{e['title']}»")
+    where = [
+        str(e[k])
+        for k in ("number", "journal", "volume", "institution", "publisher", "year")
+        if e.get(k) not in (None, "")
+    ]
+    if where:
+        parts.append(", ".join(where) + ".")
+    if e.get("note"):
+        parts.append(f"({e['note']})")
+    return " ".join(parts)
+
+
+def references(doc: dict, sources: list[str]) -> list[str]:
+    """The report's own bibliography when it has one; an older report without ``[[sources]]``
+    gets the seeds its source texts name."""
+    entries = doc.get("sources")
+    if entries:
+        return [entry_text(e) for e in entries]
+    return cited(sources)
