@@ -15,7 +15,7 @@ References
 import math
 from typing import NamedTuple
 
-from advisor.calc.roots import bisect
+from advisor.calc.roots import bisect, golden_min
 
 G = 9.80665  # kgf → N, for the engineering units of (12), (13)
 
@@ -213,22 +213,7 @@ def optimal_ratio_triangular(d: Drive, path_rad: float) -> float:
     lo = math.log(max(m * (1.0 + 1e-9), RATIO_MIN))
     hi = math.log(RATIO_MAX)
     f = lambda x: move_time_triangular(d, path_rad, math.exp(x))  # noqa: E731
-    phi = (math.sqrt(5.0) - 1.0) / 2.0
-    a, b = lo, hi
-    c, e = b - phi * (b - a), a + phi * (b - a)
-    fc, fe = f(c), f(e)
-    for _ in range(200):
-        if fc < fe:
-            b, e, fe = e, c, fc
-            c = b - phi * (b - a)
-            fc = f(c)
-        else:
-            a, c, fc = c, e, fe
-            e = a + phi * (b - a)
-            fe = f(e)
-        if b - a < 1e-12:
-            break
-    return math.exp((a + b) / 2.0)
+    return math.exp(golden_min(f, lo, hi, iterations=200, xtol=1e-12))
 
 
 def coefficient_a_engineering(

@@ -6,6 +6,7 @@ The functions solved here are smooth and monotone on their bracket, so bisection
 precision (about 60 halvings) is exact enough and costs microseconds.
 """
 
+import math
 from collections.abc import Callable
 
 
@@ -89,3 +90,29 @@ def brent(f: Callable[[float], float], lo: float, hi: float, *, xtol: float = 1e
 
 
 _EPS = 2.220446049250313e-16
+
+
+def golden_min(
+    f: Callable[[float], float], a: float, b: float, *, iterations: int = 200, xtol: float = 0.0
+) -> float:
+    """The minimum of a unimodal ``f`` on [a, b] by golden-section search: the middle of the
+    last bracket, after ``iterations`` steps or once the bracket is narrower than ``xtol``.
+
+    >>> round(golden_min(lambda x: (x - 2.0) ** 2, 0.0, 5.0), 9)
+    2.0
+    """
+    phi = (math.sqrt(5.0) - 1.0) / 2.0
+    c, e = b - phi * (b - a), a + phi * (b - a)
+    fc, fe = f(c), f(e)
+    for _ in range(iterations):
+        if fc < fe:
+            b, e, fe = e, c, fc
+            c = b - phi * (b - a)
+            fc = f(c)
+        else:
+            a, c, fc = c, e, fe
+            e = a + phi * (b - a)
+            fe = f(e)
+        if b - a < xtol:
+            break
+    return (a + b) / 2.0

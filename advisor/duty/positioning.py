@@ -12,6 +12,7 @@ import math
 from advisor.calc import duty as du
 from advisor.calc import motion as mo
 from advisor.calc.checks import Check
+from advisor.calc.roots import golden_min
 from advisor.core.errors import InfeasibleError
 from advisor.core.rulebook import Trace
 from advisor.duty.report import DutyOut, phases_out
@@ -111,19 +112,7 @@ def least_rms(d: mo.Drive, path: float, t_cycle: float, fastest: float) -> tuple
     if 0 < k < len(grid) - 1 and math.isfinite(vals[k - 1]) and math.isfinite(vals[k + 1]):
         a, b = math.log(grid[k - 1]), math.log(grid[k + 1])
         f = lambda x: _eval(d, path, math.exp(x), t_cycle)[1]  # noqa: E731
-        phi = (math.sqrt(5.0) - 1.0) / 2.0
-        c, e = b - phi * (b - a), a + phi * (b - a)
-        fc, fe = f(c), f(e)
-        for _ in range(100):
-            if fc < fe:
-                b, e, fe = e, c, fc
-                c = b - phi * (b - a)
-                fc = f(c)
-            else:
-                a, c, fc = c, e, fe
-                e = a + phi * (b - a)
-                fe = f(e)
-        x = (a + b) / 2.0
+        x = golden_min(f, a, b, iterations=100)
         if f(x) < best[1]:
             best = (math.exp(x), f(x))
     return best
