@@ -334,3 +334,23 @@ def test_rotor_design_meets_its_run_up_time_and_holds_speed(data):
         for a, b in zip(r.run_up.speed_rad_s, r.run_up.speed_rad_s[1:], strict=False)
     )
     assert 0 <= r.slew.balance_speed_rad_s <= r.speed_rad_s
+
+
+def test_self_locking_is_judged_by_the_standard_friction_under_the_paper_model():
+    """Hypothesis found it: Tr60x9 with two starts (ψ = atan(18/(π·55.5)) = 5.89°) at
+    f = 0.1016 self-locks by the standard reduced friction, atan(0.1016/cos 15°) = 6.00°, but
+    not by the paper's f/cos(ψ/2), atan(0.1017) = 5.81°. Holding is physics: the report's
+    `self_locking` agrees with the holding rule's standard judgement."""
+    data = {
+        "application": {"kind": "linear", "hold_without_power": True},
+        "linear": {"force_N": 1.0, "stroke_m": 1.0, "travel_time_s": 2.0, "support_span_m": 1.0},
+        "motor": {"kind": "induction", "supply_frequency_Hz": 50},
+        "screw": {"starts": 2, "friction_model": "paper", "friction_coefficient": 0.1015625},
+    }
+    try:
+        rep = advise(parse_requirements(data))
+    except InfeasibleError:
+        return
+    s = rep.design.screw
+    if s.self_locking_at_low_friction:
+        assert s.self_locking

@@ -191,7 +191,11 @@ def evaluate_thread(
         else sc.thread_torque(force_N, d2, p, f, "paper", starts),
         efficiency=sc.efficiency(psi, phi),
         back_driving_efficiency=sc.back_driving_efficiency(psi, phi),
-        self_locking=sc.is_self_locking(psi, phi),
+        # holding is physics: judged with the standard reduced friction even when the torque
+        # follows the paper's f/cos(ψ/2), so it agrees with the low-friction judgement below
+        self_locking=sc.is_self_locking(
+            psi, phi if friction_model == "standard" else sc.friction_angle(f, "standard", psi)
+        ),
         self_locking_at_low_friction=sc.is_self_locking(psi, phi_low),
         revolutions=revs,
         speed_rpm=speed,
