@@ -128,6 +128,37 @@ def _input(value: str, id: str) -> Input:
     return box
 
 
+class SteadyFooter(Footer):
+    """A footer that rebuilds its keys only when the keys it shows change.
+
+    textual's footer recomposes (a dozen new widgets, restyled) on every change of focus;
+    a compute moves the focus several times, and each rebuild cost more than the compute."""
+
+    _shown: Any = None
+
+    def _keys(self) -> tuple[Any, ...]:
+        return tuple(
+            (binding, enabled, tooltip)
+            for (_, binding, enabled, tooltip) in self.screen.active_bindings.values()
+            if binding.show
+        )
+
+    def bindings_changed(self, screen: Any) -> None:
+        self._bindings_ready = True
+        if not screen.app.app_focus:
+            return
+        if self.is_attached and screen is self.screen:
+            self.call_after_refresh(self._recompose_if_changed)
+
+    async def _recompose_if_changed(self) -> None:
+        if not self.is_attached:
+            return
+        keys = self._keys()
+        if keys != self._shown:
+            self._shown = keys
+            await self.recompose()
+
+
 class Choice(RadioButton):
     """A radio button whose state reads without colour (NO_COLOR): ● chosen, blank not."""
 
@@ -362,7 +393,7 @@ class DriveAdvisorApp(App[None]):
                             else:
                                 with VerticalScroll():
                                     yield Static("", id=f"view-{name.lower()}")
-        yield Footer()
+        yield SteadyFooter()
 
     async def on_mount(self) -> None:
         await self._build_steps()
@@ -595,11 +626,11 @@ class DriveAdvisorApp(App[None]):
         was = self.field_errors.pop(f.id, None)
         if err is not None:
             self.field_errors[f.id] = err
-        label = self.query(f"#{f.id}-err")
+        label = self.query_one_optional(f"#{f.id}-err", Label)
         # an empty field keeps what the engine said of it ("missing; required"), unless it
         # showed an error of its own text
-        if label and (err is not None or text.strip() or was is not None):
-            label.first(Label).update(plain(err or ""))
+        if label is not None and (err is not None or text.strip() or was is not None):
+            label.update(plain(err or ""))
         return err
 
     @on(RadioSet.Changed, "#kind")
