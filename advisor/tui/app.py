@@ -3,9 +3,19 @@
 It calls exactly the engine the batch uses (:func:`advisor.core.engine.advise`), in a worker
 thread so the screen never freezes. Every change is saved to a draft in the user's state
 directory and offered back at the next start.
+
+Start-up is staged so that the first screen shows within half a second: the first step is
+painted from the file as read (textual and the registry only); the questions, which come
+from the pydantic models, the other steps and the result views are built right after that
+first paint, keys typed meanwhile waiting (none is lost); then a worker thread imports the
+engine and the application and advises once, discarded, so that the first ctrl+r finds the
+modules and catalogs loaded.
 """
 
+import asyncio
 import copy
+import importlib
+import threading
 import time
 from pathlib import Path
 from typing import Any, ClassVar
@@ -34,11 +44,32 @@ from textual.widgets import (
     TabPane,
 )
 
+from advisor.core import registry
 from advisor.core.errors import InfeasibleError, InputError
 from advisor.io_safety import plain, show
-from advisor.tui import draft as drafts
-from advisor.tui import fields as F
-from advisor.tui import fixes, views
+
+
+class _OnFirstUse:
+    """A module imported when first used: the wizard's fields, drafts and views import the
+    requirement models (pydantic), which the first screen must not wait for."""
+
+    def __init__(self, name: str) -> None:
+        self.__dict__["_name"] = name
+
+    def __getattr__(self, attr: str) -> Any:
+        return getattr(importlib.import_module(self._name), attr)
+
+
+drafts: Any = _OnFirstUse("advisor.tui.draft")
+F: Any = _OnFirstUse("advisor.tui.fields")
+fixes: Any = _OnFirstUse("advisor.tui.fixes")
+views: Any = _OnFirstUse("advisor.tui.views")
+
+#: The asking steps and the review, as :mod:`advisor.tui.fields` numbers them (its STEPS:
+#: the application, the registry's default steps, the review); the first screen lays out
+#: their places before that module is imported.
+_ASKED = tuple(range(1, len(registry.DEFAULT_STEPS) + 1))
+_REVIEW = len(registry.DEFAULT_STEPS) + 1
 
 CSS = """
 Screen { layout: vertical; }
@@ -318,12 +349,13 @@ class DriveAdvisorApp(App[None]):
         save_drafts: bool = True,
         offer_draft: bool = True,
         problems: list[str] | None = None,
+        warm_up: bool | None = None,
     ) -> None:
         super().__init__()
-        # any document (a file, a draft, a test's dict) is shaped so that no widget breaks
-        shaped, found = drafts.shape(copy.deepcopy(doc)) if doc else ({}, [])
-        self.doc: dict[str, Any] = shaped
-        self.load_problems: list[str] = [*(problems or []), *found]
+        # the document as given; shaped (see _start) once the first screen is painted
+        self._given = doc
+        self.doc: dict[str, Any] = {}
+        self.load_problems: list[str] = list(problems or [])
         self.source = source
         self.catalog_dir = catalog_dir
         self.save_drafts = save_drafts
@@ -343,20 +375,32 @@ class DriveAdvisorApp(App[None]):
         self.computing = False
         self.results_version = 0
         self.last_compute_s = 0.0
-        if self.kind in F.titles():
-            fixes.fill_fixed(self.doc, self.kind)
-        self._last_doc: Any = copy.deepcopy(F.prune(self.doc))  # as last saved (or opened)
-        # the draft to offer, read before anything could save over it; none saved meanwhile
-        self._offered: drafts.Loaded | None = None
-        if self.offer_draft:
-            loaded = drafts.load_draft(source)
-            if loaded.doc is None and loaded.problems:  # unreadable: set aside, say so
-                self.load_problems += loaded.problems
-            elif loaded.doc and (source is None or F.prune(loaded.doc) != F.prune(self.doc)):
-                self._offered = loaded
+        self._last_doc: Any = None  # the document as last saved (or opened)
+        self._offered: Any = None  # the draft offered (a drafts.Loaded), while it is
+        # None: in a terminal, not under a test's Pilot (headless), where it would only cost
+        self.warm_up = warm_up
+        self._built = asyncio.Event()  # set once every step is built (see _start)
+        self._warmed = threading.Event()  # set when the warm-up advice is done (or none)
+        self._warmed.set()
+        self._plots_shown = -1  # the results_version whose plots are mounted
+        self._compare_shown = -1  # the results_version whose comparison is mounted
+
+    def _first_look(self) -> tuple[str | None, str]:
+        """The application and the title the first screen shows, from the document as given
+        (before it is shaped: only a registered kind and a text title are shown)."""
+        doc = self._given if isinstance(self._given, dict) else {}
+        app = doc.get("application")
+        app = app if isinstance(app, dict) else {}
+        kind = app.get("kind")
+        title = app.get("title", "")
+        return (
+            kind if isinstance(kind, str) and kind in registry.kinds() else None,
+            title if isinstance(title, str) else "",
+        )
 
     # ------------------------------------------------------------------ layout
     def compose(self) -> ComposeResult:
+        kind, title = self._first_look()
         yield Header()
         yield Static("", id="steps")
         with ContentSwitcher(initial="wizard", id="main"):
@@ -364,20 +408,14 @@ class DriveAdvisorApp(App[None]):
                 with VerticalScroll(id="step-0", classes="step"):
                     yield Label("What must the drive do?")
                     with RadioSet(id="kind"):
-                        for k, text in F.titles().items():
-                            yield Choice(
-                                text,
-                                id=f"kind-{k}",
-                                value=self.doc.get("application", {}).get("kind") == k,
-                            )
-                    yield Label(F.title_field().label, classes="name")
-                    yield _input(
-                        self.doc.get("application", {}).get("title", ""), "f-application-title"
-                    )
+                        for a in registry.applications():
+                            yield Choice(a.title, id=f"kind-{a.kind}", value=a.kind == kind)
+                    yield Label("", id="title-label", classes="name")  # named in _start
+                    yield _input(title, "f-application-title")
                     yield Static("", id="step-0-error", classes="error")
-                for s in F.ASKED:
+                for s in _ASKED:
                     yield VerticalScroll(id=f"step-{s}", classes="step")
-                with VerticalScroll(id=f"step-{F.REVIEW}", classes="step"):
+                with VerticalScroll(id=f"step-{_REVIEW}", classes="step"):
                     yield Static("", id="review-text")
                     yield Static("", id="review-error", classes="error")
             with Vertical(id="results"):
@@ -396,6 +434,73 @@ class DriveAdvisorApp(App[None]):
         yield SteadyFooter()
 
     async def on_mount(self) -> None:
+        if self.is_headless:  # under a test's Pilot: ready before the first key
+            await self._start()
+        else:  # in a terminal: the first step is painted first
+            self.screen.call_after_refresh(self._start)
+
+    async def on_event(self, event: events.Event) -> None:
+        """Keys and clicks wait (in order) until every step is built."""
+        if isinstance(event, events.InputEvent) and not self._built.is_set():
+            await self._built.wait()
+        await super().on_event(event)
+
+    async def _start(self) -> None:
+        """Everything the first screen did not need: the document shaped (tables where
+        tables belong, values of the right kind), the draft to offer, the steps built, and
+        then the warm-up of the engine in a worker thread."""
+        try:
+            await self._build_start()
+        finally:
+            self._built.set()
+        warm = self.warm_up if self.warm_up is not None else not self.is_headless
+        if warm and self.kind in F.titles():
+            self._warmed.clear()
+            doc = copy.deepcopy(F.prune(self.doc))
+            self.run_worker(lambda: self._warm(doc), thread=True, group="warm")
+
+    def _warm(self, doc: dict[str, Any]) -> None:
+        """Import the engine, the application and its views, and advise once (the result
+        discarded): the catalogs are read and cached before the first ctrl+r."""
+        try:
+            from advisor.core import engine
+            from advisor.core.requirements import parse_requirements
+
+            views.plots  # noqa: B018  (the views module and rich's tables)
+            import textual_plotext  # noqa: F401
+
+            kind = doc.get("application", {}).get("kind")
+            registry.views(kind)
+            registry.pipeline(kind)
+            engine.advise(parse_requirements(doc), self.catalog_dir)
+        except Exception:  # an invalid or infeasible input: warmed all the same
+            pass
+        finally:
+            self._warmed.set()
+
+    async def _build_start(self) -> None:
+        # any document (a file, a draft, a test's dict) is shaped so that no widget breaks
+        doc = self._given
+        shaped, found = drafts.shape(copy.deepcopy(doc)) if doc else ({}, [])
+        self.doc = shaped
+        self.load_problems += found
+        if self.kind in F.titles():
+            fixes.fill_fixed(self.doc, self.kind)
+        self._last_doc = copy.deepcopy(F.prune(self.doc))
+        # the draft to offer, read before anything could save over it; none saved meanwhile
+        if self.offer_draft:
+            loaded = drafts.load_draft(self.source)
+            if loaded.doc is None and loaded.problems:  # unreadable: set aside, say so
+                self.load_problems += loaded.problems
+            elif loaded.doc and (
+                self.source is None or F.prune(loaded.doc) != F.prune(self.doc)
+            ):
+                self._offered = loaded
+        self.query_one("#title-label", Label).update(F.title_field().label)
+        title = self.query_one("#f-application-title", Input)
+        shaped_title = self.doc.get("application", {}).get("title", "")
+        if title.value != shaped_title:
+            title.value = shaped_title
         await self._build_steps()
         self._show_step()
         self._show_problems(self.load_problems)
@@ -478,7 +583,7 @@ class DriveAdvisorApp(App[None]):
                 if isinstance(w, Input):
                     self._sync_input(f, w.value, quiet=True)
 
-    def _field_widget(self, f: F.Field) -> Horizontal:
+    def _field_widget(self, f: "F.Field") -> Horizontal:
         value = F.get(self.doc, f.path)
         label = f.label + (f" [{f.unit}]" if f.unit else "") + (" (optional)" if f.optional else "")
         wrong = ""
@@ -516,7 +621,7 @@ class DriveAdvisorApp(App[None]):
         )
 
     @staticmethod
-    def _shown_choice(f: F.Field) -> str:
+    def _shown_choice(f: "F.Field") -> str:
         """The choice shown while the file has none: the model's default."""
         return f.default if f.default in f.choices else f.choices[0]
 
@@ -564,7 +669,7 @@ class DriveAdvisorApp(App[None]):
             self._focus_step()
 
     def on_resize(self) -> None:
-        if self.is_mounted:
+        if self.is_mounted and self._built.is_set():
             self._show_step(focus=False)
 
     def _focus_step(self, target: Any = None) -> None:
@@ -590,7 +695,7 @@ class DriveAdvisorApp(App[None]):
         return "[b]Review — the requirement as it will be computed (ctrl+r):[/b]\n\n" + escape(text)
 
     # ------------------------------------------------------------------ editing
-    def _field_by_id(self, wid: str | None) -> F.Field | None:
+    def _field_by_id(self, wid: str | None) -> "F.Field | None":
         if wid == "f-application-title":
             return F.title_field()
         kind = self.kind
@@ -615,7 +720,7 @@ class DriveAdvisorApp(App[None]):
         if self.report is not None:
             self._show_result_status()
 
-    def _sync_input(self, f: F.Field, text: str, quiet: bool = False) -> str | None:
+    def _sync_input(self, f: "F.Field", text: str, quiet: bool = False) -> str | None:
         """Put what a field shows into the document: its value, or nothing while it shows an
         error (what is computed is exactly what the fields show). ``quiet``: an empty field
         says nothing yet (a new requirement is not all "required")."""
@@ -636,7 +741,7 @@ class DriveAdvisorApp(App[None]):
     @on(RadioSet.Changed, "#kind")
     async def _kind_changed(self, event: RadioSet.Changed) -> None:
         kind = (event.pressed.id or "").removeprefix("kind-")
-        if kind == self.kind:
+        if kind == self.kind or not self._built.is_set():  # (not the first screen's own)
             return
         keep = {k: v for k, v in self.doc.get("application", {}).items() if k != "kind"}
         self.doc = {"application": {"kind": kind, **keep}, **F.starting_doc(kind)}
@@ -648,7 +753,7 @@ class DriveAdvisorApp(App[None]):
     @on(Input.Changed)
     def _input_changed(self, event: Input.Changed) -> None:
         f = self._field_by_id(event.input.id)
-        if f is None:
+        if f is None or not self._built.is_set():  # the first screen's own value: not an edit
             return
         self._sync_input(f, event.value)
         self._changed()
@@ -886,6 +991,7 @@ class DriveAdvisorApp(App[None]):
         self.run_worker(lambda: self._advise(doc), thread=True, exclusive=True, group="advise")
 
     def _advise(self, doc: dict[str, Any]) -> None:
+        self._warmed.wait()  # the warm-up is importing what this needs: let it finish
         from advisor.core.engine import advise
         from advisor.core.requirements import parse_requirements
 
@@ -1074,10 +1180,12 @@ def run(path: Path | None, catalog_dir: Path | None) -> int:
 
     The file is read like a batch input (:func:`advisor.io_safety.read_toml`); one that
     cannot be read at all is an :class:`InputError` (exit 2, one line); wrong-typed values
-    open with the problems shown."""
-    doc, problems = None, []
+    open with the problems shown (:func:`advisor.tui.draft.shape`)."""
+    doc = None
     if path is not None:
-        doc, problems, _ = drafts.open_doc(path)
-    app = DriveAdvisorApp(doc, path, catalog_dir, problems=problems)
+        from advisor.io_safety import read_toml
+
+        doc = read_toml(path)  # shaped by the app, after its first screen
+    app = DriveAdvisorApp(doc, path, catalog_dir)
     app.run()
     return 1 if app.return_code else 0
