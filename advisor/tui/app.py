@@ -382,8 +382,12 @@ class DriveAdvisorApp(App[None]):
         self._built = asyncio.Event()  # set once every step is built (see _start)
         self._warmed = threading.Event()  # set when the warm-up advice is done (or none)
         self._warmed.set()
-        self._plots_shown = -1  # the results_version whose plots are mounted
-        self._compare_shown = -1  # the results_version whose comparison is mounted
+        self._views_report: Any = None  # the report whose plots and comparison are shown
+        self._views_version = 0  # counts the results shown
+        self._plots_shown = 0  # the _views_version whose plots are built
+        self._compare_shown = 0  # the _views_version whose comparison is built
+        self._figures: list[Any] = []
+        self._plot_panes: set[str] = set()  # the ids of the plot panes mounted
 
     def _first_look(self) -> tuple[str | None, str]:
         """The application and the title the first screen shows, from the document as given
@@ -418,20 +422,28 @@ class DriveAdvisorApp(App[None]):
                 with VerticalScroll(id=f"step-{_REVIEW}", classes="step"):
                     yield Static("", id="review-text")
                     yield Static("", id="review-error", classes="error")
-            with Vertical(id="results"):
-                yield Static("", id="result-status")
-                with TabbedContent(id="result-tabs"):
-                    for name in ("Summary", "Components", "Compare", "Decisions", "Checks", "Plot"):
-                        with TabPane(name, id=f"tab-{name.lower()}"):
-                            if name == "Compare":
-                                yield VerticalScroll(id="compare-box")
-                            elif name == "Plot":
-                                yield Static("", id="plot-note", classes="note")
-                                yield ContentSwitcher(id="plot-switcher")
-                            else:
-                                with VerticalScroll():
-                                    yield Static("", id=f"view-{name.lower()}")
+            yield Vertical(id="results")  # its views are built by _start
         yield SteadyFooter()
+
+    @staticmethod
+    def _result_views() -> list[Any]:
+        """The result's status line and its views, one tab each."""
+        panes = []
+        for name in ("Summary", "Components", "Compare", "Decisions", "Checks", "Plot"):
+            if name == "Compare":
+                children: list[Any] = [VerticalScroll(id="compare-box")]
+            elif name == "Plot":
+                children = [
+                    Static("", id="plot-note", classes="note"),
+                    ContentSwitcher(id="plot-switcher"),
+                ]
+            else:
+                children = [VerticalScroll(Static("", id=f"view-{name.lower()}"))]
+            panes.append(TabPane(name, *children, id=f"tab-{name.lower()}"))
+        tabs = TabbedContent(id="result-tabs")
+        for pane in panes:  # as `with TabbedContent():` adds them
+            tabs.compose_add_child(pane)
+        return [Static("", id="result-status"), tabs]
 
     async def on_mount(self) -> None:
         if self.is_headless:  # under a test's Pilot: ready before the first key
@@ -492,9 +504,7 @@ class DriveAdvisorApp(App[None]):
             loaded = drafts.load_draft(self.source)
             if loaded.doc is None and loaded.problems:  # unreadable: set aside, say so
                 self.load_problems += loaded.problems
-            elif loaded.doc and (
-                self.source is None or F.prune(loaded.doc) != F.prune(self.doc)
-            ):
+            elif loaded.doc and (self.source is None or F.prune(loaded.doc) != F.prune(self.doc)):
                 self._offered = loaded
         self.query_one("#title-label", Label).update(F.title_field().label)
         title = self.query_one("#f-application-title", Input)
@@ -502,6 +512,9 @@ class DriveAdvisorApp(App[None]):
         if title.value != shaped_title:
             title.value = shaped_title
         await self._build_steps()
+        await self.query_one("#results", Vertical).mount(*self._result_views())
+        tabs = self.query_one("#result-tabs", TabbedContent)
+        self.watch(tabs, "active", self._show_lazy_views, init=False)
         self._show_step()
         self._show_problems(self.load_problems)
         if self._offered is not None and self._offered.doc:
@@ -752,8 +765,10 @@ class DriveAdvisorApp(App[None]):
 
     @on(Input.Changed)
     def _input_changed(self, event: Input.Changed) -> None:
+        if not self._built.is_set():  # the first screen's own value, not an edit
+            return
         f = self._field_by_id(event.input.id)
-        if f is None or not self._built.is_set():  # the first screen's own value: not an edit
+        if f is None:
             return
         self._sync_input(f, event.value)
         self._changed()
@@ -1034,8 +1049,7 @@ class DriveAdvisorApp(App[None]):
             decisions=none,
             checks=none,
         )
-        self._plot(None)
-        self._compare(None)
+        self._views_of(None)
         self._done()
 
     def _crashed(self, exc: Exception) -> None:
@@ -1059,9 +1073,28 @@ class DriveAdvisorApp(App[None]):
             decisions=views.decisions(report),
             checks=views.checks(report),
         )
-        self._plot(report)
-        self._compare(report)
+        self._views_of(report)
         self._done()
+
+    def _views_of(self, report) -> None:
+        """The plots and the comparison of ``report`` (None: of no design) are built when
+        their view is shown: a compute paints the summary only."""
+        self._views_report = report
+        self._views_version += 1
+        self._show_lazy_views()
+
+    def _show_lazy_views(self, *_: Any) -> None:
+        active = self.query_one("#result-tabs", TabbedContent).active
+        if active == "tab-plot":
+            self._ensure_plots()
+        elif active == "tab-compare" and self._compare_shown != self._views_version:
+            self._compare_shown = self._views_version
+            self._compare(self._views_report)
+
+    def _ensure_plots(self) -> None:
+        if self._plots_shown != self._views_version:
+            self._plots_shown = self._views_version
+            self._plot(self._views_report)
 
     def _compare(self, report) -> None:
         """The alternatives side by side, each with a button that imposes it."""
@@ -1128,19 +1161,26 @@ class DriveAdvisorApp(App[None]):
         self._show_step(focus=False)
 
     def _plot(self, report) -> None:
+        switcher = self.query_one("#plot-switcher", ContentSwitcher)
+        switcher.remove_children()
+        self._plot_panes.clear()  # (their ids carry the old plot_version)
+        self._figures = views.plots(report) if report is not None else []
+        self.plot_titles = [d.title for d in self._figures]
+        self.plot_index = 0
+        self.plot_version = self._views_version
+        if not self._figures:
+            self.query_one("#plot-note", Static).update(f"No plot: {self.no_result_why}.")
+            return
+        self._show_plot()
+
+    def _show_plot(self) -> None:
+        """The plot ``plot_index`` on screen, drawn the first time it is shown."""
         from textual_plotext import PlotextPlot
 
         switcher = self.query_one("#plot-switcher", ContentSwitcher)
-        switcher.remove_children()
-        figures = views.plots(report) if report is not None else []
-        self.plot_titles = [d.title for d in figures]
-        self.plot_index = 0
-        self.plot_version = self.results_version
-        if not figures:
-            self.query_one("#plot-note", Static).update(f"No plot: {self.no_result_why}.")
-            return
-        panes = []
-        for i, data in enumerate(figures):
+        pane_id = f"plot-{self.plot_version}-{self.plot_index}"  # old panes go asynchronously
+        if pane_id not in self._plot_panes:
+            data = self._figures[self.plot_index]
             plot = PlotextPlot()
             plt = plot.plt
             plt.xlabel(data.xlabel)
@@ -1151,12 +1191,11 @@ class DriveAdvisorApp(App[None]):
                 else:
                     plt.plot(xs, ys, marker=marker)
             legend = Static(views.legend(data), classes="plot-legend")
-            pane_id = f"plot-{self.results_version}-{i}"  # the old panes go asynchronously
             pane = Vertical(legend, plot, id=pane_id, classes="plot-pane")
-            pane.display = i == 0
-            panes.append(pane)
-        switcher.mount(*panes)
-        switcher.current = panes[0].id  # (the switcher shows it once mounted)
+            pane.display = False
+            self._plot_panes.add(pane_id)
+            switcher.mount(pane)
+        switcher.current = pane_id  # (the switcher shows it once mounted)
         self._plot_note()
 
     def _plot_note(self) -> None:
@@ -1166,13 +1205,13 @@ class DriveAdvisorApp(App[None]):
         self.query_one("#plot-note", Static).update(f"[b]{escape(title)}[/b]{more}")
 
     def action_plot(self, step: int) -> None:
+        if self._views_version:
+            self._ensure_plots()
         n = len(getattr(self, "plot_titles", []))
         if n < 2:
             return
         self.plot_index = (self.plot_index + step) % n
-        switcher = self.query_one("#plot-switcher", ContentSwitcher)
-        switcher.current = f"plot-{self.plot_version}-{self.plot_index}"
-        self._plot_note()
+        self._show_plot()
 
 
 def run(path: Path | None, catalog_dir: Path | None) -> int:
