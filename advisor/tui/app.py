@@ -190,6 +190,42 @@ class SteadyFooter(Footer):
             await self.recompose()
 
 
+def _steady_key(content: Any) -> Any:
+    """What a text shows, to compare (None: a renderable that cannot be compared)."""
+    if isinstance(content, str):
+        return ("str", content)
+    if isinstance(content, Text):
+        return ("text", content.plain, tuple(content.spans), str(content.style))
+    return None
+
+
+class SteadyStatic(Static):
+    """A static whose update with what it already shows (text) does nothing: an update
+    lays the whole screen out again, and a compute checks every field."""
+
+    _shown: Any = None
+
+    def update(self, content: Any = "", *, layout: bool = True) -> None:
+        key = _steady_key(content)
+        if key is not None and key == self._shown:
+            return
+        self._shown = key
+        super().update(content, layout=layout)
+
+
+class SteadyLabel(Label):
+    """A label that, like :class:`SteadyStatic`, ignores an update to what it shows."""
+
+    _shown: Any = None
+
+    def update(self, content: Any = "", *, layout: bool = True) -> None:
+        key = _steady_key(content)
+        if key is not None and key == self._shown:
+            return
+        self._shown = key
+        super().update(content, layout=layout)
+
+
 class Choice(RadioButton):
     """A radio button whose state reads without colour (NO_COLOR): ● chosen, blank not."""
 
@@ -406,7 +442,7 @@ class DriveAdvisorApp(App[None]):
     def compose(self) -> ComposeResult:
         kind, title = self._first_look()
         yield Header()
-        yield Static("", id="steps")
+        yield SteadyStatic("", id="steps")
         with ContentSwitcher(initial="wizard", id="main"):
             with ContentSwitcher(initial="step-0", id="wizard"):
                 with VerticalScroll(id="step-0", classes="step"):
@@ -414,14 +450,14 @@ class DriveAdvisorApp(App[None]):
                     with RadioSet(id="kind"):
                         for a in registry.applications():
                             yield Choice(a.title, id=f"kind-{a.kind}", value=a.kind == kind)
-                    yield Label("", id="title-label", classes="name")  # named in _start
+                    yield SteadyLabel("", id="title-label", classes="name")  # named in _start
                     yield _input(title, "f-application-title")
-                    yield Static("", id="step-0-error", classes="error")
+                    yield SteadyStatic("", id="step-0-error", classes="error")
                 for s in _ASKED:
                     yield VerticalScroll(id=f"step-{s}", classes="step")
                 with VerticalScroll(id=f"step-{_REVIEW}", classes="step"):
-                    yield Static("", id="review-text")
-                    yield Static("", id="review-error", classes="error")
+                    yield SteadyStatic("", id="review-text")
+                    yield SteadyStatic("", id="review-error", classes="error")
             yield Vertical(id="results")  # its views are built by _start
         yield SteadyFooter()
 
@@ -434,16 +470,16 @@ class DriveAdvisorApp(App[None]):
                 children: list[Any] = [VerticalScroll(id="compare-box")]
             elif name == "Plot":
                 children = [
-                    Static("", id="plot-note", classes="note"),
+                    SteadyStatic("", id="plot-note", classes="note"),
                     ContentSwitcher(id="plot-switcher"),
                 ]
             else:
-                children = [VerticalScroll(Static("", id=f"view-{name.lower()}"))]
+                children = [VerticalScroll(SteadyStatic("", id=f"view-{name.lower()}"))]
             panes.append(TabPane(name, *children, id=f"tab-{name.lower()}"))
         tabs = TabbedContent(id="result-tabs")
         for pane in panes:  # as `with TabbedContent():` adds them
             tabs.compose_add_child(pane)
-        return [Static("", id="result-status"), tabs]
+        return [SteadyStatic("", id="result-status"), tabs]
 
     async def on_mount(self) -> None:
         if self.is_headless:  # under a test's Pilot: ready before the first key
@@ -586,7 +622,7 @@ class DriveAdvisorApp(App[None]):
                     widgets.append(Static(note, classes="note"))
                 for f in F.fields_for(kind, s):
                     widgets.append(self._field_widget(f))
-            widgets.append(Static("", id=f"step-{s}-error", classes="error"))
+            widgets.append(SteadyStatic("", id=f"step-{s}-error", classes="error"))
             widgets.append(Vertical(id=f"step-{s}-fixes", classes="fixes"))
             await box.mount(*widgets)
         if kind is not None:
@@ -608,7 +644,7 @@ class DriveAdvisorApp(App[None]):
             on = bool(f.default if value is None else value)
             control: Any = Horizontal(
                 Switch(on, id=f.id),
-                Label(_on_off(on), id=f"{f.id}-state", classes="state"),
+                SteadyLabel(_on_off(on), id=f"{f.id}-state", classes="state"),
                 classes="switch-row",
             )
         elif f.kind == "choice":
@@ -626,7 +662,7 @@ class DriveAdvisorApp(App[None]):
         else:
             control = _input(F.to_text(f, value), f.id)
             control.placeholder = f.shown_default
-        err = Label(wrong, id=f"{f.id}-err", classes="error", markup=False)
+        err = SteadyLabel(wrong, id=f"{f.id}-err", classes="error", markup=False)
         return Horizontal(
             Label(label, classes="name", markup=False),
             Vertical(control, err),
