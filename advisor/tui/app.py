@@ -386,6 +386,7 @@ class DriveAdvisorApp(App[None]):
         offer_draft: bool = True,
         problems: list[str] | None = None,
         warm_up: bool | None = None,
+        build_all_steps: bool | None = None,
     ) -> None:
         super().__init__()
         # the document as given; shaped (see _start) once the first screen is painted
@@ -424,6 +425,9 @@ class DriveAdvisorApp(App[None]):
         self._compare_shown = 0  # the _views_version whose comparison is built
         self._figures: list[Any] = []
         self._plot_panes: set[str] = set()  # the ids of the plot panes mounted
+        self._steps_built: set[int] = set()  # the asking steps whose fields are mounted
+        #: None: every step built at once under a test's Pilot (headless), else on demand
+        self.build_all_steps = build_all_steps
 
     def _first_look(self) -> tuple[str | None, str]:
         """The application and the title the first screen shows, from the document as given
@@ -482,6 +486,8 @@ class DriveAdvisorApp(App[None]):
         return [SteadyStatic("", id="result-status"), tabs]
 
     async def on_mount(self) -> None:
+        if self.build_all_steps is None:
+            self.build_all_steps = self.is_headless
         if self.is_headless:  # under a test's Pilot: ready before the first key
             await self._start()
         else:  # in a terminal: the first step is painted first
@@ -494,18 +500,20 @@ class DriveAdvisorApp(App[None]):
         await super().on_event(event)
 
     async def _start(self) -> None:
-        """Everything the first screen did not need: the document shaped (tables where
-        tables belong, values of the right kind), the draft to offer, the steps built, and
-        then the warm-up of the engine in a worker thread."""
+        """Everything the first screen did not need: the warm-up of the engine started in
+        a worker thread, then the document shaped (tables where tables belong, values of
+        the right kind), the draft to offer and the step shown built."""
+        warm = self.warm_up if self.warm_up is not None else not self.is_headless
+        kind, _ = self._first_look()
+        if warm and kind is not None:  # the file as given: as the batch would read it
+            self._warmed.clear()
+            doc = copy.deepcopy(self._given)
+            # a thread of its own, started now (a worker would start once this returns)
+            threading.Thread(target=self._warm, args=(doc,), daemon=True).start()
         try:
             await self._build_start()
         finally:
             self._built.set()
-        warm = self.warm_up if self.warm_up is not None else not self.is_headless
-        if warm and self.kind in F.titles():
-            self._warmed.clear()
-            doc = copy.deepcopy(F.prune(self.doc))
-            self.run_worker(lambda: self._warm(doc), thread=True, group="warm")
 
     def _warm(self, doc: dict[str, Any]) -> None:
         """Import the engine, the application and its views, and advise once (the result
@@ -608,29 +616,50 @@ class DriveAdvisorApp(App[None]):
         return kind if isinstance(kind, str) else None
 
     async def _build_steps(self) -> None:
+        """The fields of every step, from the document. In a terminal only the step shown
+        is built now, the others when first shown or checked (see :meth:`_ensure_step`):
+        building them all costs about 0.4 s, which a first ctrl+r would wait for."""
         kind = self.kind if self.kind in F.titles() else None
         self.field_errors.clear()
+        self._steps_built.clear()
         for s in F.ASKED:
-            box = self.query_one(f"#step-{s}", VerticalScroll)
-            await box.remove_children()
-            widgets: list[Any] = []
-            if kind is None:
-                widgets.append(Static("Choose the application first.", classes="note"))
-            else:
-                note = F.row_note(kind, s)
-                if note:
-                    widgets.append(Static(note, classes="note"))
-                for f in F.fields_for(kind, s):
-                    widgets.append(self._field_widget(f))
-            widgets.append(SteadyStatic("", id=f"step-{s}-error", classes="error"))
-            widgets.append(Vertical(id=f"step-{s}-fixes", classes="fixes"))
-            await box.mount(*widgets)
+            await self.query_one(f"#step-{s}", VerticalScroll).remove_children()
         if kind is not None:
-            # what the fields show is what the document holds, from the first screen on
+            # what the fields show is what the document holds, from the first screen on:
+            # the text a field shows (:func:`F.to_text`) is put back as it would be read
             for f in F.all_fields(kind):
+                if f.kind not in ("bool", "choice"):  # the fields shown in an input box
+                    self._sync_input(f, F.to_text(f, F.get(self.doc, f.path)), quiet=True)
+        for s in F.ASKED:
+            if kind is None or self.build_all_steps or s == self.step:
+                await self._build_step(s)
+
+    async def _build_step(self, s: int) -> None:
+        kind = self.kind if self.kind in F.titles() else None
+        box = self.query_one(f"#step-{s}", VerticalScroll)
+        widgets: list[Any] = []
+        if kind is None:
+            widgets.append(Static("Choose the application first.", classes="note"))
+        else:
+            note = F.row_note(kind, s)
+            if note:
+                widgets.append(Static(note, classes="note"))
+            for f in F.fields_for(kind, s):
+                widgets.append(self._field_widget(f))
+        widgets.append(SteadyStatic("", id=f"step-{s}-error", classes="error"))
+        widgets.append(Vertical(id=f"step-{s}-fixes", classes="fixes"))
+        self._steps_built.add(s)
+        await box.mount(*widgets)
+        if kind is not None:
+            for f in F.fields_for(kind, s):  # the field's own error, if its text has one
                 w = self.query_one(f"#{f.id}")
                 if isinstance(w, Input):
                     self._sync_input(f, w.value, quiet=True)
+
+    async def _ensure_step(self, s: int) -> None:
+        """Build step ``s`` if it is an asking step not built yet."""
+        if s in F.ASKED and s not in self._steps_built:
+            await self._build_step(s)
 
     def _field_widget(self, f: "F.Field") -> Horizontal:
         value = F.get(self.doc, f.path)
@@ -810,7 +839,7 @@ class DriveAdvisorApp(App[None]):
         self._changed()
 
     @on(Input.Submitted)
-    def _input_submitted(self, event: Input.Submitted) -> None:
+    async def _input_submitted(self, event: Input.Submitted) -> None:
         """enter: the next field; on the step's last one, the next step."""
         if event.input.id == "export-path" or self._field_by_id(event.input.id) is None:
             return
@@ -820,7 +849,7 @@ class DriveAdvisorApp(App[None]):
         if event.input in chain and chain.index(event.input) < len(chain) - 1:
             self.set_focus(chain[chain.index(event.input) + 1])
         else:
-            self.action_next()
+            await self.action_next()
 
     @on(Select.Changed)
     def _select_changed(self, event: Select.Changed) -> None:
@@ -859,7 +888,7 @@ class DriveAdvisorApp(App[None]):
         await self._build_steps()  # a renamed key now shows in its field
         self._show_step(focus=False)
         if not self._validate(self.step):
-            self._go_to_problem(self.step, "Still to fix")
+            await self._go_to_problem(self.step, "Still to fix")
         else:
             self._focus_step()
 
@@ -877,6 +906,12 @@ class DriveAdvisorApp(App[None]):
             return True
         kind = self.kind
         assert kind is not None
+        if step not in self._steps_built:
+            # not built yet: its fields would show the document (see _build_steps), so the
+            # field errors are known, and the engine's messages tell the rest
+            return not any(f.id in self.field_errors for f in F.fields_for(kind, step)) and all(
+                F.error_owner(line, kind, step) is None for line in self._engine_errors()
+            )
         ok = True
         for f in F.fields_for(kind, step):
             w = self.query_one(f"#{f.id}")
@@ -946,10 +981,13 @@ class DriveAdvisorApp(App[None]):
                 return s
         return None
 
-    def _go_to_problem(self, step: int, doing: str) -> None:
+    async def _go_to_problem(self, step: int, doing: str) -> None:
         """Show the step with the problem and focus what needs fixing."""
         self.query_one("#main", ContentSwitcher).current = "wizard"
         self.step = step
+        if step in F.ASKED and step not in self._steps_built:
+            await self._build_step(step)
+            self._validate(step)  # its messages, now that it has its fields
         self._show_step(focus=False)
         box = self.query_one(f"#step-{step}")
         target = None
@@ -968,27 +1006,29 @@ class DriveAdvisorApp(App[None]):
         self.notify(f"{doing}: fix what is marked first", severity="warning")
 
     # ------------------------------------------------------------------ actions
-    def action_next(self) -> None:
+    async def action_next(self) -> None:
         if self.query_one("#main", ContentSwitcher).current == "results":
             return
         if not self._validate(self.step):
             self.bell()
-            self._go_to_problem(self.step, "Not yet")
+            await self._go_to_problem(self.step, "Not yet")
             return
         walk = [s for s, _ in self._walk()]
         if self.step < F.REVIEW:
             self.step = walk[walk.index(self.step) + 1] if self.step in walk else self.step + 1
+            await self._ensure_step(self.step)
             self._show_step()
         else:
-            self.action_compute()
+            await self.action_compute()
 
-    def action_back(self) -> None:
+    async def action_back(self) -> None:
         main = self.query_one("#main", ContentSwitcher)
         walk = [s for s, _ in self._walk()]
         if main.current == "results":
             main.current = "wizard"
         elif self.step > 0:
             self.step = walk[walk.index(self.step) - 1] if self.step in walk else self.step - 1
+        await self._ensure_step(self.step)
         self._show_step()
 
     def action_edit(self) -> None:
@@ -1001,10 +1041,10 @@ class DriveAdvisorApp(App[None]):
     def _inputs_changed(self) -> bool:
         return self.computed_doc is not None and F.prune(self.doc) != self.computed_doc
 
-    def action_export(self) -> None:
+    async def action_export(self) -> None:
         problem = self._first_problem()
         if problem is not None:
-            self._go_to_problem(problem, "Not exported")
+            await self._go_to_problem(problem, "Not exported")
             return
         stem = self.source.stem if self.source else (self.kind or "drive")
         has_report = self.report is not None and not self._inputs_changed()
@@ -1027,12 +1067,12 @@ class DriveAdvisorApp(App[None]):
             text = tomli_w.dumps(F.prune(self.doc))
         write_atomic(path, text)
 
-    def action_compute(self) -> None:
+    async def action_compute(self) -> None:
         if self.computing:
             return
         problem = self._first_problem()
         if problem is not None:
-            self._go_to_problem(problem, "Not computed")
+            await self._go_to_problem(problem, "Not computed")
             return
         self.computing = True
         self._started = time.perf_counter()
@@ -1174,7 +1214,7 @@ class DriveAdvisorApp(App[None]):
         self._step_lines.clear()
         await self._build_steps()
         self.notify(f"{opt.label}: imposed in the requirement; computing", markup=False)
-        self.action_compute()
+        await self.action_compute()
 
     def _show_result_status(self) -> None:
         if self.report is None:
