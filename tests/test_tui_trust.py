@@ -121,7 +121,9 @@ async def test_an_infeasible_recompute_leaves_no_plot_of_the_previous_design():
     async with app.run_test(size=SIZE) as pilot:
         await _computed(app, pilot)
         assert app.report is not None
-        assert len(app.query_one("#plot-switcher").children) == 2
+        app.query_one("#result-tabs").active = "tab-plot"  # plots are drawn when shown
+        await pilot.pause()
+        assert len(app.query_one("#plot-switcher").children) == 1 and len(app.plot_titles) == 2
         await pilot.press("ctrl+e", "ctrl+n", "ctrl+n")
         await _retype(pilot, app, "f-envelope-max-outer-diameter-mm", "20")
         await _computed(app, pilot)

@@ -426,6 +426,8 @@ class DriveAdvisorApp(App[None]):
         self._figures: list[Any] = []
         self._plot_panes: set[str] = set()  # the ids of the plot panes mounted
         self._steps_built: set[int] = set()  # the asking steps whose fields are mounted
+        self._texts: dict[str, str] = {}  # widget id → its text, for a step not built yet
+        self._synced: dict[str, str] = {}  # widget id → the text last put in the document
         #: None: every step built at once under a test's Pilot (headless), else on demand
         self.build_all_steps = build_all_steps
 
@@ -622,6 +624,8 @@ class DriveAdvisorApp(App[None]):
         kind = self.kind if self.kind in F.titles() else None
         self.field_errors.clear()
         self._steps_built.clear()
+        self._texts.clear()
+        self._synced.clear()
         for s in F.ASKED:
             await self.query_one(f"#step-{s}", VerticalScroll).remove_children()
         if kind is not None:
@@ -629,7 +633,8 @@ class DriveAdvisorApp(App[None]):
             # the text a field shows (:func:`F.to_text`) is put back as it would be read
             for f in F.all_fields(kind):
                 if f.kind not in ("bool", "choice"):  # the fields shown in an input box
-                    self._sync_input(f, F.to_text(f, F.get(self.doc, f.path)), quiet=True)
+                    text = self._texts[f.id] = F.to_text(f, F.get(self.doc, f.path))
+                    self._sync_input(f, text, quiet=True)
         for s in F.ASKED:
             if kind is None or self.build_all_steps or s == self.step:
                 await self._build_step(s)
@@ -689,7 +694,10 @@ class DriveAdvisorApp(App[None]):
                 current = Select.NULL
             control = Select([(c, c) for c in f.choices], value=current, allow_blank=blank, id=f.id)
         else:
-            control = _input(F.to_text(f, value), f.id)
+            # the text the document's value showed when read (a step built later: its
+            # value may have been refused, and the field shows what was refused)
+            text = self._texts.pop(f.id, None)
+            control = _input(F.to_text(f, value) if text is None else text, f.id)
             control.placeholder = f.shown_default
         err = SteadyLabel(wrong, id=f"{f.id}-err", classes="error", markup=False)
         return Horizontal(
@@ -802,6 +810,7 @@ class DriveAdvisorApp(App[None]):
         """Put what a field shows into the document: its value, or nothing while it shows an
         error (what is computed is exactly what the fields show). ``quiet``: an empty field
         says nothing yet (a new requirement is not all "required")."""
+        self._synced[f.id] = text
         value, err = F.parse_text(f, text)
         if not text.strip():  # empty: the engine says whether it is required (its table may
             err = None  # be optional, as a duty cycle is) and marks the field if so
@@ -833,8 +842,8 @@ class DriveAdvisorApp(App[None]):
         if not self._built.is_set():  # the first screen's own value, not an edit
             return
         f = self._field_by_id(event.input.id)
-        if f is None:
-            return
+        if f is None or self._synced.get(f.id) == event.value:
+            return  # (a box just built reports the text the document already holds)
         self._sync_input(f, event.value)
         self._changed()
 
@@ -1157,6 +1166,13 @@ class DriveAdvisorApp(App[None]):
         their view is shown: a compute paints the summary only."""
         self._views_report = report
         self._views_version += 1
+        if report is None:  # no design: said at once, in both views (it costs nothing)
+            self._ensure_plots()
+            self._compare_shown = self._views_version
+            self._compare(None)
+        else:  # the previous design's plots and alternatives go at once, shown or not
+            self.query_one("#plot-switcher", ContentSwitcher).remove_children()
+            self.query_one("#compare-box", VerticalScroll).remove_children()
         self._show_lazy_views()
 
     def _show_lazy_views(self, *_: Any) -> None:

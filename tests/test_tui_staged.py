@@ -1,0 +1,132 @@
+"""The wizard's staged start and lazy views (issue 14, latency), driven through textual's
+Pilot: in a terminal a step's fields are built only when the step is first shown or found
+wrong, the engine is warmed in a thread, and plots and the comparison are built when their
+view is shown. Under a Pilot these are off by default (every step built at once); here
+they are switched on, and what is computed must be exactly what the eager wizard computes."""
+
+import tomllib
+
+import pytest
+from helpers import EXAMPLES
+from rich.text import Text
+from textual.widgets import Input, Label, Static
+
+from advisor.core.engine import advise
+from advisor.core.report import to_toml
+from advisor.core.requirements import read_requirements
+from advisor.tui.app import DriveAdvisorApp, SteadyStatic
+
+SIZE = (120, 40)
+RUDDER = EXAMPLES / "rudder_actuator.toml"
+
+
+@pytest.fixture(autouse=True)
+def _state_dir(tmp_path, monkeypatch):
+    monkeypatch.setenv("XDG_STATE_HOME", str(tmp_path / "state"))
+    monkeypatch.setenv("TEXTUAL_ANIMATIONS", "none")
+    monkeypatch.chdir(tmp_path)
+
+
+def _doc(path=RUDDER) -> dict:
+    return tomllib.loads(path.read_text(encoding="utf-8"))
+
+
+def _app(doc: dict, lazy: bool = True, **kw) -> DriveAdvisorApp:
+    return DriveAdvisorApp(
+        doc, RUDDER, save_drafts=False, offer_draft=False, build_all_steps=not lazy, **kw
+    )
+
+
+async def _computed(app, pilot) -> None:
+    start = app.results_version
+    await pilot.press("ctrl+r")
+    for _ in range(500):
+        await pilot.pause(0.02)
+        if app.results_version > start and not app.computing:
+            return
+    raise AssertionError("no result")
+
+
+async def test_a_first_compute_needs_no_step_built_and_equals_the_batch():
+    app = _app(_doc(), warm_up=True)
+    async with app.run_test(size=SIZE) as pilot:
+        assert not app.query("#f-rotary-torque-Nm")  # step 2 is not built yet
+        await _computed(app, pilot)
+        assert app.report is not None
+        assert to_toml(app.report) == to_toml(advise(read_requirements(RUDDER)))
+        assert not app.query("#f-rotary-torque-Nm")
+        # walking the steps builds each one, showing the document's values
+        await pilot.press("ctrl+e")
+        await pilot.press("ctrl+n")
+        torque = _doc()["rotary"]["torque_Nm"]
+        assert app.query_one("#f-rotary-torque-Nm", Input).value == f"{torque:g}"
+
+
+async def test_the_lazy_wizard_computes_what_the_fields_would_show():
+    """A value with more digits than a field shows (1620.123456789 → "1620.12"): both
+    wizards compute with what is shown, built or not."""
+    doc = _doc()
+    doc["rotary"]["torque_Nm"] = 1620.123456789
+    computed = []
+    for lazy in (False, True):
+        app = _app(doc, lazy=lazy)
+        async with app.run_test(size=SIZE) as pilot:
+            await _computed(app, pilot)
+            computed.append(app.computed_doc)
+    assert computed[0] == computed[1]
+    assert computed[1]["rotary"]["torque_Nm"] == 1620.12
+
+
+async def test_a_wrong_value_in_a_step_not_built_is_shown_in_its_field():
+    doc = _doc()
+    doc["rotary"]["torque_Nm"] = "8OO"  # letter O: kept, shown in its box to be fixed
+    app = _app(doc)
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("ctrl+r")
+        await pilot.pause()
+        assert app.report is None and not app.computing
+        assert app.step == 1  # the step asking the torque, built to show the error
+        box = app.query_one("#f-rotary-torque-Nm", Input)
+        assert box.value == "8OO" and app.focused is box
+        assert "must be a number" in str(app.query_one("#f-rotary-torque-Nm-err", Label).render())
+
+
+async def test_an_engine_message_on_a_step_not_built_takes_the_user_there():
+    doc = _doc()
+    doc["rotary"]["torque_Nm"] = -1620.0  # a number the engine refuses (must be > 0)
+    app = _app(doc)
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("ctrl+r")
+        await pilot.pause()
+        assert app.report is None and app.step == 1
+        assert str(app.query_one("#f-rotary-torque-Nm-err", Label).render()).strip()
+
+
+async def test_plots_and_the_comparison_are_built_when_shown():
+    app = _app(_doc())
+    async with app.run_test(size=SIZE) as pilot:
+        await _computed(app, pilot)
+        switcher = app.query_one("#plot-switcher")
+        assert not switcher.children and not app.query_one("#compare-box").children
+        app.query_one("#result-tabs").active = "tab-plot"
+        await pilot.pause()
+        assert len(switcher.children) == 1  # the plot shown, not every plot
+        assert len(app.plot_titles) > 1
+        await pilot.press("right_square_bracket")
+        await pilot.pause()
+        assert len(switcher.children) == 2 and app.plot_index == 1
+        app.query_one("#result-tabs").active = "tab-compare"
+        await pilot.pause()
+        assert app.query_one("#compare-box").children
+
+
+def test_a_steady_static_ignores_only_what_it_already_shows(monkeypatch):
+    shown = []
+    monkeypatch.setattr(Static, "update", lambda self, content="", **_: shown.append(content))
+    w = SteadyStatic("")
+    w.update("a")
+    w.update("a")
+    w.update(Text("a"))  # a Text is not the string "a": updated
+    w.update(Text("a", style="bold"))  # same words, another style: updated
+    w.update(Text("a", style="bold"))
+    assert len(shown) == 3
