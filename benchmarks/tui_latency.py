@@ -14,6 +14,9 @@ Per example:
 
 Goals (issue 14): first screen ≤ 0.5 s; keystroke → results painted ≤ 100 ms, the first
 compute included.
+
+``--floor`` measures the floor of the first screen in the same harness: a minimal textual
+app that paints one Static with the same words (textual's import, its start and one paint).
 """
 
 import fcntl
@@ -39,7 +42,7 @@ TIMEOUT_S = 60.0
 class Terminal:
     """The wizard on the slave side of a pseudo-terminal of COLS × ROWS."""
 
-    def __init__(self, example: Path, state_dir: str) -> None:
+    def __init__(self, example: Path | None, state_dir: str) -> None:
         env = {
             **os.environ,
             "TERM": "xterm-256color",
@@ -52,7 +55,8 @@ class Terminal:
         pid, fd = pty.fork()
         if pid == 0:  # the child: the wizard, its terminal sized before it starts
             fcntl.ioctl(0, termios.TIOCSWINSZ, struct.pack("HHHH", ROWS, COLS, 0, 0))
-            os.execve(sys.executable, [sys.executable, "-m", "advisor", str(example)], env)
+            args = ["-m", "advisor", str(example)] if example else ["-c", FLOOR_APP]
+            os.execve(sys.executable, [sys.executable, *args], env)
         self.pid, self.fd = pid, fd
         self.seen = b""
 
@@ -112,6 +116,29 @@ class Terminal:
 
 CTRL_R, CTRL_E, TAB = "\x12", "\x05", "\t"
 
+#: The floor of a first screen: textual imported, started, one Static painted.
+FLOOR_APP = """
+from textual.app import App
+from textual.widgets import Static
+class Floor(App):
+    def compose(self):
+        yield Static("What must the drive do?")
+Floor().run()
+"""
+
+
+def floor(repeats: int) -> list[float]:
+    """Start → first screen painted (ms) of :data:`FLOOR_APP`, ``repeats`` times."""
+    out = []
+    with tempfile.TemporaryDirectory() as state:
+        for _ in range(repeats):
+            term = Terminal(None, state)
+            try:
+                out.append(1e3 * (term.wait_for("What must the drive do?") - term.started))
+            finally:
+                term.close()
+    return out
+
 
 def measure(example: Path, repeats: int) -> dict:
     with tempfile.TemporaryDirectory() as state:
@@ -153,6 +180,14 @@ def tui_latency(repeats: int) -> dict:
 
 if __name__ == "__main__":
     print(f"load average before: {os.getloadavg()[0]:.2f}, {os.cpu_count()} CPUs")
+    if "--floor" in sys.argv:
+        sys.argv.remove("--floor")
+        ms = floor(int(sys.argv[1]) if len(sys.argv) > 1 else 10)
+        print(
+            f"floor (a textual app painting one Static): first screen {statistics.median(ms):.0f}"
+            f" ms median ({min(ms):.0f}–{max(ms):.0f} ms)"
+        )
+        sys.exit(0)
     for name, r in tui_latency(int(sys.argv[1]) if len(sys.argv) > 1 else 10).items():
         print(
             f"{name}: first screen {r['first_screen_ms']:.0f} ms, first compute "
