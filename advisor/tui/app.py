@@ -113,7 +113,8 @@ HELP = """\
   ctrl+r   compute the design (from any step; again after an edit)
   ctrl+e   back to the inputs from the results (Compare: "Use …"
            imposes an alternative in the requirement and computes it)
-  ctrl+s   export the report (TOML, JSON, Markdown or HTML) or the requirements
+  ctrl+s   export the report (TOML, JSON, Markdown or HTML) or
+           the requirements
   [ / ]    previous / next plot on the Plot view
   f1       this help           ctrl+q   quit
   enter moves to the next field (on the last one, to the next step);
