@@ -130,3 +130,22 @@ def test_a_steady_static_ignores_only_what_it_already_shows(monkeypatch):
     w.update(Text("a", style="bold"))  # same words, another style: updated
     w.update(Text("a", style="bold"))
     assert len(shown) == 3
+
+
+@pytest.mark.parametrize("lazy", [False, True])
+async def test_a_choice_not_offered_is_shown_in_its_own_field(lazy):
+    """A list cannot show 'cylinder': its field says so (the default shown), and the first
+    step lists it among the loading problems; built at once or later, the same."""
+    doc = _doc()
+    doc["gearbox"]["rolling_body"] = "cylinder"
+    app = _app(doc, lazy=lazy)
+    async with app.run_test(size=SIZE) as pilot:
+        said = str(app.query_one("#step-0-error", Static).render())
+        assert "gearbox.rolling_body = 'cylinder': must be one of ball, roller" in said
+        assert "rolling_body" not in app.doc["gearbox"]  # set aside: the default applies
+        while not app.query("#f-gearbox-rolling-body"):
+            await pilot.press("ctrl+n")
+        err = str(app.query_one("#f-gearbox-rolling-body-err", Label).render())
+        assert "'cylinder' in the file is not one of ball, roller" in err
+        await _computed(app, pilot)
+        assert app.report is not None

@@ -429,6 +429,7 @@ class DriveAdvisorApp(App[None]):
         self._steps_built: set[int] = set()  # the asking steps whose fields are mounted
         self._texts: dict[str, str] = {}  # widget id → its text, for a step not built yet
         self._synced: dict[str, str] = {}  # widget id → the text last put in the document
+        self._wrong: dict[str, str] = {}  # widget id → the value set aside, in words
         #: None: every step built at once under a test's Pilot (headless), else on demand
         self.build_all_steps = build_all_steps
 
@@ -630,6 +631,7 @@ class DriveAdvisorApp(App[None]):
         self._steps_built.clear()
         self._texts.clear()
         self._synced.clear()
+        self._wrong.clear()
         for s in F.ASKED:
             await self.query_one(f"#step-{s}", VerticalScroll).remove_children()
         if kind is not None:
@@ -639,6 +641,8 @@ class DriveAdvisorApp(App[None]):
                 if f.kind not in ("bool", "choice"):  # the fields shown in an input box
                     text = self._texts[f.id] = F.to_text(f, F.get(self.doc, f.path))
                     self._sync_input(f, text, quiet=True)
+                else:
+                    self._set_aside_wrong(f)
         for s in F.ASKED:
             if kind is None or self.build_all_steps or s == self.step:
                 await self._build_step(s)
@@ -670,15 +674,28 @@ class DriveAdvisorApp(App[None]):
         if s in F.ASKED and s not in self._steps_built:
             await self._build_step(s)
 
+    def _set_aside_wrong(self, f: "F.Field") -> None:
+        """A switch or a list cannot show a value it does not offer: the value is set aside
+        (the default applies) and its field says so when built (see :meth:`_field_widget`)."""
+        value = F.get(self.doc, f.path)
+        if value is None:
+            return
+        if f.kind == "bool" and not isinstance(value, bool):
+            self._wrong[f.id] = f"{value!r} in the file is not true or false; shown: the default"
+        elif f.kind == "choice" and value not in f.choices:
+            self._wrong[f.id] = (
+                f"{value!r} in the file is not one of {', '.join(f.choices)}; shown: "
+                + ("the default" if f.optional else "the first; choose")
+            )
+        else:
+            return
+        F.put(self.doc, f.path, None)
+
     def _field_widget(self, f: "F.Field") -> Horizontal:
         value = F.get(self.doc, f.path)
         label = f.label + (f" [{f.unit}]" if f.unit else "") + (" (optional)" if f.optional else "")
-        wrong = ""
+        wrong = self._wrong.pop(f.id, "")
         if f.kind == "bool":
-            if value is not None and not isinstance(value, bool):
-                wrong = f"{value!r} in the file is not true or false; shown: the default"
-                F.put(self.doc, f.path, None)
-                value = None
             on = bool(f.default if value is None else value)
             control: Any = Horizontal(
                 Switch(on, id=f.id),
@@ -686,12 +703,6 @@ class DriveAdvisorApp(App[None]):
                 classes="switch-row",
             )
         elif f.kind == "choice":
-            if value is not None and value not in f.choices:
-                wrong = f"{value!r} in the file is not one of {', '.join(f.choices)}; shown: " + (
-                    "the default" if f.optional else "the first; choose"
-                )
-                F.put(self.doc, f.path, None)
-                value = None
             blank = f.default is None  # no default to show: the field may stay unchosen
             current = value if value in f.choices else self._shown_choice(f)
             if blank and value not in f.choices:

@@ -85,8 +85,9 @@ def _leaf_ok(field: F.Field, value: Any) -> str | None:
         return None
     if field.kind == "bool":
         return None if isinstance(value, bool) else "must be true or false"
-    if field.kind == "choice":
-        return None if value in field.choices else f"must be one of {', '.join(field.choices)}"
+    if field.kind == "choice":  # text not offered: set aside when its field is built
+        ok = value in field.choices or isinstance(value, str)
+        return None if ok else f"must be one of {', '.join(field.choices)}"
     if field.kind == "floats":
         ok = isinstance(value, list) and all(
             isinstance(v, int | float) and not isinstance(v, bool) for v in value
@@ -150,6 +151,11 @@ def shape(doc: Any) -> tuple[dict[str, Any], list[str]]:
                         break
                 if why is None and field.kind in ("float", "int") and isinstance(value, str | bool):
                     problems.append(f"{where} = {_echo(value)}: must be a number; fix it here")
+                elif why is None and field.kind == "choice" and value not in field.choices:
+                    choices = ", ".join(field.choices)
+                    problems.append(
+                        f"{where} = {_echo(value)}: must be one of {choices}; shown in its field"
+                    )
                 elif why is None and field.kind == "str" and not isinstance(value, str):
                     problems.append(f"{where} = {_echo(value)}: must be text in quotes")
                     node[key if isinstance(node, dict) else int(key)] = str(value)
