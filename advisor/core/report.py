@@ -205,6 +205,10 @@ def _plain_fast(obj: Any) -> Any:
     if t is str or t is int or t is bool:
         return obj
     if t is list or t is tuple:
+        if obj and all(type(v) is float for v in obj):  # a curve: one pass, no calls per item
+            if any(v - v != 0.0 for v in obj):
+                raise NonFiniteValue("a report value is not a finite number")
+            return [round_sig(v) for v in obj]
         return [_plain_fast(v) for v in obj if v is not None]
     if t is dict:
         return {str(k): _plain_fast(v) for k, v in obj.items() if v is not None}
