@@ -215,14 +215,20 @@ def _pool_context():
         return None
 
 
+#: Files queued per worker (issue 16): with one, a worker idles between two files for the
+#: round trip of its result through the parent.
+IN_FLIGHT = int(os.environ.get("ADVISOR_IN_FLIGHT", "2"))
+
+
 def _run_pool(
     jobs: int,
     todo: list[tuple[int, Path, Path]],
     catalog_dir: Path | None,
     outcomes: dict[int, Outcome],
 ) -> tuple[list[tuple[int, Path, Path]], list[tuple[int, Path, Path]]]:
-    """Advise ``todo`` with ``jobs`` workers, at most ``jobs`` files in flight, recording each
-    outcome as it arrives. When a worker dies (the pool is then broken) returns the files in
+    """Advise ``todo`` with ``jobs`` workers, at most ``IN_FLIGHT × jobs`` files in flight (a
+    worker finds its next file queued instead of waiting for the parent to hear of the last
+    one), recording each outcome as it arrives. When a worker dies (the pool is then broken) returns the files in
     flight and those not started; else two empty lists."""
     from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
     from concurrent.futures.process import BrokenProcessPool
@@ -234,7 +240,7 @@ def _run_pool(
     flight: dict = {}
     try:
         while pending or flight:
-            while pending and len(flight) < jobs:
+            while pending and len(flight) < IN_FLIGHT * jobs:
                 item = pending.pop()
                 flight[pool.submit(advise_one, item[1], item[2], catalog_dir)] = item
             done, _ = wait(flight, return_when=FIRST_COMPLETED)
