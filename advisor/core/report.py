@@ -255,10 +255,16 @@ def plain(report: Report) -> dict[str, Any]:
     return _plain(report)
 
 
+_NUMBER_TYPES = (float, int)  # exact types: a bool is no number here
+
+
 def _numbers(v: Any) -> bool:
     """An array of numbers (or of arrays of them)."""
     return isinstance(v, list) and all(
-        (isinstance(x, int | float) and not isinstance(x, bool)) or _numbers(x) for x in v
+        type(x) in _NUMBER_TYPES
+        or (isinstance(x, int | float) and not isinstance(x, bool))
+        or _numbers(x)
+        for x in v
     )
 
 
@@ -291,6 +297,8 @@ def _lift(node: Any, path: str, curves: dict[str, Any]) -> Any:
                 out[k] = _lift(v, f"{path}.{k}" if path else k, curves)
         return out if out or not part else None
     if isinstance(node, list):
+        if not any(isinstance(v, dict | list) for v in node):  # numbers, words: as they are
+            return node
         return [_lift(v, f"{path}[{i + 1}]", curves) for i, v in enumerate(node)]
     return node
 
@@ -299,6 +307,8 @@ def _drop_empty(node: Any) -> Any:
     if isinstance(node, dict):
         return {k: _drop_empty(v) for k, v in node.items() if v is not None}
     if isinstance(node, list):
+        if not any(isinstance(v, dict | list) for v in node):
+            return node
         return [_drop_empty(v) for v in node]
     return node
 
