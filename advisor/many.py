@@ -228,8 +228,8 @@ def _run_pool(
 ) -> tuple[list[tuple[int, Path, Path]], list[tuple[int, Path, Path]]]:
     """Advise ``todo`` with ``jobs`` workers, at most ``IN_FLIGHT × jobs`` files in flight (a
     worker finds its next file queued instead of waiting for the parent to hear of the last
-    one), recording each outcome as it arrives. When a worker dies (the pool is then broken) returns the files in
-    flight and those not started; else two empty lists."""
+    one), recording each outcome as it arrives. When a worker dies (the pool is then broken)
+    returns the files in flight and those not started; else two empty lists."""
     from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
     from concurrent.futures.process import BrokenProcessPool
 
