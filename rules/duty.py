@@ -2,6 +2,7 @@
 the inertia ratio against its guideline, the starts an induction motor allows."""
 
 from advisor.core.cite import cite, note
+from advisor.calc.duty import S2_POWER_FACTOR
 from advisor.core.rulebook import Finding, rule
 
 IEC_60034_1 = cite("iec-60034-1", "duty types S1–S10")
@@ -12,6 +13,8 @@ INERTIA_GUIDE = (cite("keb-servo") + cite("autoengcalc")).with_note(
 #: The duty cycle's own basis: the project's issue 15, not a published source.
 ISSUE_15 = note("issue 15")
 SEED_003 = cite("seed-003")
+#: SEW-EURODRIVE's table of the power increasing factor K for S2 and S3 (p. 95).
+SEW_S2 = cite("sew-gearmotors", "§7.5, p. 95, power increasing factor K (S2)")
 #: The guideline of servo practice for the reflected load over the motor's inertia.
 INERTIA_RATIO_GUIDELINE = 10.0
 
@@ -117,3 +120,19 @@ def starts(required: float, allowed: float, basis: str) -> Finding[bool]:
 @rule("DU-07", "The duty as a cycle", IEC_60034_1)
 def duty_type(name: str, description: str, how: str) -> Finding[str]:
     return Finding(name, f"Duty {name}: {description}.", how)
+
+
+@rule("DU-09", "Short-time duty (S2) allowance", SEW_S2 + IEC_60034_1)
+def short_time_factor(duration_min: float, k: float) -> Finding[float]:
+    """K of SEW's table for the S2 period (:func:`advisor.calc.duty.s2_power_factor`)."""
+    rows = ", ".join(f"{p:g} min → {f:g}" for p, f in S2_POWER_FACTOR)
+    return Finding(
+        k,
+        f"S2 for {duration_min:g} min: the motor may carry K = {k:g} times its rated load.",
+        f"SEW's power increasing factor for an S1 motor in S2 ({rows}); a period between two "
+        "rows takes the next longer row's K, one over 60 min is S1 (K = 1), one under 10 min "
+        "keeps 1.4 (the table is not extrapolated). At an induction motor's near-constant "
+        "speed a factor on the power is a factor on the torque. The catalog gives no thermal "
+        "time constant, so the rise over the run is not computed.",
+        {"duration_min": duration_min, "k": k},
+    )
