@@ -1,8 +1,8 @@
 """Rules of a duty cycle (issue 15): the motor and ratio for the cycle, the thermal verdict,
 the inertia ratio against its guideline, the starts an induction motor allows."""
 
-from advisor.core.cite import cite, note
 from advisor.calc.duty import S2_POWER_FACTOR
+from advisor.core.cite import cite, note
 from advisor.core.rulebook import Finding, rule
 
 IEC_60034_1 = cite("iec-60034-1", "duty types S1–S10")

@@ -371,8 +371,7 @@ def advise_duty(req, ev, selected, cat, holder: str | None, trace: Trace):
             e["limit"],
             "N·m",
             e["limit"] / e["rms"] if e["rms"] > 0 else math.inf,
-            du_rules.KLYUCHEV
-            + (du_rules.SEW_S2 if duty.duty_type == "S2" else du_rules.ISSUE_15),
+            du_rules.KLYUCHEV + (du_rules.SEW_S2 if duty.duty_type == "S2" else du_rules.ISSUE_15),
         ),
         Check(
             "duty_peak_torque",
