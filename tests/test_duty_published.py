@@ -274,9 +274,9 @@ def test_s3_equivalent_torque_is_less_conservative_than_sew(cdf):
     leaves out: the losses that do not fall with the load (iron, friction, fan) and the
     temperature's ripple above its mean over a 10 min cycle. Read through the
     equivalent-torque model, SEW's K means β0 = (K² − 1)·cdf/(1 − cdf) = 0.315 / 0.215 /
-    0.230 / 0.169, well below the 0.5 the advisor assumes. Recorded in README "Departures";
-    the advisor's S3 stays the published method of Klyuchev, and the disagreement is
-    stated there."""
+    0.230 / 0.169, well below the 0.5 the advisor assumes. So for S3 the advisor checks
+    both, Klyuchev's equivalent torque and SEW's K on the running torque, and the stricter
+    decides (DU-09, the check duty_s3_factor; README "Departures")."""
     beta0 = 0.5
     k = S3_K[cdf]
     on, off = cdf * 600.0, (1.0 - cdf) * 600.0
@@ -288,3 +288,22 @@ def test_s3_equivalent_torque_is_less_conservative_than_sew(cdf):
     expected = {0.60: 0.315, 0.40: 0.215, 0.25: 0.230, 0.15: 0.169}[cdf]
     assert implied_beta0 == pytest.approx(expected, abs=0.0005)
     assert implied_beta0 < beta0
+
+
+def test_linear_s3_takes_the_stricter_of_the_two(tmp_path):
+    """Seed 001's valve actuator in S3 at cdf 40 %: the equivalent torque gives 3.8438/5.1525
+    = 0.7460 (tests/test_duty.py), SEW's K = 1.15 gives 5.08485/(1.15 × 5.1525) = 0.8581:
+    the report's utilisation is SEW's, and both numbers are in its decision."""
+    src = (EXAMPLES / "valve_actuator_duty.toml").read_text(encoding="utf-8")
+    f = tmp_path / "s3.toml"
+    f.write_text(
+        src[: src.index("[duty]")] + '[duty]\nduty_type = "S3"\ncyclic_duration_factor = 0.4\n'
+    )
+    rep = advise(read_requirements(f))
+    d = rep.design.duty
+    assert d.thermal_utilisation == pytest.approx(0.8581, abs=1e-4)
+    check = next(c for c in rep.checks if c.id == "duty_s3_factor")
+    assert check.limit == pytest.approx(1.15 * 750.0 / (1390.0 * math.pi / 30.0))
+    assert "sew-gearmotors" in check.sources
+    du09 = next(x for x in rep.decisions if x.id == "DU-09")
+    assert du09.inputs == {"value": 0.4, "k": 1.15}

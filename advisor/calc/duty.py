@@ -256,6 +256,21 @@ def s2_power_factor(duration_min: float) -> float:
     return 1.0
 
 
+def s3_power_factor(cyclic_duration_factor: float) -> float:
+    """SEW's power increasing factor K of an S1 motor run in S3 at a cyclic duration factor
+    (:data:`S3_POWER_FACTOR`), read as :func:`s2_power_factor` reads its table: a cdf between
+    two rows takes the K of the next larger cdf (the smaller K), one under 15 % keeps 1.4,
+    one over 60 % takes 1.0 (S1).
+
+    >>> s3_power_factor(0.4), s3_power_factor(0.3), s3_power_factor(0.1), s3_power_factor(0.8)
+    (1.15, 1.15, 1.4, 1.0)
+    """
+    for cdf, k in S3_POWER_FACTOR:
+        if cyclic_duration_factor <= cdf:
+            return k
+    return 1.0
+
+
 def inertia_factor(motor_inertia_kgm2: float, external_inertia_kgm2: float) -> float:
     """FI = (J_M + J_ext)/J_M, J_ext reflected to the motor shaft (IEC 60034-1, 3.18 "factor
     of inertia").

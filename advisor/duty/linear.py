@@ -248,6 +248,14 @@ def evaluate(req, ev, m, j_load: float, holder: str | None) -> dict:
             f"RMS torque {rms:.4g} N·m above the rated {rated:.4g} N·m"
             + (f" × K = {k_s2:g} for S2 = {limit:.4g} N·m" if k_s2 != 1.0 else "")
         )
+    # S3: the running torque also against SEW's K·M_n for the cdf (the stricter decides)
+    k_s3 = du.s3_power_factor(duty.cyclic_duration_factor) if duty.duty_type == "S3" else 1.0
+    run_s3 = phases[0].torque_Nm if duty.duty_type == "S3" and phases else 0.0
+    if run_s3 > k_s3 * rated:
+        problems.append(
+            f"S3 running torque {run_s3:.4g} N·m above K·M_n = {k_s3:g} × {rated:.4g} = "
+            f"{k_s3 * rated:.4g} N·m (SEW's S3 factor)"
+        )
     if starts_h > allowed:
         problems.append(f"{starts_h:.4g} starts/h above the {allowed:.4g} it allows")
     if peak_load > start_torque:
@@ -262,6 +270,8 @@ def evaluate(req, ev, m, j_load: float, holder: str | None) -> dict:
         "rated": rated,
         "limit": limit,
         "k_s2": k_s2,
+        "k_s3": k_s3,
+        "run_s3": run_s3,
         "starts": starts_h,
         "allowed": allowed,
         "z0": z0,
@@ -313,7 +323,7 @@ def advise_duty(req, ev, selected, cat, holder: str | None, trace: Trace):
     util = e["rms"] / e["limit"]
     k_s2 = e["k_s2"]
     if duty.duty_type == "S2":
-        trace.apply(du_rules.short_time_factor, duty.duration_min, k_s2)
+        trace.apply(du_rules.power_increasing_factor, "S2", duty.duration_min, k_s2)
         thermal_how = (
             f"Torque of the S2 run {e['rms']:.4g} N·m against K·M_n = {k_s2:g} × "
             f"{e['rated']:.4g} = {e['limit']:.4g} N·m of {m.model} (DU-09: SEW's power "
@@ -328,6 +338,20 @@ def advise_duty(req, ev, selected, cat, holder: str | None, trace: Trace):
             "torque: its heat, the load's share included, is counted by the starts per hour."
         )
         basis = f"equivalent torque (β0 = {beta0:g} at standstill) over the rated torque"
+    k_s3 = e["k_s3"]
+    if duty.duty_type == "S3":
+        cdf = duty.cyclic_duration_factor
+        trace.apply(du_rules.power_increasing_factor, "S3", cdf, k_s3)
+        util_k = e["run_s3"] / (k_s3 * e["rated"])
+        thermal_how += (
+            f" Beside it SEW's S3 factor (DU-09): the running torque {e['run_s3']:.4g} N·m "
+            f"against K·M_n = {k_s3:g} × {e['rated']:.4g} = {k_s3 * e['rated']:.4g} N·m, "
+            f"utilisation {util_k:.3g} against {util:.3g} by the equivalent torque; the "
+            "larger decides."
+        )
+        if util_k > util:
+            util = util_k
+            basis = f"S3 running torque over K·M_n (K = {k_s3:g}, SEW's S3 factor)"
     trace.apply(du_rules.thermal, util, thermal_how)
     peak = du.peak_torque(phases)
     trace.apply(
@@ -371,7 +395,7 @@ def advise_duty(req, ev, selected, cat, holder: str | None, trace: Trace):
             e["limit"],
             "N·m",
             e["limit"] / e["rms"] if e["rms"] > 0 else math.inf,
-            du_rules.KLYUCHEV + (du_rules.SEW_S2 if duty.duty_type == "S2" else du_rules.ISSUE_15),
+            du_rules.KLYUCHEV + (du_rules.SEW_K if duty.duty_type == "S2" else du_rules.ISSUE_15),
         ),
         Check(
             "duty_peak_torque",
@@ -383,6 +407,18 @@ def advise_duty(req, ev, selected, cat, holder: str | None, trace: Trace):
             cite("4a-table", "M_start/M_n") + du_rules.ISSUE_15,
         ),
     ]
+    if duty.duty_type == "S3":
+        checks.append(
+            Check(
+                "duty_s3_factor",
+                f"S3 running torque within K·M_n (K = {k_s3:g}, SEW's S3 factor)",
+                e["run_s3"],
+                k_s3 * e["rated"],
+                "N·m",
+                k_s3 * e["rated"] / e["run_s3"] if e["run_s3"] > 0 else math.inf,
+                du_rules.SEW_K + du_rules.IEC_60034_1,
+            )
+        )
     if e["starts"] > 0:
         checks.append(
             Check(
@@ -439,7 +475,12 @@ def _iec_how(duty) -> str:
         return (
             f"Run at the rated force for cdf = {duty.cyclic_duration_factor:g} of a "
             f"{duty.cycle_time_s:g} s cycle, then "
-            + ("rest at standstill." if t == "S3" else "run without load.")
+            + (
+                "rest at standstill; the running torque is also checked against SEW's S3 "
+                "factor (DU-09)."
+                if t == "S3"
+                else "run without load."
+            )
         )
     if t in ("S4", "S5", "S7"):
         return (
