@@ -88,7 +88,7 @@ class ThreadEvaluation(NamedTuple):
 
     @property
     def passed(self) -> bool:
-        return all(c.passed for c in self.checks)
+        return all(c.margin >= 1.0 for c in self.checks)  # Check.passed, without its call
 
     @property
     def failed(self) -> list[Check]:
