@@ -128,9 +128,9 @@ def _warn_ignored(warnings: list[str], source: Path | None = None) -> None:
 def run_batch(
     req_path: Path, output: Path | None, catalog_dir: Path | None, fmt: str | None = None
 ) -> int:
-    # pydantic scans every installed package's entry points for plugins on its first model
-    # (about 7 ms of importlib.metadata); the advisor uses none.
-    os.environ.setdefault("PYDANTIC_DISABLE_PLUGINS", "__all__")
+    from advisor.core import pydantic_plugins
+
+    pydantic_plugins.disable()  # the advisor uses no pydantic plugin: no metadata scan
     from advisor.core.engine import advise
     from advisor.core.requirements import read_requirements
     from advisor.io_safety import OutputError, check_target, same_file, show, write_atomic
@@ -191,7 +191,9 @@ def run_batch(
 
 
 def run_many(inputs: list[Path], out_dir: Path, catalog_dir: Path | None, jobs: int) -> int:
-    os.environ.setdefault("PYDANTIC_DISABLE_PLUGINS", "__all__")
+    from advisor.core import pydantic_plugins
+
+    pydantic_plugins.disable()
     from advisor import many
     from advisor.io_safety import show
 
@@ -263,6 +265,9 @@ def run_schema(argv: list[str]) -> int:
 
 def main(argv: list[str] | None = None) -> int:
     argv = sys.argv[1:] if argv is None else argv
+    from advisor.core import pydantic_plugins
+
+    pydantic_plugins.disable()  # every path: the advisor uses no pydantic plugin
     if argv[:1] == ["schema"]:
         return run_schema(argv[1:])
     if argv[:1] == ["family"]:  # product-family studies (Dask): imported only on this path

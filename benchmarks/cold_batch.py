@@ -32,6 +32,21 @@ from pathlib import Path
 from _results import examples, save
 
 FLOOR = [sys.executable, "-c", "import numpy, scipy, pydantic, tomli_w"]
+#: The floor of a program that validates its input with a pydantic model: ``import pydantic``
+#: alone imports little (its names load lazily); a model with one constrained field brings
+#: pydantic's model machinery (pydantic.main, fields, types, annotated_types, json_schema,
+#: the schema generator…). It runs with the advisor's light plugin loader, as the advisor
+#: does, so that the floor holds only what no pydantic program can avoid.
+PYDANTIC_FLOOR = [
+    sys.executable,
+    "-c",
+    "from advisor.core import pydantic_plugins; pydantic_plugins.disable()\n"
+    "import numpy, scipy, tomli_w\n"
+    "from pydantic import BaseModel, Field\n"
+    "class M(BaseModel):\n"
+    "    x: float = Field(gt=0)\n"
+    "M(x=1.0)\n",
+]
 PATHS = ("stdout", "-o", "no-cache")
 
 
@@ -70,9 +85,11 @@ def spread(values: list[float]) -> dict[str, float]:
 
 
 def paired(batch: list[str], n: int, fresh_cache: bool = False) -> dict:
-    """``n`` pairs (floor, batch), alternating which runs first; ratios pair by pair."""
+    """``n`` pairs (floor, batch), alternating which runs first; ratios pair by pair. The
+    pydantic floor runs beside each pair, and gives its own ratio to the batch."""
     wall_ratio, cpu_ratio, floor_ms, batch_ms, floor_cpu, batch_cpu = [], [], [], [], [], []
-    timed(FLOOR), timed(batch)  # the OS file cache
+    pyd_ratio, pyd_cpu_ratio, pyd_cpu = [], [], []
+    timed(FLOOR), timed(batch), timed(PYDANTIC_FLOOR)  # the OS file cache
     with tempfile.TemporaryDirectory() as tmp:
         for i in range(n):
             env = None
@@ -80,9 +97,12 @@ def paired(batch: list[str], n: int, fresh_cache: bool = False) -> dict:
                 cache = Path(tmp) / f"cache{i}"
                 env = {**ENV, "XDG_CACHE_HOME": str(cache)}
             if i % 2 == 0:
-                f, b = timed(FLOOR), timed(batch, env)
+                f, b, pf = timed(FLOOR), timed(batch, env), timed(PYDANTIC_FLOOR)
             else:
-                b, f = timed(batch, env), timed(FLOOR)
+                pf, b, f = timed(PYDANTIC_FLOOR), timed(batch, env), timed(FLOOR)
+            pyd_ratio.append(b[0] / pf[0])
+            pyd_cpu_ratio.append(b[1] / pf[1])
+            pyd_cpu.append(1e3 * pf[1])
             floor_ms.append(1e3 * f[0])
             batch_ms.append(1e3 * b[0])
             floor_cpu.append(1e3 * f[1])
@@ -97,6 +117,9 @@ def paired(batch: list[str], n: int, fresh_cache: bool = False) -> dict:
         "batch_ms": spread(batch_ms),
         "floor_cpu_ms": spread(floor_cpu),
         "batch_cpu_ms": spread(batch_cpu),
+        "pydantic_floor_ratio": spread(pyd_ratio),
+        "pydantic_floor_cpu_ratio": spread(pyd_cpu_ratio),
+        "pydantic_floor_cpu_ms": spread(pyd_cpu),
     }
 
 
@@ -126,7 +149,8 @@ def line(name: str, path: str, r: dict) -> str:
         f"{name:30s} {path:8s} floor {r['floor_ms']['median']:6.1f} ms  batch "
         f"{r['batch_ms']['median']:6.1f} ms  ratio {w['median']:.2f} "
         f"(IQR {w['q1']:.2f}–{w['q3']:.2f}, range {w['min']:.2f}–{w['max']:.2f})  "
-        f"CPU ratio {c['median']:.2f} (IQR {c['q1']:.2f}–{c['q3']:.2f})"
+        f"CPU ratio {c['median']:.2f} (IQR {c['q1']:.2f}–{c['q3']:.2f}); against the "
+        f"pydantic floor: CPU ratio {r['pydantic_floor_cpu_ratio']['median']:.2f}"
     )
 
 

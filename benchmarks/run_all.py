@@ -135,6 +135,12 @@ def table(res: dict) -> str:
                 f"({_iqr(c)}); {r['batch_ms']['median']:.0f} ms vs "
                 f"{r['floor_ms']['median']:.0f} ms wall |"
             )
+            pw, pc = r["pydantic_floor_ratio"], r["pydantic_floor_cpu_ratio"]
+            rows.append(
+                f"| cold `advisor --batch` ({path}) / pydantic floor | {name} | "
+                f"**{pw['median']:.2f} ×** wall ({_iqr(pw)}); **{pc['median']:.2f} ×** CPU "
+                f"({_iqr(pc)}) |"
+            )
     for name, r in res["warm_advice"].items():
         rows.append(
             f"| warm advice (read + advise + TOML) | {name} | {r['median']:.2f} ms wall "

@@ -1,6 +1,7 @@
 """Rules of a duty cycle (issue 15): the motor and ratio for the cycle, the thermal verdict,
 the inertia ratio against its guideline, the starts an induction motor allows."""
 
+from advisor.calc.duty import S2_POWER_FACTOR, S3_POWER_FACTOR
 from advisor.core.cite import cite, note
 from advisor.core.rulebook import Finding, rule
 
@@ -12,6 +13,8 @@ INERTIA_GUIDE = (cite("keb-servo") + cite("autoengcalc")).with_note(
 #: The duty cycle's own basis: the project's issue 15, not a published source.
 ISSUE_15 = note("issue 15")
 SEED_003 = cite("seed-003")
+#: SEW-EURODRIVE's table of the power increasing factor K for S2 and S3 (p. 95).
+SEW_K = cite("sew-gearmotors", "§7.5, p. 95, power increasing factor K")
 #: The guideline of servo practice for the reflected load over the motor's inertia.
 INERTIA_RATIO_GUIDELINE = 10.0
 
@@ -117,3 +120,39 @@ def starts(required: float, allowed: float, basis: str) -> Finding[bool]:
 @rule("DU-07", "The duty as a cycle", IEC_60034_1)
 def duty_type(name: str, description: str, how: str) -> Finding[str]:
     return Finding(name, f"Duty {name}: {description}.", how)
+
+
+@rule("DU-09", "S1 motor in S2 or S3: power increasing factor", SEW_K + IEC_60034_1)
+def power_increasing_factor(duty_type: str, value: float, k: float) -> Finding[float]:
+    """K of SEW's table (:func:`advisor.calc.duty.s2_power_factor`, ``s3_power_factor``):
+    ``value`` is the S2 period in min or the S3 cyclic duration factor."""
+    if duty_type == "S2":
+        rows = ", ".join(f"{p:g} min → {f:g}" for p, f in S2_POWER_FACTOR)
+        what = f"S2 for {value:g} min"
+        read = (
+            "a period between two rows takes the next longer row's K, one over 60 min is S1 "
+            "(K = 1), one under 10 min keeps 1.4 (the table is not extrapolated)"
+        )
+        extra = (
+            " The catalog gives no thermal time constant, so the rise over the run is not computed."
+        )
+    else:
+        rows = ", ".join(f"cdf {c:.0%} → {f:g}" for c, f in S3_POWER_FACTOR)
+        what = f"S3 at cdf {value:.0%}"
+        read = (
+            "a cdf between two rows takes the next larger cdf's K, one over 60 % is S1 "
+            "(K = 1), one under 15 % keeps 1.4"
+        )
+        extra = (
+            " It is checked beside the equivalent torque (DU-04), which with β0 = 0.5 allows "
+            "more: the stricter of the two decides. SEW's rating also counts the losses that "
+            "do not fall with the load and the temperature's ripple over the cycle."
+        )
+    return Finding(
+        k,
+        f"{what}: the motor may carry K = {k:g} times its rated load.",
+        f"SEW's power increasing factor for an S1 motor in {duty_type} ({rows}); {read}. At "
+        "an induction motor's near-constant speed a factor on the power is a factor on the "
+        f"torque.{extra}",
+        {"value": value, "k": k},
+    )

@@ -126,7 +126,7 @@ def test_cache_follows_file_changes(tmp_path, monkeypatch):
     d = _user_dir(tmp_path, MOTORS_FILE, MOTOR_ROW.format(slip=9.3))
     load_catalogs.cache_clear()
     assert any(m.model == "X71B8" for m in load_catalogs(d).motors)
-    assert list((tmp_path / "c" / "drive-advisor").glob("catalogs-*.json"))
+    assert list((tmp_path / "c" / "drive-advisor").glob("catalogs-*.marshal"))
     # a cached run gives the same catalogs
     load_catalogs.cache_clear()
     again = load_catalogs(d)
@@ -137,6 +137,29 @@ def test_cache_follows_file_changes(tmp_path, monkeypatch):
     with pytest.raises(CatalogError):
         load_catalogs(d)
     shutil.rmtree(tmp_path / "c")
+
+
+@pytest.mark.parametrize("damage", ["truncated", "garbage", "empty", "other data"])
+def test_a_damaged_cache_is_ignored_and_rewritten(tmp_path, monkeypatch, damage):
+    import marshal
+
+    monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path / "c"))
+    load_catalogs.cache_clear()
+    first = load_catalogs()
+    (cache,) = (tmp_path / "c" / "drive-advisor").glob("catalogs-*.marshal")
+    good = cache.read_bytes()
+    cache.write_bytes(
+        {
+            "truncated": good[: len(good) // 2],
+            "garbage": bytes(range(256)) * 4,
+            "empty": b"",
+            "other data": marshal.dumps({"threads": [1, 2]}),
+        }[damage]
+    )
+    load_catalogs.cache_clear()
+    assert load_catalogs() == first  # validated again from the files
+    assert cache.read_bytes() == good  # and the cache written anew
+    load_catalogs.cache_clear()
 
 
 BEARING_ROW = """

@@ -341,8 +341,10 @@ def test_ctrl_c_says_how_many_reports_were_written(tmp_path, monkeypatch, capsys
 
 def test_ctrl_c_with_workers_ends_with_130_and_no_traceback(tmp_path):
     d = tmp_path / "in"
-    for i in range(80):
-        _linear(d, f"r{i:02}.toml")
+    # enough files that the run cannot end between the first report and the key (a linear
+    # file takes a few milliseconds)
+    for i in range(600):
+        _linear(d, f"r{i:03}.toml")
     proc = subprocess.Popen(
         [
             sys.executable,

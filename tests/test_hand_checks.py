@@ -15,7 +15,7 @@ REL = 1e-4
 
 
 def _design(data: dict) -> dict:
-    return advise(parse_requirements(data)).model_dump(mode="json")
+    return advise(parse_requirements(data)).as_dict()
 
 
 def test_linear_7kN_0_3m_in_6s_by_hand():

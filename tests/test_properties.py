@@ -76,7 +76,9 @@ def test_design_or_clear_infeasibility(data):
 
 @st.composite
 def rotary_requirements(draw):
-    speeds = draw(st.lists(st.floats(500.0, 30000.0, **finite), min_size=1, max_size=4))
+    speeds = draw(
+        st.lists(st.floats(500.0, 30000.0, **finite), min_size=1, max_size=4, unique=True)
+    )
     req = {
         "application": {"kind": "rotary", "hold_without_power": draw(st.booleans())},
         "rotary": {

@@ -129,15 +129,21 @@ def test_issue_12_q_100_value():
     assert r.ratios_out_to_in(i) == pytest.approx([100 / 6.5, 6.5])
 
 
-def test_optimum_within_an_envelope_is_polished():
-    # within a diameter limit the optimum sits on the envelope, between grid points
-    for q in (275.0, 900.0, 4300.0):
-        r = rd.sweep(q, P)
-        d_max = 0.8 * r.outer_diameter_mm[rd.best(r, "mass")]
-        ratios, rows = rd.refine(q, P, r, "mass", d_max)
-        red = rd.evaluate(ratios, [rows] + [2] * (len(ratios) - 1), P)
-        assert red.outer_diameter_mm <= d_max
-        assert red.mass_kg <= lightest(q, P, max_d=d_max) * 1.005
+@pytest.mark.parametrize(
+    "q, share",
+    [(275.0, 0.8), (900.0, 0.8), (4300.0, 0.8), (20757.8, 0.8), (3300.0, 0.9), (51000.0, 0.95)],
+)
+def test_optimum_within_an_envelope_is_polished(q, share):
+    # within a diameter limit the optimum sits on the envelope, between grid points; at
+    # q = 20 757.8 under 0.8 of the free optimum's diameter the only 3-stage designs that fit
+    # lie between grid points (the brute force's 9.041 kg; the best 4-stage grid point
+    # polished gave 9.391 kg, 3.9 % more)
+    r = rd.sweep(q, P)
+    d_max = share * r.outer_diameter_mm[rd.best(r, "mass")]
+    ratios, rows = rd.refine(q, P, r, "mass", d_max)
+    red = rd.evaluate(ratios, [rows] + [2] * (len(ratios) - 1), P)
+    assert red.outer_diameter_mm <= d_max
+    assert red.mass_kg <= lightest(q, P, max_d=d_max) * 1.005
 
 
 def test_pareto_front_is_non_dominated_and_covers_the_space():

@@ -87,6 +87,7 @@ def strategy(root: dict, node: dict) -> st.SearchStrategy:
             strategy(root, node["items"]),
             min_size=node.get("minItems", 0),
             max_size=min(node.get("maxItems", 3), 3),
+            unique=node.get("uniqueItems", False),
         )
     if kind == "object":
         return _table(root, node)

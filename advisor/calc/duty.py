@@ -227,6 +227,49 @@ IEC_DUTY_TYPES: dict[str, str] = {
 #: IEC 60034-1 (clause 4.2.3): an S3…S6 cycle is 10 min unless agreed otherwise.
 IEC_DEFAULT_CYCLE_S = 600.0
 
+#: SEW-EURODRIVE, «Manual – Gear Units and Gearmotors», §7.5 Thermal characteristics, p. 95,
+#: table "Power increasing factor K": a motor rated for S1 (100 % cdf) may give K times its
+#: rated power in S2 for the period of operation (min) …
+S2_POWER_FACTOR: tuple[tuple[float, float], ...] = ((10.0, 1.4), (30.0, 1.2), (60.0, 1.1))
+#: … and in S3 at the cyclic duration factor (same table; cdf as a fraction).
+S3_POWER_FACTOR: tuple[tuple[float, float], ...] = (
+    (0.15, 1.4),
+    (0.25, 1.3),
+    (0.40, 1.15),
+    (0.60, 1.1),
+)
+
+
+def s2_power_factor(duration_min: float) -> float:
+    """SEW's power increasing factor K of an S1 motor run in S2 for ``duration_min``
+    (:data:`S2_POWER_FACTOR`). The table is not interpolated: a period between two rows takes
+    the K of the next longer row (the smaller K, on the safe side); a period shorter than
+    10 min takes the 10 min row's 1.4 (not extrapolated); one longer than 60 min takes 1.0,
+    continuous running (S1).
+
+    >>> s2_power_factor(10), s2_power_factor(30), s2_power_factor(45), s2_power_factor(90)
+    (1.4, 1.2, 1.1, 1.0)
+    """
+    for period, k in S2_POWER_FACTOR:
+        if duration_min <= period:
+            return k
+    return 1.0
+
+
+def s3_power_factor(cyclic_duration_factor: float) -> float:
+    """SEW's power increasing factor K of an S1 motor run in S3 at a cyclic duration factor
+    (:data:`S3_POWER_FACTOR`), read as :func:`s2_power_factor` reads its table: a cdf between
+    two rows takes the K of the next larger cdf (the smaller K), one under 15 % keeps 1.4,
+    one over 60 % takes 1.0 (S1).
+
+    >>> s3_power_factor(0.4), s3_power_factor(0.3), s3_power_factor(0.1), s3_power_factor(0.8)
+    (1.15, 1.15, 1.4, 1.0)
+    """
+    for cdf, k in S3_POWER_FACTOR:
+        if cyclic_duration_factor <= cdf:
+            return k
+    return 1.0
+
 
 def inertia_factor(motor_inertia_kgm2: float, external_inertia_kgm2: float) -> float:
     """FI = (J_M + J_ext)/J_M, J_ext reflected to the motor shaft (IEC 60034-1, 3.18 "factor

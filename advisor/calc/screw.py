@@ -98,8 +98,12 @@ def thread_torque(
     5.225
     """
     psi = lead_angle(pitch_m, d2_m, starts)
-    phi = friction_angle(f, model, psi)
-    return force_N * d2_m / 2.0 * math.tan(psi + phi)
+    return torque_from_angles(force_N, d2_m, psi, friction_angle(f, model, psi))
+
+
+def torque_from_angles(force_N: float, d2_m: float, psi_rad: float, phi_rad: float) -> float:
+    """M = F·d2/2·tan(ψ + φ') of seed 001, eq. (1), from angles already computed  [N·m]."""
+    return force_N * d2_m / 2.0 * math.tan(psi_rad + phi_rad)
 
 
 def efficiency(psi_rad: float, phi_rad: float) -> float:

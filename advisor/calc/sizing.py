@@ -88,11 +88,37 @@ class ThreadEvaluation(NamedTuple):
 
     @property
     def passed(self) -> bool:
-        return all(c.passed for c in self.checks)
+        return all(c.margin >= 1.0 for c in self.checks)  # Check.passed, without its call
 
     @property
     def failed(self) -> list[Check]:
         return [c for c in self.checks if not c.passed]
+
+
+class _CheckSources(NamedTuple):
+    core_name: str
+    core: Cite
+    buckling_name: str
+    buckling: Cite
+    ivanov: Cite
+
+
+@lru_cache(maxsize=64)
+def _check_sources(
+    yield_safety_factor: float, formula: str, end_fixity: str, buckling_safety_factor: float
+) -> _CheckSources:
+    """The names and sources of a thread's checks: the same for every thread of one design
+    (the joint choice evaluates about a hundred; issue 16)."""
+    ivanov = cite("ivanov-dm", "power screws")
+    return _CheckSources(
+        "screw core stress (axial force + torque, von Mises)",
+        ivanov.with_note(f"[σ] = σ_y/{yield_safety_factor:g}"),
+        f"buckling between supports ({formula}, {end_fixity})",
+        cite("shigley", f"ch. 4, {formula} column formula").with_note(
+            f"safety factor {buckling_safety_factor:g}"
+        ),
+        ivanov,
+    )
 
 
 def evaluate_thread(
@@ -122,7 +148,10 @@ def evaluate_thread(
     psi = sc.lead_angle(p, d2, starts)
     phi = sc.friction_angle(f, friction_model, psi)
     phi_low = sc.friction_angle(material.friction_low, "standard", psi)
-    torque = sc.thread_torque(force_N, d2, p, f, friction_model, starts)
+    # the torque of both friction models (the report shows the other beside the chosen),
+    # with the lead and friction angles computed once: eq. (1), as sc.thread_torque
+    phi_std = phi if friction_model == "standard" else sc.friction_angle(f, "standard", psi)
+    torque = sc.torque_from_angles(force_N, d2, psi, phi)
     revs = sc.revolutions(stroke_m, p, starts)
     speed = sc.screw_speed_rpm(revs, travel_time_s)
 
@@ -138,25 +167,16 @@ def evaluate_thread(
         d3, span_m, end_fixity, material.elastic_modulus_Pa, material.yield_strength_Pa
     )
     allowed_stress = material.yield_strength_Pa / material.yield_safety_factor
-    ivanov = cite("ivanov-dm", "power screws")
+    src = _check_sources(material.yield_safety_factor, formula, end_fixity, buckling_safety_factor)
     checks = (
-        _upper(
-            "core_stress",
-            "screw core stress (axial force + torque, von Mises)",
-            core / MPA,
-            allowed_stress / MPA,
-            "MPa",
-            ivanov.with_note(f"[σ] = σ_y/{material.yield_safety_factor:g}"),
-        ),
+        _upper("core_stress", src.core_name, core / MPA, allowed_stress / MPA, "MPa", src.core),
         _upper(
             "buckling",
-            f"buckling between supports ({formula}, {end_fixity})",
+            src.buckling_name,
             force_N,
             p_cr / buckling_safety_factor,
             "N",
-            cite("shigley", f"ch. 4, {formula} column formula").with_note(
-                f"safety factor {buckling_safety_factor:g}"
-            ),
+            src.buckling,
         ),
         _upper(
             "nut_pressure",
@@ -164,7 +184,7 @@ def evaluate_thread(
             pressure / MPA,
             material.allowable_pressure_Pa / MPA,
             "MPa",
-            ivanov,
+            src.ivanov,
         ),
         _upper(
             "nut_height",
@@ -172,9 +192,11 @@ def evaluate_thread(
             height / d2,
             material.nut_height_ratio_max,
             "",
-            ivanov,
+            src.ivanov,
         ),
-        _upper("nut_turns", "engaged nut turns", turns, float(material.nut_max_turns), "", ivanov),
+        _upper(
+            "nut_turns", "engaged nut turns", turns, float(material.nut_max_turns), "", src.ivanov
+        ),
     )
     return ThreadEvaluation(
         thread=thread,
@@ -185,17 +207,15 @@ def evaluate_thread(
         torque_Nm=torque,
         torque_standard_Nm=torque
         if friction_model == "standard"
-        else sc.thread_torque(force_N, d2, p, f, "standard", starts),
+        else sc.torque_from_angles(force_N, d2, psi, phi_std),
         torque_paper_Nm=torque
         if friction_model == "paper"
-        else sc.thread_torque(force_N, d2, p, f, "paper", starts),
+        else sc.torque_from_angles(force_N, d2, psi, sc.friction_angle(f, "paper", psi)),
         efficiency=sc.efficiency(psi, phi),
         back_driving_efficiency=sc.back_driving_efficiency(psi, phi),
         # holding is physics: judged with the standard reduced friction even when the torque
         # follows the paper's f/cos(ψ/2), so it agrees with the low-friction judgement below
-        self_locking=sc.is_self_locking(
-            psi, phi if friction_model == "standard" else sc.friction_angle(f, "standard", psi)
-        ),
+        self_locking=sc.is_self_locking(psi, phi_std),
         self_locking_at_low_friction=sc.is_self_locking(psi, phi_low),
         revolutions=revs,
         speed_rpm=speed,

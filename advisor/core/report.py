@@ -5,10 +5,10 @@ six significant digits so that two runs of the same input give byte-identical fi
 changed input shows as a readable diff.
 """
 
+import copy
+import inspect
 import math
-from typing import Any
-
-from pydantic import BaseModel, ConfigDict
+from typing import Any, ClassVar
 
 from advisor.core import toml_text
 from advisor.io_safety import write_atomic as write_atomic  # re-exported: the report writer
@@ -16,36 +16,83 @@ from advisor.io_safety import write_atomic as write_atomic  # re-exported: the r
 REPORT_FORMAT = 1
 
 
-class _Out(BaseModel):
-    """Report tables. The engine builds them from values it computed, so they are made with
-    :meth:`make` (no validation) and dumped by :func:`_plain`; building pydantic's validator
-    and serializer for a dozen classes would cost more than the whole advice."""
+class _Out:
+    """A report table: the fields its class annotates, in their declared order (a base
+    class's first), with the defaults the class gives them.
 
-    model_config = ConfigDict(extra="forbid", defer_build=True)
+    The engine builds the tables from values it has computed, so they are made with
+    :meth:`make`, which checks the names (an unknown one or a missing required one is a bug
+    of the advice) and copies mutable defaults, and dumped by :func:`_plain`. A plain class
+    rather than a pydantic model: the report validates nothing, and defining some fifty
+    pydantic classes cost about 15 ms of every run (issue 16).
+    """
+
+    field_names: ClassVar[tuple[str, ...]] = ()
+    _names: ClassVar[frozenset[str]] = frozenset()
+    _required: ClassVar[frozenset[str]] = frozenset()
+    _defaults: ClassVar[dict[str, Any]] = {}
+
+    def __init_subclass__(cls, **kwargs: Any) -> None:
+        super().__init_subclass__(**kwargs)
+        names: list[str] = []
+        defaults: dict[str, Any] = {}
+        for klass in reversed(cls.__mro__):
+            for name, ann in inspect.get_annotations(klass).items():
+                if name.startswith("_") or "ClassVar" in str(ann):
+                    continue
+                if name not in names:
+                    names.append(name)
+                if name in klass.__dict__:
+                    defaults[name] = klass.__dict__[name]
+                else:  # declared again without a default: required from here on
+                    defaults.pop(name, None)
+        cls.field_names = tuple(names)
+        cls._names = frozenset(names)
+        cls._required = frozenset(n for n in names if n not in defaults)
+        cls._defaults = defaults
 
     @classmethod
     def make(cls, **values: Any):
-        names, required = _field_sets(cls)
-        if not names.issuperset(values):
-            raise TypeError(f"{cls.__name__}: unknown fields {sorted(set(values) - names)}")
-        if not required.issubset(values):
-            raise TypeError(f"{cls.__name__}: missing fields {sorted(required - set(values))}")
-        return cls.model_construct(**values)
+        if not cls._names.issuperset(values):
+            raise TypeError(f"{cls.__name__}: unknown fields {sorted(set(values) - cls._names)}")
+        if not cls._required.issubset(values):
+            raise TypeError(f"{cls.__name__}: missing fields {sorted(cls._required - set(values))}")
+        obj = object.__new__(cls)
+        d = obj.__dict__
+        for name in cls.field_names:
+            if name in values:
+                d[name] = values[name]
+            else:
+                v = cls._defaults[name]
+                d[name] = copy.copy(v) if isinstance(v, list | dict) else v
+        return obj
+
+    def replace(self, **update: Any):
+        """A copy with some fields changed (checked as :meth:`make` checks them)."""
+        return type(self).make(**{**self.__dict__, **update})
+
+    def as_dict(self) -> dict[str, Any]:
+        """The fields as a dict, tables within it as dicts too."""
+        return {n: _as_dict(getattr(self, n)) for n in self.field_names}
+
+    def __eq__(self, other: object) -> bool:
+        return type(other) is type(self) and other.__dict__ == self.__dict__
+
+    __hash__ = None  # type: ignore[assignment]  # mutable, as a pydantic model is
+
+    def __repr__(self) -> str:
+        inner = ", ".join(f"{n}={getattr(self, n)!r}" for n in self.field_names)
+        return f"{type(self).__name__}({inner})"
 
 
-_SETS: dict[type, tuple[frozenset[str], frozenset[str]]] = {}
-
-
-def _field_sets(cls: type[BaseModel]) -> tuple[frozenset[str], frozenset[str]]:
-    """The field names of a report table and the required ones (asked once per class)."""
-    sets = _SETS.get(cls)
-    if sets is None:
-        fields = cls.model_fields
-        sets = _SETS[cls] = (
-            frozenset(fields),
-            frozenset(n for n, f in fields.items() if f.is_required()),
-        )
-    return sets
+def _as_dict(v: Any) -> Any:
+    if isinstance(v, _Out):
+        return v.as_dict()
+    if isinstance(v, list | tuple):
+        return [_as_dict(x) for x in v]
+    if isinstance(v, dict):
+        return {k: _as_dict(x) for k, x in v.items()}
+    return v
 
 
 class CheckOut(_Out):
@@ -133,18 +180,8 @@ def round_sig(x: float, digits: int = 6) -> float:
     return round(x, digits - 1 - math.floor(math.log10(abs(x))))
 
 
-_FIELDS: dict[type, tuple[str, ...]] = {}
-
-
 class NonFiniteValue(ValueError):
     """A report value that is nan or inf: a bug of the advice, never written to a file."""
-
-
-def _fields(t: type) -> tuple[str, ...]:
-    names = _FIELDS.get(t)
-    if names is None:
-        names = _FIELDS[t] = tuple(t.model_fields)
-    return names
 
 
 def _plain(obj: Any) -> Any:
@@ -168,21 +205,25 @@ def _plain_fast(obj: Any) -> Any:
     if t is str or t is int or t is bool:
         return obj
     if t is list or t is tuple:
+        if obj and all(type(v) is float for v in obj):  # a curve: one pass, no calls per item
+            if any(v - v != 0.0 for v in obj):
+                raise NonFiniteValue("a report value is not a finite number")
+            return [round_sig(v) for v in obj]
         return [_plain_fast(v) for v in obj if v is not None]
     if t is dict:
         return {str(k): _plain_fast(v) for k, v in obj.items() if v is not None}
-    if isinstance(obj, BaseModel):
+    if isinstance(obj, _Out):
         values = obj.__dict__
-        return {n: _plain_fast(values[n]) for n in _fields(t) if values.get(n) is not None}
+        return {n: _plain_fast(values[n]) for n in t.field_names if values.get(n) is not None}
     return _plain_keyed(obj, "")
 
 
 def _plain_keyed(obj: Any, key: str) -> Any:
     """The same, naming the key of the value it refuses (the error path only)."""
-    if isinstance(obj, BaseModel):
+    if isinstance(obj, _Out):
         return {
             name: _plain_keyed(getattr(obj, name), _join(key, name))
-            for name in type(obj).model_fields
+            for name in obj.field_names
             if getattr(obj, name) is not None
         }
     if isinstance(obj, float):
@@ -214,10 +255,16 @@ def plain(report: Report) -> dict[str, Any]:
     return _plain(report)
 
 
+_NUMBER_TYPES = (float, int)  # exact types: a bool is no number here
+
+
 def _numbers(v: Any) -> bool:
     """An array of numbers (or of arrays of them)."""
     return isinstance(v, list) and all(
-        (isinstance(x, int | float) and not isinstance(x, bool)) or _numbers(x) for x in v
+        type(x) in _NUMBER_TYPES
+        or (isinstance(x, int | float) and not isinstance(x, bool))
+        or _numbers(x)
+        for x in v
     )
 
 
@@ -250,6 +297,8 @@ def _lift(node: Any, path: str, curves: dict[str, Any]) -> Any:
                 out[k] = _lift(v, f"{path}.{k}" if path else k, curves)
         return out if out or not part else None
     if isinstance(node, list):
+        if not any(isinstance(v, dict | list) for v in node):  # numbers, words: as they are
+            return node
         return [_lift(v, f"{path}[{i + 1}]", curves) for i, v in enumerate(node)]
     return node
 
@@ -258,6 +307,8 @@ def _drop_empty(node: Any) -> Any:
     if isinstance(node, dict):
         return {k: _drop_empty(v) for k, v in node.items() if v is not None}
     if isinstance(node, list):
+        if not any(isinstance(v, dict | list) for v in node):
+            return node
         return [_drop_empty(v) for v in node]
     return node
 

@@ -36,11 +36,18 @@ class _Strict(BaseModel):
 
 
 def _extra(
-    label: str | None, unit: str | None, step: int | None, example: Any, extra: dict[str, Any]
+    label: str | None,
+    unit: str | None,
+    step: int | None,
+    example: Any,
+    extra: dict[str, Any],
+    unique_items: bool = False,
 ) -> dict[str, Any] | None:
     """The question metadata of a field, kept in its JSON Schema as ``x-`` keywords (editors
     ignore them; :mod:`advisor.core.questions` reads them)."""
     out = {f"x-{k}": v for k, v in extra.items()}
+    if unique_items:  # a standard keyword: editors check it too
+        out["uniqueItems"] = True
     if label is not None:
         out["x-label"] = label
     if unit is not None:
@@ -60,16 +67,19 @@ def ask(
     step: int | None = None,
     example: Any = None,
     extra: dict[str, Any] | None = None,
+    unique_items: bool = False,
     **constraints: Any,
 ) -> Any:
     """A requirement field declared once: ``desc`` is the help text (and the words of its
     error messages), ``label`` the wizard's name for it, ``unit`` its unit (by default the
     one its key's suffix names, see :mod:`advisor.core.questions`), ``step`` the wizard step
     that asks it (none: the file only), ``example`` a value shown where there is no default;
-    ``constraints`` are pydantic's (``gt``, ``le``, ``max_length`` …), the valid range."""
+    ``constraints`` are pydantic's (``gt``, ``le``, ``max_length`` …), the valid range;
+    ``unique_items`` says in the schema that a list names each value once (the model's own
+    validator refuses a repeat)."""
     return Field(
         description=desc,
-        json_schema_extra=_extra(label, unit, step, example, extra or {}),
+        json_schema_extra=_extra(label, unit, step, example, extra or {}, unique_items),
         **constraints,
     )
 

@@ -60,7 +60,11 @@ def literal(obj: Any, nest: int = 0) -> str:
         if not obj:
             return "[]"
         inner = INDENT * (nest + 1)
-        items = f",\n{inner}".join(literal(x, nest + 1) for x in obj)
+        # a curve is thousands of floats: written at once, as literal() writes each
+        if all(type(x) is float for x in obj):
+            items = f",\n{inner}".join(map(str, obj))
+        else:
+            items = f",\n{inner}".join(literal(x, nest + 1) for x in obj)
         return f"[\n{inner}{items},\n{INDENT * nest}]"
     if t is dict:
         return inline_table(obj)

@@ -180,8 +180,11 @@ def _iec_cycle(req, ev, mot: MotorModel):
     on = cdf * period
     ph: list[du.Phase] = []
     braking = 0.0
-    if t in ("S1", "S2"):
+    if t == "S1":
         ph = [du.Phase("run", period, w, w, load)]
+        starts_h = 0.0
+    elif t == "S2":  # one run for the stated time; the rest until cold is not a cycle
+        ph = [du.Phase("run", duty.duration_min * 60.0, w, w, load)]
         starts_h = 0.0
     elif t == "S3":
         ph = [du.Phase("run", on, w, w, load), du.Phase("rest", period - on, 0.0, 0.0, 0.0)]
@@ -231,14 +234,28 @@ def evaluate(req, ev, m, j_load: float, holder: str | None) -> dict:
     thermal = [p._replace(torque_Nm=0.0) if p.name.endswith("start") else p for p in phases]
     rms = du.rms_torque(thermal, duty.standstill_cooling_factor) if phases else 0.0
     rated = m.rated_torque_Nm
+    # S2: SEW's power increasing factor K raises the thermal limit to K·M_n (same speed)
+    k_s2 = du.s2_power_factor(duty.duration_min) if duty.duty_type == "S2" else 1.0
+    limit = k_s2 * rated
     p_loss = m.rated_power_kW * 1e3 * (100.0 / m.efficiency_pct - 1.0)
     ramp = (1.0 + duty.standstill_cooling_factor) / 2.0
     z0 = du.no_load_starts_per_hour(p_loss, m.inertia_kgm2, mot.w0, ramp)
     fi = du.inertia_factor(m.inertia_kgm2, j_load)
     allowed = du.allowed_starts_per_hour(z0, fi, k_l, rms / rated, 1.0, braking)
     start_torque = mot.curve.torque(1.0)
-    if rms > rated:
-        problems.append(f"RMS torque {rms:.4g} N·m above the rated {rated:.4g} N·m")
+    if rms > limit:
+        problems.append(
+            f"RMS torque {rms:.4g} N·m above the rated {rated:.4g} N·m"
+            + (f" × K = {k_s2:g} for S2 = {limit:.4g} N·m" if k_s2 != 1.0 else "")
+        )
+    # S3: the running torque also against SEW's K·M_n for the cdf (the stricter decides)
+    k_s3 = du.s3_power_factor(duty.cyclic_duration_factor) if duty.duty_type == "S3" else 1.0
+    run_s3 = phases[0].torque_Nm if duty.duty_type == "S3" and phases else 0.0
+    if run_s3 > k_s3 * rated:
+        problems.append(
+            f"S3 running torque {run_s3:.4g} N·m above K·M_n = {k_s3:g} × {rated:.4g} = "
+            f"{k_s3 * rated:.4g} N·m (SEW's S3 factor)"
+        )
     if starts_h > allowed:
         problems.append(f"{starts_h:.4g} starts/h above the {allowed:.4g} it allows")
     if peak_load > start_torque:
@@ -251,6 +268,10 @@ def evaluate(req, ev, m, j_load: float, holder: str | None) -> dict:
         "phases": phases,
         "rms": rms,
         "rated": rated,
+        "limit": limit,
+        "k_s2": k_s2,
+        "k_s3": k_s3,
+        "run_s3": run_s3,
         "starts": starts_h,
         "allowed": allowed,
         "z0": z0,
@@ -299,15 +320,39 @@ def advise_duty(req, ev, selected, cat, holder: str | None, trace: Trace):
     phases = e["phases"]
     out_J, back_J = du.energies(phases)
     beta0 = duty.standstill_cooling_factor
-    util = e["rms"] / e["rated"]
-    trace.apply(
-        du_rules.thermal,
-        util,
-        f"Equivalent torque √(Σ M²·t / Σ β·t) = {e['rms']:.4g} N·m against the rated "
-        f"{e['rated']:.4g} N·m of {m.model}; β = 1 at speed, β0 = {beta0:g} at standstill, "
-        f"(1 + β0)/2 in a ramp (a self-ventilated motor, IP44). A start counts at zero torque: "
-        "its heat, the load's share included, is counted by the starts per hour.",
-    )
+    util = e["rms"] / e["limit"]
+    k_s2 = e["k_s2"]
+    if duty.duty_type == "S2":
+        trace.apply(du_rules.power_increasing_factor, "S2", duty.duration_min, k_s2)
+        thermal_how = (
+            f"Torque of the S2 run {e['rms']:.4g} N·m against K·M_n = {k_s2:g} × "
+            f"{e['rated']:.4g} = {e['limit']:.4g} N·m of {m.model} (DU-09: SEW's power "
+            "increasing factor for S2, at the same speed a factor on the torque)."
+        )
+        basis = f"torque of the S2 run over K·M_n (K = {k_s2:g}, SEW's S2 factor)"
+    else:
+        thermal_how = (
+            f"Equivalent torque √(Σ M²·t / Σ β·t) = {e['rms']:.4g} N·m against the rated "
+            f"{e['rated']:.4g} N·m of {m.model}; β = 1 at speed, β0 = {beta0:g} at standstill, "
+            f"(1 + β0)/2 in a ramp (a self-ventilated motor, IP44). A start counts at zero "
+            "torque: its heat, the load's share included, is counted by the starts per hour."
+        )
+        basis = f"equivalent torque (β0 = {beta0:g} at standstill) over the rated torque"
+    k_s3 = e["k_s3"]
+    if duty.duty_type == "S3":
+        cdf = duty.cyclic_duration_factor
+        trace.apply(du_rules.power_increasing_factor, "S3", cdf, k_s3)
+        util_k = e["run_s3"] / (k_s3 * e["rated"])
+        thermal_how += (
+            f" Beside it SEW's S3 factor (DU-09): the running torque {e['run_s3']:.4g} N·m "
+            f"against K·M_n = {k_s3:g} × {e['rated']:.4g} = {k_s3 * e['rated']:.4g} N·m, "
+            f"utilisation {util_k:.3g} against {util:.3g} by the equivalent torque; the "
+            "larger decides."
+        )
+        if util_k > util:
+            util = util_k
+            basis = f"S3 running torque over K·M_n (K = {k_s3:g}, SEW's S3 factor)"
+    trace.apply(du_rules.thermal, util, thermal_how)
     peak = du.peak_torque(phases)
     trace.apply(
         du_rules.peak,
@@ -344,12 +389,13 @@ def advise_duty(req, ev, selected, cat, holder: str | None, trace: Trace):
     checks = [
         Check(
             "duty_rms_torque",
-            "equivalent torque of the cycle within the rated torque",
+            "equivalent torque of the cycle within the rated torque"
+            + (f" × K = {k_s2:g} (S2)" if duty.duty_type == "S2" else ""),
             e["rms"],
-            e["rated"],
+            e["limit"],
             "N·m",
-            e["rated"] / e["rms"] if e["rms"] > 0 else math.inf,
-            du_rules.KLYUCHEV + du_rules.ISSUE_15,
+            e["limit"] / e["rms"] if e["rms"] > 0 else math.inf,
+            du_rules.KLYUCHEV + (du_rules.SEW_K if duty.duty_type == "S2" else du_rules.ISSUE_15),
         ),
         Check(
             "duty_peak_torque",
@@ -361,6 +407,18 @@ def advise_duty(req, ev, selected, cat, holder: str | None, trace: Trace):
             cite("4a-table", "M_start/M_n") + du_rules.ISSUE_15,
         ),
     ]
+    if duty.duty_type == "S3":
+        checks.append(
+            Check(
+                "duty_s3_factor",
+                f"S3 running torque within K·M_n (K = {k_s3:g}, SEW's S3 factor)",
+                e["run_s3"],
+                k_s3 * e["rated"],
+                "N·m",
+                k_s3 * e["rated"] / e["run_s3"] if e["run_s3"] > 0 else math.inf,
+                du_rules.SEW_K + du_rules.IEC_60034_1,
+            )
+        )
     if e["starts"] > 0:
         checks.append(
             Check(
@@ -385,7 +443,7 @@ def advise_duty(req, ev, selected, cat, holder: str | None, trace: Trace):
         rms_torque_Nm=e["rms"],
         rated_torque_Nm=e["rated"],
         thermal_utilisation=util,
-        thermal_basis=f"equivalent torque (β0 = {beta0:g} at standstill) over the rated torque",
+        thermal_basis=basis,
         inertia_ratio=ir,
         inertia_ratio_guideline=du_rules.INERTIA_RATIO_GUIDELINE,
         energy_per_cycle_J=out_J,
@@ -405,19 +463,24 @@ def advise_duty(req, ev, selected, cat, holder: str | None, trace: Trace):
 
 def _iec_how(duty) -> str:
     t = duty.duty_type
-    if t in ("S1", "S2"):
-        extra = (
-            " S2 is taken as S1 (a short-time duty never heats more than continuous running; "
-            "the motor's thermal time constant is not in the catalog)."
-            if t == "S2"
-            else ""
+    if t == "S1":
+        return f"One run at the rated force's screw torque for {duty.cycle_time_s:g} s."
+    if t == "S2":
+        return (
+            f"One run at the rated force's screw torque for duration_min = "
+            f"{duty.duration_min:g} min, then rest until the motor is cold (not part of the "
+            "cycle); the limit is K·M_n with SEW's S2 factor K (DU-09)."
         )
-        return f"One run at the rated force's screw torque for {duty.cycle_time_s:g} s.{extra}"
     if t in ("S3", "S6"):
         return (
             f"Run at the rated force for cdf = {duty.cyclic_duration_factor:g} of a "
             f"{duty.cycle_time_s:g} s cycle, then "
-            + ("rest at standstill." if t == "S3" else "run without load.")
+            + (
+                "rest at standstill; the running torque is also checked against SEW's S3 "
+                "factor (DU-09)."
+                if t == "S3"
+                else "run without load."
+            )
         )
     if t in ("S4", "S5", "S7"):
         return (

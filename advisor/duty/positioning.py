@@ -8,6 +8,7 @@ whose move is fastest among those that pass, each at the fastest ratio that pass
 """
 
 import math
+from functools import lru_cache
 
 from advisor.calc import duty as du
 from advisor.calc import motion as mo
@@ -36,8 +37,11 @@ def cycle(d: mo.Drive, path_rad: float, i: float, cycle_time_s: float) -> list[d
     return phases
 
 
+@lru_cache(maxsize=8192)
 def _eval(d: mo.Drive, path: float, i: float, t_cycle: float) -> tuple[float, float]:
-    """(move time, RMS torque over the cycle) at ratio i; inf where the load cannot move."""
+    """(move time, RMS torque over the cycle) at ratio i; inf where the load cannot move.
+    Cached within one advice (:func:`advise_duty` clears it first): the fastest passing
+    ratio and the least-RMS ratio scan the same grid."""
     ph = cycle(d, path, i, t_cycle)
     if ph is None:
         return math.inf, math.inf
@@ -56,6 +60,8 @@ def _refine(f, a: float, b: float, n: int = 80) -> float:
     """Bisection on the boundary of f(i) ≤ 0 between a (passes) and b (fails)."""
     for _ in range(n):
         c = math.sqrt(a * b)
+        if c == a or c == b:  # no float between them: more steps would change nothing
+            break
         if f(c):
             a = c
         else:
@@ -128,6 +134,7 @@ def advise_duty(
     trace: Trace,
 ) -> tuple[DutyOut, list[Check], list[str]]:
     """Choose motor and ratio for the cycle; the checks and warnings of that choice."""
+    _eval.cache_clear()  # one advice's evaluations are shared, never a previous advice's
     rows: dict[str, tuple[float, float, bool, str]] = {}
     reasons = []
     for name, d in drives:

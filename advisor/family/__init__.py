@@ -17,8 +17,8 @@ Modules, from the inside out:
 Dask and matplotlib are imported only here, never on the batch path.
 """
 
-import os
+from advisor.core import pydantic_plugins
 
 # as on the batch path: pydantic need not scan every installed package for plugins (the
 # workers import this package before any model)
-os.environ.setdefault("PYDANTIC_DISABLE_PLUGINS", "__all__")
+pydantic_plugins.disable()

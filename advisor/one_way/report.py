@@ -29,4 +29,4 @@ class OneWayOut(_Out):
     power_share: float | None = None
     basis: str = ""
     output_side: DeviceOut | None = None
-    alternatives: list[DeviceOut] = []  # noqa: RUF012 - pydantic copies field defaults
+    alternatives: list[DeviceOut] = []

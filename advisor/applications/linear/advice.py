@@ -193,7 +193,7 @@ def _one_way(req, trace: Trace, ev, thread: str, friction_low: float):
         f"{thread} is not self-locking at the low end of the friction range (f = "
         f"{friction_low:g}): a {device.type.replace('_', ' ')} at the motor side holds the load",
     )
-    return device.model_copy(update={"output_side": None}), warnings
+    return device.replace(output_side=None), warnings
 
 
 def advise_linear(

@@ -87,7 +87,7 @@ class MotorCandidateOut(_Out):
     breakdown_torque_margin: float | None = None
     travel_time_s: float | None = None
     suitable: bool
-    problems: list[str] = []  # noqa: RUF012 - pydantic copies field defaults
+    problems: list[str] = []
     curve: CurveOut | None = None
 
 

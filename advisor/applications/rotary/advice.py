@@ -326,7 +326,7 @@ def _pareto(space, design: rd.Reducer, params, env, trace) -> ParetoOut:
             "length_mm": design.length_mm,
             "stages": len(design.stages),
         },
-        None if point is None else dict(point),  # no serializer to build (issue 16)
+        None if point is None else point.as_dict(),
     )
     return ParetoOut.make(
         objectives=["least mass", "least outer diameter", "least length", "highest efficiency"],

@@ -12,7 +12,7 @@ computes finite (issue 13).
 
 from typing import Annotated, Literal
 
-from pydantic import Field, model_validator
+from pydantic import Field, field_validator, model_validator
 
 from advisor.core.requirements import ApplicationReq, OneWayReq, _num, _Strict, ask
 from advisor.duty.requirements import RotaryDutyReq
@@ -127,9 +127,10 @@ class BldcMotorReq(_Strict):
     candidate_speeds_rpm: Annotated[
         list[Annotated[float, _num(ge=100, le=2e5, desc="a motor speed, 100 … 2·10⁵ rpm")]],
         ask(
-            "motor speeds to compare, 100 … 2·10⁵ rpm each, at most 20",
+            "motor speeds to compare, 100 … 2·10⁵ rpm each, each once, at most 20",
             label="Motor speeds to compare",
             step=3,
+            unique_items=True,
             min_length=1,
             max_length=20,
         ),
@@ -145,6 +146,15 @@ class BldcMotorReq(_Strict):
         ),
     ] = None
     reference: ReferenceMotor = ReferenceMotor.model_construct()
+
+    @field_validator("candidate_speeds_rpm")
+    @classmethod
+    def _each_speed_once(cls, v: list[float]) -> list[float]:
+        twice = sorted({x for x in v if v.count(x) > 1})
+        if twice:  # the comparison would show one candidate where the list names two
+            said = ", ".join(f"{x:g}" for x in twice)
+            raise ValueError(f"{said} rpm given more than once: name each speed once")
+        return v
 
 
 class GearboxReq(_Strict):

@@ -81,7 +81,7 @@ def plots(report) -> list[PlotData]:
     d = report.design
     cands = sorted(d.motor.candidates, key=lambda c: c.speed_rpm)
     curve = loss_curve(report) or [
-        {"speed_rpm": c.speed_rpm, **c.losses_W.model_dump()} for c in cands
+        {"speed_rpm": c.speed_rpm, **c.losses_W.as_dict()} for c in cands
     ]
     speeds = [c["speed_rpm"] for c in curve]
     series = [
