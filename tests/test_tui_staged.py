@@ -149,3 +149,29 @@ async def test_a_choice_not_offered_is_shown_in_its_own_field(lazy):
         assert "'cylinder' in the file is not one of ball, roller" in err
         await _computed(app, pilot)
         assert app.report is not None
+
+
+@pytest.mark.parametrize(
+    "doc",
+    [
+        {"application": "linear"},
+        {"application": {"kind": "linear", "title": 5}, "linear": 7},
+        {"application": {"kind": "rotary"}, "motor": {"candidate_speeds_rpm": "fast"}},
+        {"application": {"kind": "positioning"}, "positioning": {"motors": [1, "x"]}},
+        {"application": {"kind": "linear"}, "linear": {"strok_m": 0.2, "force_N": "3 kN"}},
+    ],
+)
+async def test_wrong_files_walk_and_compute_with_steps_built_late(doc):
+    """Every step of a file with problems builds when reached, and ctrl+r from the first
+    step takes the user to the first problem (or computes): never an exception."""
+    app = DriveAdvisorApp(doc, save_drafts=False, offer_draft=False, build_all_steps=False)
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("ctrl+r")
+        await pilot.pause()
+        for _ in range(5):
+            await pilot.press("ctrl+n")
+            await pilot.pause()
+        await pilot.press("ctrl+r")
+        await pilot.pause(0.3)
+        assert app.is_running
+    assert app.return_code in (None, 0)

@@ -498,8 +498,8 @@ class DriveAdvisorApp(App[None]):
             self.screen.call_after_refresh(self._start)
 
     async def on_event(self, event: events.Event) -> None:
-        """Keys and clicks wait (in order) until every step is built."""
-        if isinstance(event, events.InputEvent) and not self._built.is_set():
+        """Keys, clicks and pastes wait (in order) until the start-up is done (_start)."""
+        if isinstance(event, events.InputEvent | events.Paste) and not self._built.is_set():
             await self._built.wait()
         await super().on_event(event)
 
