@@ -238,6 +238,13 @@ def run_wizard(path: Path | None, catalog_dir: Path | None) -> int:
     if path is not None and not path.is_file():
         _err(f"{path}: no such file" if not path.exists() else f"{path}: not a file")
         return ExitCode.INVALID_INPUT
+    if not (_is_terminal(sys.stdin) and _is_terminal(sys.stdout)):
+        # a wizard on a pipe would wait for keys that never come (and spin the CPU)
+        _err(
+            "the wizard needs a terminal (standard input and output are not one); "
+            "for a report without it: advisor --batch REQ.toml"
+        )
+        return ExitCode.INVALID_INPUT
     from advisor.tui.app import run
 
     return run(path, catalog_dir)
@@ -301,9 +308,33 @@ def main(argv: list[str] | None = None) -> int:
         return ExitCode.INTERNAL_ERROR
 
 
+def _is_terminal(stream) -> bool:
+    try:
+        return stream is not None and stream.isatty()
+    except (ValueError, OSError):  # a closed stream
+        return False
+
+
 def _dispatch(args: argparse.Namespace) -> int:
     inputs = args.batch
     if inputs is None:
+        batch_only = [
+            flag
+            for flag, given in (
+                ("-o/--output", args.output is not None),
+                ("--out-dir", args.out_dir is not None),
+                ("--format", args.format is not None),
+                ("-j/--jobs", args.jobs != 1),
+            )
+            if given
+        ]
+        if batch_only:  # without --batch the wizard would open and the option do nothing
+            name = args.requirements if args.requirements is not None else "REQ.toml"
+            _err(
+                f"{', '.join(batch_only)}: only with --batch (advisor --batch {name} …); "
+                "without --batch the wizard opens"
+            )
+            return ExitCode.INVALID_INPUT
         return run_wizard(args.requirements, args.catalog_dir)
     if args.jobs < 1:
         _err(f"-j/--jobs = {args.jobs}: must be at least 1")

@@ -200,15 +200,45 @@ def test_unwritable_output_is_reported(tmp_path, capsys):
 
 
 def test_no_arguments_open_the_wizard_and_a_missing_file_is_refused(monkeypatch, capsys):
+    import advisor.cli as cli
     import advisor.tui.app as tui
 
     opened = []
     monkeypatch.setattr(tui, "run", lambda path, catalog_dir: opened.append(path) or 0)
+    monkeypatch.setattr(cli, "_is_terminal", lambda stream: True)  # as in a terminal
     assert main([]) == 0 and opened == [None]
     assert main([str(EXAMPLE)]) == 0 and opened[-1] == EXAMPLE
     assert main(["nowhere.toml"]) == ExitCode.INVALID_INPUT
     assert "nowhere.toml: no such file" in capsys.readouterr().err
     assert len(opened) == 2  # the wizard was not opened for a missing file
+
+
+def test_the_wizard_without_a_terminal_or_with_batch_options_is_refused(tmp_path):
+    # without a terminal the wizard would wait for keys that never come; -o without --batch
+    # would open the wizard and write nothing: both are one line and exit 2, at once
+    import subprocess
+    import sys
+
+    def run(*args: str) -> subprocess.CompletedProcess:
+        return subprocess.run(
+            [sys.executable, "-m", "advisor", *args],
+            stdin=subprocess.DEVNULL,
+            capture_output=True,
+            text=True,
+            timeout=60,
+        )
+
+    out = run(str(EXAMPLE))
+    assert out.returncode == ExitCode.INVALID_INPUT
+    assert out.stderr.strip() == (
+        "advisor: the wizard needs a terminal (standard input and output are not one); "
+        "for a report without it: advisor --batch REQ.toml"
+    )
+    out = run(str(EXAMPLE), "-o", str(tmp_path / "r.toml"), "-j", "2")
+    assert out.returncode == ExitCode.INVALID_INPUT
+    assert "-o/--output, -j/--jobs: only with --batch" in out.stderr
+    assert len(out.stderr.strip().splitlines()) == 1
+    assert not (tmp_path / "r.toml").exists()
 
 
 def test_unknown_option_is_a_usage_error(capsys):

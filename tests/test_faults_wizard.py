@@ -140,8 +140,11 @@ def test_a_second_unreadable_draft_gets_its_own_name():
     assert len(names) == 2
 
 
-def test_the_wizard_refuses_a_file_it_cannot_read_in_one_line(tmp_path, capsys):
+def test_the_wizard_refuses_a_file_it_cannot_read_in_one_line(tmp_path, capsys, monkeypatch):
+    import advisor.cli
     from advisor.cli import main
+
+    monkeypatch.setattr(advisor.cli, "_is_terminal", lambda stream: True)  # as in a terminal
 
     fifo = tmp_path / "req.toml"
     import os
