@@ -37,15 +37,43 @@ def contradictions(data: dict[str, Any]) -> list[str]:
     return []
 
 
+#: The [duty] keys that only some forms of a cycle use (linear and rotary), and which use
+#: them: a duty type (IEC 60034-1), or segments (None).
+DUTY_KEYS_USED: dict[str, set[str | None]] = {
+    "cycles_per_hour": {None},
+    "cyclic_duration_factor": {"S3", "S4", "S5", "S6"},
+    "starts_per_hour": {"S4", "S5", "S7"},
+    "duration_min": {"S2"},
+    "cycle_time_s": {"S1", "S3", "S6", "S9", "S10"},
+    "loads": {"S9", "S10"},
+}
+
+
 def ignored(req: Any) -> list[str]:
     """Warnings for options of a valid requirement that the design does not use."""
+    out = []
     if (
         "one_way" in req.model_fields_set
         and holds(req.application.kind)
         and not req.application.hold_without_power
     ):
-        return [
+        out.append(
             IGNORED_PREFIX + "the [one_way] table, because application.hold_without_power = "
             "false: no holding device is chosen (set it true to choose one)"
-        ]
-    return []
+        )
+    duty = getattr(req, "duty", None)
+    if duty is not None and "duty_type" in type(duty).model_fields:
+        form = duty.duty_type
+        uses = dict(DUTY_KEYS_USED)
+        if req.application.kind == "rotary":  # its S2 runs as S1 over cycle_time_s
+            uses["cycle_time_s"] = uses["cycle_time_s"] | {"S2"}
+        unused = [k for k, used in uses.items() if k in duty.model_fields_set and form not in used]
+        if unused:
+            what = f"duty_type = {form!r}" if form else "a cycle of segments"
+            out.append(
+                IGNORED_PREFIX
+                + ", ".join(f"duty.{k}" for k in unused)
+                + f", because {what} does not use "
+                + ("it" if len(unused) == 1 else "them")
+            )
+    return out

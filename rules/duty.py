@@ -100,12 +100,19 @@ def thermal(utilisation: float, basis: str) -> Finding[float]:
 
 
 @rule("DU-05", "Peak torque of the cycle", SEED_003 + ISSUE_15)
-def peak(peak_Nm: float, limit_Nm: float, basis: str) -> Finding[float]:
-    return Finding(
-        peak_Nm,
-        f"Peak torque {peak_Nm:.4g} N·m against {limit_Nm:.4g} N·m.",
-        basis,
-    )
+def peak(
+    peak_Nm: float, limit_Nm: float, basis: str, cycle_peak_Nm: float | None = None
+) -> Finding[float]:
+    """``peak_Nm`` against its limit; ``cycle_peak_Nm``, where the value checked is not the
+    cycle's peak (the linear duty checks the largest load torque against the starting
+    torque), is named beside it, so that the decision states the design's own numbers."""
+    said = f"Peak torque {peak_Nm:.4g} N·m against {limit_Nm:.4g} N·m."
+    if cycle_peak_Nm is not None:
+        said = (
+            f"Largest load torque {peak_Nm:.4g} N·m against the starting torque "
+            f"{limit_Nm:.4g} N·m; the cycle's peak torque is {cycle_peak_Nm:.4g} N·m."
+        )
+    return Finding(peak_Nm, said, basis)
 
 
 @rule("DU-06", "Starts per hour", cite("iec-60034-1", "S4, S5: inertia factor FI"))
@@ -123,9 +130,12 @@ def duty_type(name: str, description: str, how: str) -> Finding[str]:
 
 
 @rule("DU-09", "S1 motor in S2 or S3: power increasing factor", SEW_K + IEC_60034_1)
-def power_increasing_factor(duty_type: str, value: float, k: float) -> Finding[float]:
-    """K of SEW's table (:func:`advisor.calc.duty.s2_power_factor`, ``s3_power_factor``):
-    ``value`` is the S2 period in min or the S3 cyclic duration factor."""
+def power_increasing_factor(
+    duty_type: str, value: float, k: float, on_time_min: float | None = None
+) -> Finding[float]:
+    """K of SEW's table (:func:`advisor.calc.duty.s2_power_factor`, ``s3_factor_for_cycle``):
+    ``value`` is the S2 period in min or the S3 cyclic duration factor; ``on_time_min`` the
+    S3 cycle's time under load (K held to at most the S2 factor of a run that long)."""
     if duty_type == "S2":
         rows = ", ".join(f"{p:g} min → {f:g}" for p, f in S2_POWER_FACTOR)
         what = f"S2 for {value:g} min"
@@ -137,13 +147,19 @@ def power_increasing_factor(duty_type: str, value: float, k: float) -> Finding[f
             " The catalog gives no thermal time constant, so the rise over the run is not computed."
         )
     else:
-        rows = ", ".join(f"cdf {c:.0%} → {f:g}" for c, f in S3_POWER_FACTOR)
-        what = f"S3 at cdf {value:.0%}"
+        rows = ", ".join(f"cdf {100 * c:g} % → {f:g}" for c, f in S3_POWER_FACTOR)
+        what = f"S3 at cdf {100 * value:.4g} %"
         read = (
             "a cdf between two rows takes the next larger cdf's K, one over 60 % is S1 "
             "(K = 1), one under 15 % keeps 1.4"
         )
-        extra = (
+        cap = (
+            f" SEW's S3 table is for a cycle of about 10 min: K is held to at most the S2 factor "
+            f"of one run as long as the on-time, here {on_time_min:.4g} min."
+            if on_time_min is not None
+            else ""
+        )
+        extra = cap + (
             " It is checked beside the equivalent torque (DU-04), which with β0 = 0.5 allows "
             "more: the stricter of the two decides. SEW's rating also counts the losses that "
             "do not fall with the load and the temperature's ripple over the cycle."
@@ -154,5 +170,6 @@ def power_increasing_factor(duty_type: str, value: float, k: float) -> Finding[f
         f"SEW's power increasing factor for an S1 motor in {duty_type} ({rows}); {read}. At "
         "an induction motor's near-constant speed a factor on the power is a factor on the "
         f"torque.{extra}",
-        {"value": value, "k": k},
+        {"value": value, "k": k}
+        | ({"on_time_min": on_time_min} if on_time_min is not None else {}),
     )

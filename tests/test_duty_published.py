@@ -306,4 +306,14 @@ def test_linear_s3_takes_the_stricter_of_the_two(tmp_path):
     assert check.limit == pytest.approx(1.15 * 750.0 / (1390.0 * math.pi / 30.0))
     assert "sew-gearmotors" in check.sources
     du09 = next(x for x in rep.decisions if x.id == "DU-09")
-    assert du09.inputs == {"value": 0.4, "k": 1.15}
+    assert du09.inputs == {"value": 0.4, "k": 1.15, "on_time_min": 4.0}  # 0.4 × 600 s
+
+
+def test_s3_factor_over_a_long_cycle_is_held_to_the_s2_factor_of_its_on_time():
+    # SEW's S3 table is for a cycle of about 10 min (§7.5). cdf 15 % of a 6000 s cycle is a
+    # 15 min run: no more than an S2 run of 15 min from cold gets, K(S2, 30 min row) = 1.2,
+    # not the 1.4 of the S3 row. Over the standard 600 s cycle the S3 row stands (1.4).
+    assert du.s3_factor_for_cycle(0.15, 600.0) == 1.4
+    assert du.s3_factor_for_cycle(0.15, 6000.0) == 1.2
+    assert du.s3_factor_for_cycle(0.40, 600.0) == 1.15  # 4 min on: S2 would allow 1.4
+    assert du.s3_factor_for_cycle(0.40, 9000.0) == 1.1  # 60 min on: S2's 60 min row

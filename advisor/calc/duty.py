@@ -271,6 +271,19 @@ def s3_power_factor(cyclic_duration_factor: float) -> float:
     return 1.0
 
 
+def s3_factor_for_cycle(cyclic_duration_factor: float, cycle_time_s: float) -> float:
+    """K for S3 over a cycle of any length: SEW's S3 row (:func:`s3_power_factor`), held to
+    at most the S2 factor of one run as long as the cycle's on-time (:func:`s2_power_factor`).
+    SEW's S3 table is for a cycle of about 10 min; over a longer cycle the on-time alone can
+    heat the motor as far as an S2 run from cold, which never gets more than its S2 factor.
+
+    >>> s3_factor_for_cycle(0.15, 600.0), s3_factor_for_cycle(0.15, 6000.0)
+    (1.4, 1.2)
+    """
+    on_time_min = cyclic_duration_factor * cycle_time_s / 60.0
+    return min(s3_power_factor(cyclic_duration_factor), s2_power_factor(on_time_min))
+
+
 def inertia_factor(motor_inertia_kgm2: float, external_inertia_kgm2: float) -> float:
     """FI = (J_M + J_ext)/J_M, J_ext reflected to the motor shaft (IEC 60034-1, 3.18 "factor
     of inertia").

@@ -35,6 +35,7 @@ PINT_UNITS = {
     "mm": "mm",
     "mm²": "mm**2",
     "s": "s",
+    "min": "minute",
     "h": "hour",
     "rpm": "rpm",
     "Hz": "Hz",

@@ -249,7 +249,11 @@ def evaluate(req, ev, m, j_load: float, holder: str | None) -> dict:
             + (f" × K = {k_s2:g} for S2 = {limit:.4g} N·m" if k_s2 != 1.0 else "")
         )
     # S3: the running torque also against SEW's K·M_n for the cdf (the stricter decides)
-    k_s3 = du.s3_power_factor(duty.cyclic_duration_factor) if duty.duty_type == "S3" else 1.0
+    k_s3 = (
+        du.s3_factor_for_cycle(duty.cyclic_duration_factor, duty.cycle_time_s)
+        if duty.duty_type == "S3"
+        else 1.0
+    )
     run_s3 = phases[0].torque_Nm if duty.duty_type == "S3" and phases else 0.0
     if run_s3 > k_s3 * rated:
         problems.append(
@@ -341,7 +345,9 @@ def advise_duty(req, ev, selected, cat, holder: str | None, trace: Trace):
     k_s3 = e["k_s3"]
     if duty.duty_type == "S3":
         cdf = duty.cyclic_duration_factor
-        trace.apply(du_rules.power_increasing_factor, "S3", cdf, k_s3)
+        trace.apply(
+            du_rules.power_increasing_factor, "S3", cdf, k_s3, cdf * duty.cycle_time_s / 60.0
+        )
         util_k = e["run_s3"] / (k_s3 * e["rated"])
         thermal_how += (
             f" Beside it SEW's S3 factor (DU-09): the running torque {e['run_s3']:.4g} N·m "
@@ -359,8 +365,15 @@ def advise_duty(req, ev, selected, cat, holder: str | None, trace: Trace):
         e["peak_load"],
         e["start_torque"],
         "The largest load torque of the cycle against the motor's starting torque (from the "
-        "catalog's M_start/M_n): the motor must start under it. The peak of the cycle, "
-        f"{peak:.4g} N·m, is the motor's own mean starting torque.",
+        "catalog's M_start/M_n): the motor must start under it. "
+        + (
+            f"The peak of the cycle, {peak:.4g} N·m, is the motor's own mean starting torque "
+            "in a start."
+            if any(p.name.endswith("start") for p in phases)
+            else f"No start is counted in this duty: the cycle's peak is the running torque "
+            f"{peak:.4g} N·m."
+        ),
+        peak,
     )
     starts_basis = (
         f"z = z0·(1 − (M_eq/M_n)²)/(FI·k_L·(1 + k_b)): z0 = 3600·P_loss·(1 + β0)/2/(J_M·ω0²)"
@@ -389,13 +402,16 @@ def advise_duty(req, ev, selected, cat, holder: str | None, trace: Trace):
     checks = [
         Check(
             "duty_rms_torque",
-            "equivalent torque of the cycle within the rated torque"
-            + (f" × K = {k_s2:g} (S2)" if duty.duty_type == "S2" else ""),
+            f"torque of the S2 run within K·M_n (K = {k_s2:g}, SEW's S2 factor)"
+            if duty.duty_type == "S2"
+            else "equivalent torque of the cycle within the rated torque",
             e["rms"],
             e["limit"],
             "N·m",
             e["limit"] / e["rms"] if e["rms"] > 0 else math.inf,
-            du_rules.KLYUCHEV + (du_rules.SEW_K if duty.duty_type == "S2" else du_rules.ISSUE_15),
+            du_rules.SEW_K + du_rules.IEC_60034_1
+            if duty.duty_type == "S2"
+            else du_rules.KLYUCHEV + du_rules.ISSUE_15,
         ),
         Check(
             "duty_peak_torque",
@@ -449,12 +465,14 @@ def advise_duty(req, ev, selected, cat, holder: str | None, trace: Trace):
         energy_per_cycle_J=out_J,
         regenerated_per_cycle_J=back_J,
         mean_speed_rpm=du.mean_speed(phases) * RPM,
-        cycles_per_hour=3600.0 / t_cycle if t_cycle > 0 else 0.0,
+        # S2 is one run from cold, not a cycle that repeats
+        cycles_per_hour=None if duty.duty_type == "S2" else 3600.0 / t_cycle if t_cycle else 0.0,
         duty_type=duty.duty_type or "cycle",
         standstill_cooling_factor=beta0,
         starts_per_hour=e["starts"],
-        allowed_starts_per_hour=e["allowed"],
-        no_load_starts_per_hour=e["z0"],
+        # the starts allowed mean something only where starts are counted (S4, S5, S7, moves)
+        allowed_starts_per_hour=e["allowed"] if e["starts"] > 0 else None,
+        no_load_starts_per_hour=e["z0"] if e["starts"] > 0 else None,
         inertia_factor=e["fi"],
         phases=phases_out(phases),
     )

@@ -44,7 +44,7 @@ class DutyOut(_Out):
     energy_per_cycle_J: float
     regenerated_per_cycle_J: float
     mean_speed_rpm: float
-    cycles_per_hour: float
+    cycles_per_hour: float | None = None
     duty_type: str
     rated_torque_Nm: float | None = None
     min_rms_ratio: float | None = None
