@@ -238,6 +238,10 @@ def run_wizard(path: Path | None, catalog_dir: Path | None) -> int:
     if path is not None and not path.is_file():
         _err(f"{path}: no such file" if not path.exists() else f"{path}: not a file")
         return ExitCode.INVALID_INPUT
+    if path is not None:  # a file that cannot be read is said first, terminal or not
+        from advisor.io_safety import read_toml
+
+        read_toml(path)
     if not (_is_terminal(sys.stdin) and _is_terminal(sys.stdout)):
         # a wizard on a pipe would wait for keys that never come (and spin the CPU)
         _err(
