@@ -217,7 +217,7 @@ def _pool_context():
 
 #: Files queued per worker (issue 16): with one, a worker idles between two files for the
 #: round trip of its result through the parent.
-IN_FLIGHT = int(os.environ.get("ADVISOR_IN_FLIGHT", "2"))
+IN_FLIGHT = 2
 
 
 def _run_pool(
