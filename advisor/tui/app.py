@@ -200,8 +200,8 @@ def _steady_key(content: Any) -> Any:
     return None
 
 
-class SteadyStatic(Static):
-    """A static whose update with what it already shows (text) does nothing: an update
+class _Steady:
+    """Mixin: an update with what the widget already shows (text) does nothing; an update
     lays the whole screen out again, and a compute checks every field."""
 
     _shown: Any = None
@@ -211,20 +211,15 @@ class SteadyStatic(Static):
         if key is not None and key == self._shown:
             return
         self._shown = key
-        super().update(content, layout=layout)
+        super().update(content, layout=layout)  # type: ignore[misc]
 
 
-class SteadyLabel(Label):
-    """A label that, like :class:`SteadyStatic`, ignores an update to what it shows."""
+class SteadyStatic(_Steady, Static):
+    """A static that ignores an update to what it already shows."""
 
-    _shown: Any = None
 
-    def update(self, content: Any = "", *, layout: bool = True) -> None:
-        key = _steady_key(content)
-        if key is not None and key == self._shown:
-            return
-        self._shown = key
-        super().update(content, layout=layout)
+class SteadyLabel(_Steady, Label):
+    """A label that ignores an update to what it already shows."""
 
 
 class Choice(RadioButton):
