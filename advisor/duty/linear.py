@@ -245,8 +245,11 @@ def evaluate(req, ev, m, j_load: float, holder: str | None) -> dict:
     start_torque = mot.curve.torque(1.0)
     if rms > limit:
         problems.append(
-            f"RMS torque {rms:.4g} N·m above the rated {rated:.4g} N·m"
-            + (f" × K = {k_s2:g} for S2 = {limit:.4g} N·m" if k_s2 != 1.0 else "")
+            # a product printed multiplies out: 1.2 × 5.1525 = 6.183 (5.152 would not)
+            f"RMS torque {rms:.4g} N·m above the rated {rated:.5g} N·m × K = {k_s2:g} for S2 "
+            f"= {limit:.4g} N·m"
+            if k_s2 != 1.0
+            else f"RMS torque {rms:.4g} N·m above the rated {rated:.4g} N·m"
         )
     # S3: the running torque also against SEW's K·M_n for the cdf (the stricter decides)
     k_s3 = (
@@ -257,7 +260,7 @@ def evaluate(req, ev, m, j_load: float, holder: str | None) -> dict:
     run_s3 = phases[0].torque_Nm if duty.duty_type == "S3" and phases else 0.0
     if run_s3 > k_s3 * rated:
         problems.append(
-            f"S3 running torque {run_s3:.4g} N·m above K·M_n = {k_s3:g} × {rated:.4g} = "
+            f"S3 running torque {run_s3:.4g} N·m above K·M_n = {k_s3:g} × {rated:.5g} = "
             f"{k_s3 * rated:.4g} N·m (SEW's S3 factor)"
         )
     if starts_h > allowed:
@@ -330,7 +333,7 @@ def advise_duty(req, ev, selected, cat, holder: str | None, trace: Trace):
         trace.apply(du_rules.power_increasing_factor, "S2", duty.duration_min, k_s2)
         thermal_how = (
             f"Torque of the S2 run {e['rms']:.4g} N·m against K·M_n = {k_s2:g} × "
-            f"{e['rated']:.4g} = {e['limit']:.4g} N·m of {m.model} (DU-09: SEW's power "
+            f"{e['rated']:.5g} = {e['limit']:.4g} N·m of {m.model} (DU-09: SEW's power "
             "increasing factor for S2, at the same speed a factor on the torque)."
         )
         basis = f"torque of the S2 run over K·M_n (K = {k_s2:g}, SEW's S2 factor)"
@@ -351,7 +354,7 @@ def advise_duty(req, ev, selected, cat, holder: str | None, trace: Trace):
         util_k = e["run_s3"] / (k_s3 * e["rated"])
         thermal_how += (
             f" Beside it SEW's S3 factor (DU-09): the running torque {e['run_s3']:.4g} N·m "
-            f"against K·M_n = {k_s3:g} × {e['rated']:.4g} = {k_s3 * e['rated']:.4g} N·m, "
+            f"against K·M_n = {k_s3:g} × {e['rated']:.5g} = {k_s3 * e['rated']:.4g} N·m, "
             f"utilisation {util_k:.3g} against {util:.3g} by the equivalent torque; the "
             "larger decides."
         )
