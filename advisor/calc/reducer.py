@@ -363,13 +363,16 @@ def _violation(
     result: SweepResult, max_outer_diameter_mm: float | None, max_length_mm: float | None
 ) -> np.ndarray:
     """How far each configuration lies outside the envelope: 0 within it, else the larger
-    relative excess of its outer diameter and its length over their limits."""
+    relative excess of its outer diameter and its length over their limits. "Within" is
+    exactly :func:`_within`'s comparison: a quotient rounded to 1 must not let a point one
+    ulp outside pass for one inside."""
     v = np.zeros(result.mass_kg.size)
     if max_outer_diameter_mm is not None:
         v = np.maximum(v, result.outer_diameter_mm / max_outer_diameter_mm - 1.0)
     if max_length_mm is not None:
         v = np.maximum(v, result.length_mm / max_length_mm - 1.0)
-    return v
+    inside = _within(result, max_outer_diameter_mm, max_length_mm)
+    return np.where(inside, 0.0, np.maximum(v, np.finfo(float).tiny))
 
 
 def _first(violation: np.ndarray, key: np.ndarray, among: np.ndarray | None = None) -> int:

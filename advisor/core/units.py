@@ -17,13 +17,13 @@ out, and guessing either way would hide it.
 import math
 import os
 import re
-import types
 from functools import cache
-from typing import Any, Union, get_args, get_origin
+from typing import Any, get_args, get_origin
 
 from pydantic import BaseModel
 
 from advisor.core.errors import InputError
+from advisor.core.questions import _strip_optional
 
 #: pint's spelling of the units the keys name (the display units of
 #: :data:`advisor.core.questions.UNIT_SUFFIXES`); '' is a pure number.
@@ -195,14 +195,6 @@ def _wanted(unit: str, want: Any) -> str:
 
 
 # ------------------------------------------------------------------ requirement documents
-def _strip_optional(ann: Any) -> Any:
-    if get_origin(ann) in (Union, types.UnionType):
-        args = [a for a in get_args(ann) if a is not type(None)]
-        if len(args) == 1:
-            return args[0]
-    return ann
-
-
 def _is_number(ann: Any) -> bool:
     """A quantity: a float field (whole-number fields are counts, without a unit)."""
     return ann is float
