@@ -319,26 +319,31 @@ async def test_export_dialog_path_has_focus_enter_saves_and_keep_keeps_the_path(
 
 
 async def test_it_shows_that_it_is_computing(monkeypatch):
-    import time
+    import threading
 
     from advisor.core import engine
 
     real = engine.advise
+    gate = threading.Event()  # the advice waits until the test has read the screen
 
-    def slow(*args, **kwargs):
-        time.sleep(0.5)
+    def held(*args, **kwargs):
+        gate.wait(30)
         return real(*args, **kwargs)
 
-    monkeypatch.setattr(engine, "advise", slow)
+    monkeypatch.setattr(engine, "advise", held)
     app = DriveAdvisorApp(_doc(), VALVE, save_drafts=False)
     async with app.run_test(size=SIZE) as pilot:
-        seen = []
         start = app.results_version
         await pilot.press("ctrl+r")
-        await pilot.pause(0.1)
-        seen.append(_text(app.query_one("#steps", Static)))
+        for _ in range(500):  # no fixed delay: a loaded machine only takes longer
+            if app.computing:
+                break
+            await pilot.pause(0.02)
+        await pilot.pause()
+        during = _text(app.query_one("#steps", Static))
+        gate.set()
         await _settle(pilot, app, start)
-        assert "Computing" in seen[0]
+        assert "Computing" in during
         assert "Computing" not in _text(app.query_one("#steps", Static))
 
 
