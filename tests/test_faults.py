@@ -361,6 +361,9 @@ def test_ctrl_c_with_workers_ends_with_130_and_no_traceback(tmp_path):
         stderr=subprocess.PIPE,
         text=True,
         start_new_session=True,
+        # Ctrl-C acts as in a terminal even when the tests run as a background job, whose
+        # children inherit SIGINT ignored (Python then keeps ignoring it, as it should)
+        preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL),
     )
     import time
 
