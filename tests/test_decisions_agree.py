@@ -72,6 +72,8 @@ def rotary_requirements(draw) -> dict:
         doc["motor"]["max_losses_W"] = draw(logs(50.0, 5e4))
     if draw(st.booleans()):
         doc["envelope"] = {"max_outer_diameter_mm": draw(logs(20.0, 2000.0))}
+    if draw(st.booleans()):  # a length the rule design may exceed: the space's lightest fits
+        doc.setdefault("envelope", {})["max_length_mm"] = draw(logs(10.0, 1000.0))
     if doc["application"]["hold_without_power"]:
         doc["one_way"] = {
             "type": draw(st.sampled_from(["auto", "roller_clutch", "em_clutch"])),
