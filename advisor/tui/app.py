@@ -9,7 +9,8 @@ painted from the file as read (textual and the registry only); the questions, wh
 from the pydantic models, the other steps and the result views are built right after that
 first paint, keys typed meanwhile waiting (none is lost); then a worker thread imports the
 engine and the application and advises once, discarded, so that the first ctrl+r finds the
-modules and catalogs loaded.
+modules and catalogs loaded. The plotting library is loaded after the first results are
+painted.
 """
 
 import asyncio
@@ -415,6 +416,8 @@ class DriveAdvisorApp(App[None]):
         self._built = asyncio.Event()  # set once every step is built (see _start)
         self._warmed = threading.Event()  # set when the warm-up advice is done (or none)
         self._warmed.set()
+        self._warming = False  # the warm-up is on (see _start)
+        self._plots_preloaded = False  # the plotting library's import started (or done)
         self._views_report: Any = None  # the report whose plots and comparison are shown
         self._views_version = 0  # counts the results shown
         self._plots_shown = 0  # the _views_version whose plots are built
@@ -503,6 +506,7 @@ class DriveAdvisorApp(App[None]):
         a worker thread, then the document shaped (tables where tables belong, values of
         the right kind), the draft to offer and the step shown built."""
         warm = self.warm_up if self.warm_up is not None else not self.is_headless
+        self._warming = warm
         kind, _ = self._first_look()
         if warm and kind is not None:  # the file as given: as the batch would read it
             self._warmed.clear()
@@ -516,8 +520,9 @@ class DriveAdvisorApp(App[None]):
 
     def _warm(self, doc: dict[str, Any]) -> None:
         """Import the engine, the application and its views, and advise once (the result
-        discarded): the catalogs are read and cached before the first ctrl+r. Then the
-        plotting library (0.1–0.2 s), which only the Plot view needs."""
+        discarded): the catalogs are read and cached before the first ctrl+r. Nothing else:
+        the plotting library, which only the Plot view needs, is loaded once the first
+        results are painted (:meth:`_preload_plots`)."""
         try:
             from advisor.core import engine
             from advisor.core.requirements import parse_requirements
@@ -531,10 +536,23 @@ class DriveAdvisorApp(App[None]):
             pass
         finally:
             self._warmed.set()
-        try:
-            import textual_plotext  # noqa: F401
-        except ImportError:  # said when a plot is shown
-            pass
+
+    def _preload_plots(self) -> None:
+        """Import the plotting library (0.05–0.2 s) in a thread of its own, once, after the
+        first results are painted: in the warm-up it ran just as a first ctrl+r computed and
+        painted, and delayed that by as much (one interpreter, one core); a Plot view opened
+        before it is done imports it itself."""
+        if self._plots_preloaded or not self._warming:
+            return
+        self._plots_preloaded = True
+
+        def load() -> None:
+            try:
+                import textual_plotext  # noqa: F401
+            except ImportError:  # said when a plot is shown
+                pass
+
+        threading.Thread(target=load, daemon=True).start()
 
     async def _build_start(self) -> None:
         # any document (a file, a draft, a test's dict) is shaped so that no widget breaks
@@ -1121,6 +1139,7 @@ class DriveAdvisorApp(App[None]):
         self.last_compute_s = time.perf_counter() - self._started
         self.results_version += 1
         self._show_step(focus=False)
+        self.call_after_refresh(self._preload_plots)  # once the results are painted
 
     def _invalid(self, messages: list[str]) -> None:
         self.step = F.REVIEW
