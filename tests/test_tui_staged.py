@@ -13,7 +13,7 @@ from textual.widgets import Input, Label, Static
 
 from advisor.core.engine import advise
 from advisor.core.report import to_toml
-from advisor.core.requirements import read_requirements
+from advisor.core.requirements import parse_requirements, read_requirements
 from advisor.tui.app import DriveAdvisorApp, SteadyStatic
 
 SIZE = (120, 40)
@@ -175,3 +175,67 @@ async def test_wrong_files_walk_and_compute_with_steps_built_late(doc):
         await pilot.pause(0.3)
         assert app.is_running
     assert app.return_code in (None, 0)
+
+
+@pytest.mark.parametrize("edit", [False, True])
+async def test_the_first_compute_takes_the_warm_ups_design_only_for_the_same_document(
+    monkeypatch, edit
+):
+    """The warm-up advises once on the file as given; a first ctrl+r on that very document
+    shows that design (the engine is not run again), an edited one is computed anew."""
+    from advisor.core import engine
+
+    calls = []
+    real = engine.advise
+    monkeypatch.setattr(engine, "advise", lambda *a, **k: calls.append(1) or real(*a, **k))
+    app = _app(_doc(), warm_up=True)
+    async with app.run_test(size=SIZE) as pilot:
+        if edit:
+            app.query_one("#f-application-title", Input).value = "edited before ctrl+r"
+            await pilot.pause()
+        await _computed(app, pilot)
+        assert app.report is not None
+        expected = _doc()
+        if edit:
+            expected["application"]["title"] = "edited before ctrl+r"
+        assert app.report.report.title == expected["application"]["title"]
+        assert to_toml(app.report) == to_toml(advise(parse_requirements(expected)))
+        assert len(calls) == (2 if edit else 1)  # the warm-up's, and the edited document's
+        # a second ctrl+r computes again: the warm-up's design is taken once
+        await _computed(app, pilot)
+        assert len(calls) == (3 if edit else 2)
+
+
+def test_the_plotting_library_is_loaded_after_the_first_results_not_in_the_warm_up(tmp_path):
+    """The warm-up imports what a compute needs, not the plotting library (it ran as the
+    first ctrl+r painted); that is imported once the first results are shown."""
+    script = f"""
+import asyncio, sys, tomllib
+from pathlib import Path
+from advisor.tui.app import DriveAdvisorApp
+
+async def main():
+    doc = tomllib.loads(Path({str(RUDDER)!r}).read_text(encoding="utf-8"))
+    app = DriveAdvisorApp(doc, save_drafts=False, offer_draft=False, warm_up=True)
+    async with app.run_test(size=(120, 40)) as pilot:
+        app._warmed.wait(60)
+        await pilot.pause(0.3)
+        assert "textual_plotext" not in sys.modules, "warm-up loaded plots"
+        await pilot.press("ctrl+r")
+        for _ in range(500):
+            await pilot.pause(0.02)
+            if "textual_plotext" in sys.modules and app.report is not None:
+                break
+        assert app.report is not None and "textual_plotext" in sys.modules
+    print("ok")
+
+asyncio.run(main())
+"""
+    import subprocess
+    import sys
+
+    env = {**__import__("os").environ, "XDG_STATE_HOME": str(tmp_path)}
+    out = subprocess.run(
+        [sys.executable, "-c", script], capture_output=True, text=True, env=env, timeout=120
+    )
+    assert out.returncode == 0 and out.stdout.strip() == "ok", out.stderr[-2000:]
