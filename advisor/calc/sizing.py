@@ -15,10 +15,14 @@ MM = 1e-3
 MPA = 1e6
 
 
+def _margin(value: float, limit: float) -> float:
+    """The margin of a check of the form value ≤ limit: limit / value."""
+    return math.inf if value <= 0 else limit / value
+
+
 def _upper(id: str, name: str, value: float, limit: float, unit: str, source: Cite) -> Check:
     """A check of the form value ≤ limit; margin = limit / value."""
-    margin = math.inf if value <= 0 else limit / value
-    return Check(id, name, value, limit, unit, margin, source)
+    return Check(id, name, value, limit, unit, _margin(value, limit), source)
 
 
 def _lower(id: str, name: str, value: float, limit: float, unit: str, source: Cite) -> Check:
@@ -121,9 +125,30 @@ def _check_sources(
     )
 
 
-def evaluate_thread(
+class _ThreadNumbers(NamedTuple):
+    """The numbers of one thread under one requirement, shared by :func:`evaluate_thread`
+    and :func:`screen_thread` so that both see the same floats."""
+
+    psi: float
+    phi: float
+    phi_low: float
+    phi_std: float
+    torque: float
+    revs: float
+    speed: float
+    turns: float
+    height: float
+    pressure: float
+    core: float
+    p_cr: float
+    slenderness: float
+    formula: str
+    #: (value, limit) of each check, in the order of ThreadEvaluation.checks
+    limits: tuple[tuple[float, float], ...]
+
+
+def _thread_numbers(
     thread: ThreadProfile,
-    *,
     force_N: float,
     stroke_m: float,
     travel_time_s: float,
@@ -133,14 +158,9 @@ def evaluate_thread(
     starts: int,
     friction_model: sc.FrictionModel,
     material: ScrewMaterial,
-) -> ThreadEvaluation:
-    """Torque, efficiency, self-locking and the strength checks of one thread.
-
-    Checks (all with margin = allowed / actual):
-    core von Mises stress ≤ σ_y / S; axial force ≤ P_cr / S_b (Euler or Johnson);
-    flank pressure ≤ [p] with the nut of :func:`nut_whole_turns` turns, H = z·P;
-    nut height ratio H/d2 ≤ ψ_max; engaged turns ≤ z_max.
-    """
+) -> _ThreadNumbers:
+    """Torque, speed, nut, core stress and buckling of one thread (see
+    :func:`evaluate_thread`), with the value and the limit of each check."""
     p = thread.pitch_mm * MM
     d2 = thread.d2_mm * MM
     d3 = thread.d3_mm * MM
@@ -167,36 +187,88 @@ def evaluate_thread(
         d3, span_m, end_fixity, material.elastic_modulus_Pa, material.yield_strength_Pa
     )
     allowed_stress = material.yield_strength_Pa / material.yield_safety_factor
-    src = _check_sources(material.yield_safety_factor, formula, end_fixity, buckling_safety_factor)
+    limits = (
+        (core / MPA, allowed_stress / MPA),
+        (force_N, p_cr / buckling_safety_factor),
+        (pressure / MPA, material.allowable_pressure_Pa / MPA),
+        (height / d2, material.nut_height_ratio_max),
+        (turns, float(material.nut_max_turns)),
+    )
+    return _ThreadNumbers(
+        psi,
+        phi,
+        phi_low,
+        phi_std,
+        torque,
+        revs,
+        speed,
+        turns,
+        height,
+        pressure,
+        core,
+        p_cr,
+        slenderness,
+        formula,
+        limits,
+    )
+
+
+def evaluate_thread(
+    thread: ThreadProfile,
+    *,
+    force_N: float,
+    stroke_m: float,
+    travel_time_s: float,
+    span_m: float,
+    end_fixity: str,
+    buckling_safety_factor: float,
+    starts: int,
+    friction_model: sc.FrictionModel,
+    material: ScrewMaterial,
+) -> ThreadEvaluation:
+    """Torque, efficiency, self-locking and the strength checks of one thread.
+
+    Checks (all with margin = allowed / actual):
+    core von Mises stress ≤ σ_y / S; axial force ≤ P_cr / S_b (Euler or Johnson);
+    flank pressure ≤ [p] with the nut of :func:`nut_whole_turns` turns, H = z·P;
+    nut height ratio H/d2 ≤ ψ_max; engaged turns ≤ z_max.
+    """
+    n = _thread_numbers(
+        thread,
+        force_N,
+        stroke_m,
+        travel_time_s,
+        span_m,
+        end_fixity,
+        buckling_safety_factor,
+        starts,
+        friction_model,
+        material,
+    )
+    psi, phi, torque = n.psi, n.phi, n.torque
+    d2 = thread.d2_mm * MM
+    f = material.friction_coefficient
+    src = _check_sources(
+        material.yield_safety_factor, n.formula, end_fixity, buckling_safety_factor
+    )
+    (
+        (core, core_max),
+        (force, force_max),
+        (pressure, pressure_max),
+        (ratio, ratio_max),
+        (
+            turns,
+            turns_max,
+        ),
+    ) = n.limits
     checks = (
-        _upper("core_stress", src.core_name, core / MPA, allowed_stress / MPA, "MPa", src.core),
+        _upper("core_stress", src.core_name, core, core_max, "MPa", src.core),
+        _upper("buckling", src.buckling_name, force, force_max, "N", src.buckling),
         _upper(
-            "buckling",
-            src.buckling_name,
-            force_N,
-            p_cr / buckling_safety_factor,
-            "N",
-            src.buckling,
+            "nut_pressure", "nut flank bearing pressure", pressure, pressure_max, "MPa", src.ivanov
         ),
-        _upper(
-            "nut_pressure",
-            "nut flank bearing pressure",
-            pressure / MPA,
-            material.allowable_pressure_Pa / MPA,
-            "MPa",
-            src.ivanov,
-        ),
-        _upper(
-            "nut_height",
-            "nut height ratio H/d2",
-            height / d2,
-            material.nut_height_ratio_max,
-            "",
-            src.ivanov,
-        ),
-        _upper(
-            "nut_turns", "engaged nut turns", turns, float(material.nut_max_turns), "", src.ivanov
-        ),
+        _upper("nut_height", "nut height ratio H/d2", ratio, ratio_max, "", src.ivanov),
+        _upper("nut_turns", "engaged nut turns", turns, turns_max, "", src.ivanov),
     )
     return ThreadEvaluation(
         thread=thread,
@@ -207,7 +279,7 @@ def evaluate_thread(
         torque_Nm=torque,
         torque_standard_Nm=torque
         if friction_model == "standard"
-        else sc.torque_from_angles(force_N, d2, psi, phi_std),
+        else sc.torque_from_angles(force_N, d2, psi, n.phi_std),
         torque_paper_Nm=torque
         if friction_model == "paper"
         else sc.torque_from_angles(force_N, d2, psi, sc.friction_angle(f, "paper", psi)),
@@ -215,18 +287,78 @@ def evaluate_thread(
         back_driving_efficiency=sc.back_driving_efficiency(psi, phi),
         # holding is physics: judged with the standard reduced friction even when the torque
         # follows the paper's f/cos(ψ/2), so it agrees with the low-friction judgement below
-        self_locking=sc.is_self_locking(psi, phi_std),
-        self_locking_at_low_friction=sc.is_self_locking(psi, phi_low),
-        revolutions=revs,
-        speed_rpm=speed,
-        nut_height_mm=height / MM,
-        nut_turns=turns,
-        nut_pressure_Pa=pressure,
-        critical_load_N=p_cr,
-        slenderness=slenderness,
-        buckling_formula=formula,
-        core_stress_Pa=core,
+        self_locking=sc.is_self_locking(psi, n.phi_std),
+        self_locking_at_low_friction=sc.is_self_locking(psi, n.phi_low),
+        revolutions=n.revs,
+        speed_rpm=n.speed,
+        nut_height_mm=n.height / MM,
+        nut_turns=n.turns,
+        nut_pressure_Pa=n.pressure,
+        critical_load_N=n.p_cr,
+        slenderness=n.slenderness,
+        buckling_formula=n.formula,
+        core_stress_Pa=n.core,
         checks=checks,
+    )
+
+
+class ThreadScreen(NamedTuple):
+    """What the joint choice of thread and motor reads of one thread: whether it passes
+    every check, its torque and its speed. The choice screens every thread of the catalog
+    with every number of starts (about a hundred per advice, issue 16); the full
+    :class:`ThreadEvaluation`, with its checks and their cited sources, is built only for
+    the threads the advice reports. Exact: both come from :func:`_thread_numbers`, and
+    ``passed`` compares the same margins (limit / value) as :attr:`ThreadEvaluation.passed`.
+    """
+
+    thread: ThreadProfile
+    name: str
+    starts: int
+    passed: bool
+    torque_Nm: float
+    revolutions: float
+    speed_rpm: float
+    self_locking_at_low_friction: bool
+
+
+def screen_thread(
+    thread: ThreadProfile,
+    *,
+    name: str,
+    force_N: float,
+    stroke_m: float,
+    travel_time_s: float,
+    span_m: float,
+    end_fixity: str,
+    buckling_safety_factor: float,
+    starts: int,
+    friction_model: sc.FrictionModel,
+    material: ScrewMaterial,
+) -> ThreadScreen:
+    """The screen of one thread (see :class:`ThreadScreen`); ``name`` is ``thread.name``,
+    formatted once per catalog by the caller."""
+    n = _thread_numbers(
+        thread,
+        force_N,
+        stroke_m,
+        travel_time_s,
+        span_m,
+        end_fixity,
+        buckling_safety_factor,
+        starts,
+        friction_model,
+        material,
+    )
+    passed = all(_margin(value, limit) >= 1.0 for value, limit in n.limits)
+    return ThreadScreen(
+        thread,
+        name,
+        starts,
+        passed,
+        n.torque,
+        n.revs,
+        n.speed,
+        sc.is_self_locking(n.psi, n.phi_low),
     )
 
 

@@ -5,6 +5,7 @@ Orchestration only: the rules in ``rules/`` choose, the functions in ``advisor/c
 
 import math
 from bisect import bisect_left
+from collections.abc import Callable
 from typing import NamedTuple
 
 from advisor.applications.linear.report import (
@@ -25,10 +26,12 @@ from advisor.calc.sizing import (
     MotorFit,
     ScrewMaterial,
     ThreadEvaluation,
+    ThreadScreen,
     drive_working_speed,
     evaluate_motor,
     evaluate_thread,
     fit_motor,
+    screen_thread,
 )
 from advisor.core.cite import cite, text
 from advisor.core.errors import InfeasibleError, InputError
@@ -36,8 +39,60 @@ from advisor.core.requirements import Requirements
 from advisor.core.rulebook import Trace
 from catalogs import Catalogs
 from catalogs.rows import InductionMotor
+from catalogs.threads import ThreadProfile
 from rules import induction as im_rules
 from rules import screw as screw_rules
+
+
+class MotorLine(NamedTuple):
+    """The catalog's motors of one pole count, in order of rated power, fitted, with the
+    running maximum along the line of the smaller of rated and starting torque (``reach``)."""
+
+    pole_pairs: int
+    fits: list[MotorFit]
+    reach: list[float]
+
+
+def motor_line(pole_pairs: int, fits: list[MotorFit]) -> MotorLine:
+    """A motor line with its reach (see :func:`drive_options`)."""
+    reach, top = [], -math.inf
+    for fit in fits:
+        top = max(top, min(fit.rated_torque_Nm, fit.starting_torque_Nm))
+        reach.append(top)
+    return MotorLine(pole_pairs, fits, reach)
+
+
+class CatalogParts(NamedTuple):
+    """What the linear advice derives from a catalog alone, whatever the requirement."""
+
+    thread_names: tuple[str, ...]  # of cat.threads, in order
+    fits: dict[int, list[MotorFit]]  # by pole pairs, lines in order of rated power
+    lines: list[MotorLine]
+
+
+#: Catalog parts by ``id`` of the catalog, with the catalog itself kept alive beside them so
+#: that its id cannot be reused by another catalog (a user catalog directory is another one).
+_PARTS: dict[int, tuple[Catalogs, CatalogParts]] = {}
+_PARTS_MAX = 8
+
+
+def _catalog_parts(cat: Catalogs) -> CatalogParts:
+    """The thread names and fitted motor lines of ``cat``, computed once per catalog
+    (issue 16: they do not depend on the requirement)."""
+    held = _PARTS.get(id(cat))
+    if held is not None and held[0] is cat:
+        return held[1]
+    fits = {pp: [fit_motor(m) for m in cat.motors_with_poles(2 * pp)] for pp in (1, 2, 3, 4)}
+    fits = {pp: line for pp, line in fits.items() if line}
+    parts = CatalogParts(
+        tuple(t.name for t in cat.threads),
+        fits,
+        [motor_line(pp, line) for pp, line in fits.items()],
+    )
+    if len(_PARTS) >= _PARTS_MAX:
+        _PARTS.clear()
+    _PARTS[id(cat)] = (cat, parts)
+    return parts
 
 
 class MotorPlan(NamedTuple):
@@ -52,28 +107,20 @@ STARTS_FREE = (1, 2, 3, 4)
 
 
 def drive_options(
-    evaluations: list[ThreadEvaluation], fits: dict[int, list[MotorFit]]
+    screens: list[ThreadScreen], lines: list[MotorLine]
 ) -> list[screw_rules.DriveOption]:
     """Every (thread, starts) that passes its checks, with the smallest motor of each pole
-    count that drives it directly (the lines in ``fits`` are in order of rated power).
+    count that drives it directly.
 
     A motor whose rated or starting torque is below the screw torque cannot drive it (the
     first test of :func:`drive_working_speed`); along each line the running maximum of the
     smaller of the two is kept, and a bisection on it skips those motors at once instead of
     testing them one by one (issue 16: the joint choice screens every thread)."""
-    lines = []
-    for pp, line in fits.items():
-        reach, top = [], -math.inf
-        for fit in line:
-            top = max(top, min(fit.rated_torque_Nm, fit.starting_torque_Nm))
-            reach.append(top)
-        lines.append((pp, line, reach))
     out = []
-    for ev in evaluations:
+    for ev in screens:
         if not ev.passed:
             continue
-        torque, thread = ev.torque_Nm, ev.thread
-        name = thread.name
+        torque, thread, name = ev.torque_Nm, ev.thread, ev.name
         for pp, line, reach in lines:
             for i in range(bisect_left(reach, torque), len(line)):
                 fit = line[i]
@@ -215,6 +262,17 @@ def advise_linear(
             f"(Tr8 … Tr100 with the pitches the standard gives); nearest: {nearest}"
         )
 
+    lean = {
+        "force_N": lin.force_N,
+        "stroke_m": lin.stroke_m,
+        "travel_time_s": lin.travel_time_s,
+        "span_m": lin.support_span_m,
+        "end_fixity": lin.end_fixity,
+        "buckling_safety_factor": lin.buckling_safety_factor,
+        "friction_model": model,
+        "material": material,
+    }
+
     def evaluate(t, starts: int) -> ThreadEvaluation:
         return evaluate_thread(
             t,
@@ -231,14 +289,20 @@ def advise_linear(
 
     freq = req.motor.supply_frequency_Hz
     starts_options = (s.starts,) if s.starts is not None else STARTS_FREE
-    evaluations = [evaluate(t, z) for t in cat.threads for z in starts_options]
-    fits = {pp: [fit_motor(m) for m in cat.motors_with_poles(2 * pp)] for pp in (1, 2, 3, 4)}
-    fits = {pp: line for pp, line in fits.items() if line}
-    options = drive_options(evaluations, fits)
+    parts = _catalog_parts(cat)
+    screens = [
+        screen_thread(t, name=name, starts=z, **lean)
+        for t, name in zip(cat.threads, parts.thread_names, strict=True)
+        for z in starts_options
+    ]
+    fits = parts.fits
+    options = drive_options(screens, parts.lines)
     if s.thread is not None:
-        imposed = [ev for ev in evaluations if ev.thread.name == s.thread]
-        if not any(ev.passed for ev in imposed):
-            ev = min(imposed, key=lambda e: len(e.failed))
+        imposed = [sc for sc in screens if sc.name == s.thread]
+        if not any(sc.passed for sc in imposed):
+            ev = min(
+                (evaluate(sc.thread, sc.starts) for sc in imposed), key=lambda e: len(e.failed)
+            )
             raise InfeasibleError(
                 f"no feasible design: the imposed thread {s.thread} fails its checks",
                 [_describe(c) for c in ev.failed],
@@ -247,9 +311,12 @@ def advise_linear(
         screw_rules.choose_drive, options, req.application.hold_without_power, s.thread, s.starts
     )
     if chosen is None:
-        raise _no_drive(evaluations, s.thread, cat, lin.force_N)
-    ev = next(
-        e for e in evaluations if e.thread.name == chosen.thread and e.starts == chosen.starts
+        raise _no_drive(screens, s.thread, cat, lin.force_N, evaluate)
+    ev = evaluate(
+        next(
+            sc.thread for sc in screens if sc.name == chosen.thread and sc.starts == chosen.starts
+        ),
+        chosen.starts,
     )
     trace.apply(
         screw_rules.holding,
@@ -348,7 +415,7 @@ def advise_linear(
         ),
     ]
     if sel.travel_time_s and sel.travel_time_s < FAST_SHARE * lin.travel_time_s:
-        warnings.append(_too_fast(ev, sel, plan, evaluations, cat, lin.travel_time_s))
+        warnings.append(_too_fast(ev, sel, plan, screens, cat, lin.travel_time_s))
     if duty is not None:
         checks += duty_checks
     return design, checks, warnings
@@ -369,7 +436,7 @@ def _too_fast(
     ev: ThreadEvaluation,
     sel: MotorEvaluation,
     plan: MotorPlan,
-    evaluations: list[ThreadEvaluation],
+    screens: list[ThreadScreen],
     cat: Catalogs,
     travel_time_s: float,
 ) -> str:
@@ -379,7 +446,7 @@ def _too_fast(
     v_mm_s = ev.revolutions * ev.thread.pitch_mm * ev.starts / travel_time_s
     slowest = min(cat.motors, key=lambda m: m.rated_speed_rpm)
     lead_needed_mm = v_mm_s * 60.0 / slowest.rated_speed_rpm
-    passing = [e for e in evaluations if e.passed]
+    passing = [e for e in screens if e.passed]
     finest = min(passing, key=lambda e: e.thread.pitch_mm * e.starts)
     finest_lead = finest.thread.pitch_mm * finest.starts
     text = (
@@ -428,14 +495,19 @@ def _remedy(force_N: float, failed: set[str]) -> str:
 
 
 def _no_drive(
-    evaluations: list[ThreadEvaluation], imposed: str | None, cat: Catalogs, force_N: float
+    screens: list[ThreadScreen],
+    imposed: str | None,
+    cat: Catalogs,
+    force_N: float,
+    evaluate: Callable[[ThreadProfile, int], ThreadEvaluation],
 ) -> InfeasibleError:
     """Why no thread and motor could be chosen: the checks, or the motors."""
-    pool = [ev for ev in evaluations if imposed is None or ev.thread.name == imposed]
+    pool = [ev for ev in screens if imposed is None or ev.name == imposed]
     passing = [ev for ev in pool if ev.passed]
     if not passing:
         # every thread fails a check: the largest one shows what limits the design
-        biggest = max(pool, key=lambda e: (e.thread.d_mm, e.thread.pitch_mm, -e.starts))
+        big = max(pool, key=lambda e: (e.thread.d_mm, e.thread.pitch_mm, -e.starts))
+        biggest = evaluate(big.thread, big.starts)
         return InfeasibleError(
             "no feasible design: no GOST 24738-81 thread (Tr8 … Tr100) passes every check",
             [f"{biggest.thread.name}: {_describe(c)}" for c in biggest.failed]
@@ -444,7 +516,7 @@ def _no_drive(
     speeds = sorted(ev.speed_rpm for ev in passing)
     fastest = max(m.rated_speed_rpm for m in cat.motors)
     biggest_kw = max(m.rated_power_kW for m in cat.motors)
-    names = {ev.thread.name for ev in passing}
+    names = {ev.name for ev in passing}
     reasons = [
         f"{len(names)} threads pass the strength checks; they need {speeds[0]:.4g} … "
         f"{speeds[-1]:.4g} rpm at the screw"
