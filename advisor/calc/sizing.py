@@ -302,14 +302,37 @@ def evaluate_thread(
     )
 
 
+class ThreadGeometry(NamedTuple):
+    """A thread's name and the dimensions the checks use, in metres: the same conversions
+    as :func:`_thread_numbers` makes, done once per catalog."""
+
+    thread: ThreadProfile
+    name: str
+    pitch_m: float
+    d2_m: float
+    d3_m: float
+    h1_m: float
+
+
+def thread_geometry(thread: ThreadProfile) -> ThreadGeometry:
+    return ThreadGeometry(
+        thread,
+        thread.name,
+        thread.pitch_mm * MM,
+        thread.d2_mm * MM,
+        thread.d3_mm * MM,
+        thread.H1_mm * MM,
+    )
+
+
 class ThreadScreen(NamedTuple):
     """What the joint choice of thread and motor reads of one thread: whether it passes
     every check, its torque and its speed. The choice screens every thread of the catalog
     with every number of starts (about a hundred per advice, issue 16); the full
     :class:`ThreadEvaluation`, with its checks and their cited sources, is built only for
-    the threads the advice reports. Exact: both come from :func:`_thread_numbers`, and
-    ``passed`` compares the same margins (limit / value) as :attr:`ThreadEvaluation.passed`.
-    """
+    the threads the advice reports. The numbers are those of :func:`evaluate_thread`, to
+    the last bit (``tests/test_linear_screen.py`` holds them to it); where ``passed`` is
+    false they are nan: nothing reads them."""
 
     thread: ThreadProfile
     name: str
@@ -321,45 +344,78 @@ class ThreadScreen(NamedTuple):
     self_locking_at_low_friction: bool
 
 
-def screen_thread(
-    thread: ThreadProfile,
+def screen_threads(
+    geometries: list[ThreadGeometry],
+    starts_options: tuple[int, ...],
     *,
-    name: str,
     force_N: float,
     stroke_m: float,
     travel_time_s: float,
     span_m: float,
     end_fixity: str,
     buckling_safety_factor: float,
-    starts: int,
     friction_model: sc.FrictionModel,
     material: ScrewMaterial,
-) -> ThreadScreen:
-    """The screen of one thread (see :class:`ThreadScreen`); ``name`` is ``thread.name``,
-    formatted once per catalog by the caller."""
-    n = _thread_numbers(
-        thread,
-        force_N,
-        stroke_m,
-        travel_time_s,
-        span_m,
-        end_fixity,
-        buckling_safety_factor,
-        starts,
-        friction_model,
-        material,
-    )
-    passed = all(_margin(value, limit) >= 1.0 for value, limit in n.limits)
-    return ThreadScreen(
-        thread,
-        name,
-        starts,
-        passed,
-        n.torque,
-        n.revs,
-        n.speed,
-        sc.is_self_locking(n.psi, n.phi_low),
-    )
+) -> list[ThreadScreen]:
+    """The screen of every thread with every number of starts, in the order thread by
+    thread, starts within (see :class:`ThreadScreen`).
+
+    Exact, and cheaper than :func:`evaluate_thread` a hundred times: the same functions of
+    :mod:`advisor.calc.screw` on the same arguments, and each margin the same quotient
+    limit / value (:func:`_margin`). Four of the five checks (buckling, flank pressure, nut
+    height, nut turns) do not depend on the number of starts: they are judged once per
+    thread, and a thread that fails one of them fails with every number of starts, so its
+    torque is not computed. Only the core stress needs the torque of each lead.
+    """
+    m = material
+    f = m.friction_coefficient
+    allowed_stress = m.yield_strength_Pa / m.yield_safety_factor
+    stress_limit = allowed_stress / MPA
+    pressure_limit = m.allowable_pressure_Pa / MPA
+    turns_limit = float(m.nut_max_turns)
+    out = []
+    for g in geometries:
+        p, d2, d3, h1 = g.pitch_m, g.d2_m, g.d3_m, g.h1_m
+        z_req = sc.nut_turns_required(force_N, d2, h1, m.allowable_pressure_Pa)
+        turns = float(nut_whole_turns(z_req, m.nut_height_ratio_min * d2 / p))
+        pressure = sc.nut_bearing_pressure(force_N, d2, h1, turns)
+        p_cr = sc.critical_buckling_load(
+            d3, span_m, end_fixity, m.elastic_modulus_Pa, m.yield_strength_Pa
+        )[0]
+        if not (
+            _margin(force_N, p_cr / buckling_safety_factor) >= 1.0
+            and _margin(pressure / MPA, pressure_limit) >= 1.0
+            and _margin(turns * p / d2, m.nut_height_ratio_max) >= 1.0
+            and _margin(turns, turns_limit) >= 1.0
+        ):
+            nan = math.nan
+            out.extend(
+                ThreadScreen(g.thread, g.name, z, False, nan, nan, nan, False)
+                for z in starts_options
+            )
+            continue
+        for z in starts_options:
+            psi = sc.lead_angle(p, d2, z)
+            torque = sc.torque_from_angles(
+                force_N, d2, psi, sc.friction_angle(f, friction_model, psi)
+            )
+            core = sc.core_equivalent_stress(force_N, torque, d3)
+            passed = _margin(core / MPA, stress_limit) >= 1.0
+            revs = sc.revolutions(stroke_m, p, z)
+            out.append(
+                ThreadScreen(
+                    g.thread,
+                    g.name,
+                    z,
+                    passed,
+                    torque if passed else math.nan,
+                    revs if passed else math.nan,
+                    sc.screw_speed_rpm(revs, travel_time_s) if passed else math.nan,
+                    passed
+                    and sc.is_self_locking(psi, sc.friction_angle(m.friction_low, "standard", psi)),
+                )
+            )
+    return out
 
 
 class MotorRow(Protocol):

@@ -26,12 +26,14 @@ from advisor.calc.sizing import (
     MotorFit,
     ScrewMaterial,
     ThreadEvaluation,
+    ThreadGeometry,
     ThreadScreen,
     drive_working_speed,
     evaluate_motor,
     evaluate_thread,
     fit_motor,
-    screen_thread,
+    screen_threads,
+    thread_geometry,
 )
 from advisor.core.cite import cite, text
 from advisor.core.errors import InfeasibleError, InputError
@@ -65,7 +67,7 @@ def motor_line(pole_pairs: int, fits: list[MotorFit]) -> MotorLine:
 class CatalogParts(NamedTuple):
     """What the linear advice derives from a catalog alone, whatever the requirement."""
 
-    thread_names: tuple[str, ...]  # of cat.threads, in order
+    threads: list[ThreadGeometry]  # of cat.threads, in order
     fits: dict[int, list[MotorFit]]  # by pole pairs, lines in order of rated power
     lines: list[MotorLine]
 
@@ -77,7 +79,7 @@ _PARTS_MAX = 8
 
 
 def _catalog_parts(cat: Catalogs) -> CatalogParts:
-    """The thread names and fitted motor lines of ``cat``, computed once per catalog
+    """The thread geometries and fitted motor lines of ``cat``, computed once per catalog
     (issue 16: they do not depend on the requirement)."""
     held = _PARTS.get(id(cat))
     if held is not None and held[0] is cat:
@@ -85,7 +87,7 @@ def _catalog_parts(cat: Catalogs) -> CatalogParts:
     fits = {pp: [fit_motor(m) for m in cat.motors_with_poles(2 * pp)] for pp in (1, 2, 3, 4)}
     fits = {pp: line for pp, line in fits.items() if line}
     parts = CatalogParts(
-        tuple(t.name for t in cat.threads),
+        [thread_geometry(t) for t in cat.threads],
         fits,
         [motor_line(pp, line) for pp, line in fits.items()],
     )
@@ -290,11 +292,7 @@ def advise_linear(
     freq = req.motor.supply_frequency_Hz
     starts_options = (s.starts,) if s.starts is not None else STARTS_FREE
     parts = _catalog_parts(cat)
-    screens = [
-        screen_thread(t, name=name, starts=z, **lean)
-        for t, name in zip(cat.threads, parts.thread_names, strict=True)
-        for z in starts_options
-    ]
+    screens = screen_threads(parts.threads, starts_options, **lean)
     fits = parts.fits
     options = drive_options(screens, parts.lines)
     if s.thread is not None:
