@@ -100,7 +100,12 @@ def _table(table: dict, out: list[str], name: str, inside_aot: bool = False) -> 
     literals: list[str] = []
     tables: list[tuple[str, dict, bool]] = []
     for k, v in table.items():
-        if isinstance(v, dict):
+        t = type(v)  # the scalars first, as literal() writes them: most values are
+        if t is str:
+            literals.append(f"{key(k)} = {string(v)}\n")
+        elif t is float or t is int:
+            literals.append(f"{key(k)} = {v}\n")
+        elif isinstance(v, dict):
             tables.append((k, v, False))
         elif _is_aot(v) and not all(_inline_fits(t) for t in v):
             tables.extend((k, t, True) for t in v)
