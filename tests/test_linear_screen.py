@@ -9,7 +9,12 @@ from helpers import EXAMPLES
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from advisor.applications.linear.advice import _catalog_parts, drive_options
+from advisor.applications.linear.advice import (
+    _catalog_parts,
+    choice_options,
+    drive_options,
+    first_drive_option,
+)
 from advisor.calc.sizing import (
     ScrewMaterial,
     drive_working_speed,
@@ -175,3 +180,53 @@ def test_catalog_parts_belong_to_their_catalog():
     again = _load_and_validate(None)
     assert _catalog_parts(again) is not a
     assert [g.name for g in _catalog_parts(again).threads] == [g.name for g in a.threads]
+
+
+@settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(
+    force=st.floats(1.0, 2e5, **finite),
+    stroke=st.floats(0.001, 3.0, **finite),
+    time=st.floats(0.05, 500.0, **finite),
+    span_factor=st.floats(1.0, 3.0, **finite),
+    pair=st.sampled_from(
+        ["steel_bronze", "hardened_steel_bronze", "steel_cast_iron", "steel_steel"]
+    ),
+    model=st.sampled_from(["paper", "standard"]),
+    hold=st.booleans(),
+    starts=st.one_of(st.none(), st.integers(1, 4)),
+    pick=st.floats(0.0, 1.0, **finite),
+)
+def test_the_options_read_with_a_thread_imposed_give_the_same_choice(
+    force, stroke, time, span_factor, pair, model, hold, starts, pick
+):
+    """With a thread imposed the joint choice is given the imposed thread's options and the
+    advisor's own best, not every option: its finding (choice, words, counts, runners-up,
+    the advisor's own choice) and the options per pole count are the same as from all."""
+    cat = load_catalogs()
+    parts = _catalog_parts(cat)
+    starts_options = STARTS if starts is None else (starts,)
+    screens = screen_threads(
+        parts.threads,
+        starts_options,
+        force_N=force,
+        stroke_m=stroke,
+        travel_time_s=time,
+        span_m=stroke * span_factor,
+        end_fixity="pinned-pinned",
+        buckling_safety_factor=3.0,
+        friction_model=model,
+        material=_material(cat, pair, "45", None),
+    )
+    full = drive_options(screens, parts.lines)
+    first = min(full, key=lambda o: screw_rules.drive_order(o, hold), default=None)
+    assert first_drive_option(screens, parts.lines, hold) == first
+    assert choice_options(screens, parts.lines, None, hold) == full
+    # the imposed thread: one with options when there are any, else any thread
+    names = sorted({o.thread for o in full}) or [g.name for g in parts.threads]
+    imposed = names[min(int(pick * len(names)), len(names) - 1)]
+    read = choice_options(screens, parts.lines, imposed, hold)
+    assert len(read) <= len(full)
+    assert [o for o in read if o.thread == imposed] == [o for o in full if o.thread == imposed]
+    assert screw_rules.choose_drive(read, hold, imposed, starts) == screw_rules.choose_drive(
+        full, hold, imposed, starts
+    )

@@ -108,45 +108,105 @@ class MotorPlan(NamedTuple):
 STARTS_FREE = (1, 2, 3, 4)
 
 
+def line_option(ev: ThreadScreen, line: MotorLine) -> screw_rules.DriveOption | None:
+    """The smallest motor of ``line`` that drives the thread of ``ev`` directly, as a drive
+    option; ``None`` when none does.
+
+    A motor whose rated or starting torque is below the screw torque cannot drive it (the
+    first test of :func:`drive_working_speed`); the line's reach is the running maximum of
+    the smaller of the two, and a bisection on it skips those motors at once instead of
+    testing them one by one (issue 16: the joint choice screens every thread)."""
+    torque, fits = ev.torque_Nm, line.fits
+    for i in range(bisect_left(line.reach, torque), len(fits)):
+        fit = fits[i]
+        n = drive_working_speed(fit, torque, ev.speed_rpm)
+        if n is None:
+            continue
+        m, thread = fit.motor, ev.thread
+        return screw_rules.DriveOption(  # positional, in the order of its fields (faster)
+            ev.name,  # thread
+            thread.d_mm,
+            thread.pitch_mm,
+            ev.starts,
+            ev.self_locking_at_low_friction,
+            torque,  # screw_torque_Nm
+            m.model,
+            line.pole_pairs,
+            m.rated_power_kW,
+            fit.rated_torque_Nm,
+            60.0 * ev.revolutions / n,  # travel_time_s
+        )
+    return None
+
+
 def drive_options(
     screens: list[ThreadScreen], lines: list[MotorLine]
 ) -> list[screw_rules.DriveOption]:
     """Every (thread, starts) that passes its checks, with the smallest motor of each pole
-    count that drives it directly.
-
-    A motor whose rated or starting torque is below the screw torque cannot drive it (the
-    first test of :func:`drive_working_speed`); along each line the running maximum of the
-    smaller of the two is kept, and a bisection on it skips those motors at once instead of
-    testing them one by one (issue 16: the joint choice screens every thread)."""
+    count that drives it directly (:func:`line_option`)."""
     out = []
+    for ev in screens:
+        if ev.passed:
+            for line in lines:
+                option = line_option(ev, line)
+                if option is not None:
+                    out.append(option)
+    return out
+
+
+def first_drive_option(
+    screens: list[ThreadScreen], lines: list[MotorLine], hold: bool
+) -> screw_rules.DriveOption | None:
+    """The option of :func:`drive_options` that comes first in the order of
+    :func:`rules.screw.drive_order` (the first of equals, as ``min`` takes it), found
+    without building most of the others.
+
+    Exact: the order compares the holding flag, then the motor's rated power, first. The
+    option of a thread on a line uses a motor at or after the line's bisection index, and a
+    line is in order of rated power, so that motor's rated power is at least the one at the
+    index. A (thread, line) whose flag and least possible rated power already compare above
+    the best option found cannot come first, and is skipped; every other option is built by
+    :func:`line_option` and compared by the full order, in the order of
+    :func:`drive_options`, a later one replacing the best only when it comes strictly
+    first."""
+    best, best_key = None, None
     for ev in screens:
         if not ev.passed:
             continue
-        torque, thread, name = ev.torque_Nm, ev.thread, ev.name
-        for pp, line, reach in lines:
-            for i in range(bisect_left(reach, torque), len(line)):
-                fit = line[i]
-                n = drive_working_speed(fit, torque, ev.speed_rpm)
-                if n is None:
-                    continue
-                m = fit.motor
-                out.append(  # positional, in the order of DriveOption's fields (faster)
-                    screw_rules.DriveOption(
-                        name,  # thread
-                        thread.d_mm,
-                        thread.pitch_mm,
-                        ev.starts,
-                        ev.self_locking_at_low_friction,
-                        torque,  # screw_torque_Nm
-                        m.model,
-                        pp,  # pole_pairs
-                        m.rated_power_kW,
-                        fit.rated_torque_Nm,
-                        60.0 * ev.revolutions / n,  # travel_time_s
-                    )
-                )
-                break
-    return out
+        flag = not ev.self_locking_at_low_friction if hold else False
+        for line in lines:
+            i = bisect_left(line.reach, ev.torque_Nm)
+            if i == len(line.fits):
+                continue  # no motor of the line drives it
+            if best_key is not None and (flag, line.fits[i].motor.rated_power_kW) > (
+                best_key[0],
+                best_key[1][0],
+            ):
+                continue
+            option = line_option(ev, line)
+            if option is None:
+                continue
+            key = screw_rules.drive_order(option, hold)
+            if best_key is None or key < best_key:
+                best, best_key = option, key
+    return best
+
+
+def choice_options(
+    screens: list[ThreadScreen], lines: list[MotorLine], imposed: str | None, hold: bool
+) -> list[screw_rules.DriveOption]:
+    """The drive options the joint choice (rule SCR-04) reads. With the thread free, all of
+    them (it counts them and ranks them all). With a thread imposed, the imposed thread's
+    options, and of the others only the one the advisor would choose itself
+    (:func:`first_drive_option`): the rule ranks, counts and lists the imposed thread's
+    options only, and names the best of all as the advisor's own choice."""
+    if imposed is None:
+        return drive_options(screens, lines)
+    options = drive_options([ev for ev in screens if ev.name == imposed], lines)
+    own = first_drive_option(screens, lines, hold)
+    if own is not None and own.thread != imposed:
+        options.append(own)
+    return options
 
 
 def plan_motor(
@@ -294,7 +354,8 @@ def advise_linear(
     parts = _catalog_parts(cat)
     screens = screen_threads(parts.threads, starts_options, **lean)
     fits = parts.fits
-    options = drive_options(screens, parts.lines)
+    hold = req.application.hold_without_power
+    options = choice_options(screens, parts.lines, s.thread, hold)
     if s.thread is not None:
         imposed = [sc for sc in screens if sc.name == s.thread]
         if not any(sc.passed for sc in imposed):
@@ -324,7 +385,6 @@ def advise_linear(
         chosen.label,
     )
     pool = [o for o in options if s.thread is None or o.thread == s.thread]
-    hold = req.application.hold_without_power
     pole_options = []
     for pp in fits:
         best = min(
