@@ -107,8 +107,12 @@ def _compare(cat, material, model, force_N, stroke_m, travel_time_s, span_m, fix
                 e.speed_rpm,
             )
             assert s.self_locking_at_low_friction == e.self_locking_at_low_friction
-    options = drive_options(screens, _catalog_parts(cat).lines)
+    lines = _catalog_parts(cat).lines
+    options = drive_options(screens, lines)
     assert options == _reference_options(full, cat)
+    for hold in (False, True):
+        first = min(options, key=lambda o: screw_rules.drive_order(o, hold), default=None)
+        assert first_drive_option(screens, lines, hold) == first
     return sum(e.passed for e in full), len(options)
 
 
