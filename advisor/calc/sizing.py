@@ -489,9 +489,7 @@ def evaluate_motor(
     and is reported for comparison with fig. 4 of seed 001.
     """
     mn = motor.rated_torque_Nm
-    curve = im.fit_kloss(
-        mn, motor.rated_slip, motor.breakdown_torque_ratio, motor.starting_torque_ratio
-    )
+    curve = _fit(mn, motor.rated_slip, motor.breakdown_torque_ratio, motor.starting_torque_ratio)
     n0 = motor.synchronous_speed_rpm
     s_work = curve.stable_slip(load_torque_Nm)
     n_work = None if s_work is None else n0 * (1.0 - s_work)

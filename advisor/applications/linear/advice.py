@@ -108,9 +108,12 @@ class MotorPlan(NamedTuple):
 STARTS_FREE = (1, 2, 3, 4)
 
 
-def line_option(ev: ThreadScreen, line: MotorLine) -> screw_rules.DriveOption | None:
+def line_option(
+    ev: ThreadScreen, line: MotorLine, max_power_kW: float = math.inf
+) -> screw_rules.DriveOption | None:
     """The smallest motor of ``line`` that drives the thread of ``ev`` directly, as a drive
-    option; ``None`` when none does.
+    option; ``None`` when none does (or none of at most ``max_power_kW``: the line is in
+    order of rated power, so the search stops at the first motor above it).
 
     A motor whose rated or starting torque is below the screw torque cannot drive it (the
     first test of :func:`drive_working_speed`); the line's reach is the running maximum of
@@ -119,6 +122,8 @@ def line_option(ev: ThreadScreen, line: MotorLine) -> screw_rules.DriveOption | 
     torque, fits = ev.torque_Nm, line.fits
     for i in range(bisect_left(line.reach, torque), len(fits)):
         fit = fits[i]
+        if fit.motor.rated_power_kW > max_power_kW:
+            return None
         n = drive_working_speed(fit, torque, ev.speed_rpm)
         if n is None:
             continue
@@ -165,8 +170,9 @@ def first_drive_option(
     option of a thread on a line uses a motor at or after the line's bisection index, and a
     line is in order of rated power, so that motor's rated power is at least the one at the
     index. A (thread, line) whose flag and least possible rated power already compare above
-    the best option found cannot come first, and is skipped; every other option is built by
-    :func:`line_option` and compared by the full order, in the order of
+    the best option found cannot come first, and is skipped; with the same flag, the search
+    along the line stops above the best one's rated power for the same reason. Every other
+    option is built by :func:`line_option` and compared by the full order, in the order of
     :func:`drive_options`, a later one replacing the best only when it comes strictly
     first."""
     best, best_key = None, None
@@ -178,12 +184,13 @@ def first_drive_option(
             i = bisect_left(line.reach, ev.torque_Nm)
             if i == len(line.fits):
                 continue  # no motor of the line drives it
-            if best_key is not None and (flag, line.fits[i].motor.rated_power_kW) > (
-                best_key[0],
-                best_key[1][0],
-            ):
-                continue
-            option = line_option(ev, line)
+            cap = math.inf
+            if best_key is not None:
+                if (flag, line.fits[i].motor.rated_power_kW) > (best_key[0], best_key[1][0]):
+                    continue
+                if flag == best_key[0]:
+                    cap = best_key[1][0]
+            option = line_option(ev, line, cap)
             if option is None:
                 continue
             key = screw_rules.drive_order(option, hold)
