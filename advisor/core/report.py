@@ -197,6 +197,7 @@ def _plain(obj: Any) -> Any:
 
 
 _floor, _log10 = math.floor, math.log10
+_KEPT = frozenset((str, int, bool))  # exact types a plain report holds as they are
 
 
 def _plain_fast(obj: Any) -> Any:
@@ -214,11 +215,20 @@ def _plain_fast(obj: Any) -> Any:
                 raise NonFiniteValue("a report value is not a finite number")
             return [round(v, 5 - _floor(_log10(abs(v)))) if v else v for v in obj]
         return [_plain_fast(v) for v in obj if v is not None]
+    # in tables, words, counts and flags are kept without a call: they are most of the values
     if t is dict:
-        return {str(k): _plain_fast(v) for k, v in obj.items() if v is not None}
+        return {
+            str(k): v if type(v) in _KEPT else _plain_fast(v)
+            for k, v in obj.items()
+            if v is not None
+        }
     if isinstance(obj, _Out):
         values = obj.__dict__
-        return {n: _plain_fast(values[n]) for n in t.field_names if values.get(n) is not None}
+        return {
+            n: v if type(v) in _KEPT else _plain_fast(v)
+            for n in t.field_names
+            if (v := values.get(n)) is not None
+        }
     return _plain_keyed(obj, "")
 
 
