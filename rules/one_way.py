@@ -14,8 +14,23 @@ NAMES = {
 
 
 @rule("OW-01", "Place of the one-way device", SEED_004)
-def placement(output_torque_Nm: float, ratio: float, efficiency: float) -> Finding[float]:
+def placement(
+    output_torque_Nm: float, ratio: float, efficiency: float, asked: str = "motor_side"
+) -> Finding[float]:
+    """The torque the device holds where it sits: M_out/(q·η) at the motor side (the seed's
+    place), M_out at the output when the requirement puts it there (``one_way.location``)."""
     at_motor = output_torque_Nm / (ratio * efficiency)
+    if asked == "output_side":
+        return Finding(
+            output_torque_Nm,
+            f"At the output, as the requirement asks (one_way.location): it carries "
+            f"M_out = {output_torque_Nm:.4g} N·m, q·η = {ratio * efficiency:.4g} times the "
+            f"{at_motor:.4g} N·m it would hold at the motor side.",
+            "Seed 004, conclusions 4 and 6 put the device where the torque is least, at the "
+            "motor; the requirement overrides the place. The report shows the same device at "
+            "the motor side for comparison.",
+            {"torque_Nm": output_torque_Nm, "location": "output side"},
+        )
     return Finding(
         at_motor,
         f"Between the motor and the first stage, where it carries M_out/(q·η) = "

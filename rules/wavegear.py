@@ -244,6 +244,7 @@ def compare_with_front(
     shown: int,
     adopted: dict[str, float],
     dominating: dict[str, float] | None,
+    taken: str = "rules",
 ) -> Finding[str]:
     """Where the adopted reducer stands against the non-dominated set of the design space
     (mass, outer diameter, length, efficiency by eqs. (13)–(19)). ``adopted`` and
@@ -265,12 +266,50 @@ def compare_with_front(
         f"output): {d['mass_kg']:.4g} kg against {a['mass_kg']:.4g} kg, "
         f"{d['outer_diameter_mm']:.4g} mm against {a['outer_diameter_mm']:.4g} mm outer "
         f"diameter, {d['length_mm']:.4g} mm against {a['length_mm']:.4g} mm length, "
-        f"{int(d['stages'])} stages against {int(a['stages'])}; it is kept (the seed's "
-        "practice).",
+        f"{int(d['stages'])} stages against {int(a['stages'])}; "
+        + (
+            "it is kept (the seed's practice)."
+            if taken == "rules"
+            else f"it is kept: the requirement takes the {taken} of the space (gearbox.choice)."
+        ),
         "By eqs. (13)–(19) alone a design is at least as good in every objective "
         f"({objectives}) and better in one. The seed's rules (q_out = 12…20, three rows at "
         "the output) come from the authors' fuller model, which these equations do not hold; "
         f"the engineer judges. The front holds {front_size} designs; {shown} are reported, "
         "evenly spaced along it.",
         {"front_size": front_size, "shown": shown, "adopted": adopted, "dominating": dominating},
+    )
+
+
+@rule("WG-06", "Reducer taken from the design space", SEED_000)
+def taken_from_space(
+    taken: str,
+    mass_kg: float,
+    diameter_mm: float,
+    rule_mass_kg: float | None,
+    rule_diameter_mm: float | None,
+) -> Finding[str]:
+    """The requirement (``gearbox.choice``) takes the lightest or the slimmest configuration
+    of the design space instead of the rule design; said beside what the rules would give
+    (``None`` where the rules give no design that fits the envelope)."""
+    rules_give = (
+        f"the rule design would weigh {rule_mass_kg:.4g} kg at Ø {rule_diameter_mm:.4g} mm"
+        if rule_mass_kg is not None and rule_diameter_mm is not None
+        else "the rules give no design that fits the envelope"
+    )
+    return Finding(
+        taken,
+        f"The {taken} reducer of the design space, as the requirement asks (gearbox.choice): "
+        f"{mass_kg:.4g} kg at Ø {diameter_mm:.4g} mm; {rules_give}.",
+        "The seed's rules (WG-02, WG-03: q_out = 12…20, three rows at the output) are the "
+        "default. The design space evaluates every stage count, ratio split and row count "
+        "by eqs. (13)–(19) within the envelope; the requirement takes its "
+        + ("least mass." if taken == "lightest" else "least outer diameter."),
+        {
+            "taken": taken,
+            "mass_kg": mass_kg,
+            "outer_diameter_mm": diameter_mm,
+            "rule_mass_kg": rule_mass_kg,
+            "rule_diameter_mm": rule_diameter_mm,
+        },
     )

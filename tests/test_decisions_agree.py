@@ -65,14 +65,20 @@ def rotary_requirements(draw) -> dict:
         "gearbox": {
             "rolling_body": draw(st.sampled_from(["ball", "roller"])),
             "stage_efficiency": draw(st.floats(0.8, 0.98, **finite)),
+            "choice": draw(st.sampled_from(["rules", "rules", "lightest", "slimmest"])),
         },
     }
     if draw(st.booleans()):
         doc["motor"]["max_losses_W"] = draw(logs(50.0, 5e4))
     if draw(st.booleans()):
         doc["envelope"] = {"max_outer_diameter_mm": draw(logs(20.0, 2000.0))}
+    if draw(st.booleans()):  # a length the rule design may exceed: the space's lightest fits
+        doc.setdefault("envelope", {})["max_length_mm"] = draw(logs(10.0, 1000.0))
     if doc["application"]["hold_without_power"]:
-        doc["one_way"] = {"type": draw(st.sampled_from(["auto", "roller_clutch", "em_clutch"]))}
+        doc["one_way"] = {
+            "type": draw(st.sampled_from(["auto", "roller_clutch", "em_clutch"])),
+            "location": draw(st.sampled_from(["motor_side", "motor_side", "output_side"])),
+        }
     return doc
 
 
@@ -84,13 +90,27 @@ def check_rotary(rep: dict) -> None:
     assert d["BL-02"]["speed_rpm"] == motor["speed_rpm"]
     assert close(d["BL-02"]["total_loss_W"], motor["losses_W"]["total"])
     assert close(d["BL-02"]["loss_limit_W"], motor["loss_limit_W"])
-    assert close(d["WG-02"]["ratios"], [s["ratio"] for s in out_first])
-    assert d["WG-03"]["rows"] == [s["rows"] for s in out_first]
-    wg4 = d["WG-04"]
-    assert close(wg4["rule_mass_kg"], gb["mass_kg"])
-    assert close(wg4["rule_diameter_mm"], gb["outer_diameter_mm"])
-    assert close(wg4["opt_mass_kg"], gb["optimum"]["mass_kg"])
-    assert close(wg4["min_diameter_mm"], gb["optimum_min_diameter"]["outer_diameter_mm"])
+    taken = rep["requirements"]["gearbox"]["choice"]
+    if taken == "rules":
+        assert "WG-06" not in d
+        wg4 = d["WG-04"]
+        assert close(wg4["rule_mass_kg"], gb["mass_kg"])
+        assert close(wg4["rule_diameter_mm"], gb["outer_diameter_mm"])
+        assert close(wg4["opt_mass_kg"], gb["optimum"]["mass_kg"])
+        assert close(wg4["min_diameter_mm"], gb["optimum_min_diameter"]["outer_diameter_mm"])
+        if not any("is used instead" in w for w in rep["warnings"]):  # the rules' own design
+            assert close(d["WG-02"]["ratios"], [s["ratio"] for s in out_first])
+            assert d["WG-03"]["rows"] == [s["rows"] for s in out_first]
+    else:  # the design is the space's lightest or slimmest, as WG-06 states
+        assert "WG-04" not in d
+        wg6 = d["WG-06"]
+        assert wg6["taken"] == taken
+        assert close(wg6["mass_kg"], gb["mass_kg"])
+        assert close(wg6["outer_diameter_mm"], gb["outer_diameter_mm"])
+        best = gb["optimum"] if taken == "lightest" else gb["optimum_min_diameter"]
+        for key in ("mass_kg", "outer_diameter_mm", "length_mm", "efficiency"):
+            assert close(gb[key], best[key]), key
+        assert [s["ratio"] for s in gb["stages"]] == [s["ratio"] for s in best["stages"]]
     wg5 = d["WG-05"]
     for key in ("mass_kg", "outer_diameter_mm", "length_mm"):
         assert close(wg5["adopted"][key], gb[key]), key
@@ -106,6 +126,15 @@ def check_rotary(rep: dict) -> None:
         ow = rep["design"]["one_way"]
         assert close(d["OW-01"]["torque_Nm"], ow["torque_Nm"])
         assert d["OW-01"]["location"] == ow["location"]
+        asked = rep["requirements"]["one_way"]["location"].replace("_", " ")
+        assert ow["location"] == asked
+        held = rep["requirements"]["rotary"]["torque_Nm"]
+        at_motor = motor["torque_Nm"]
+        assert close(ow["torque_Nm"], held if asked == "output side" else at_motor)
+        other = ow.get("motor_side" if asked == "output side" else "output_side")
+        if other is not None:  # the same type at the other side, at that side's torque
+            assert other["type"] == ow["type"]
+            assert close(other["torque_Nm"], at_motor if asked == "output side" else held)
         assert d["OW-02"]["type"] == ow["type"]
 
 

@@ -370,7 +370,9 @@ async def test_compare_shows_the_alternatives_and_use_this_imposes_one():
         assert "slimmest in the space" in text and "▶ roller clutch" in text
         assert "▶ chosen: BL-02" in text and "OW-02" in text
         labels = [str(b.label) for b in app.query("#compare-box Button")]
-        assert "Use em clutch" in labels
+        assert "Use em clutch at the motor side" in labels
+        assert "Use roller clutch at the output side" in labels
+        assert "Use the lightest" in labels and "Use the slimmest" in labels
         start = app.results_version
         button = next(b for b in app.query("#compare-box Button") if "em clutch" in str(b.label))
         button.press()
@@ -379,6 +381,43 @@ async def test_compare_shows_the_alternatives_and_use_this_imposes_one():
         assert app.report.design.one_way.type == "em_clutch"  # the next compute is that design
         summary = _text(app.query_one("#view-summary", Static))
         assert "input one_way.type: auto → em_clutch" in summary
+
+
+async def test_compare_use_takes_the_lightest_reducer_and_the_device_at_the_output():
+    app = DriveAdvisorApp(_doc(), VALVE, save_drafts=False)
+    async with app.run_test(size=SIZE) as pilot:
+        await _computed(app, pilot)
+        lightest = app.report.design.gearbox.optimum
+        app.query_one("#result-tabs").active = "tab-compare"
+        await pilot.pause()
+
+        async def use(label: str) -> None:
+            start = app.results_version
+            button = next(b for b in app.query("#compare-box Button") if str(b.label) == label)
+            button.press()
+            await _settle(pilot, app, start)
+            app.query_one("#result-tabs").active = "tab-compare"  # the result opens on Summary
+            await pilot.pause()
+
+        await use("Use the lightest")
+        assert app.doc["gearbox"]["choice"] == "lightest"
+        g = app.report.design.gearbox  # the next compute is that reducer
+        assert g.mass_kg == lightest.mass_kg and len(g.stages) == len(lightest.stages)
+        text = "\n".join(_text(w) for w in app.query("#compare-box Static"))
+        assert "▶ lightest in the space" in text and "WG-06" in text
+        labels = [str(b.label) for b in app.query("#compare-box Button")]
+        assert "Use the rules" in labels and "Use the lightest" not in labels
+
+        await use("Use roller clutch at the output side")
+        assert (app.doc["one_way"]["type"], app.doc["one_way"]["location"]) == (
+            "roller_clutch",
+            "output_side",
+        )
+        ow = app.report.design.one_way
+        assert ow.location == "output side" and ow.torque_Nm == app.doc["rotary"]["torque_Nm"]
+        assert ow.motor_side is not None and ow.motor_side.location == "motor side"
+        # the field on the wizard's step shows what "Use" set
+        assert app.query_one("#f-one-way-location").value == "output_side"
 
 
 async def test_compare_after_an_infeasible_result_says_why_there_is_nothing():

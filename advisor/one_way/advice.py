@@ -27,9 +27,15 @@ def choose_device(
     output_torque_Nm: float,
     motor_power_W: float,
     trace: Trace,
+    at_output: bool = False,
 ) -> tuple[OneWayOut, list[str]]:
-    """Size every type at the motor-side torque, pick one by OW-02, and show it at the output."""
-    options = _sized(motor_torque_Nm, req_one_way.rollers)
+    """Size every type where the device sits (the motor side; the output with
+    ``at_output``), pick one by OW-02, and show the same type at the other side."""
+    here, there = (
+        (output_torque_Nm, motor_torque_Nm) if at_output else (motor_torque_Nm, output_torque_Nm)
+    )
+    where = "output side" if at_output else "motor side"
+    options = _sized(here, req_one_way.rollers)
     chosen = trace.apply(
         rules.device_type,
         req_one_way.type,
@@ -38,9 +44,10 @@ def choose_device(
     )
     warnings: list[str] = []
     if chosen not in options:  # only the electromagnetic clutch can fail to exist
-        raise _em_clutch_impossible(motor_torque_Nm)
+        raise _em_clutch_impossible(here, where)
     d = options[chosen]
-    at_output = ow.size(chosen, output_torque_Nm, req_one_way.rollers)
+    other = ow.size(chosen, there, req_one_way.rollers)
+    other_out = None if other is None else _out(other, "motor side" if at_output else "output side")
     if d.efficiency < 0.5:
         warnings.append(
             f"the {rules.NAMES[chosen]} drives with η = {d.efficiency:.2f}: the motor must give "
@@ -50,8 +57,8 @@ def choose_device(
     share = d.power_W / motor_power_W if motor_power_W > 0 else 0.0
     out = OneWayOut.make(
         type=chosen,
-        location="motor side",
-        torque_Nm=motor_torque_Nm,
+        location=where,
+        torque_Nm=here,
         outer_diameter_mm=d.outer_diameter_mm,
         length_mm=d.length_mm,
         mass_kg=d.mass_kg,
@@ -60,13 +67,14 @@ def choose_device(
         power_W=d.power_W,
         power_share=share,
         basis=d.basis,
-        output_side=None if at_output is None else _out(at_output, "output side"),
-        alternatives=[_out(x, "motor side") for k, x in options.items() if k != chosen],
+        output_side=None if at_output else other_out,
+        motor_side=other_out if at_output else None,
+        alternatives=[_out(x, where) for k, x in options.items() if k != chosen],
     )
     return out, warnings
 
 
-def _em_clutch_impossible(torque: float):
+def _em_clutch_impossible(torque: float, where: str = "motor side"):
     from advisor.core.errors import InfeasibleError
 
     p = ow.EM_CLUTCH
@@ -74,8 +82,9 @@ def _em_clutch_impossible(torque: float):
     return InfeasibleError(
         "no feasible design: no electromagnetic clutch of the seed's range carries the torque",
         [
-            f"{torque:.4g} N·m at the motor side needs {b:.2f} T in the poles of a "
+            f"{torque:.4g} N·m at the {where} needs {b:.2f} T in the poles of a "
             f"{max(p.diameters_mm):g} mm clutch (limit {p.saturation_T:g} T)",
-            "choose one_way.type = 'roller_clutch' or 'auto'",
+            "choose one_way.type = 'roller_clutch' or 'auto'"
+            + (", or one_way.location = 'motor_side'" if where == "output side" else ""),
         ],
     )

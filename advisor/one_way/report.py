@@ -28,5 +28,6 @@ class OneWayOut(_Out):
     power_W: float | None = None
     power_share: float | None = None
     basis: str = ""
-    output_side: DeviceOut | None = None
+    output_side: DeviceOut | None = None  # the same type at the output (device at the motor)
+    motor_side: DeviceOut | None = None  # the same type at the motor (device at the output)
     alternatives: list[DeviceOut] = []

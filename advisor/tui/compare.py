@@ -45,12 +45,16 @@ def mark(chosen: bool, text: str) -> Any:
 
 
 def one_way(report) -> list[Section]:
-    """The one-way device types at the motor and at the output (seed 004)."""
+    """The one-way device types where the device sits, and the chosen type at the other
+    side (seed 004). "Use" imposes the type and, where the application asks it
+    (``one_way.location``, the rotary actuator), the place."""
     ow = getattr(report.design, "one_way", None)
     if ow is None or ow.type == "none":
         return []
+    placeable = "location" in report.requirements.get("one_way", {})
     t = table("type", "where", "torque N·m", "Ø × L mm", "mass kg", "power W")
-    rows = [(ow, True), *((o, False) for o in ([ow.output_side] if ow.output_side else []))]
+    other = ow.output_side or getattr(ow, "motor_side", None)
+    rows = [(ow, True), *((o, False) for o in ([other] if other else []))]
     rows += [(o, False) for o in ow.alternatives]
     options = []
     for o, chosen in rows:
@@ -62,13 +66,27 @@ def one_way(report) -> list[Section]:
             f"{o.mass_kg or 0:.3g}",
             f"{o.power_W or 0:.3g}",
         )
-        label = f"Use {o.type.replace('_', ' ')}"
-        if not chosen and o.type != ow.type and all(x.label != label for x in options):
-            options.append(Option(label, ((("one_way", "type"), o.type),)))
+        if chosen:
+            continue
+        name = o.type.replace("_", " ")
+        if placeable:
+            label = f"Use {name} at the {o.location}"
+            patch = (
+                (("one_way", "type"), o.type),
+                (("one_way", "location"), o.location.replace(" ", "_")),
+            )
+        elif o.type != ow.type:
+            label, patch = f"Use {name}", ((("one_way", "type"), o.type),)
+        else:
+            continue
+        if all(x.label != label for x in options):
+            options.append(Option(label, patch))
     why = " ".join(x for x in (decision(report, "OW-01"), decision(report, "OW-02")) if x)
     note = (
-        "The place follows the rules (OW-01); the requirement imposes the type only."
-        if ow.output_side
+        "“Use” sets one_way.type and one_way.location."
+        if placeable
+        else "The place follows the rules (OW-01); the requirement imposes the type only."
+        if other
         else ""
     )
     return [Section("One-way device", t, why, tuple(options), note)]

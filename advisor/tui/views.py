@@ -163,7 +163,8 @@ def one_way_parts(one_way) -> list[Any]:
     if one_way.basis:
         rows.append(("basis", one_way.basis))
     parts: list[Any] = [kv("One-way device (holds the load with the motor off)", rows)]
-    others = [*([one_way.output_side] if one_way.output_side else []), *one_way.alternatives]
+    other_side = one_way.output_side or getattr(one_way, "motor_side", None)
+    others = [*([other_side] if other_side else []), *one_way.alternatives]
     if others:
         t = Table(title="…and what else would hold it", title_justify="left")
         for col in ("type", "where", "torque N·m", "Ø×L mm", "mass kg", "power W"):

@@ -71,14 +71,16 @@ def _steel(req: Requirements, cat: Catalogs):
 
 
 def _candidate(n: float, req: Requirements, steel, steel_mass: float, terms, params) -> dict:
-    """Losses and drive figures of the reference motor rewound for speed ``n``."""
+    """Losses and drive figures of the reference motor rewound for speed ``n``, behind the
+    reducer the design would adopt at its ratio (:func:`_stage_count`): the efficiency the
+    speed choice (BL-02) weighs is the one the design then has."""
     rot = req.rotary
     mot = req.motor
     assert rot is not None and isinstance(mot, BldcMotorReq)
     ref = mot.reference
     q_total = n / rot.speed_rpm
     split = wg_rules.split_ratio(q_total, rd.STAGE_RATIO_MIN, rd.STAGE_RATIO_MAX).value
-    stages = len(split) if split else 0
+    stages = _stage_count(q_total, split, req, params) if split else 0
     eta = params.stage_efficiency**stages if stages else math.nan
     torque = rot.torque_Nm / (q_total * eta) if stages else math.nan
     f = bldc.flux_frequency_Hz(n, ref.pole_pairs)
@@ -97,6 +99,33 @@ def _candidate(n: float, req: Requirements, steel, steel_mass: float, terms, par
         "spec": spec,
         "spec_three": spec_three,
     }
+
+
+def _rows_needed(rot, env, split: list[float], params: rd.ReducerParams) -> float | None:
+    """The rows the envelope diameter asks of the output stage (seed 000, the inequality
+    after eq. (19)); None without a diameter limit."""
+    if not env.max_outer_diameter_mm:
+        return None
+    return float(
+        wg.rows_for_diameter(rot.torque_Nm, split[0], env.max_outer_diameter_mm, params.k_rb)
+    )
+
+
+def _stage_count(q_total: float, split: list[float], req: Requirements, params) -> int:
+    """The stage count of the reducer the design adopts at ``q_total``: the rules' split
+    (WG-02) where its design fits the envelope and gearbox.choice is "rules"; otherwise the
+    design space's lightest (or slimmest) within the envelope, as :func:`advise_rotary`
+    adopts. The rules' count where the space has none that fits (the advice then says so)."""
+    env, choice = req.envelope, req.gearbox.choice
+    if choice == "rules":
+        rows = wg_rules.choose_rows(
+            len(split), _rows_needed(req.rotary, env, split, params), MAX_ROWS
+        ).value
+        if rows and _fits(rd.evaluate(split, rows, params), env):
+            return len(split)
+    space = rd.sweep(q_total, params)
+    best = _optimum(space, q_total, "diameter" if choice == "slimmest" else "mass", params, env)
+    return len(best.stages) if best is not None else len(split)
 
 
 def advise_rotary(req: Requirements, cat: Catalogs, trace: Trace):
@@ -165,11 +194,7 @@ def advise_rotary(req: Requirements, cat: Catalogs, trace: Trace):
     # ---- reducer
     q_total = chosen["q_total"]
     split = trace.apply(wg_rules.split_ratio, q_total, rd.STAGE_RATIO_MIN, rd.STAGE_RATIO_MAX)
-    needed = (
-        float(wg.rows_for_diameter(rot.torque_Nm, split[0], env.max_outer_diameter_mm, params.k_rb))
-        if env.max_outer_diameter_mm
-        else None
-    )
+    needed = _rows_needed(rot, env, split, params)
     rows = trace.apply(wg_rules.choose_rows, len(split), needed, MAX_ROWS)
     space = rd.sweep(q_total, params)
     optimum = _optimum(space, q_total, "mass", params, env)
@@ -178,7 +203,18 @@ def advise_rotary(req: Requirements, cat: Catalogs, trace: Trace):
         raise _no_reducer(space, rot.torque_Nm, env)
     design = rd.evaluate(split, rows, params) if rows else None
     warnings: list[str] = []
-    if design is None or not _fits(design, env):
+    if gb.choice != "rules":  # the requirement takes the space's lightest or slimmest
+        by_rules = design if design is not None and _fits(design, env) else None
+        design = optimum if gb.choice == "lightest" else slimmest
+        trace.apply(
+            wg_rules.taken_from_space,
+            gb.choice,
+            design.mass_kg,
+            design.outer_diameter_mm,
+            None if by_rules is None else by_rules.mass_kg,
+            None if by_rules is None else by_rules.outer_diameter_mm,
+        )
+    elif design is None or not _fits(design, env):
         why = (
             "the envelope diameter needs more rows than the design space holds"
             if design is None
@@ -189,14 +225,15 @@ def advise_rotary(req: Requirements, cat: Catalogs, trace: Trace):
             f"{why}; the lightest reducer of the design space that fits is used instead"
         )
         design = optimum
-    warnings += trace.apply(
-        wg_rules.compare_with_optimum,
-        design.mass_kg,
-        optimum.mass_kg,
-        design.outer_diameter_mm,
-        slimmest.outer_diameter_mm,
-    )
-    pareto = _pareto(space, design, params, env, trace)
+    if gb.choice == "rules":
+        warnings += trace.apply(
+            wg_rules.compare_with_optimum,
+            design.mass_kg,
+            optimum.mass_kg,
+            design.outer_diameter_mm,
+            slimmest.outer_diameter_mm,
+        )
+    pareto = _pareto(space, design, params, env, trace, gb.choice)
 
     # the motor torque follows the reducer actually adopted (its efficiency)
     motor_torque = rot.torque_Nm / (design.total_ratio * design.efficiency)
@@ -253,17 +290,31 @@ def advise_rotary(req: Requirements, cat: Catalogs, trace: Trace):
 def _one_way(
     req, trace, design: rd.Reducer, working: dict, limit: float, basis: str, steel_cite: Cite
 ):
-    """Seed 004: the holding device at the motor side, and what it asks of the motor: its
-    driving loss raises the motor torque, hence the copper loss, at the same speed."""
+    """Seed 004: the holding device at the motor side (or at the output, where the requirement
+    puts it), and what it asks of the motor: its driving loss raises the motor torque, hence
+    the copper loss, at the same speed, wherever it sits (the motor gives 1/η_d times the
+    torque either way)."""
     from advisor.one_way.advice import choose_device
     from rules import one_way as ow_rules
 
-    at_motor = trace.apply(
-        ow_rules.placement, req.rotary.torque_Nm, design.total_ratio, design.efficiency
+    # the torque where the device sits (OW-01); the motor-side torque is the motor's own
+    trace.apply(
+        ow_rules.placement,
+        req.rotary.torque_Nm,
+        design.total_ratio,
+        design.efficiency,
+        req.one_way.location,
     )
     motor_torque, speed = working["torque_Nm"], working["speed_rpm"]
     power = motor_torque * speed * math.pi / 30.0
-    device, warnings = choose_device(req.one_way, at_motor, req.rotary.torque_Nm, power, trace)
+    device, warnings = choose_device(
+        req.one_way,
+        motor_torque,
+        req.rotary.torque_Nm,
+        power,
+        trace,
+        at_output=req.one_way.location == "output_side",
+    )
     checks = []
     if device.efficiency < 1.0:
         ref = req.motor.reference
@@ -308,7 +359,7 @@ def _optimum(space, q_total, objective, params, env) -> rd.Reducer | None:
     return rd.evaluate(ratios, [rows] + [2] * (len(ratios) - 1), params)
 
 
-def _pareto(space, design: rd.Reducer, params, env, trace) -> ParetoOut:
+def _pareto(space, design: rd.Reducer, params, env, trace, taken: str) -> ParetoOut:
     """The non-dominated set of the design space (thinned) and where ``design`` stands."""
     d_max, l_max = env.max_outer_diameter_mm, env.max_length_mm
     eta = params.stage_efficiency
@@ -327,6 +378,7 @@ def _pareto(space, design: rd.Reducer, params, env, trace) -> ParetoOut:
             "stages": len(design.stages),
         },
         None if point is None else point.as_dict(),
+        taken,
     )
     return ParetoOut.make(
         objectives=["least mass", "least outer diameter", "least length", "highest efficiency"],

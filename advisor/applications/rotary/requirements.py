@@ -175,6 +175,29 @@ class GearboxReq(_Strict):
         float, _num(ge=1000, le=2e4, desc="material density, 1000 … 2·10⁴ kg/m³")
     ] = 7800.0
     fill_factor: Annotated[float, _num(ge=0.1, le=1, desc="k_з of eq. (19), 0.1 … 1")] = 0.75
+    choice: Annotated[
+        Literal["rules", "lightest", "slimmest"],
+        ask(
+            "the reducer the design takes: the seed's rules (WG-02, WG-03), or the lightest or "
+            "the slimmest of the design space within the envelope",
+            label="Reducer taken",
+            step=3,
+        ),
+    ] = "rules"
+
+
+class RotaryOneWayReq(OneWayReq):
+    """The holding device of a rotary drive: also where it sits (seed 004)."""
+
+    location: Annotated[
+        Literal["motor_side", "output_side"],
+        ask(
+            "where the one-way device sits: at the motor side, where the torque is least "
+            "(rule OW-01), or at the output",
+            label="One-way device at",
+            step=2,
+        ),
+    ] = "motor_side"
 
 
 class RotaryRequirements(_Strict):
@@ -187,7 +210,7 @@ class RotaryRequirements(_Strict):
     envelope: EnvelopeReq = EnvelopeReq.model_construct()
     motor: Annotated[BldcMotorReq, Field(description="the [motor] table: kind = 'bldc'")]
     gearbox: GearboxReq = GearboxReq.model_construct()
-    one_way: OneWayReq = OneWayReq.model_construct()
+    one_way: RotaryOneWayReq = RotaryOneWayReq.model_construct()
     duty: Annotated[
         RotaryDutyReq | None,
         Field(description="the [duty] table: segments with cycles_per_hour, or duty_type"),

@@ -147,27 +147,48 @@ def compare(report) -> list[Any]:
         "“Use” keeps that speed alone in motor.candidate_speeds_rpm.",
     )
     r = table("reducer", "stages", "q (output first)", "Ø mm", "length mm", "mass kg", "η")
-    for name, s, chosen in (
-        ("rules (seed 000)", g, True),
-        ("lightest in the space", g.optimum, False),
-        ("slimmest in the space", g.optimum_min_diameter, False),
-    ):
-        ratios = ", ".join(f"{st.ratio:.4g}" for st in reversed(s.stages))
-        r.add_row(
-            mark(chosen, name),
-            str(len(s.stages)),
-            ratios,
-            f"{s.outer_diameter_mm:.4g}",
-            f"{s.length_mm:.4g}",
-            f"{s.mass_kg:.3g}",
-            f"{s.efficiency:.3g}",
-        )
-    why = " ".join(x for x in (decision(report, "WG-04"), decision(report, "WG-05")) if x)
+    taken = report.requirements.get("gearbox", {}).get("choice", "rules")
+    rows = [("rules", "rules (seed 000)", g if taken == "rules" else None)]
+    rows += [
+        ("lightest", "lightest in the space", g.optimum),
+        ("slimmest", "slimmest in the space", g.optimum_min_diameter),
+    ]
+    options = []
+    for key, name, s in rows:
+        chosen = key == taken
+        if s is None:  # another was taken: the rules' design as WG-06 states it
+            said = next((d.inputs for d in report.decisions if d.id == "WG-06"), {})
+            mass, dia = said.get("rule_mass_kg"), said.get("rule_diameter_mm")
+            r.add_row(
+                mark(False, name),
+                "—",
+                "see WG-02, WG-03" if mass is not None else "none fits the envelope",
+                "" if dia is None else f"{dia:.4g}",
+                "",
+                "" if mass is None else f"{mass:.3g}",
+                "",
+            )
+        else:
+            ratios = ", ".join(f"{st.ratio:.4g}" for st in reversed(s.stages))
+            r.add_row(
+                mark(chosen, name),
+                str(len(s.stages)),
+                ratios,
+                f"{s.outer_diameter_mm:.4g}",
+                f"{s.length_mm:.4g}",
+                f"{s.mass_kg:.3g}",
+                f"{s.efficiency:.3g}",
+            )
+        if not chosen:
+            word = "the rules" if key == "rules" else f"the {key}"
+            options.append(Option(f"Use {word}", ((("gearbox", "choice"), key),)))
+    why = " ".join(x for x in (decision(report, i) for i in ("WG-04", "WG-06", "WG-05")) if x)
     reducer = Section(
         "Reducer: the rules against the design space",
         r,
         why,
-        (),
-        "The requirement has no key that imposes a reducer layout: the rules decide it.",
+        tuple(options),
+        "“Use” sets gearbox.choice: the rules' design, or the lightest or the slimmest of "
+        "the design space within the envelope.",
     )
     return [motors, reducer, *one_way(report)]

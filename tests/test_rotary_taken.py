@@ -1,0 +1,117 @@
+"""Issue 14, "Use this imposes the alternative in the requirement": the rotary requirement can
+take the design space's lightest or slimmest reducer (gearbox.choice) and put the one-way
+device at the output (one_way.location); and the speed choice (BL-02) weighs the efficiency
+of the reducer the design then adopts (issue 12: a decision states the design's numbers)."""
+
+import tomllib
+from pathlib import Path
+
+import pytest
+
+from advisor.core.engine import advise
+from advisor.core.errors import InfeasibleError
+from advisor.core.report import to_toml
+from advisor.core.requirements import parse_requirements
+
+VALVE = Path(__file__).parent.parent / "examples" / "valve_actuator_hold.toml"
+
+
+def _doc(**tables) -> dict:
+    doc = tomllib.loads(VALVE.read_text(encoding="utf-8"))
+    for table, values in tables.items():
+        doc.setdefault(table, {}).update(values)
+    return doc
+
+
+def _report(doc: dict) -> dict:
+    return tomllib.loads(to_toml(advise(parse_requirements(doc))))
+
+
+def _decisions(rep: dict) -> dict[str, dict]:
+    return {d["id"]: d for d in rep["decisions"]}
+
+
+@pytest.fixture(scope="module")
+def by_rules() -> dict:
+    return _report(_doc())
+
+
+@pytest.mark.parametrize(
+    ("taken", "which"), [("lightest", "optimum"), ("slimmest", "optimum_min_diameter")]
+)
+def test_the_requirement_takes_the_space_reducer(by_rules, taken, which):
+    rep = _report(_doc(gearbox={"choice": taken}))
+    gb, best = rep["design"]["gearbox"], by_rules["design"]["gearbox"][which]
+    for key in ("mass_kg", "outer_diameter_mm", "length_mm", "efficiency"):
+        assert gb[key] == best[key], key
+    assert [s["ratio"] for s in gb["stages"]] == [s["ratio"] for s in best["stages"]]
+    d = _decisions(rep)
+    assert "WG-04" not in d  # "the rule design is kept" would not be true
+    wg6 = d["WG-06"]["inputs"]
+    assert wg6["taken"] == taken
+    assert wg6["rule_mass_kg"] == by_rules["design"]["gearbox"]["mass_kg"]
+    assert wg6["rule_diameter_mm"] == by_rules["design"]["gearbox"]["outer_diameter_mm"]
+    assert "as the requirement asks (gearbox.choice)" in d["WG-06"]["decision"]
+    assert not any("heavier than the lightest" in w for w in rep["warnings"])
+    # the motor works behind the reducer taken: M_m = M_out/(q·η)
+    m = rep["design"]["motor"]
+    assert m["torque_Nm"] == pytest.approx(
+        1000.0 / (gb["total_ratio"] * gb["efficiency"]), rel=1e-5
+    )
+
+
+def test_the_rules_stay_the_default(by_rules):
+    assert by_rules["requirements"]["gearbox"]["choice"] == "rules"
+    d = _decisions(by_rules)
+    assert "WG-04" in d and "WG-06" not in d
+
+
+def test_the_device_at_the_output_holds_the_output_torque(by_rules):
+    rep = _report(_doc(one_way={"location": "output_side"}))
+    ow, was = rep["design"]["one_way"], by_rules["design"]["one_way"]
+    # q = 3000/5 = 600, two stages of η = 0.8944: the motor side holds 1000/(600·0.8) N·m
+    at_motor = 1000.0 / (600 * 0.8944**2)
+    assert was["torque_Nm"] == pytest.approx(at_motor, rel=1e-5)
+    assert ow["location"] == "output side" and ow["torque_Nm"] == 1000.0
+    assert ow["type"] == was["type"] == "roller_clutch"
+    # the same clutch, now where the torque is 480 times larger, is the output_side row of
+    # the motor-side report; the motor-side clutch is shown beside it
+    assert ow["mass_kg"] == was["output_side"]["mass_kg"]
+    assert ow["motor_side"]["mass_kg"] == was["mass_kg"]
+    assert ow["motor_side"]["torque_Nm"] == pytest.approx(at_motor, rel=1e-5)
+    assert "output_side" not in ow
+    assert all(a["location"] == "output side" for a in ow["alternatives"])
+    ow1 = _decisions(rep)["OW-01"]
+    assert ow1["inputs"] == {"torque_Nm": 1000.0, "location": "output side"}
+    assert "as the requirement asks (one_way.location)" in ow1["decision"]
+
+
+def test_no_em_clutch_at_the_output_says_where_one_would_fit():
+    doc = _doc(one_way={"location": "output_side", "type": "em_clutch"})
+    with pytest.raises(InfeasibleError) as exc:
+        advise(parse_requirements(doc))
+    said = " ".join(exc.value.reasons)
+    assert "1000 N·m at the output side" in said
+    assert "one_way.location = 'motor_side'" in said
+    # at the motor side (2.08 N·m) the same clutch exists
+    advise(parse_requirements(_doc(one_way={"type": "em_clutch"})))
+
+
+def test_the_speed_choice_weighs_the_reducer_adopted():
+    """q_Σ = 3000/60 = 50: the rules split it in two stages (WG-02), whose design is too long
+    for 30 mm, so the space's lightest that fits, a single stage, is adopted. BL-02 used to
+    state the losses behind two stages (η = 0.81: 162.5 W) while the motor works behind one
+    (η = 0.9: 142.55 W)."""
+    doc = {
+        "application": {"kind": "rotary"},
+        "rotary": {"torque_Nm": 100.0, "speed_rpm": 60.0},
+        "motor": {"kind": "bldc", "candidate_speeds_rpm": [3000.0]},
+        "envelope": {"max_length_mm": 30.0},
+    }
+    rep = _report(doc)
+    d = _decisions(rep)
+    assert len(d["WG-02"]["inputs"]["ratios"]) == 2
+    assert len(rep["design"]["gearbox"]["stages"]) == 1
+    m = rep["design"]["motor"]
+    assert m["torque_Nm"] == pytest.approx(100.0 / (50 * 0.9), rel=1e-5)  # 2.2222 N·m
+    assert d["BL-02"]["inputs"]["total_loss_W"] == pytest.approx(m["losses_W"]["total"], rel=1e-5)
