@@ -68,7 +68,12 @@ def device_type(asked: str, priority: str, options: dict[str, dict]) -> Finding[
         "when self-locking, so they are not rational in a new drive; the roller clutch (no "
         "power, no loss) and the electromagnetic clutch (a few watts, least inertia at the "
         "larger torques) remain, and the one best on the stated priority is taken. "
-        f"Sized for this torque: {table}.",
+        f"Sized for this torque: {table}."
+        + "".join(
+            f" No {NAMES[k]} of the seed's range carries this torque."
+            for k in NAMES
+            if k not in options
+        ),
         {"priority": priority, "type": best},
     )
 

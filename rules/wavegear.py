@@ -238,6 +238,10 @@ def compare_with_optimum(
     )
 
 
+def _ratios(ratios: list[float]) -> str:
+    return ", ".join(f"{x:.4g}" for x in ratios)
+
+
 @rule("WG-05", "Rule design against the Pareto front of the design space", SEED_000)
 def compare_with_front(
     front_size: int,
@@ -245,6 +249,7 @@ def compare_with_front(
     adopted: dict[str, float],
     dominating: dict[str, float] | None,
     taken: str = "rules",
+    asked: str = "rules",
 ) -> Finding[str]:
     """Where the adopted reducer stands against the non-dominated set of the design space
     (mass, outer diameter, length, efficiency by eqs. (13)–(19)). ``adopted`` and
@@ -262,8 +267,9 @@ def compare_with_front(
     a, d = adopted, dominating
     return Finding(
         "dominated",
-        f"The adopted reducer is dominated by {d['ratios']} (rows {int(d['rows_out'])} at the "
-        f"output): {d['mass_kg']:.4g} kg against {a['mass_kg']:.4g} kg, "
+        f"The adopted reducer is dominated by q = {_ratios(d['ratios'])} (output first; rows "
+        f"{int(d['rows_out'])} at the output): {d['mass_kg']:.4g} kg against "
+        f"{a['mass_kg']:.4g} kg, "
         f"{d['outer_diameter_mm']:.4g} mm against {a['outer_diameter_mm']:.4g} mm outer "
         f"diameter, {d['length_mm']:.4g} mm against {a['length_mm']:.4g} mm length, "
         f"{int(d['stages'])} stages against {int(a['stages'])}; "
@@ -271,6 +277,8 @@ def compare_with_front(
             "it is kept (the seed's practice)."
             if taken == "rules"
             else f"it is kept: the requirement takes the {taken} of the space (gearbox.choice)."
+            if asked != "rules"
+            else "it is kept: the rule design does not fit the envelope (WG-06)."
         ),
         "By eqs. (13)–(19) alone a design is at least as good in every objective "
         f"({objectives}) and better in one. The seed's rules (q_out = 12…20, three rows at "
@@ -284,32 +292,48 @@ def compare_with_front(
 @rule("WG-06", "Reducer taken from the design space", SEED_000)
 def taken_from_space(
     taken: str,
+    asked: str,
     mass_kg: float,
     diameter_mm: float,
-    rule_mass_kg: float | None,
-    rule_diameter_mm: float | None,
+    rule: dict[str, float] | None,
 ) -> Finding[str]:
-    """The requirement (``gearbox.choice``) takes the lightest or the slimmest configuration
-    of the design space instead of the rule design; said beside what the rules would give
-    (``None`` where the rules give no design that fits the envelope)."""
-    rules_give = (
-        f"the rule design would weigh {rule_mass_kg:.4g} kg at Ø {rule_diameter_mm:.4g} mm"
-        if rule_mass_kg is not None and rule_diameter_mm is not None
-        else "the rules give no design that fits the envelope"
+    """The design takes the lightest or the slimmest configuration of the design space
+    instead of the rule design of WG-02 and WG-03: because the requirement asks it
+    (``gearbox.choice``), or because the rule design does not fit the envelope. ``rule``
+    holds the rule design's mass_kg, outer_diameter_mm, length_mm, stages, efficiency and
+    whether it fits (None: the envelope asks more rows than the space holds)."""
+    if rule is None:
+        rules_give = "the rules give no design: the envelope asks more rows than the space holds"
+    else:
+        rules_give = (
+            f"the rule design of WG-02 and WG-03 ({int(rule['stages'])} stages, "
+            f"{rule['mass_kg']:.4g} kg, Ø {rule['outer_diameter_mm']:.4g} × "
+            f"{rule['length_mm']:.4g} mm, η {rule['efficiency']:.3g})"
+            + ("" if rule["fits"] else " does not fit the envelope")
+            + (" is not used" if rule["fits"] else "")
+        )
+    why = (
+        "as the requirement asks (gearbox.choice)"
+        if asked != "rules"
+        else "because the rule design cannot be used"
     )
     return Finding(
         taken,
-        f"The {taken} reducer of the design space, as the requirement asks (gearbox.choice): "
-        f"{mass_kg:.4g} kg at Ø {diameter_mm:.4g} mm; {rules_give}.",
+        f"The {taken} reducer of the design space, {why}: {mass_kg:.4g} kg at "
+        f"Ø {diameter_mm:.4g} mm; {rules_give}.",
         "The seed's rules (WG-02, WG-03: q_out = 12…20, three rows at the output) are the "
         "default. The design space evaluates every stage count, ratio split and row count "
-        "by eqs. (13)–(19) within the envelope; the requirement takes its "
-        + ("least mass." if taken == "lightest" else "least outer diameter."),
+        "by eqs. (13)–(19) within the envelope; the design takes its "
+        + (
+            "least mass."
+            if taken == "lightest"
+            else "least outer diameter (of equal diameters, the least mass)."
+        ),
         {
             "taken": taken,
+            "asked": asked,
             "mass_kg": mass_kg,
             "outer_diameter_mm": diameter_mm,
-            "rule_mass_kg": rule_mass_kg,
-            "rule_diameter_mm": rule_diameter_mm,
+            **({} if rule is None else {f"rule_{k}": v for k, v in rule.items()}),
         },
     )

@@ -82,29 +82,46 @@ def rotary_requirements(draw) -> dict:
     return doc
 
 
+def _rule_ratios(rep: dict) -> list[float]:
+    """The rule design's stage ratios (motor side first), as WG-02 split the ratio."""
+    from advisor.calc import reducer as rd
+    from rules import wavegear as wg_rules
+
+    q = rep["design"]["motor"]["speed_rpm"] / rep["requirements"]["rotary"]["speed_rpm"]
+    return wg_rules.split_ratio(q, rd.STAGE_RATIO_MIN, rd.STAGE_RATIO_MAX).value[::-1]
+
+
 def check_rotary(rep: dict) -> None:
     d = _decisions(rep)
     motor, gb = rep["design"]["motor"], rep["design"]["gearbox"]
     out_first = list(reversed(gb["stages"]))
     assert d["WG-01"]["torque_Nm"] == rep["requirements"]["rotary"]["torque_Nm"]
     assert d["BL-02"]["speed_rpm"] == motor["speed_rpm"]
+    chosen = next(c for c in motor["candidates"] if c["speed_rpm"] == motor["speed_rpm"])
+    assert chosen["stages"] == len(gb["stages"])  # the stage count BL-02 weighed
     assert close(d["BL-02"]["total_loss_W"], motor["losses_W"]["total"])
     assert close(d["BL-02"]["loss_limit_W"], motor["loss_limit_W"])
-    taken = rep["requirements"]["gearbox"]["choice"]
-    if taken == "rules":
+    asked = rep["requirements"]["gearbox"]["choice"]
+    fell_back = any("is used instead" in w for w in rep["warnings"])
+    assert fell_back == (asked == "rules" and "WG-06" in d)
+    if asked == "rules" and not fell_back:  # the rules' own design
         assert "WG-06" not in d
         wg4 = d["WG-04"]
         assert close(wg4["rule_mass_kg"], gb["mass_kg"])
         assert close(wg4["rule_diameter_mm"], gb["outer_diameter_mm"])
         assert close(wg4["opt_mass_kg"], gb["optimum"]["mass_kg"])
         assert close(wg4["min_diameter_mm"], gb["optimum_min_diameter"]["outer_diameter_mm"])
-        if not any("is used instead" in w for w in rep["warnings"]):  # the rules' own design
-            assert close(d["WG-02"]["ratios"], [s["ratio"] for s in out_first])
-            assert d["WG-03"]["rows"] == [s["rows"] for s in out_first]
+        assert close(d["WG-02"]["ratios"], [s["ratio"] for s in out_first])
+        assert d["WG-03"]["rows"] == [s["rows"] for s in out_first]
     else:  # the design is the space's lightest or slimmest, as WG-06 states
         assert "WG-04" not in d
         wg6 = d["WG-06"]
-        assert wg6["taken"] == taken
+        taken = "slimmest" if asked == "slimmest" else "lightest"
+        assert wg6["taken"] == taken and wg6["asked"] == asked
+        if "rule_mass_kg" in wg6:  # the rule design WG-02 and WG-03 describe
+            assert close(d["WG-02"]["ratios"][::-1], _rule_ratios(rep))
+            assert wg6["rule_stages"] == len(d["WG-02"]["ratios"])
+            assert not (asked == "rules" and wg6["rule_fits"])  # a fallback: it does not fit
         assert close(wg6["mass_kg"], gb["mass_kg"])
         assert close(wg6["outer_diameter_mm"], gb["outer_diameter_mm"])
         best = gb["optimum"] if taken == "lightest" else gb["optimum_min_diameter"]

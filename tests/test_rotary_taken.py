@@ -48,10 +48,13 @@ def test_the_requirement_takes_the_space_reducer(by_rules, taken, which):
     d = _decisions(rep)
     assert "WG-04" not in d  # "the rule design is kept" would not be true
     wg6 = d["WG-06"]["inputs"]
-    assert wg6["taken"] == taken
-    assert wg6["rule_mass_kg"] == by_rules["design"]["gearbox"]["mass_kg"]
-    assert wg6["rule_diameter_mm"] == by_rules["design"]["gearbox"]["outer_diameter_mm"]
+    assert wg6["taken"] == wg6["asked"] == taken
+    rule = by_rules["design"]["gearbox"]
+    for key in ("mass_kg", "outer_diameter_mm", "length_mm", "efficiency"):
+        assert wg6[f"rule_{key}"] == rule[key], key
+    assert wg6["rule_stages"] == len(rule["stages"]) and wg6["rule_fits"] is True
     assert "as the requirement asks (gearbox.choice)" in d["WG-06"]["decision"]
+    assert "is not used" in d["WG-06"]["decision"]
     assert not any("heavier than the lightest" in w for w in rep["warnings"])
     # the motor works behind the reducer taken: M_m = M_out/(q·η)
     m = rep["design"]["motor"]
@@ -115,3 +118,91 @@ def test_the_speed_choice_weighs_the_reducer_adopted():
     m = rep["design"]["motor"]
     assert m["torque_Nm"] == pytest.approx(100.0 / (50 * 0.9), rel=1e-5)  # 2.2222 N·m
     assert d["BL-02"]["inputs"]["total_loss_W"] == pytest.approx(m["losses_W"]["total"], rel=1e-5)
+
+
+def test_a_rule_design_that_does_not_fit_is_said_once_and_the_lightest_taken():
+    """The same 30 mm case: WG-06 (not WG-04, which would call the lightest "the rule
+    design") says the rule design does not fit; the Compare view marks the lightest."""
+    from advisor.applications.rotary.views import compare
+
+    doc = {
+        "application": {"kind": "rotary"},
+        "rotary": {"torque_Nm": 100.0, "speed_rpm": 60.0},
+        "motor": {"kind": "bldc", "candidate_speeds_rpm": [3000.0]},
+        "envelope": {"max_length_mm": 30.0},
+    }
+    report = advise(parse_requirements(doc))
+    rep = tomllib.loads(to_toml(report))
+    d = _decisions(rep)
+    assert "WG-04" not in d
+    wg6 = d["WG-06"]["inputs"]
+    assert (wg6["taken"], wg6["asked"], wg6["rule_fits"]) == ("lightest", "rules", False)
+    assert wg6["rule_length_mm"] > 30.0 >= rep["design"]["gearbox"]["length_mm"]
+    assert "because the rule design cannot be used" in d["WG-06"]["decision"]
+    assert "does not fit the envelope" in d["WG-06"]["decision"]
+    reducer = next(s for s in compare(report) if s.title.startswith("Reducer"))
+    assert [o.label for o in reducer.options] == ["Use the slimmest"]  # the rest change nothing
+
+
+def test_the_slimmest_is_the_lightest_of_the_equally_slim():
+    """The output stage alone sets the outer diameter, so many splits share the least one:
+    of those the lightest is taken (it was 7.280 kg where 7.128 kg had the same Ø)."""
+    import numpy as np
+
+    from advisor.calc import reducer as rd
+    from advisor.calc import wavegear as wg
+
+    rep = _report(_doc())
+    slim = rep["design"]["gearbox"]["optimum_min_diameter"]
+    params = rd.ReducerParams(
+        torque_Nm=1000.0,
+        k_rb=wg.ROLLING_BODY_FACTOR["ball"],
+        stage_efficiency=0.8944,
+        density_kg_m3=7800.0,
+        fill_factor=0.75,
+    )
+    space = rd.sweep(600.0, params)
+    d_min = space.outer_diameter_mm.min()
+    lightest_of_slim = space.mass_kg[space.outer_diameter_mm == d_min].min()
+    assert slim["outer_diameter_mm"] == pytest.approx(d_min, rel=1e-6)
+    assert slim["mass_kg"] <= lightest_of_slim * (1 + 1e-6)
+    assert slim["mass_kg"] < 7.2  # not the 7.280 kg one
+    assert np.count_nonzero(space.outer_diameter_mm == d_min) > 1  # a real tie
+
+
+def test_the_loss_optimum_uses_the_efficiency_adopted_near_it():
+    """An 80 mm envelope: the space's reducer at the reference 5000 rpm has three stages
+    (η = 0.8944³ = 0.7155), near the optimum two (η = 0.8). Eq. (10) with the three-stage η
+    put the optimum at 3390 rpm; with the two-stage one, by hand: T = 1000/(1000·0.8) =
+    1.25 N·m at 5000 rpm, P_om = P_om,3 · (0.7155/0.8)² and f* = f·(P_om/P_core)^¼ ≈ 320.6 Hz,
+    3206 rpm at two pole pairs... the speed the losses of the candidates also put first."""
+    doc = _doc(
+        envelope={"max_outer_diameter_mm": 80.0},
+        motor={"candidate_speeds_rpm": [3000.0, 3206.0, 3390.0, 4000.0, 5000.0]},
+    )
+    rep = _report(doc)
+    m = rep["design"]["motor"]
+    losses = {c["speed_rpm"]: c["losses_W"]["total"] for c in m["candidates"]}
+    assert min(losses, key=losses.get) == m["speed_rpm"] == 3206.0
+    assert m["optimum_speed_rpm"] == pytest.approx(3206, abs=1.0)
+    stages = {c["speed_rpm"]: c["stages"] for c in m["candidates"]}
+    assert stages[3206.0] == len(rep["design"]["gearbox"]["stages"]) == 2
+    assert stages[5000.0] == 3  # the count adopted there, not the rules' two
+
+
+def test_the_device_types_that_cannot_carry_the_torque_are_named():
+    rep = _report(_doc(one_way={"location": "output_side"}))
+    ow2 = _decisions(rep)["OW-02"]
+    assert "No electromagnetic clutch of the seed's range carries this torque." in ow2["rationale"]
+    assert all(a["type"] != "em_clutch" for a in rep["design"]["one_way"]["alternatives"])
+
+
+def test_a_taken_reducer_that_overloads_the_motor_says_what_else_to_take():
+    rudder = Path(__file__).parent.parent / "examples" / "rudder_actuator.toml"
+    doc = tomllib.loads(rudder.read_text(encoding="utf-8"))
+    doc.setdefault("gearbox", {})["choice"] = "slimmest"
+    with pytest.raises(InfeasibleError) as exc:
+        advise(parse_requirements(doc))
+    assert "gearbox.choice = 'slimmest' takes a reducer of η" in exc.value.reasons[-1]
+    assert "'rules' or 'lightest'" in exc.value.reasons[-1]
+    assert "gearbox.choice" in str(exc.value)

@@ -273,17 +273,21 @@ def best(
     max_length_mm: float | None = None,
 ) -> int | None:
     """Index of the lightest (``"mass"``) or slimmest (``"diameter"``) configuration within
-    the envelope; ``None`` if none fits."""
-    ok = np.ones(result.mass_kg.size, bool)
-    if max_outer_diameter_mm is not None:
-        ok &= result.outer_diameter_mm <= max_outer_diameter_mm
-    if max_length_mm is not None:
-        ok &= result.length_mm <= max_length_mm
+    the envelope; ``None`` if none fits. Of equally slim ones (the output stage alone sets
+    the outer diameter, so many splits share it) the lightest."""
+    ok = _within(result, max_outer_diameter_mm, max_length_mm)
     if not ok.any():
         return None
-    key = result.mass_kg if objective == "mass" else result.outer_diameter_mm
-    masked = np.where(ok, key, np.inf)
-    return int(np.argmin(masked))
+    idx = np.flatnonzero(ok)
+    key, tie = _keys(result, objective)
+    return int(idx[np.lexsort((tie[idx], key[idx]))[0]])
+
+
+def _keys(result: SweepResult, objective: str) -> tuple[np.ndarray, np.ndarray]:
+    """The objective and its tie-break: mass (then diameter), or diameter (then mass)."""
+    if objective == "mass":
+        return result.mass_kg, result.outer_diameter_mm
+    return result.outer_diameter_mm, result.mass_kg
 
 
 #: Ratio of neighbouring intermediate grid ratios (the refinement works within one step).
@@ -313,18 +317,24 @@ def refine(
     4-stage one is 9.39 kg). Returns the ratios (output first) and output rows, or
     ``None`` if nothing fits."""
     viol = _violation(result, max_outer_diameter_mm, max_length_mm)
-    key = result.mass_kg if objective == "mass" else result.outer_diameter_mm
-    found: tuple[float, float, list[float], int] | None = None
+    key, tie = _keys(result, objective)
+    found: tuple[float, float, float, list[float], int] | None = None
     for n in _unique(result.stages):
         # a stage count none of whose grid points fits the envelope may still fit between
         # them (a sliver where the common-diameter check and the envelope both nearly hold):
         # it is polished from its least violating point, and counts once a point fits
         this = result.stages == n
-        i = _first(viol, key, this)
-        cand = (float(viol[i]), float(key[i]), result.ratios_out_to_in(i), int(result.rows_out[i]))
+        i = _first(viol, key, tie, this)
+        cand = (
+            float(viol[i]),
+            float(key[i]),
+            float(tie[i]),
+            result.ratios_out_to_in(i),
+            int(result.rows_out[i]),
+        )
         span_out, span_mid = _OUT_STEP, _MID_STEP
         for _ in range(passes if n > 1 else 0):
-            ratios, rows = cand[2], cand[3]
+            ratios, rows = cand[3], cand[4]
             out_grid = np.linspace(ratios[0] - span_out, ratios[0] + span_out, points)
             mids = ratios[1:-1]
             mid_grid = (
@@ -344,19 +354,20 @@ def refine(
             )
             if local.mass_kg.size:
                 lv = _violation(local, max_outer_diameter_mm, max_length_mm)
-                lk = local.mass_kg if objective == "mass" else local.outer_diameter_mm
-                j = _first(lv, lk)
-                if (float(lv[j]), float(lk[j])) < cand[:2]:
+                lk, lt = _keys(local, objective)
+                j = _first(lv, lk, lt)
+                if (float(lv[j]), float(lk[j]), float(lt[j])) < cand[:3]:
                     cand = (
                         float(lv[j]),
                         float(lk[j]),
+                        float(lt[j]),
                         local.ratios_out_to_in(j),
                         int(local.rows_out[j]),
                     )
             span_out, span_mid = span_out / 5.0, span_mid ** (1.0 / 5.0)
-        if cand[0] == 0.0 and (found is None or cand[1] < found[1]):
+        if cand[0] == 0.0 and (found is None or cand[1:3] < found[1:3]):
             found = cand
-    return None if found is None else (found[2], found[3])
+    return None if found is None else (found[3], found[4])
 
 
 def _violation(
@@ -375,11 +386,13 @@ def _violation(
     return np.where(inside, 0.0, np.maximum(v, np.finfo(float).tiny))
 
 
-def _first(violation: np.ndarray, key: np.ndarray, among: np.ndarray | None = None) -> int:
+def _first(
+    violation: np.ndarray, key: np.ndarray, tie: np.ndarray, among: np.ndarray | None = None
+) -> int:
     """The best index: the least violation of the envelope first (0 for every point within
-    it), then the least objective."""
+    it), then the least objective, then the least tie-break."""
     idx = np.arange(key.size) if among is None else np.flatnonzero(among)
-    return int(idx[np.lexsort((key[idx], violation[idx]))[0]])
+    return int(idx[np.lexsort((tie[idx], key[idx], violation[idx]))[0]])
 
 
 def _within(

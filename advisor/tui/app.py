@@ -95,7 +95,7 @@ Screen { layout: vertical; }
 .plot-legend { height: auto; padding: 0 1; }
 #compare-box Static { height: auto; }
 .uses { height: auto; }
-.uses Button { margin-right: 1; }
+.uses Button:focus { text-style: bold reverse; }
 .switch-row { height: auto; }
 .switch-row Label.state { padding: 1 1; }
 ModalScreen { align: center middle; }
@@ -1223,8 +1223,8 @@ class DriveAdvisorApp(App[None]):
                 bid = f"use-{self.results_version}-{len(self.use_options)}"
                 self.use_options[bid] = opt
                 buttons.append(Button(opt.label, id=bid, compact=True, classes="use"))
-            if buttons:
-                widgets.append(Horizontal(*buttons, classes="uses"))
+            if buttons:  # one per line: a row of long labels runs off a narrow screen
+                widgets.append(Vertical(*buttons, classes="uses"))
             widgets.append(Static(""))
         box.mount(*widgets)
 

@@ -47,7 +47,8 @@ def holding(report) -> str | None:
     where = f" at the {one_way.location}" if one_way.location not in ("", "none") else ""
     if one_way.type == "none":
         return f"holding: none needed{where} ({one_way.basis})" if one_way.basis else None
-    return f"holding: {one_way.type.replace('_', ' ')}{where}, {one_way.torque_Nm:.4g} N·m"
+    mass = f", {one_way.mass_kg:.3g} kg" if one_way.mass_kg is not None else ""
+    return f"holding: {one_way.type.replace('_', ' ')}{where}, {one_way.torque_Nm:.4g} N·m{mass}"
 
 
 def summary(report, previous=None) -> Group:
@@ -81,6 +82,9 @@ def changes(before, after) -> list[str]:
     h0, h1 = headline(before), headline(after)
     if h0 != h1:
         out.append(f"design: {h0} → {h1}")
+    w0, w1 = holding(before), holding(after)
+    if w0 != w1:
+        out.append(f"{w1 or 'holding: none'} (was {(w0 or 'none').removeprefix('holding: ')})")
     old = {c.name: c for c in before.checks}
     new = {c.name: c for c in after.checks}
     for name, c in new.items():

@@ -90,6 +90,7 @@ def _candidate(n: float, req: Requirements, steel, steel_mass: float, terms, par
         "frequency_Hz": f,
         "q_total": q_total,
         "split": split,
+        "stages": stages,
         "eta": eta,
         "torque_Nm": torque,
         # the winding rewound for n: current ∝ torque·n (seed 000, eq. (4)); reported only
@@ -126,6 +127,49 @@ def _stage_count(q_total: float, split: list[float], req: Requirements, params) 
     space = rd.sweep(q_total, params)
     best = _optimum(space, q_total, "diameter" if choice == "slimmest" else "mass", params, env)
     return len(best.stages) if best is not None else len(split)
+
+
+def _too_lossy(
+    cands: list[dict], limit: float, basis: str, n_opt: float, choice: str
+) -> InfeasibleError:
+    """No candidate within the frame's limit; where the requirement takes the space's
+    reducer, its efficiency may be the cause, and the other choices are named."""
+    exc = bm.too_lossy(cands, limit, basis, n_opt)
+    if choice == "rules":
+        return exc
+    other = "lightest" if choice == "slimmest" else "slimmest"
+    etas = ", ".join(sorted({f"{c['eta']:.3g}" for c in cands}))
+    return InfeasibleError(
+        exc.summary,
+        [
+            *exc.reasons,
+            f"gearbox.choice = {choice!r} takes a reducer of η = {etas}: 'rules' or "
+            f"{other!r} may leave the motor within its limit",
+        ],
+    )
+
+
+def _loss_optimum_Hz(at_ref: dict, req: Requirements, params) -> float:
+    """Seed 000, eq. (10), with K_om read at ``at_ref`` behind the efficiency of the reducer
+    the design adopts near the optimum: eq. (10) holds one η for every speed, while the
+    adopted stage count (hence η) steps with the ratio. From the reference point's η, the
+    optimum is found, the η adopted at its ratio taken, and the ohmic loss rescaled to it
+    (P_om ∝ (M/(q·η))², eq. (9)) until the stage count stays (at most four rounds)."""
+    core = at_ref["losses"]["iron"] + at_ref["losses"]["magnets"]
+    ohmic, eta, f_ref = at_ref["losses"]["ohmic"], at_ref["eta"], at_ref["frequency_Hz"]
+    f_opt = bldc.optimum_frequency_Hz(ohmic, core, f_ref)
+    for _ in range(4):
+        n = f_opt * 60.0 / req.motor.reference.pole_pairs
+        q = n / req.rotary.speed_rpm
+        split = wg_rules.split_ratio(q, rd.STAGE_RATIO_MIN, rd.STAGE_RATIO_MAX).value
+        if not split:
+            break
+        adopted = params.stage_efficiency ** _stage_count(q, split, req, params)
+        if adopted == eta:
+            break
+        ohmic, eta = ohmic * (eta / adopted) ** 2, adopted
+        f_opt = bldc.optimum_frequency_Hz(ohmic, core, f_ref)
+    return f_opt
 
 
 def advise_rotary(req: Requirements, cat: Catalogs, trace: Trace):
@@ -167,13 +211,12 @@ def advise_rotary(req: Requirements, cat: Catalogs, trace: Trace):
     at_ref = _candidate(ref.speed_rpm, req, steel, steel_mass, terms, params)
     if not at_ref["split"]:
         at_ref = min(reducible, key=lambda c: abs(math.log(c["speed_rpm"] / ref.speed_rpm)))
-    core = at_ref["losses"]["iron"] + at_ref["losses"]["magnets"]
-    f_opt = bldc.optimum_frequency_Hz(at_ref["losses"]["ohmic"], core, at_ref["frequency_Hz"])
+    f_opt = _loss_optimum_Hz(at_ref, req, params)
     n_opt = f_opt * 60.0 / ref.pole_pairs
     # the frame's limit is thermal: a speed is a candidate only if its losses are carried
     limit, basis = bm.loss_limit(mot, steel, steel_mass, terms)
     if not any(bl_rules.within_limit(c["losses"]["total"], limit) for c in reducible):
-        raise bm.too_lossy(reducible, limit, basis, n_opt)
+        raise _too_lossy(reducible, limit, basis, n_opt, gb.choice)
     if req.duty is not None:  # issue 15: only the speeds whose motor passes the cycle
         from advisor.duty import rotary as dr
 
@@ -203,29 +246,40 @@ def advise_rotary(req: Requirements, cat: Catalogs, trace: Trace):
         raise _no_reducer(space, rot.torque_Nm, env)
     design = rd.evaluate(split, rows, params) if rows else None
     warnings: list[str] = []
-    if gb.choice != "rules":  # the requirement takes the space's lightest or slimmest
-        by_rules = design if design is not None and _fits(design, env) else None
-        design = optimum if gb.choice == "lightest" else slimmest
+    by_rules = design if design is not None and _fits(design, env) else None
+    taken = "rules"
+    if gb.choice != "rules" or by_rules is None:  # the space's lightest or slimmest
+        if by_rules is None and gb.choice == "rules":
+            why = (
+                "the envelope diameter needs more rows than the design space holds"
+                if design is None
+                else f"the rule design ({design.outer_diameter_mm:.4g} mm × "
+                f"{design.length_mm:.4g} mm) does not fit the envelope"
+            )
+            warnings.append(
+                f"{why}; the lightest reducer of the design space that fits is used instead"
+            )
+        taken = "slimmest" if gb.choice == "slimmest" else "lightest"
+        rule_figures = None
+        if design is not None:
+            rule_figures = {
+                "mass_kg": design.mass_kg,
+                "outer_diameter_mm": design.outer_diameter_mm,
+                "length_mm": design.length_mm,
+                "stages": len(design.stages),
+                "efficiency": design.efficiency,
+                "fits": by_rules is not None,
+            }
+        design = optimum if taken == "lightest" else slimmest
         trace.apply(
             wg_rules.taken_from_space,
+            taken,
             gb.choice,
             design.mass_kg,
             design.outer_diameter_mm,
-            None if by_rules is None else by_rules.mass_kg,
-            None if by_rules is None else by_rules.outer_diameter_mm,
+            rule_figures,
         )
-    elif design is None or not _fits(design, env):
-        why = (
-            "the envelope diameter needs more rows than the design space holds"
-            if design is None
-            else f"the rule design ({design.outer_diameter_mm:.4g} mm × {design.length_mm:.4g} mm) "
-            "does not fit the envelope"
-        )
-        warnings.append(
-            f"{why}; the lightest reducer of the design space that fits is used instead"
-        )
-        design = optimum
-    if gb.choice == "rules":
+    if taken == "rules":
         warnings += trace.apply(
             wg_rules.compare_with_optimum,
             design.mass_kg,
@@ -233,7 +287,7 @@ def advise_rotary(req: Requirements, cat: Catalogs, trace: Trace):
             design.outer_diameter_mm,
             slimmest.outer_diameter_mm,
         )
-    pareto = _pareto(space, design, params, env, trace, gb.choice)
+    pareto = _pareto(space, design, params, env, trace, taken, gb.choice)
 
     # the motor torque follows the reducer actually adopted (its efficiency)
     motor_torque = rot.torque_Nm / (design.total_ratio * design.efficiency)
@@ -248,7 +302,7 @@ def advise_rotary(req: Requirements, cat: Catalogs, trace: Trace):
         "losses": bm.losses_at(ref, chosen["losses"]["iron"], speed, motor_torque),
     }
     if not bl_rules.within_limit(working["losses"]["total"], limit):
-        raise bm.too_lossy([working], limit, basis, n_opt)
+        raise _too_lossy([working], limit, basis, n_opt, gb.choice)
     steel_cite = cat.cite_rows(cat.steel_sources, steel.source)
     checks = _checks(design, env, working["losses"]["total"], limit, basis, steel_cite)
     motor = _motor_out(working, reducible, ref, steel, steel_mass, f_opt, n_opt, limit, basis)
@@ -359,7 +413,7 @@ def _optimum(space, q_total, objective, params, env) -> rd.Reducer | None:
     return rd.evaluate(ratios, [rows] + [2] * (len(ratios) - 1), params)
 
 
-def _pareto(space, design: rd.Reducer, params, env, trace, taken: str) -> ParetoOut:
+def _pareto(space, design: rd.Reducer, params, env, trace, taken: str, asked: str) -> ParetoOut:
     """The non-dominated set of the design space (thinned) and where ``design`` stands."""
     d_max, l_max = env.max_outer_diameter_mm, env.max_length_mm
     eta = params.stage_efficiency
@@ -379,6 +433,7 @@ def _pareto(space, design: rd.Reducer, params, env, trace, taken: str) -> Pareto
         },
         None if point is None else point.as_dict(),
         taken,
+        asked,
     )
     return ParetoOut.make(
         objectives=["least mass", "least outer diameter", "least length", "highest efficiency"],
@@ -586,7 +641,7 @@ def _motor_out(
                 speed_rpm=c["speed_rpm"],
                 electrical_frequency_Hz=c["frequency_Hz"],
                 total_ratio=c["q_total"],
-                stages=len(c["split"]),
+                stages=c["stages"],
                 gearbox_efficiency=c["eta"],
                 torque_Nm=c["torque_Nm"],
                 current_A=c["current_A"],

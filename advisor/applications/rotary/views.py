@@ -147,31 +147,20 @@ def compare(report) -> list[Any]:
         "“Use” keeps that speed alone in motor.candidate_speeds_rpm.",
     )
     r = table("reducer", "stages", "q (output first)", "Ø mm", "length mm", "mass kg", "η")
-    taken = report.requirements.get("gearbox", {}).get("choice", "rules")
-    rows = [("rules", "rules (seed 000)", g if taken == "rules" else None)]
-    rows += [
+    asked = report.requirements.get("gearbox", {}).get("choice", "rules")
+    wg6 = next((d.inputs for d in report.decisions if d.id == "WG-06"), None)
+    taken = "rules" if wg6 is None else wg6["taken"]
+    rows = [
+        ("rules", "rules (seed 000)", g if taken == "rules" else None),
         ("lightest", "lightest in the space", g.optimum),
         ("slimmest", "slimmest in the space", g.optimum_min_diameter),
     ]
     options = []
     for key, name, s in rows:
-        chosen = key == taken
-        if s is None:  # another was taken: the rules' design as WG-06 states it
-            said = next((d.inputs for d in report.decisions if d.id == "WG-06"), {})
-            mass, dia = said.get("rule_mass_kg"), said.get("rule_diameter_mm")
-            r.add_row(
-                mark(False, name),
-                "—",
-                "see WG-02, WG-03" if mass is not None else "none fits the envelope",
-                "" if dia is None else f"{dia:.4g}",
-                "",
-                "" if mass is None else f"{mass:.3g}",
-                "",
-            )
-        else:
+        if s is not None:
             ratios = ", ".join(f"{st.ratio:.4g}" for st in reversed(s.stages))
             r.add_row(
-                mark(chosen, name),
+                mark(key == taken, name),
                 str(len(s.stages)),
                 ratios,
                 f"{s.outer_diameter_mm:.4g}",
@@ -179,7 +168,19 @@ def compare(report) -> list[Any]:
                 f"{s.mass_kg:.3g}",
                 f"{s.efficiency:.3g}",
             )
-        if not chosen:
+        elif wg6 is not None and "rule_mass_kg" in wg6:  # not taken: as WG-06 states it
+            r.add_row(
+                mark(False, name),
+                str(int(wg6["rule_stages"])),
+                "see WG-02" if wg6["rule_fits"] else "does not fit the envelope",
+                f"{wg6['rule_outer_diameter_mm']:.4g}",
+                f"{wg6['rule_length_mm']:.4g}",
+                f"{wg6['rule_mass_kg']:.3g}",
+                f"{wg6['rule_efficiency']:.3g}",
+            )
+        else:
+            r.add_row(mark(False, name), "—", "none: the envelope asks more rows", "", "", "", "")
+        if key not in (taken, asked):  # a button that would change nothing is not offered
             word = "the rules" if key == "rules" else f"the {key}"
             options.append(Option(f"Use {word}", ((("gearbox", "choice"), key),)))
     why = " ".join(x for x in (decision(report, i) for i in ("WG-04", "WG-06", "WG-05")) if x)
