@@ -22,14 +22,26 @@ def main() -> None:
     for example in examples():
         req = read_requirements(example)
         to_toml(advise(req))  # warm: imports, catalog cache, first-call costs
-        times = []
+        times, parts = [], {"read": [], "advise": [], "toml": []}
         for _ in range(n):
             t0 = time.perf_counter()
-            to_toml(advise(read_requirements(example)))
-            times.append(time.perf_counter() - t0)
+            r = read_requirements(example)
+            t1 = time.perf_counter()
+            report = advise(r)
+            t2 = time.perf_counter()
+            to_toml(report)
+            t3 = time.perf_counter()
+            times.append(t3 - t0)
+            for part, t in zip(parts, (t1 - t0, t2 - t1, t3 - t2), strict=True):
+                parts[part].append(t)
         med = statistics.median(times)
-        results[example.name] = {"median_ms": med * 1e3, "runs": n}
-        line = f"{example.name:32s} warm advice (read + advise + TOML) {med * 1e3:6.2f} ms"
+        each = {part: statistics.median(ts) * 1e3 for part, ts in parts.items()}
+        results[example.name] = {"median_ms": med * 1e3, "runs": n, "parts_median_ms": each}
+        line = (
+            f"{example.name:32s} warm advice (read + advise + TOML) {med * 1e3:6.2f} ms "
+            f"(medians: read {each['read']:.2f}, advise {each['advise']:.2f}, "
+            f"TOML {each['toml']:.2f})"
+        )
         if req.application.kind == "rotary":  # the sweep, counted honestly (issue 16)
             sweep = advise(req).design.gearbox.sweep
             results[example.name]["sweep_configurations"] = sweep.configurations

@@ -278,9 +278,10 @@ def best(
     ok = _within(result, max_outer_diameter_mm, max_length_mm)
     if not ok.any():
         return None
-    idx = np.flatnonzero(ok)
     key, tie = _keys(result, objective)
-    return int(idx[np.lexsort((tie[idx], key[idx]))[0]])
+    masked = np.where(ok, key, np.inf)
+    ties = np.flatnonzero(masked == masked.min())
+    return int(ties[0] if ties.size == 1 else ties[np.argmin(tie[ties])])
 
 
 def _keys(result: SweepResult, objective: str) -> tuple[np.ndarray, np.ndarray]:

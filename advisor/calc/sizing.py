@@ -15,10 +15,14 @@ MM = 1e-3
 MPA = 1e6
 
 
+def _margin(value: float, limit: float) -> float:
+    """The margin of a check of the form value ≤ limit: limit / value."""
+    return math.inf if value <= 0 else limit / value
+
+
 def _upper(id: str, name: str, value: float, limit: float, unit: str, source: Cite) -> Check:
     """A check of the form value ≤ limit; margin = limit / value."""
-    margin = math.inf if value <= 0 else limit / value
-    return Check(id, name, value, limit, unit, margin, source)
+    return Check(id, name, value, limit, unit, _margin(value, limit), source)
 
 
 def _lower(id: str, name: str, value: float, limit: float, unit: str, source: Cite) -> Check:
@@ -121,9 +125,30 @@ def _check_sources(
     )
 
 
-def evaluate_thread(
+class _ThreadNumbers(NamedTuple):
+    """The numbers of one thread under one requirement, shared by :func:`evaluate_thread`
+    and :func:`screen_thread` so that both see the same floats."""
+
+    psi: float
+    phi: float
+    phi_low: float
+    phi_std: float
+    torque: float
+    revs: float
+    speed: float
+    turns: float
+    height: float
+    pressure: float
+    core: float
+    p_cr: float
+    slenderness: float
+    formula: str
+    #: (value, limit) of each check, in the order of ThreadEvaluation.checks
+    limits: tuple[tuple[float, float], ...]
+
+
+def _thread_numbers(
     thread: ThreadProfile,
-    *,
     force_N: float,
     stroke_m: float,
     travel_time_s: float,
@@ -133,14 +158,9 @@ def evaluate_thread(
     starts: int,
     friction_model: sc.FrictionModel,
     material: ScrewMaterial,
-) -> ThreadEvaluation:
-    """Torque, efficiency, self-locking and the strength checks of one thread.
-
-    Checks (all with margin = allowed / actual):
-    core von Mises stress ≤ σ_y / S; axial force ≤ P_cr / S_b (Euler or Johnson);
-    flank pressure ≤ [p] with the nut of :func:`nut_whole_turns` turns, H = z·P;
-    nut height ratio H/d2 ≤ ψ_max; engaged turns ≤ z_max.
-    """
+) -> _ThreadNumbers:
+    """Torque, speed, nut, core stress and buckling of one thread (see
+    :func:`evaluate_thread`), with the value and the limit of each check."""
     p = thread.pitch_mm * MM
     d2 = thread.d2_mm * MM
     d3 = thread.d3_mm * MM
@@ -167,36 +187,88 @@ def evaluate_thread(
         d3, span_m, end_fixity, material.elastic_modulus_Pa, material.yield_strength_Pa
     )
     allowed_stress = material.yield_strength_Pa / material.yield_safety_factor
-    src = _check_sources(material.yield_safety_factor, formula, end_fixity, buckling_safety_factor)
+    limits = (
+        (core / MPA, allowed_stress / MPA),
+        (force_N, p_cr / buckling_safety_factor),
+        (pressure / MPA, material.allowable_pressure_Pa / MPA),
+        (height / d2, material.nut_height_ratio_max),
+        (turns, float(material.nut_max_turns)),
+    )
+    return _ThreadNumbers(
+        psi,
+        phi,
+        phi_low,
+        phi_std,
+        torque,
+        revs,
+        speed,
+        turns,
+        height,
+        pressure,
+        core,
+        p_cr,
+        slenderness,
+        formula,
+        limits,
+    )
+
+
+def evaluate_thread(
+    thread: ThreadProfile,
+    *,
+    force_N: float,
+    stroke_m: float,
+    travel_time_s: float,
+    span_m: float,
+    end_fixity: str,
+    buckling_safety_factor: float,
+    starts: int,
+    friction_model: sc.FrictionModel,
+    material: ScrewMaterial,
+) -> ThreadEvaluation:
+    """Torque, efficiency, self-locking and the strength checks of one thread.
+
+    Checks (all with margin = allowed / actual):
+    core von Mises stress ≤ σ_y / S; axial force ≤ P_cr / S_b (Euler or Johnson);
+    flank pressure ≤ [p] with the nut of :func:`nut_whole_turns` turns, H = z·P;
+    nut height ratio H/d2 ≤ ψ_max; engaged turns ≤ z_max.
+    """
+    n = _thread_numbers(
+        thread,
+        force_N,
+        stroke_m,
+        travel_time_s,
+        span_m,
+        end_fixity,
+        buckling_safety_factor,
+        starts,
+        friction_model,
+        material,
+    )
+    psi, phi, torque = n.psi, n.phi, n.torque
+    d2 = thread.d2_mm * MM
+    f = material.friction_coefficient
+    src = _check_sources(
+        material.yield_safety_factor, n.formula, end_fixity, buckling_safety_factor
+    )
+    (
+        (core, core_max),
+        (force, force_max),
+        (pressure, pressure_max),
+        (ratio, ratio_max),
+        (
+            turns,
+            turns_max,
+        ),
+    ) = n.limits
     checks = (
-        _upper("core_stress", src.core_name, core / MPA, allowed_stress / MPA, "MPa", src.core),
+        _upper("core_stress", src.core_name, core, core_max, "MPa", src.core),
+        _upper("buckling", src.buckling_name, force, force_max, "N", src.buckling),
         _upper(
-            "buckling",
-            src.buckling_name,
-            force_N,
-            p_cr / buckling_safety_factor,
-            "N",
-            src.buckling,
+            "nut_pressure", "nut flank bearing pressure", pressure, pressure_max, "MPa", src.ivanov
         ),
-        _upper(
-            "nut_pressure",
-            "nut flank bearing pressure",
-            pressure / MPA,
-            material.allowable_pressure_Pa / MPA,
-            "MPa",
-            src.ivanov,
-        ),
-        _upper(
-            "nut_height",
-            "nut height ratio H/d2",
-            height / d2,
-            material.nut_height_ratio_max,
-            "",
-            src.ivanov,
-        ),
-        _upper(
-            "nut_turns", "engaged nut turns", turns, float(material.nut_max_turns), "", src.ivanov
-        ),
+        _upper("nut_height", "nut height ratio H/d2", ratio, ratio_max, "", src.ivanov),
+        _upper("nut_turns", "engaged nut turns", turns, turns_max, "", src.ivanov),
     )
     return ThreadEvaluation(
         thread=thread,
@@ -207,7 +279,7 @@ def evaluate_thread(
         torque_Nm=torque,
         torque_standard_Nm=torque
         if friction_model == "standard"
-        else sc.torque_from_angles(force_N, d2, psi, phi_std),
+        else sc.torque_from_angles(force_N, d2, psi, n.phi_std),
         torque_paper_Nm=torque
         if friction_model == "paper"
         else sc.torque_from_angles(force_N, d2, psi, sc.friction_angle(f, "paper", psi)),
@@ -215,19 +287,135 @@ def evaluate_thread(
         back_driving_efficiency=sc.back_driving_efficiency(psi, phi),
         # holding is physics: judged with the standard reduced friction even when the torque
         # follows the paper's f/cos(ψ/2), so it agrees with the low-friction judgement below
-        self_locking=sc.is_self_locking(psi, phi_std),
-        self_locking_at_low_friction=sc.is_self_locking(psi, phi_low),
-        revolutions=revs,
-        speed_rpm=speed,
-        nut_height_mm=height / MM,
-        nut_turns=turns,
-        nut_pressure_Pa=pressure,
-        critical_load_N=p_cr,
-        slenderness=slenderness,
-        buckling_formula=formula,
-        core_stress_Pa=core,
+        self_locking=sc.is_self_locking(psi, n.phi_std),
+        self_locking_at_low_friction=sc.is_self_locking(psi, n.phi_low),
+        revolutions=n.revs,
+        speed_rpm=n.speed,
+        nut_height_mm=n.height / MM,
+        nut_turns=n.turns,
+        nut_pressure_Pa=n.pressure,
+        critical_load_N=n.p_cr,
+        slenderness=n.slenderness,
+        buckling_formula=n.formula,
+        core_stress_Pa=n.core,
         checks=checks,
     )
+
+
+class ThreadGeometry(NamedTuple):
+    """A thread's name and the dimensions the checks use, in metres: the same conversions
+    as :func:`_thread_numbers` makes, done once per catalog."""
+
+    thread: ThreadProfile
+    name: str
+    pitch_m: float
+    d2_m: float
+    d3_m: float
+    h1_m: float
+
+
+def thread_geometry(thread: ThreadProfile) -> ThreadGeometry:
+    return ThreadGeometry(
+        thread,
+        thread.name,
+        thread.pitch_mm * MM,
+        thread.d2_mm * MM,
+        thread.d3_mm * MM,
+        thread.H1_mm * MM,
+    )
+
+
+class ThreadScreen(NamedTuple):
+    """What the joint choice of thread and motor reads of one thread: whether it passes
+    every check, its torque and its speed. The choice screens every thread of the catalog
+    with every number of starts (about a hundred per advice, issue 16); the full
+    :class:`ThreadEvaluation`, with its checks and their cited sources, is built only for
+    the threads the advice reports. The numbers are those of :func:`evaluate_thread`, to
+    the last bit (``tests/test_linear_screen.py`` holds them to it); where ``passed`` is
+    false they are nan: nothing reads them."""
+
+    thread: ThreadProfile
+    name: str
+    starts: int
+    passed: bool
+    torque_Nm: float
+    revolutions: float
+    speed_rpm: float
+    self_locking_at_low_friction: bool
+
+
+def screen_threads(
+    geometries: list[ThreadGeometry],
+    starts_options: tuple[int, ...],
+    *,
+    force_N: float,
+    stroke_m: float,
+    travel_time_s: float,
+    span_m: float,
+    end_fixity: str,
+    buckling_safety_factor: float,
+    friction_model: sc.FrictionModel,
+    material: ScrewMaterial,
+) -> list[ThreadScreen]:
+    """The screen of every thread with every number of starts, in the order thread by
+    thread, starts within (see :class:`ThreadScreen`).
+
+    Exact, and cheaper than :func:`evaluate_thread` a hundred times: the same functions of
+    :mod:`advisor.calc.screw` on the same arguments, and each margin the same quotient
+    limit / value (:func:`_margin`). Four of the five checks (buckling, flank pressure, nut
+    height, nut turns) do not depend on the number of starts: they are judged once per
+    thread, and a thread that fails one of them fails with every number of starts, so its
+    torque is not computed. Only the core stress needs the torque of each lead.
+    """
+    m = material
+    f = m.friction_coefficient
+    allowed_stress = m.yield_strength_Pa / m.yield_safety_factor
+    stress_limit = allowed_stress / MPA
+    pressure_limit = m.allowable_pressure_Pa / MPA
+    turns_limit = float(m.nut_max_turns)
+    out = []
+    for g in geometries:
+        p, d2, d3, h1 = g.pitch_m, g.d2_m, g.d3_m, g.h1_m
+        z_req = sc.nut_turns_required(force_N, d2, h1, m.allowable_pressure_Pa)
+        turns = float(nut_whole_turns(z_req, m.nut_height_ratio_min * d2 / p))
+        pressure = sc.nut_bearing_pressure(force_N, d2, h1, turns)
+        p_cr = sc.critical_buckling_load(
+            d3, span_m, end_fixity, m.elastic_modulus_Pa, m.yield_strength_Pa
+        )[0]
+        if not (
+            _margin(force_N, p_cr / buckling_safety_factor) >= 1.0
+            and _margin(pressure / MPA, pressure_limit) >= 1.0
+            and _margin(turns * p / d2, m.nut_height_ratio_max) >= 1.0
+            and _margin(turns, turns_limit) >= 1.0
+        ):
+            nan = math.nan
+            out.extend(
+                ThreadScreen(g.thread, g.name, z, False, nan, nan, nan, False)
+                for z in starts_options
+            )
+            continue
+        for z in starts_options:
+            psi = sc.lead_angle(p, d2, z)
+            torque = sc.torque_from_angles(
+                force_N, d2, psi, sc.friction_angle(f, friction_model, psi)
+            )
+            core = sc.core_equivalent_stress(force_N, torque, d3)
+            passed = _margin(core / MPA, stress_limit) >= 1.0
+            revs = sc.revolutions(stroke_m, p, z)
+            out.append(
+                ThreadScreen(
+                    g.thread,
+                    g.name,
+                    z,
+                    passed,
+                    torque if passed else math.nan,
+                    revs if passed else math.nan,
+                    sc.screw_speed_rpm(revs, travel_time_s) if passed else math.nan,
+                    passed
+                    and sc.is_self_locking(psi, sc.friction_angle(m.friction_low, "standard", psi)),
+                )
+            )
+    return out
 
 
 class MotorRow(Protocol):
@@ -301,9 +489,7 @@ def evaluate_motor(
     and is reported for comparison with fig. 4 of seed 001.
     """
     mn = motor.rated_torque_Nm
-    curve = im.fit_kloss(
-        mn, motor.rated_slip, motor.breakdown_torque_ratio, motor.starting_torque_ratio
-    )
+    curve = _fit(mn, motor.rated_slip, motor.breakdown_torque_ratio, motor.starting_torque_ratio)
     n0 = motor.synchronous_speed_rpm
     s_work = curve.stable_slip(load_torque_Nm)
     n_work = None if s_work is None else n0 * (1.0 - s_work)

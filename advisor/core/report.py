@@ -196,25 +196,39 @@ def _plain(obj: Any) -> Any:
         raise
 
 
+_floor, _log10 = math.floor, math.log10
+_KEPT = frozenset((str, int, bool))  # exact types a plain report holds as they are
+
+
 def _plain_fast(obj: Any) -> Any:
     t = type(obj)  # the exact types first: a report holds thousands of values
     if t is float:
         if obj - obj != 0.0:  # nan or ±inf, one subtraction instead of a call
             raise NonFiniteValue("a report value is not a finite number")
-        return round_sig(obj)
+        # round_sig(obj), written out: a report rounds about five hundred numbers
+        return round(obj, 5 - _floor(_log10(abs(obj)))) if obj else obj
     if t is str or t is int or t is bool:
         return obj
     if t is list or t is tuple:
         if obj and all(type(v) is float for v in obj):  # a curve: one pass, no calls per item
             if any(v - v != 0.0 for v in obj):
                 raise NonFiniteValue("a report value is not a finite number")
-            return [round_sig(v) for v in obj]
+            return [round(v, 5 - _floor(_log10(abs(v)))) if v else v for v in obj]
         return [_plain_fast(v) for v in obj if v is not None]
+    # in tables, words, counts and flags are kept without a call: they are most of the values
     if t is dict:
-        return {str(k): _plain_fast(v) for k, v in obj.items() if v is not None}
+        return {
+            str(k): v if type(v) in _KEPT else _plain_fast(v)
+            for k, v in obj.items()
+            if v is not None
+        }
     if isinstance(obj, _Out):
         values = obj.__dict__
-        return {n: _plain_fast(values[n]) for n in t.field_names if values.get(n) is not None}
+        return {
+            n: v if type(v) in _KEPT else _plain_fast(v)
+            for n in t.field_names
+            if (v := values.get(n)) is not None
+        }
     return _plain_keyed(obj, "")
 
 
@@ -287,14 +301,22 @@ def _is_curve(table: Any) -> bool:
 
 
 def _lift(node: Any, path: str, curves: dict[str, Any]) -> Any:
+    """A part of the design with its curve data moved to ``curves`` and its ``None`` values
+    dropped (one pass: what :func:`_drop_empty` does, done on the way). A table that was
+    all curve data becomes ``None``, and its parent drops it."""
     if isinstance(node, dict):
-        part = curve_part(node) if path.startswith("design") else {}
+        part = curve_part(node)
         if part:
             curves[path] = part
         out = {}
         for k, v in node.items():
-            if k not in part:
-                out[k] = _lift(v, f"{path}.{k}" if path else k, curves)
+            if v is None or k in part:
+                continue
+            if isinstance(v, dict | list):  # a path is made for containers only
+                v = _lift(v, f"{path}.{k}", curves)
+                if v is None:
+                    continue
+            out[k] = v
         return out if out or not part else None
     if isinstance(node, list):
         if not any(isinstance(v, dict | list) for v in node):  # numbers, words: as they are
@@ -318,12 +340,20 @@ def archive(doc: dict[str, Any]) -> dict[str, Any]:
     one ``[curves]`` table at the end, keyed by the table that held it
     (``"design.motion.curve"``, ``"design.motor.candidates[2].curve"``, list items counted
     from 1), so the design reads first; the table's other keys stay where they were.
+    ``None`` values are dropped (TOML has no null). Only a top-level table whose key begins
+    with ``design`` is searched for curves; the others are copied as they are.
 
     >>> archive({"design": {"m": 1.0, "curve": {"t": list(range(10))}}})["curves"]
     {'design.curve': {'t': [0, 1, 2, 3, 4, 5, 6, 7, 8, 9]}}
     """
     curves: dict[str, Any] = {}
-    out = _drop_empty(_lift(doc, "", curves))
+    out = {}
+    for k, v in doc.items():
+        if v is None:
+            continue
+        v = _lift(v, k, curves) if k.startswith("design") else _drop_empty(v)
+        if v is not None:
+            out[k] = v
     if curves:
         out["curves"] = curves
     return out

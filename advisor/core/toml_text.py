@@ -99,8 +99,18 @@ def _is_aot(v: Any) -> bool:
 def _table(table: dict, out: list[str], name: str, inside_aot: bool = False) -> None:
     literals: list[str] = []
     tables: list[tuple[str, dict, bool]] = []
+    keys, needs_escape = _keys, _ILLEGAL.search
     for k, v in table.items():
-        if isinstance(v, dict):
+        t = type(v)  # the scalars first, as key() and literal() write them: most values are
+        if t is str:
+            key_text = keys.get(k) or key(k)
+            if needs_escape(v) is None:
+                literals.append(f'{key_text} = "{v}"\n')
+            else:
+                literals.append(f"{key_text} = {string(v)}\n")
+        elif t is float or t is int:
+            literals.append(f"{keys.get(k) or key(k)} = {v}\n")
+        elif isinstance(v, dict):
             tables.append((k, v, False))
         elif _is_aot(v) and not all(_inline_fits(t) for t in v):
             tables.extend((k, t, True) for t in v)

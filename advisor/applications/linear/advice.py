@@ -5,6 +5,7 @@ Orchestration only: the rules in ``rules/`` choose, the functions in ``advisor/c
 
 import math
 from bisect import bisect_left
+from collections.abc import Callable
 from typing import NamedTuple
 
 from advisor.applications.linear.report import (
@@ -25,10 +26,14 @@ from advisor.calc.sizing import (
     MotorFit,
     ScrewMaterial,
     ThreadEvaluation,
+    ThreadGeometry,
+    ThreadScreen,
     drive_working_speed,
     evaluate_motor,
     evaluate_thread,
     fit_motor,
+    screen_threads,
+    thread_geometry,
 )
 from advisor.core.cite import cite, text
 from advisor.core.errors import InfeasibleError, InputError
@@ -36,8 +41,60 @@ from advisor.core.requirements import Requirements
 from advisor.core.rulebook import Trace
 from catalogs import Catalogs
 from catalogs.rows import InductionMotor
+from catalogs.threads import ThreadProfile
 from rules import induction as im_rules
 from rules import screw as screw_rules
+
+
+class MotorLine(NamedTuple):
+    """The catalog's motors of one pole count, in order of rated power, fitted, with the
+    running maximum along the line of the smaller of rated and starting torque (``reach``)."""
+
+    pole_pairs: int
+    fits: list[MotorFit]
+    reach: list[float]
+
+
+def motor_line(pole_pairs: int, fits: list[MotorFit]) -> MotorLine:
+    """A motor line with its reach (see :func:`drive_options`)."""
+    reach, top = [], -math.inf
+    for fit in fits:
+        top = max(top, min(fit.rated_torque_Nm, fit.starting_torque_Nm))
+        reach.append(top)
+    return MotorLine(pole_pairs, fits, reach)
+
+
+class CatalogParts(NamedTuple):
+    """What the linear advice derives from a catalog alone, whatever the requirement."""
+
+    threads: list[ThreadGeometry]  # of cat.threads, in order
+    fits: dict[int, list[MotorFit]]  # by pole pairs, lines in order of rated power
+    lines: list[MotorLine]
+
+
+#: Catalog parts by ``id`` of the catalog, with the catalog itself kept alive beside them so
+#: that its id cannot be reused by another catalog (a user catalog directory is another one).
+_PARTS: dict[int, tuple[Catalogs, CatalogParts]] = {}
+_PARTS_MAX = 8
+
+
+def _catalog_parts(cat: Catalogs) -> CatalogParts:
+    """The thread geometries and fitted motor lines of ``cat``, computed once per catalog
+    (issue 16: they do not depend on the requirement)."""
+    held = _PARTS.get(id(cat))
+    if held is not None and held[0] is cat:
+        return held[1]
+    fits = {pp: [fit_motor(m) for m in cat.motors_with_poles(2 * pp)] for pp in (1, 2, 3, 4)}
+    fits = {pp: line for pp, line in fits.items() if line}
+    parts = CatalogParts(
+        [thread_geometry(t) for t in cat.threads],
+        fits,
+        [motor_line(pp, line) for pp, line in fits.items()],
+    )
+    if len(_PARTS) >= _PARTS_MAX:
+        _PARTS.clear()
+    _PARTS[id(cat)] = (cat, parts)
+    return parts
 
 
 class MotorPlan(NamedTuple):
@@ -51,53 +108,112 @@ class MotorPlan(NamedTuple):
 STARTS_FREE = (1, 2, 3, 4)
 
 
-def drive_options(
-    evaluations: list[ThreadEvaluation], fits: dict[int, list[MotorFit]]
-) -> list[screw_rules.DriveOption]:
-    """Every (thread, starts) that passes its checks, with the smallest motor of each pole
-    count that drives it directly (the lines in ``fits`` are in order of rated power).
+def line_option(
+    ev: ThreadScreen, line: MotorLine, max_power_kW: float = math.inf
+) -> screw_rules.DriveOption | None:
+    """The smallest motor of ``line`` that drives the thread of ``ev`` directly, as a drive
+    option; ``None`` when none does (or none of at most ``max_power_kW``: the line is in
+    order of rated power, so the search stops at the first motor above it).
 
     A motor whose rated or starting torque is below the screw torque cannot drive it (the
-    first test of :func:`drive_working_speed`); along each line the running maximum of the
-    smaller of the two is kept, and a bisection on it skips those motors at once instead of
+    first test of :func:`drive_working_speed`); the line's reach is the running maximum of
+    the smaller of the two, and a bisection on it skips those motors at once instead of
     testing them one by one (issue 16: the joint choice screens every thread)."""
-    lines = []
-    for pp, line in fits.items():
-        reach, top = [], -math.inf
-        for fit in line:
-            top = max(top, min(fit.rated_torque_Nm, fit.starting_torque_Nm))
-            reach.append(top)
-        lines.append((pp, line, reach))
+    torque, fits = ev.torque_Nm, line.fits
+    for i in range(bisect_left(line.reach, torque), len(fits)):
+        fit = fits[i]
+        if fit.motor.rated_power_kW > max_power_kW:
+            return None
+        n = drive_working_speed(fit, torque, ev.speed_rpm)
+        if n is None:
+            continue
+        m, thread = fit.motor, ev.thread
+        return screw_rules.DriveOption(  # positional, in the order of its fields (faster)
+            ev.name,  # thread
+            thread.d_mm,
+            thread.pitch_mm,
+            ev.starts,
+            ev.self_locking_at_low_friction,
+            torque,  # screw_torque_Nm
+            m.model,
+            line.pole_pairs,
+            m.rated_power_kW,
+            fit.rated_torque_Nm,
+            60.0 * ev.revolutions / n,  # travel_time_s
+        )
+    return None
+
+
+def drive_options(
+    screens: list[ThreadScreen], lines: list[MotorLine]
+) -> list[screw_rules.DriveOption]:
+    """Every (thread, starts) that passes its checks, with the smallest motor of each pole
+    count that drives it directly (:func:`line_option`)."""
     out = []
-    for ev in evaluations:
+    for ev in screens:
+        if ev.passed:
+            for line in lines:
+                option = line_option(ev, line)
+                if option is not None:
+                    out.append(option)
+    return out
+
+
+def first_drive_option(
+    screens: list[ThreadScreen], lines: list[MotorLine], hold: bool
+) -> screw_rules.DriveOption | None:
+    """The option of :func:`drive_options` that comes first in the order of
+    :func:`rules.screw.drive_order` (the first of equals, as ``min`` takes it), found
+    without building most of the others.
+
+    Exact: the order compares the holding flag, then the motor's rated power, first. The
+    option of a thread on a line uses a motor at or after the line's bisection index, and a
+    line is in order of rated power, so that motor's rated power is at least the one at the
+    index. A (thread, line) whose flag and least possible rated power already compare above
+    the best option found cannot come first, and is skipped; with the same flag, the search
+    along the line stops above the best one's rated power for the same reason. Every other
+    option is built by :func:`line_option` and compared by the full order, in the order of
+    :func:`drive_options`, a later one replacing the best only when it comes strictly
+    first."""
+    best, best_key = None, None
+    for ev in screens:
         if not ev.passed:
             continue
-        torque, thread = ev.torque_Nm, ev.thread
-        name = thread.name
-        for pp, line, reach in lines:
-            for i in range(bisect_left(reach, torque), len(line)):
-                fit = line[i]
-                n = drive_working_speed(fit, torque, ev.speed_rpm)
-                if n is None:
+        flag = not ev.self_locking_at_low_friction if hold else False
+        for line in lines:
+            i = bisect_left(line.reach, ev.torque_Nm)
+            if i == len(line.fits):
+                continue  # no motor of the line drives it
+            cap = math.inf
+            if best_key is not None:
+                if (flag, line.fits[i].motor.rated_power_kW) > (best_key[0], best_key[1][0]):
                     continue
-                m = fit.motor
-                out.append(  # positional, in the order of DriveOption's fields (faster)
-                    screw_rules.DriveOption(
-                        name,  # thread
-                        thread.d_mm,
-                        thread.pitch_mm,
-                        ev.starts,
-                        ev.self_locking_at_low_friction,
-                        torque,  # screw_torque_Nm
-                        m.model,
-                        pp,  # pole_pairs
-                        m.rated_power_kW,
-                        fit.rated_torque_Nm,
-                        60.0 * ev.revolutions / n,  # travel_time_s
-                    )
-                )
-                break
-    return out
+                if flag == best_key[0]:
+                    cap = best_key[1][0]
+            option = line_option(ev, line, cap)
+            if option is None:
+                continue
+            key = screw_rules.drive_order(option, hold)
+            if best_key is None or key < best_key:
+                best, best_key = option, key
+    return best
+
+
+def choice_options(
+    screens: list[ThreadScreen], lines: list[MotorLine], imposed: str | None, hold: bool
+) -> list[screw_rules.DriveOption]:
+    """The drive options the joint choice (rule SCR-04) reads. With the thread free, all of
+    them (it counts them and ranks them all). With a thread imposed, the imposed thread's
+    options, and of the others only the one the advisor would choose itself
+    (:func:`first_drive_option`): the rule ranks, counts and lists the imposed thread's
+    options only, and names the best of all as the advisor's own choice."""
+    if imposed is None:
+        return drive_options(screens, lines)
+    options = drive_options([ev for ev in screens if ev.name == imposed], lines)
+    own = first_drive_option(screens, lines, hold)
+    if own is not None and own.thread != imposed:
+        options.append(own)
+    return options
 
 
 def plan_motor(
@@ -215,6 +331,17 @@ def advise_linear(
             f"(Tr8 … Tr100 with the pitches the standard gives); nearest: {nearest}"
         )
 
+    lean = {
+        "force_N": lin.force_N,
+        "stroke_m": lin.stroke_m,
+        "travel_time_s": lin.travel_time_s,
+        "span_m": lin.support_span_m,
+        "end_fixity": lin.end_fixity,
+        "buckling_safety_factor": lin.buckling_safety_factor,
+        "friction_model": model,
+        "material": material,
+    }
+
     def evaluate(t, starts: int) -> ThreadEvaluation:
         return evaluate_thread(
             t,
@@ -231,14 +358,17 @@ def advise_linear(
 
     freq = req.motor.supply_frequency_Hz
     starts_options = (s.starts,) if s.starts is not None else STARTS_FREE
-    evaluations = [evaluate(t, z) for t in cat.threads for z in starts_options]
-    fits = {pp: [fit_motor(m) for m in cat.motors_with_poles(2 * pp)] for pp in (1, 2, 3, 4)}
-    fits = {pp: line for pp, line in fits.items() if line}
-    options = drive_options(evaluations, fits)
+    parts = _catalog_parts(cat)
+    screens = screen_threads(parts.threads, starts_options, **lean)
+    fits = parts.fits
+    hold = req.application.hold_without_power
+    options = choice_options(screens, parts.lines, s.thread, hold)
     if s.thread is not None:
-        imposed = [ev for ev in evaluations if ev.thread.name == s.thread]
-        if not any(ev.passed for ev in imposed):
-            ev = min(imposed, key=lambda e: len(e.failed))
+        imposed = [sc for sc in screens if sc.name == s.thread]
+        if not any(sc.passed for sc in imposed):
+            ev = min(
+                (evaluate(sc.thread, sc.starts) for sc in imposed), key=lambda e: len(e.failed)
+            )
             raise InfeasibleError(
                 f"no feasible design: the imposed thread {s.thread} fails its checks",
                 [_describe(c) for c in ev.failed],
@@ -247,9 +377,12 @@ def advise_linear(
         screw_rules.choose_drive, options, req.application.hold_without_power, s.thread, s.starts
     )
     if chosen is None:
-        raise _no_drive(evaluations, s.thread, cat, lin.force_N)
-    ev = next(
-        e for e in evaluations if e.thread.name == chosen.thread and e.starts == chosen.starts
+        raise _no_drive(screens, s.thread, cat, lin.force_N, evaluate)
+    ev = evaluate(
+        next(
+            sc.thread for sc in screens if sc.name == chosen.thread and sc.starts == chosen.starts
+        ),
+        chosen.starts,
     )
     trace.apply(
         screw_rules.holding,
@@ -259,7 +392,6 @@ def advise_linear(
         chosen.label,
     )
     pool = [o for o in options if s.thread is None or o.thread == s.thread]
-    hold = req.application.hold_without_power
     pole_options = []
     for pp in fits:
         best = min(
@@ -348,7 +480,7 @@ def advise_linear(
         ),
     ]
     if sel.travel_time_s and sel.travel_time_s < FAST_SHARE * lin.travel_time_s:
-        warnings.append(_too_fast(ev, sel, plan, evaluations, cat, lin.travel_time_s))
+        warnings.append(_too_fast(ev, sel, plan, screens, cat, lin.travel_time_s))
     if duty is not None:
         checks += duty_checks
     return design, checks, warnings
@@ -369,7 +501,7 @@ def _too_fast(
     ev: ThreadEvaluation,
     sel: MotorEvaluation,
     plan: MotorPlan,
-    evaluations: list[ThreadEvaluation],
+    screens: list[ThreadScreen],
     cat: Catalogs,
     travel_time_s: float,
 ) -> str:
@@ -379,7 +511,7 @@ def _too_fast(
     v_mm_s = ev.revolutions * ev.thread.pitch_mm * ev.starts / travel_time_s
     slowest = min(cat.motors, key=lambda m: m.rated_speed_rpm)
     lead_needed_mm = v_mm_s * 60.0 / slowest.rated_speed_rpm
-    passing = [e for e in evaluations if e.passed]
+    passing = [e for e in screens if e.passed]
     finest = min(passing, key=lambda e: e.thread.pitch_mm * e.starts)
     finest_lead = finest.thread.pitch_mm * finest.starts
     text = (
@@ -428,14 +560,19 @@ def _remedy(force_N: float, failed: set[str]) -> str:
 
 
 def _no_drive(
-    evaluations: list[ThreadEvaluation], imposed: str | None, cat: Catalogs, force_N: float
+    screens: list[ThreadScreen],
+    imposed: str | None,
+    cat: Catalogs,
+    force_N: float,
+    evaluate: Callable[[ThreadProfile, int], ThreadEvaluation],
 ) -> InfeasibleError:
     """Why no thread and motor could be chosen: the checks, or the motors."""
-    pool = [ev for ev in evaluations if imposed is None or ev.thread.name == imposed]
+    pool = [ev for ev in screens if imposed is None or ev.name == imposed]
     passing = [ev for ev in pool if ev.passed]
     if not passing:
         # every thread fails a check: the largest one shows what limits the design
-        biggest = max(pool, key=lambda e: (e.thread.d_mm, e.thread.pitch_mm, -e.starts))
+        big = max(pool, key=lambda e: (e.thread.d_mm, e.thread.pitch_mm, -e.starts))
+        biggest = evaluate(big.thread, big.starts)
         return InfeasibleError(
             "no feasible design: no GOST 24738-81 thread (Tr8 … Tr100) passes every check",
             [f"{biggest.thread.name}: {_describe(c)}" for c in biggest.failed]
@@ -444,7 +581,7 @@ def _no_drive(
     speeds = sorted(ev.speed_rpm for ev in passing)
     fastest = max(m.rated_speed_rpm for m in cat.motors)
     biggest_kw = max(m.rated_power_kW for m in cat.motors)
-    names = {ev.thread.name for ev in passing}
+    names = {ev.name for ev in passing}
     reasons = [
         f"{len(names)} threads pass the strength checks; they need {speeds[0]:.4g} … "
         f"{speeds[-1]:.4g} rpm at the screw"

@@ -1,7 +1,9 @@
 """The rotary actuator advice: PM brushless motor + wave-gear reducer with rolling bodies
 (seed 000). Orchestration only: rules choose, ``advisor/calc`` computes."""
 
+import functools
 import math
+from typing import NamedTuple
 
 import numpy as np
 
@@ -102,31 +104,59 @@ def _candidate(n: float, req: Requirements, steel, steel_mass: float, terms, par
     }
 
 
-def _rows_needed(rot, env, split: list[float], params: rd.ReducerParams) -> float | None:
+def _rows_needed(
+    torque_Nm: float, d_max: float | None, split: list[float], params: rd.ReducerParams
+) -> float | None:
     """The rows the envelope diameter asks of the output stage (seed 000, the inequality
     after eq. (19)); None without a diameter limit."""
-    if not env.max_outer_diameter_mm:
+    if not d_max:
         return None
-    return float(
-        wg.rows_for_diameter(rot.torque_Nm, split[0], env.max_outer_diameter_mm, params.k_rb)
-    )
+    return float(wg.rows_for_diameter(torque_Nm, split[0], d_max, params.k_rb))
 
 
 def _stage_count(q_total: float, split: list[float], req: Requirements, params) -> int:
+    """See :func:`_adopted_stages`: the same, from a requirement."""
+    env = req.envelope
+    return _adopted_stages(
+        q_total,
+        tuple(split),
+        req.rotary.torque_Nm,
+        req.gearbox.choice,
+        env.max_outer_diameter_mm,
+        env.max_length_mm,
+        params,
+    )
+
+
+@functools.lru_cache(maxsize=64)
+def _adopted_stages(
+    q_total: float,
+    split: tuple[float, ...],
+    torque_Nm: float,
+    choice: str,
+    d_max: float | None,
+    l_max: float | None,
+    params,
+) -> int:
     """The stage count of the reducer the design adopts at ``q_total``: the rules' split
     (WG-02) where its design fits the envelope and gearbox.choice is "rules"; otherwise the
     design space's lightest (or slimmest) within the envelope, as :func:`advise_rotary`
     adopts. The rules' count where the space has none that fits (the advice then says so)."""
-    env, choice = req.envelope, req.gearbox.choice
+    env = _Envelope(d_max, l_max)
+    split = list(split)
     if choice == "rules":
-        rows = wg_rules.choose_rows(
-            len(split), _rows_needed(req.rotary, env, split, params), MAX_ROWS
-        ).value
+        needed = _rows_needed(torque_Nm, d_max, split, params)
+        rows = wg_rules.choose_rows(len(split), needed, MAX_ROWS).value
         if rows and _fits(rd.evaluate(split, rows, params), env):
             return len(split)
     space = rd.sweep(q_total, params)
     best = _optimum(space, q_total, "diameter" if choice == "slimmest" else "mass", params, env)
     return len(best.stages) if best is not None else len(split)
+
+
+class _Envelope(NamedTuple):
+    max_outer_diameter_mm: float | None
+    max_length_mm: float | None
 
 
 def _too_lossy(
@@ -176,6 +206,9 @@ def advise_rotary(req: Requirements, cat: Catalogs, trace: Trace):
     rot, mot, env, gb = req.rotary, req.motor, req.envelope, req.gearbox
     assert rot is not None and isinstance(mot, BldcMotorReq)
     ref = mot.reference
+    # shared within one advice (a candidate at the reference speed), not across advices: a
+    # repeated advice (the warm benchmark) computes everything again
+    _adopted_stages.cache_clear()
     trace.apply(bl_rules.motor_type)
     trace.apply(wg_rules.reducer_type, rot.torque_Nm)
 
@@ -237,7 +270,7 @@ def advise_rotary(req: Requirements, cat: Catalogs, trace: Trace):
     # ---- reducer
     q_total = chosen["q_total"]
     split = trace.apply(wg_rules.split_ratio, q_total, rd.STAGE_RATIO_MIN, rd.STAGE_RATIO_MAX)
-    needed = _rows_needed(rot, env, split, params)
+    needed = _rows_needed(rot.torque_Nm, env.max_outer_diameter_mm, split, params)
     rows = trace.apply(wg_rules.choose_rows, len(split), needed, MAX_ROWS)
     space = rd.sweep(q_total, params)
     optimum = _optimum(space, q_total, "mass", params, env)
