@@ -132,7 +132,7 @@ def run_batch(
 
     pydantic_plugins.disable()  # the advisor uses no pydantic plugin: no metadata scan
     from advisor.core.engine import advise
-    from advisor.core.requirements import read_requirements
+    from advisor.core.reading import read_requirements
     from advisor.io_safety import OutputError, check_target, same_file, show, write_atomic
 
     if fmt is None:

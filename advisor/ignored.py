@@ -19,6 +19,11 @@ IGNORED_PREFIX = "ignored: "
 def holds(kind: str) -> bool:
     """Whether an application's design can include a one-way holding device (seed 004): its
     requirement model has a ``[one_way]`` table (linear and rotary actuators)."""
+    from advisor.core.light import has_table
+
+    known = has_table(kind, "one_way")  # the compiled spec: no pydantic on the batch path
+    if known is not None:
+        return known
     from advisor.core.registry import requirements_model
 
     return "one_way" in requirements_model(kind).model_fields
@@ -62,7 +67,7 @@ def ignored(req: Any) -> list[str]:
             "false: no holding device is chosen (set it true to choose one)"
         )
     duty = getattr(req, "duty", None)
-    if duty is not None and "duty_type" in type(duty).model_fields:
+    if duty is not None and hasattr(duty, "duty_type"):
         form = duty.duty_type
         uses = dict(DUTY_KEYS_USED)
         if req.application.kind == "rotary":  # its S2 runs as S1 over cycle_time_s

@@ -97,9 +97,9 @@ def report_name(source: Path, taken: set[str]) -> str:
 def advise_one(source: Path, target: Path, catalog_dir: Path | None) -> Outcome:
     """Advise one file and write its report; every failure becomes an Outcome."""
     from advisor.core.engine import advise
+    from advisor.core.reading import read_requirements
     from advisor.core.registry import headline
     from advisor.core.report import to_toml, write_atomic
-    from advisor.core.requirements import read_requirements
     from advisor.io_safety import same_file, show
 
     try:
@@ -183,7 +183,12 @@ def preload(catalog_dir: Path | None) -> None:
 
     from advisor.core import registry, requirements
 
-    for module in ("advisor.core.engine", "advisor.core.report", "advisor.ignored"):
+    for module in (
+        "advisor.core.engine",
+        "advisor.core.report",
+        "advisor.ignored",
+        "advisor.core.light",
+    ):
         import_module(module)
     requirements._Head.model_rebuild(force=True)
     for app in registry.applications():

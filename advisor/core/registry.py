@@ -107,3 +107,11 @@ def expected_text(values: tuple[str, ...]) -> str:
     """``'a', 'b' or 'c'``: the allowed values, worded as pydantic words a literal error."""
     quoted = [repr(v) for v in values]
     return quoted[0] if len(quoted) == 1 else ", ".join(quoted[:-1]) + " or " + quoted[-1]
+
+
+def registered(kind: str) -> str:
+    """``kind`` if an application registers it, else a ValueError (the compiled validator's
+    check of ``application.kind``; the model's own says it in pydantic's words)."""
+    if kind not in kinds():
+        raise ValueError(f"unknown application kind {kind!r}")
+    return kind

@@ -11,7 +11,14 @@ import math
 from pathlib import Path
 from typing import Annotated, Any, Literal
 
-from pydantic import BaseModel, ConfigDict, Field, ValidationError, field_validator
+from pydantic import (
+    BaseModel,
+    ConfigDict,
+    Field,
+    ValidationError,
+    field_validator,
+    model_validator,
+)
 from pydantic_core import PydanticCustomError
 
 from advisor.core.errors import InputError
@@ -95,6 +102,35 @@ def _num(
     return ask(desc, gt=gt, le=le, ge=ge, allow_inf_nan=False, **question)
 
 
+def light_name(fn: Any) -> str:
+    """``module:qualname`` of a pydantic-free function (what the compiled spec names)."""
+    return f"{fn.__module__}:{fn.__qualname__}"
+
+
+def after_check(check: Any) -> Any:
+    """A model validator running ``check(model)``: a pure function in a pydantic-free module,
+    which raises ValueError with the message. The compiled validator of
+    :mod:`advisor.core.light` runs the same function, so the rule is written once."""
+
+    def run(self: Any) -> Any:
+        check(self)
+        return self
+
+    run.__light__ = light_name(check)  # type: ignore[attr-defined]
+    return model_validator(mode="after")(run)
+
+
+def field_check(field: str, check: Any) -> Any:
+    """A field validator returning ``check(value)`` (pure, pydantic-free; see
+    :func:`after_check`)."""
+
+    def run(cls: Any, v: Any) -> Any:
+        return check(v)
+
+    run.__light__ = light_name(check)  # type: ignore[attr-defined]
+    return field_validator(field)(classmethod(run))
+
+
 def _kind_schema(schema: dict[str, Any]) -> None:
     from advisor.core.registry import kinds
 
@@ -116,8 +152,6 @@ class ApplicationReq(_Strict):
         str, ask("a label for the report", label="Title for the report", max_length=200)
     ] = ""
 
-    @field_validator("kind")
-    @classmethod
     def _registered(cls, v: str) -> str:
         from advisor.core.registry import expected_text, kinds
 
@@ -126,6 +160,11 @@ class ApplicationReq(_Strict):
                 "literal_error", "Input should be {expected}", {"expected": expected_text(kinds())}
             )
         return v
+
+    # the compiled validator's twin, advisor.core.registry.registered (the message stays
+    # pydantic's: a document the compiled validator refuses is validated again by this model)
+    _registered.__light__ = "advisor.core.registry:registered"  # type: ignore[attr-defined]
+    _registered = field_validator("kind")(classmethod(_registered))  # type: ignore[assignment]
 
 
 class OneWayReq(_Strict):

@@ -8,9 +8,8 @@ parameters.
 
 from typing import Annotated, Literal
 
-from pydantic import model_validator
-
-from advisor.core.requirements import _num, _Strict, ask
+from advisor.core.requirements import _num, _Strict, after_check, ask
+from advisor.duty import requirement_checks as checks
 
 STEP = 4  # the wizard step that asks the duty
 
@@ -73,11 +72,7 @@ class LinearSegmentReq(_Segment):
         ),
     ] = None
 
-    @model_validator(mode="after")
-    def _move_has_distance(self) -> "LinearSegmentReq":
-        if self.kind == "move" and self.distance_m is None:
-            raise ValueError("duty.segments: a move needs distance_m (its path, m)")
-        return self
+    _move_has_distance = after_check(checks.move_has_distance)
 
 
 class RotarySegmentReq(_Segment):
@@ -124,11 +119,7 @@ class RotarySegmentReq(_Segment):
         ),
     ] = None
 
-    @model_validator(mode="after")
-    def _move_has_angle(self) -> "RotarySegmentReq":
-        if self.kind == "move" and self.angle_deg is None:
-            raise ValueError("duty.segments: a move needs angle_deg (its angle at the output)")
-        return self
+    _move_has_angle = after_check(checks.move_has_angle)
 
 
 class LoadShareReq(_Strict):
@@ -207,50 +198,7 @@ class _CycleDuty(_Strict):
         ask("S9, S10: the loads as shares of the rated load with their time shares", max_length=20),
     ] = []  # noqa: RUF012 - pydantic copies field defaults
 
-    @model_validator(mode="after")
-    def _one_form(self):
-        segs = getattr(self, "segments", [])
-        t = self.duty_type
-        if t is None and not segs:
-            raise ValueError("duty: give segments (move, dwell, hold) or a duty_type (S1…S10)")
-        if t is not None and segs:
-            raise ValueError("duty: give either segments or duty_type, not both")
-        if segs:
-            if self.cycles_per_hour is None:
-                raise ValueError("duty.cycles_per_hour: missing; required with segments")
-            total = sum(s.time_s for s in segs)
-            if total > 3600.0 / self.cycles_per_hour * (1 + 1e-9):
-                raise ValueError(
-                    f"duty: the segments take {total:g} s, longer than the cycle of "
-                    f"3600/{self.cycles_per_hour:g} = {3600.0 / self.cycles_per_hour:.4g} s"
-                )
-            if not any(s.kind == "move" for s in segs):
-                raise ValueError("duty.segments: the cycle needs at least one move")
-            return self
-        need = {
-            "S2": ["duration_min"],
-            "S3": ["cyclic_duration_factor"],
-            "S4": ["cyclic_duration_factor", "starts_per_hour"],
-            "S5": ["cyclic_duration_factor", "starts_per_hour"],
-            "S6": ["cyclic_duration_factor"],
-            "S7": ["starts_per_hour"],
-            "S9": ["loads"],
-            "S10": ["loads"],
-        }.get(t, [])
-        for key in need:
-            if not getattr(self, key):
-                raise ValueError(f"duty.{key}: missing; required for duty_type = {t!r}")
-        if t == "S8":
-            raise ValueError(
-                "duty.duty_type = 'S8': S8 is the duty of a pole-changing motor with related "
-                "load and speed changes; give the cycle as segments instead"
-            )
-        if t in ("S9", "S10") and abs(sum(x.time_share for x in self.loads) - 1.0) > 1e-6:
-            raise ValueError(
-                f"duty.loads: the time shares add up to "
-                f"{sum(x.time_share for x in self.loads):g}; they must add up to 1"
-            )
-        return self
+    _one_form = after_check(checks.one_form)
 
 
 class LinearDutyReq(_CycleDuty):

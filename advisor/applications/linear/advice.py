@@ -37,7 +37,7 @@ from advisor.calc.sizing import (
 )
 from advisor.core.cite import cite, text
 from advisor.core.errors import InfeasibleError, InputError
-from advisor.core.requirements import Requirements
+from advisor.core.reading import Requirements
 from advisor.core.rulebook import Trace
 from catalogs import Catalogs
 from catalogs.rows import InductionMotor

@@ -1,11 +1,19 @@
 """Requirements of the linear actuator (seed 001): induction motor + sliding screw–nut."""
 
-import re
 from typing import Annotated, Literal
 
-from pydantic import Field, field_validator, model_validator
+from pydantic import Field
 
-from advisor.core.requirements import ApplicationReq, OneWayReq, _num, _Strict, ask
+from advisor.applications.linear import requirement_checks as checks
+from advisor.core.requirements import (
+    ApplicationReq,
+    OneWayReq,
+    _num,
+    _Strict,
+    after_check,
+    ask,
+    field_check,
+)
 from advisor.duty.requirements import LinearDutyReq
 
 
@@ -48,14 +56,7 @@ class LinearReq(_Strict):
         float, _num(ge=1, le=20, desc="required margin against buckling; 1 … 20")
     ] = 3.0
 
-    @model_validator(mode="after")
-    def _stroke_fits(self) -> "LinearReq":
-        if self.stroke_m > self.support_span_m:
-            raise ValueError(
-                f"linear.stroke_m = {self.stroke_m:g} is longer than linear.support_span_m = "
-                f"{self.support_span_m:g}: the nut must travel between the supports"
-            )
-        return self
+    _stroke_fits = after_check(checks.stroke_fits)
 
 
 class InductionMotorReq(_Strict):
@@ -64,15 +65,7 @@ class InductionMotorReq(_Strict):
         float, _num(gt=0, desc="supply frequency, Hz", label="Supply frequency", step=3)
     ] = 50.0
 
-    @field_validator("supply_frequency_Hz")
-    @classmethod
-    def _fifty(cls, v: float) -> float:
-        if v != 50.0:
-            raise ValueError("must be 50: the induction motor catalog holds 50 Hz ratings")
-        return v
-
-
-THREAD_RE = re.compile(r"^Tr\s*(\d+(?:\.\d+)?)\s*[x×]\s*(\d+(?:\.\d+)?)$", re.IGNORECASE)
+    _fifty = field_check("supply_frequency_Hz", checks.fifty)
 
 
 class ScrewReq(_Strict):
@@ -111,21 +104,7 @@ class ScrewReq(_Strict):
     lubrication: Annotated[Literal["oil", "dry"], Field(description="thread lubrication")] = "oil"
     screw_steel: Annotated[Literal["45", "40X"], Field(description="screw steel grade")] = "45"
 
-    @field_validator("thread")
-    @classmethod
-    def _thread_form(cls, v: str | None) -> str | None:
-        if v is None:
-            return v
-        m = THREAD_RE.match(v.strip())
-        if not m:
-            raise ValueError("must be a trapezoidal thread written like Tr16x2 (d x P in mm)")
-        d, pitch = float(m.group(1)), float(m.group(2))
-        if round(d, 2) != d or round(pitch, 2) != pitch:  # GOST 24738 sizes: 2 decimals at most
-            raise ValueError(
-                "is not a GOST 24738 size: diameter and pitch are whole millimetres or "
-                "halves (Tr16x2, Tr10x1.5)"
-            )
-        return f"Tr{d:g}x{pitch:g}"
+    _thread_form = field_check("thread", checks.thread_form)
 
 
 class LinearRequirements(_Strict):

@@ -12,7 +12,7 @@ from advisor.applications.positioning.report import (
 from advisor.calc import motion as mo
 from advisor.calc.checks import Check
 from advisor.core.errors import InfeasibleError
-from advisor.core.requirements import Requirements
+from advisor.core.reading import Requirements
 from advisor.core.rulebook import Trace
 from catalogs import Catalogs
 from rules import motion as mo_rules

@@ -6,15 +6,11 @@ advice computes finite: the ratios searched are 10⁻³ … 10⁶ (advisor/calc/
 
 from typing import Annotated, Literal
 
-from pydantic import Field, field_validator, model_validator
+from pydantic import Field
 
-from advisor.core.requirements import ApplicationReq, _num, _Strict, ask
+from advisor.applications.positioning import requirement_checks as checks
+from advisor.core.requirements import ApplicationReq, _num, _Strict, after_check, ask, field_check
 from advisor.duty.requirements import PositioningDutyReq
-
-#: The smallest non-zero load inertia and load torque taken as a load; below them the value
-#: is either 0 (no such load) or a typing error.
-LOAD_INERTIA_MIN_KGM2 = 1e-9
-LOAD_TORQUE_MIN_NM = 1e-6
 
 
 class CandidateMotor(_Strict):
@@ -107,32 +103,11 @@ class PositioningReq(_Strict):
         ),
     ] = []  # noqa: RUF012 - pydantic copies field defaults
 
-    @field_validator("load_inertia_kgm2")
-    @classmethod
-    def _inertia_zero_or_range(cls, v: float) -> float:
-        if 0 < v < LOAD_INERTIA_MIN_KGM2:
-            raise ValueError(f"must be 0 or from {LOAD_INERTIA_MIN_KGM2:g} to 1e+07 kg·m²")
-        return v
+    _inertia_zero_or_range = field_check("load_inertia_kgm2", checks.inertia_zero_or_range)
 
-    @field_validator("load_torque_Nm")
-    @classmethod
-    def _torque_zero_or_range(cls, v: float) -> float:
-        if 0 < v < LOAD_TORQUE_MIN_NM:
-            raise ValueError(f"must be 0 or from {LOAD_TORQUE_MIN_NM:g} to 1e+07 N·m")
-        return v
+    _torque_zero_or_range = field_check("load_torque_Nm", checks.torque_zero_or_range)
 
-    @model_validator(mode="after")
-    def _unique_names(self) -> "PositioningReq":
-        if self.load_inertia_kgm2 == 0 and self.load_torque_Nm == 0:
-            raise ValueError(
-                "positioning.load_inertia_kgm2 and positioning.load_torque_Nm are both 0: "
-                "with no load the fastest ratio tends to zero; give the load's inertia or torque"
-            )
-        names = [m.name for m in self.motors]
-        dup = {n for n in names if names.count(n) > 1}
-        if dup:
-            raise ValueError(f"positioning.motors: the name {sorted(dup)[0]!r} is used twice")
-        return self
+    _unique_names = after_check(checks.unique_names)
 
 
 class PositioningRequirements(_Strict):
@@ -148,13 +123,4 @@ class PositioningRequirements(_Strict):
         Field(description="the [duty] table: cycle_time_s (optional: the move repeated)"),
     ] = None
 
-    @model_validator(mode="after")
-    def _rated_for_duty(self) -> "PositioningRequirements":
-        if self.duty is not None:
-            for k, m in enumerate(self.positioning.motors, 1):
-                if m.rated_torque_Nm is None:
-                    raise ValueError(
-                        f"positioning.motors[{k}].rated_torque_Nm: missing; required when "
-                        "[duty] is given (continuous (S1) torque, N·m)"
-                    )
-        return self
+    _rated_for_duty = after_check(checks.rated_for_duty)

@@ -23,14 +23,13 @@ from advisor.applications.rotary.report import (
     SteelOut,
     SweepOut,
 )
-from advisor.applications.rotary.requirements import BldcMotorReq
 from advisor.calc import bldc
 from advisor.calc import reducer as rd
 from advisor.calc import wavegear as wg
 from advisor.calc.checks import Check
 from advisor.core.cite import Cite, note
 from advisor.core.errors import InfeasibleError, InputError
-from advisor.core.requirements import Requirements
+from advisor.core.reading import Requirements
 from advisor.core.rulebook import Trace
 from catalogs import Catalogs
 from rules import bldc as bl_rules
@@ -78,7 +77,7 @@ def _candidate(n: float, req: Requirements, steel, steel_mass: float, terms, par
     speed choice (BL-02) weighs is the one the design then has."""
     rot = req.rotary
     mot = req.motor
-    assert rot is not None and isinstance(mot, BldcMotorReq)
+    assert rot is not None and mot.kind == "bldc"
     ref = mot.reference
     q_total = n / rot.speed_rpm
     split = wg_rules.split_ratio(q_total, rd.STAGE_RATIO_MIN, rd.STAGE_RATIO_MAX).value
@@ -204,7 +203,7 @@ def _loss_optimum_Hz(at_ref: dict, req: Requirements, params) -> float:
 
 def advise_rotary(req: Requirements, cat: Catalogs, trace: Trace):
     rot, mot, env, gb = req.rotary, req.motor, req.envelope, req.gearbox
-    assert rot is not None and isinstance(mot, BldcMotorReq)
+    assert rot is not None and mot.kind == "bldc"
     ref = mot.reference
     # shared within one advice (a candidate at the reference speed), not across advices: a
     # repeated advice (the warm benchmark) computes everything again

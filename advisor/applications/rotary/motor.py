@@ -10,8 +10,8 @@ in :mod:`rules.bldc`.
 """
 
 import math
+from typing import Any
 
-from advisor.applications.rotary.requirements import BldcMotorReq
 from advisor.calc import bldc
 from advisor.calc.checks import Check
 from advisor.core.cite import Cite
@@ -41,7 +41,7 @@ def losses_at(ref, iron_W: float, n: float, torque: float) -> dict[str, float]:
     return losses
 
 
-def loss_limit(mot: BldcMotorReq, steel, steel_mass: float, terms) -> tuple[float, str]:
+def loss_limit(mot: Any, steel, steel_mass: float, terms) -> tuple[float, str]:
     """What the frame's cooling carries: the requirement's own figure, or the reference
     motor's total losses at its rated point (same frame, same cooling)."""
     if mot.max_losses_W is not None:

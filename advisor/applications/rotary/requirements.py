@@ -12,9 +12,18 @@ computes finite (issue 13).
 
 from typing import Annotated, Literal
 
-from pydantic import Field, field_validator, model_validator
+from pydantic import Field
 
-from advisor.core.requirements import ApplicationReq, OneWayReq, _num, _Strict, ask
+from advisor.applications.rotary import requirement_checks as checks
+from advisor.core.requirements import (
+    ApplicationReq,
+    OneWayReq,
+    _num,
+    _Strict,
+    after_check,
+    ask,
+    field_check,
+)
 from advisor.duty.requirements import RotaryDutyReq
 
 
@@ -111,15 +120,7 @@ class ReferenceMotor(_Strict):
         MagnetLossPoint.model_construct(speed_rpm=10000.0, loss_W=100.0),
     ]
 
-    @model_validator(mode="after")
-    def _one_loss_per_speed(self) -> "ReferenceMotor":
-        speeds = [p.speed_rpm for p in self.magnet_losses]
-        if len(set(speeds)) < len(speeds):
-            raise ValueError(
-                "motor.reference.magnet_losses: two points at one speed_rpm; give one loss_W "
-                "per speed"
-            )
-        return self
+    _one_loss_per_speed = after_check(checks.one_loss_per_speed)
 
 
 class BldcMotorReq(_Strict):
@@ -147,14 +148,7 @@ class BldcMotorReq(_Strict):
     ] = None
     reference: ReferenceMotor = ReferenceMotor.model_construct()
 
-    @field_validator("candidate_speeds_rpm")
-    @classmethod
-    def _each_speed_once(cls, v: list[float]) -> list[float]:
-        twice = sorted({x for x in v if v.count(x) > 1})
-        if twice:  # the comparison would show one candidate where the list names two
-            said = ", ".join(f"{x:g}" for x in twice)
-            raise ValueError(f"{said} rpm given more than once: name each speed once")
-        return v
+    _each_speed_once = field_check("candidate_speeds_rpm", checks.each_speed_once)
 
 
 class GearboxReq(_Strict):
@@ -216,12 +210,4 @@ class RotaryRequirements(_Strict):
         Field(description="the [duty] table: segments with cycles_per_hour, or duty_type"),
     ] = None
 
-    @model_validator(mode="after")
-    def _reducer_reduces(self) -> "RotaryRequirements":
-        slowest = min(self.motor.candidate_speeds_rpm)
-        if self.rotary.speed_rpm >= slowest:
-            raise ValueError(
-                f"rotary.speed_rpm = {self.rotary.speed_rpm:g} is not below the slowest "
-                f"motor.candidate_speeds_rpm ({slowest:g}): the reducer lowers the speed"
-            )
-        return self
+    _reducer_reduces = after_check(checks.reducer_reduces)

@@ -47,7 +47,7 @@ def loss_curve(report, points: int = 40) -> list[dict]:
     from advisor.calc import bldc
     from advisor.calc import reducer as rd
     from advisor.calc import wavegear as wg
-    from advisor.core.requirements import parse_requirements
+    from advisor.core.reading import parse_requirements
     from catalogs import load_catalogs
 
     req = parse_requirements(report.requirements)

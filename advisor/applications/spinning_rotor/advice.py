@@ -20,7 +20,7 @@ from advisor.calc import rotor as ro
 from advisor.calc.checks import Check
 from advisor.core.cite import cite, text
 from advisor.core.errors import InputError
-from advisor.core.requirements import Requirements
+from advisor.core.reading import Requirements
 from advisor.core.rulebook import Trace
 from catalogs import Catalogs
 from catalogs.rows import Bearing

@@ -3,9 +3,14 @@ bearings carry the gyroscopic reaction when its housing is turned."""
 
 from typing import Annotated, Any
 
-from pydantic import Field, field_validator, model_validator
+from pydantic import Field
 
-from advisor.core.requirements import ApplicationReq, _num, _Strict, ask
+from advisor.applications.spinning_rotor import requirement_checks as checks
+from advisor.applications.spinning_rotor.requirement_checks import (
+    MIN_SLEW_RATE_rad_s,
+    RotorDerived,
+)
+from advisor.core.requirements import ApplicationReq, _num, _Strict, after_check, ask, field_check
 
 
 def _rng(lo: float, hi: float, desc: str, *, open_lo: bool = False, **question: Any) -> Any:
@@ -16,10 +21,6 @@ def _rng(lo: float, hi: float, desc: str, *, open_lo: bool = False, **question: 
     if open_lo:
         return _num(gt=lo, le=hi, desc=f"{desc}; {low} to {hi:g}", **question)
     return _num(ge=lo, le=hi, desc=f"{desc}; {low} to {hi:g}", **question)
-
-
-#: The slowest slew taken as one (Earth's rate is 7.3e-5 rad/s); below it give 0, no slew.
-MIN_SLEW_RATE_rad_s = 1e-6
 
 
 class AeroReq(_Strict):
@@ -62,28 +63,10 @@ class AeroReq(_Strict):
         float, _rng(1e-6, 0.1, "kinematic viscosity of that gas ν, m²/s")
     ] = 1.516e-5
 
-    @model_validator(mode="after")
-    def _one_way(self) -> "AeroReq":
-        geometry = self.outer_radius_mm is not None or self.outer_length_mm is not None
-        if self.loss_W is not None and geometry:
-            raise ValueError(
-                "rotor.aero: give either loss_W or the cup geometry (outer_radius_mm, "
-                "outer_length_mm), not both"
-            )
-        if self.loss_W is None and (self.outer_radius_mm is None or self.outer_length_mm is None):
-            raise ValueError(
-                "rotor.aero: give loss_W (W at the design speed) or both outer_radius_mm and "
-                "outer_length_mm"
-            )
-        if self.outer_radius_mm is not None and self.inner_radius_mm >= self.outer_radius_mm:
-            raise ValueError(
-                f"rotor.aero.inner_radius_mm = {self.inner_radius_mm:g} must be below "
-                f"outer_radius_mm = {self.outer_radius_mm:g}"
-            )
-        return self
+    _one_way = after_check(checks.aero_one_way)
 
 
-class RotorReq(_Strict):
+class RotorReq(RotorDerived, _Strict):
     mass_kg: Annotated[float, _rng(1e-3, 1e4, "rotor mass, kg", label="Rotor mass", step=1)]
     angular_momentum_kgm2_s: Annotated[
         float | None,
@@ -176,33 +159,9 @@ class RotorReq(_Strict):
     ] = None
     aero: Annotated[AeroReq, Field(description="the [rotor.aero] table: loss_W or cup geometry")]
 
-    @field_validator("slew_rate_rad_s")
-    @classmethod
-    def _slew_or_none(cls, v: float) -> float:
-        if 0.0 < v < MIN_SLEW_RATE_rad_s:
-            raise ValueError(
-                f"must be 0 (no slew) or at least {MIN_SLEW_RATE_rad_s:g} (Earth's rate is 7.3e-05)"
-            )
-        return v
+    _slew_or_none = field_check("slew_rate_rad_s", checks.slew_or_none)
 
-    @model_validator(mode="after")
-    def _momentum_or_inertia(self) -> "RotorReq":
-        if (self.angular_momentum_kgm2_s is None) == (self.inertia_kgm2 is None):
-            raise ValueError(
-                "rotor: give exactly one of angular_momentum_kgm2_s (H at speed) and "
-                "inertia_kgm2 (J); H = J·ω"
-            )
-        return self
-
-    @property
-    def inertia(self) -> float:
-        if self.inertia_kgm2 is not None:
-            return self.inertia_kgm2
-        return self.angular_momentum_kgm2_s / self.speed_rad_s
-
-    @property
-    def angular_momentum(self) -> float:
-        return self.inertia * self.speed_rad_s
+    _momentum_or_inertia = after_check(checks.momentum_or_inertia)
 
 
 class SpinningRotorRequirements(_Strict):

@@ -1,0 +1,44 @@
+"""The positioning requirement's own rules, free of pydantic: run by the requirement models
+(:mod:`advisor.applications.positioning.requirements`) and by the compiled validator of the
+batch path (:mod:`advisor.core.light`). Each raises ValueError with the message the user reads."""
+
+from typing import Any
+
+#: The smallest non-zero load inertia and load torque taken as a load; below them the value
+#: is either 0 (no such load) or a typing error.
+LOAD_INERTIA_MIN_KGM2 = 1e-9
+LOAD_TORQUE_MIN_NM = 1e-6
+
+
+def inertia_zero_or_range(v: float) -> float:
+    if 0 < v < LOAD_INERTIA_MIN_KGM2:
+        raise ValueError(f"must be 0 or from {LOAD_INERTIA_MIN_KGM2:g} to 1e+07 kg·m²")
+    return v
+
+
+def torque_zero_or_range(v: float) -> float:
+    if 0 < v < LOAD_TORQUE_MIN_NM:
+        raise ValueError(f"must be 0 or from {LOAD_TORQUE_MIN_NM:g} to 1e+07 N·m")
+    return v
+
+
+def unique_names(pos: Any) -> None:
+    if pos.load_inertia_kgm2 == 0 and pos.load_torque_Nm == 0:
+        raise ValueError(
+            "positioning.load_inertia_kgm2 and positioning.load_torque_Nm are both 0: "
+            "with no load the fastest ratio tends to zero; give the load's inertia or torque"
+        )
+    names = [m.name for m in pos.motors]
+    dup = {n for n in names if names.count(n) > 1}
+    if dup:
+        raise ValueError(f"positioning.motors: the name {sorted(dup)[0]!r} is used twice")
+
+
+def rated_for_duty(req: Any) -> None:
+    if req.duty is not None:
+        for k, m in enumerate(req.positioning.motors, 1):
+            if m.rated_torque_Nm is None:
+                raise ValueError(
+                    f"positioning.motors[{k}].rated_torque_Nm: missing; required when "
+                    "[duty] is given (continuous (S1) torque, N·m)"
+                )

@@ -1,0 +1,31 @@
+"""The rotary requirement's own rules, free of pydantic: the requirement models run them as
+validators (:mod:`advisor.applications.rotary.requirements`), and so does the compiled
+validator of the batch path (:mod:`advisor.core.light`). Each raises ValueError with the
+message the user reads."""
+
+from typing import Any
+
+
+def one_loss_per_speed(ref: Any) -> None:
+    speeds = [p.speed_rpm for p in ref.magnet_losses]
+    if len(set(speeds)) < len(speeds):
+        raise ValueError(
+            "motor.reference.magnet_losses: two points at one speed_rpm; give one loss_W per speed"
+        )
+
+
+def each_speed_once(v: list[float]) -> list[float]:
+    twice = sorted({x for x in v if v.count(x) > 1})
+    if twice:  # the comparison would show one candidate where the list names two
+        said = ", ".join(f"{x:g}" for x in twice)
+        raise ValueError(f"{said} rpm given more than once: name each speed once")
+    return v
+
+
+def reducer_reduces(req: Any) -> None:
+    slowest = min(req.motor.candidate_speeds_rpm)
+    if req.rotary.speed_rpm >= slowest:
+        raise ValueError(
+            f"rotary.speed_rpm = {req.rotary.speed_rpm:g} is not below the slowest "
+            f"motor.candidate_speeds_rpm ({slowest:g}): the reducer lowers the speed"
+        )

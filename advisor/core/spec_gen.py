@@ -1,0 +1,207 @@
+"""Compile the requirement models into plain data: the spec the batch path validates with.
+
+The pydantic models (``advisor/applications/*/requirements.py``) stay the one source of
+truth for every field: this module walks them and writes what :mod:`advisor.core.light`
+needs — each field's type, range, default, and the model's own checks (pure functions,
+named by import path) — into :mod:`advisor.core.requirement_spec`. The batch path then reads
+a requirement file without importing pydantic, whose model machinery alone costs more than
+the advice (issue 16). ``tests/test_light_requirements.py`` regenerates the spec and fails
+when the committed file differs, so a changed model cannot go unnoticed.
+
+    python -m advisor.core.spec_gen        # rewrites advisor/core/requirement_spec.py
+"""
+
+import types
+import typing
+from pathlib import Path
+from typing import Any, Literal, get_args, get_origin
+
+import annotated_types as at
+from pydantic import BaseModel
+from pydantic.fields import FieldInfo
+
+from advisor.core.registry import application, kinds, load
+from advisor.core.requirements import ApplicationReq
+
+SPEC_PATH = Path(__file__).with_name("requirement_spec.py")
+
+_CONSTRAINTS = {at.Ge: "ge", at.Gt: "gt", at.Le: "le", at.Lt: "lt"}
+_LENGTHS = {at.MinLen: "min_length", at.MaxLen: "max_length"}
+
+
+def model_name(model: type) -> str:
+    return f"{model.__module__}:{model.__qualname__}"
+
+
+def _constraints(metadata: list[Any]) -> dict[str, Any]:
+    out: dict[str, Any] = {}
+    for m in metadata:
+        if type(m) in _CONSTRAINTS:
+            out[_CONSTRAINTS[type(m)]] = getattr(m, _CONSTRAINTS[type(m)])
+        elif type(m) in _LENGTHS:
+            out[_LENGTHS[type(m)]] = getattr(m, _LENGTHS[type(m)])
+        elif type(m).__name__ == "AllowInfNan" and m.allow_inf_nan is False:
+            pass  # every compiled model refuses nan and inf already
+        elif type(m).__name__ == "_PydanticGeneralMetadata":
+            extra = {k: v for k, v in vars(m).items() if k != "allow_inf_nan"}
+            if m.__dict__.get("allow_inf_nan", False) or extra:
+                raise ValueError(f"unsupported field metadata {m!r}")
+        elif isinstance(m, FieldInfo):
+            out.update(_constraints(m.metadata))
+        else:
+            raise ValueError(f"unsupported field metadata {m!r}")
+    return out
+
+
+def _type(ann: Any, metadata: list[Any], models: dict[str, Any]) -> tuple:
+    """The spec of one annotation: ``("float", cons)``, ``("int", cons)``, ``("bool",)``,
+    ``("str", cons)``, ``("literal", values)``, ``("optional", t)``, ``("list", t, cons)`` or
+    ``("model", name)``; nested models are compiled into ``models`` as they are met."""
+    origin = get_origin(ann)
+    if origin is typing.Annotated:
+        inner, *meta = get_args(ann)
+        return _type(inner, [*meta, *metadata], models)
+    if origin in (types.UnionType, typing.Union):
+        args = [a for a in get_args(ann) if a is not type(None)]
+        if len(args) != 1 or len(get_args(ann)) != 2:
+            raise ValueError(f"unsupported union {ann!r}")
+        return ("optional", _type(args[0], metadata, models))
+    if origin is Literal:
+        values = get_args(ann)
+        if not all(type(v) is str for v in values):
+            raise ValueError(f"unsupported literal {ann!r}")
+        return ("literal", values)
+    if origin is list:
+        (item,) = get_args(ann)
+        return ("list", _type(item, [], models), _constraints(metadata))
+    if isinstance(ann, type) and issubclass(ann, BaseModel):
+        _compile(ann, models)
+        if metadata:
+            raise ValueError(f"unsupported constraint on a table {ann!r}")
+        return ("model", model_name(ann))
+    if ann in (float, int, str):
+        return (ann.__name__, _constraints(metadata))
+    if ann is bool:
+        return ("bool",)
+    raise ValueError(f"unsupported annotation {ann!r}")
+
+
+def _default(value: Any) -> Any:
+    """A default as data: a model instance becomes ``("record", name, fields_set, values)``."""
+    if isinstance(value, BaseModel):
+        fields = type(value).model_fields
+        return (
+            "record",
+            model_name(type(value)),
+            tuple(sorted(value.model_fields_set)),
+            {k: _default(getattr(value, k)) for k in fields},
+        )
+    if isinstance(value, list):
+        return [_default(v) for v in value]
+    if value is None or type(value) in (float, int, str, bool):
+        return value
+    raise ValueError(f"unsupported default {value!r}")
+
+
+def _light(fn: Any) -> str:
+    for f in (fn, getattr(fn, "__func__", None), getattr(fn, "__wrapped__", None)):
+        name = getattr(f, "__light__", None)
+        if name:
+            return name
+    raise ValueError(f"validator {fn!r} has no pydantic-free twin (see after_check)")
+
+
+def _compile(model: type[BaseModel], models: dict[str, Any]) -> None:
+    name = model_name(model)
+    if name in models:
+        return
+    models[name] = None  # a model met again while compiling is not compiled twice
+    cfg = model.model_config
+    if cfg.get("extra") != "forbid" or not cfg.get("strict") or cfg.get("allow_inf_nan", True):
+        raise ValueError(f"{name}: the compiled validator knows strict, closed, finite models")
+    fields = []
+    for key, info in model.model_fields.items():
+        if info.alias or info.default_factory is not None:
+            raise ValueError(f"{name}.{key}: aliases and default factories are not compiled")
+        required = info.is_required()
+        fields.append(
+            (
+                key,
+                _type(info.annotation, list(info.metadata), models),
+                required,
+                None if required else _default(info.default),
+            )
+        )
+    decs = model.__pydantic_decorators__
+    checks: dict[str, list[str]] = {}
+    for dec in decs.field_validators.values():
+        if dec.info.mode != "after":
+            raise ValueError(f"{name}: only 'after' field validators are compiled")
+        for f in dec.info.fields:
+            checks.setdefault(f, []).append(_light(dec.func))
+    after = []
+    for dec in decs.model_validators.values():
+        if dec.info.mode != "after":
+            raise ValueError(f"{name}: only 'after' model validators are compiled")
+        after.append(_light(dec.func))
+    mixins = tuple(
+        model_name(b)
+        for b in model.__mro__[1:]
+        if not issubclass(b, BaseModel) and b is not object and vars(b).get("__slots__") == ()
+    )
+    models[name] = {
+        "fields": tuple(fields),
+        "field_checks": checks,
+        "after": tuple(after),
+        "mixins": mixins,
+    }
+
+
+def compile_spec() -> dict[str, Any]:
+    """Every registered application's requirement model, and the [application] table."""
+    models: dict[str, Any] = {}
+    _compile(ApplicationReq, models)
+    roots = {}
+    for kind in kinds():
+        path = application(kind).requirements
+        if not (isinstance(path, str) and path.startswith("advisor.")):
+            continue  # an application registered by a test or a plug-in: validated by pydantic
+        model = load(path)
+        _compile(model, models)
+        roots[kind] = path
+    return {"roots": roots, "application": model_name(ApplicationReq), "models": models}
+
+
+def spec_source(spec: dict[str, Any] | None = None) -> str:
+    """The spec as a Python module: a model a paragraph, a field a line (diffs stay readable)."""
+    spec = compile_spec() if spec is None else spec
+    out = [
+        '"""The requirement models compiled to data: generated by ``python -m '
+        "advisor.core.spec_gen``.\n\nDo not edit: change the models "
+        '(advisor/applications/*/requirements.py) and regenerate."""',
+        "",
+        "# fmt: off",
+        "# ruff: noqa: E501",
+        f"ROOTS = {spec['roots']!r}",
+        f"APPLICATION = {spec['application']!r}",
+        "MODELS = {",
+    ]
+    for name, m in spec["models"].items():
+        out.append(f"    {name!r}: {{")
+        out.append("        'fields': (")
+        out.extend(f"            {f!r}," for f in m["fields"])
+        out.append("        ),")
+        for key in ("field_checks", "after", "mixins"):
+            out.append(f"        {key!r}: {m[key]!r},")
+        out.append("    },")
+    out.append("}")
+    return "\n".join(out) + "\n"
+
+
+def main() -> None:
+    SPEC_PATH.write_text(spec_source(), encoding="utf-8")
+    print(f"wrote {SPEC_PATH}")
+
+
+if __name__ == "__main__":
+    main()
