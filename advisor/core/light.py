@@ -211,12 +211,18 @@ def validate(data: Any) -> Record | None:
     return None if contradictions(data) else req  # the models word the refusal
 
 
-def has_table(kind: str, key: str) -> bool | None:
-    """Whether the requirement of ``kind`` has field ``key``; None for a kind the spec does
-    not hold."""
+def compiled(kind: str) -> bool:
+    """Whether the spec holds the requirement model ``kind`` is registered with (not one a
+    test or a plug-in registered in its place)."""
     from advisor.core.registry import application
 
     root = ROOTS.get(kind)
-    if root is None or application(kind).requirements != root:
+    return root is not None and application(kind).requirements == root
+
+
+def has_table(kind: str, key: str) -> bool | None:
+    """Whether the requirement of ``kind`` has field ``key``; None for a kind the spec does
+    not hold."""
+    if not compiled(kind):
         return None
-    return any(f[0] == key for f in MODELS[root]["fields"])
+    return any(f[0] == key for f in MODELS[ROOTS[kind]]["fields"])

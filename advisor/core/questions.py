@@ -1,13 +1,16 @@
 """The requirement fields as questions: label, unit, help, wizard step, default and valid
 range, read from the pydantic models where each field is declared once. The wizard's
 fields, the README's key table and the published JSON Schema all come from here, so they
-cannot disagree with the validation. Pure: no textual, no I/O."""
+cannot disagree with the validation. Pure: no textual, no I/O. pydantic is imported by the
+functions that read a model, not with :class:`Question`: the wizard reads the questions of
+the shipped applications compiled (:mod:`advisor.core.requirement_spec`)."""
 
 import types
-from typing import Any, Literal, NamedTuple, Union, get_args, get_origin
+from typing import TYPE_CHECKING, Any, Literal, NamedTuple, Union, get_args, get_origin
 
-from pydantic import BaseModel
-from pydantic.fields import FieldInfo
+if TYPE_CHECKING:
+    from pydantic import BaseModel
+    from pydantic.fields import FieldInfo
 
 #: Units named by a key's suffix (``force_N``, ``inertia_kgm2``): the longest suffix wins.
 UNIT_SUFFIXES = {
@@ -74,10 +77,12 @@ def _strip_optional(ann: Any) -> Any:
 
 
 def _is_model(ann: Any) -> bool:
+    from pydantic import BaseModel
+
     return isinstance(ann, type) and issubclass(ann, BaseModel)
 
 
-def range_text(info: FieldInfo) -> str:
+def range_text(info: "FieldInfo") -> str:
     """The valid range from the field's constraints: ``> 0, ≤ 5e+06``."""
     words = []
     for m in info.metadata:
@@ -92,7 +97,7 @@ def range_text(info: FieldInfo) -> str:
     return ", ".join(words)
 
 
-def _extra(info: FieldInfo) -> dict[str, Any]:
+def _extra(info: "FieldInfo") -> dict[str, Any]:
     extra = info.json_schema_extra
     return extra if isinstance(extra, dict) else {}
 
@@ -112,17 +117,17 @@ def _kind(ann: Any) -> tuple[str, tuple[str, ...]]:
     return "float", ()
 
 
-def _default(info: FieldInfo) -> Any:
+def _default(info: "FieldInfo") -> Any:
     if info.is_required():
         return None
     value = info.get_default(call_default_factory=True)
-    if isinstance(value, BaseModel):
+    if _is_model(type(value)):
         return None
     return value
 
 
 def questions(
-    model: type[BaseModel], prefix: tuple[str, ...] = (), wizard: bool = False
+    model: "type[BaseModel]", prefix: tuple[str, ...] = (), wizard: bool = False
 ) -> list[Question]:
     """Every leaf field of ``model`` (tables followed), in declaration order. With
     ``wizard``, a list of tables is offered as :data:`WIZARD_ROWS` numbered rows; without,
@@ -166,7 +171,7 @@ def questions(
     return out
 
 
-def wizard_questions(model: type[BaseModel]) -> list[Question]:
+def wizard_questions(model: "type[BaseModel]") -> list[Question]:
     """The questions the wizard asks for a requirement model, in declaration order: those
     with a step, and only where the model has the table they are asked with
     (``hold_without_power`` with the one-way device), shown beside that table."""
@@ -184,7 +189,7 @@ def wizard_questions(model: type[BaseModel]) -> list[Question]:
     return out
 
 
-def fixed_values(model: type[BaseModel]) -> dict[tuple[str, ...], str]:
+def fixed_values(model: "type[BaseModel]") -> dict[tuple[str, ...], str]:
     """Fields with one allowed value (the motor ``kind`` of an application): the wizard
     fills them in, nobody has to choose."""
     return {

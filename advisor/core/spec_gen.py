@@ -169,7 +169,18 @@ def compile_spec() -> dict[str, Any]:
         model = load(path)
         _compile(model, models)
         roots[kind] = path
-    return {"roots": roots, "application": model_name(ApplicationReq), "models": models}
+    from advisor.core.questions import fixed_values, questions, wizard_questions
+
+    title = next(q for q in questions(ApplicationReq, ("application",)) if q.path[-1] == "title")
+    return {
+        "roots": roots,
+        "application": model_name(ApplicationReq),
+        "models": models,
+        # the wizard's questions, so that it asks them without importing pydantic either
+        "questions": {k: tuple(map(tuple, wizard_questions(load(p)))) for k, p in roots.items()},
+        "fixed": {k: fixed_values(load(p)) for k, p in roots.items()},
+        "title": tuple(title),
+    }
 
 
 def spec_source(spec: dict[str, Any] | None = None) -> str:
@@ -195,6 +206,15 @@ def spec_source(spec: dict[str, Any] | None = None) -> str:
             out.append(f"        {key!r}: {m[key]!r},")
         out.append("    },")
     out.append("}")
+    out.append("#: The wizard's questions of each application (advisor.core.questions.Question).")
+    out.append("QUESTIONS = {")
+    for kind, qs in spec["questions"].items():
+        out.append(f"    {kind!r}: (")
+        out.extend(f"        {q!r}," for q in qs)
+        out.append("    ),")
+    out.append("}")
+    out.append(f"FIXED = {spec['fixed']!r}")
+    out.append(f"TITLE = {spec['title']!r}")
     return "\n".join(out) + "\n"
 
 

@@ -58,8 +58,8 @@ def advise_one(
     import tomli_w
 
     from advisor.core.engine import advise
+    from advisor.core.reading import parse_requirements
     from advisor.core.report import _plain, archive
-    from advisor.core.requirements import parse_requirements
 
     try:
         req = parse_requirements(requirement)

@@ -527,7 +527,7 @@ class DriveAdvisorApp(App[None]):
         results are painted (:meth:`_preload_plots`)."""
         try:
             from advisor.core import engine
-            from advisor.core.requirements import parse_requirements
+            from advisor.core.reading import parse_requirements
 
             views.plots  # noqa: B018  (the views module and rich's tables)
             kind = doc.get("application", {}).get("kind")
@@ -1005,7 +1005,7 @@ class DriveAdvisorApp(App[None]):
             box.mount(*rows)
 
     def _engine_errors(self) -> list[str]:
-        from advisor.core.requirements import parse_requirements
+        from advisor.core.reading import parse_requirements
 
         try:
             parse_requirements(F.prune(self.doc))
@@ -1124,7 +1124,7 @@ class DriveAdvisorApp(App[None]):
     def _advise(self, doc: dict[str, Any]) -> None:
         self._warmed.wait()  # the warm-up is importing what this needs: let it finish
         from advisor.core.engine import advise
-        from advisor.core.requirements import parse_requirements
+        from advisor.core.reading import parse_requirements
 
         # the warm-up advised on the file as given: if that is exactly the document to
         # compute (the first ctrl+r on an unedited file), its design is the one (the same

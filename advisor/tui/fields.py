@@ -45,15 +45,31 @@ def titles() -> dict[str, str]:
     return {a.kind: a.title for a in registry.applications()}
 
 
-@cache
-def _fields(model: Any) -> dict[int, tuple[Field, ...]]:
+def _by_step(qs: Any) -> dict[int, tuple[Field, ...]]:
     out: dict[int, list[Field]] = {}
-    for q in wizard_questions(model):
-        out.setdefault(q.step, []).append(Field(*q))
+    for q in qs:
+        f = Field(*q)
+        out.setdefault(f.step, []).append(f)
     return {step: tuple(fs) for step, fs in out.items()}
 
 
+@cache
+def _fields(model: Any) -> dict[int, tuple[Field, ...]]:
+    return _by_step(wizard_questions(model))
+
+
+@cache
+def _compiled_fields(kind: str) -> dict[int, tuple[Field, ...]]:
+    from advisor.core.requirement_spec import QUESTIONS
+
+    return _by_step(QUESTIONS[kind])
+
+
 def fields_for(kind: str, step: int) -> tuple[Field, ...]:
+    from advisor.core.light import compiled
+
+    if compiled(kind):  # the shipped applications: their questions compiled, no pydantic
+        return _compiled_fields(kind).get(step, ())
     return _fields(registry.requirements_model(kind)).get(step, ())
 
 
@@ -82,17 +98,21 @@ def starting_doc(kind: str) -> dict[str, Any]:
 
 def starting_doc_values(kind: str) -> dict[tuple[str, ...], str]:
     """The fields that allow one value only, by path."""
+    from advisor.core.light import compiled
+
+    if compiled(kind):
+        from advisor.core.requirement_spec import FIXED
+
+        return dict(FIXED[kind])
     return fixed_values(registry.requirements_model(kind))
 
 
 @cache
 def title_field() -> Field:
-    """The report title, asked with the application (step 0)."""
-    from advisor.core.questions import questions
-    from advisor.core.requirements import ApplicationReq
+    """The report title, asked with the application (step 0; compiled with the models)."""
+    from advisor.core.requirement_spec import TITLE
 
-    q = next(q for q in questions(ApplicationReq, ("application",)) if q.path[-1] == "title")
-    return Field(*q)
+    return Field(*TITLE)
 
 
 def row_note(kind: str, step: int) -> str:
