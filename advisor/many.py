@@ -175,26 +175,22 @@ def usable_cpus() -> int:
 
 
 def preload(catalog_dir: Path | None) -> None:
-    """Import every application's pipeline, requirement model and report, build the requirement
-    validators and load the catalogs, in the parent before the workers fork: each worker then
-    starts with them instead of importing and building them again (issue 16). A catalog that
-    cannot be read is left to the workers, which report it per file."""
+    """Import every application's pipeline and report, the compiled requirement validator with
+    its checks, and load the catalogs, in the parent before the workers fork: each worker then
+    starts with them instead of importing them again (issue 16). The pydantic models are not
+    imported: a valid file never needs them (:mod:`advisor.core.reading`); a worker that meets
+    an invalid one imports them then. A catalog that cannot be read is left to the workers,
+    which report it per file."""
     from importlib import import_module
 
-    from advisor.core import registry, requirements
+    from advisor.core import light, registry
 
-    for module in (
-        "advisor.core.engine",
-        "advisor.core.report",
-        "advisor.ignored",
-        "advisor.core.light",
-    ):
+    for module in ("advisor.core.engine", "advisor.core.report", "advisor.ignored"):
         import_module(module)
-    requirements._Head.model_rebuild(force=True)
+    light.prepare()
     for app in registry.applications():
         for path in (app.pipeline, app.headline):
             registry.load(path)
-        registry.load(app.requirements).model_rebuild(force=True)
     from catalogs import load_catalogs
 
     try:

@@ -211,6 +211,14 @@ def validate(data: Any) -> Record | None:
     return None if contradictions(data) else req  # the models word the refusal
 
 
+def prepare() -> None:
+    """Import every check and build every record class now (before a fork: the workers of
+    ``advisor --batch -j N`` then share them)."""
+    for name in MODELS:
+        _record_class(name)
+        _checks(name)
+
+
 def compiled(kind: str) -> bool:
     """Whether the spec holds the requirement model ``kind`` is registered with (not one a
     test or a plug-in registered in its place)."""
