@@ -276,6 +276,9 @@ OWN_CHECKS = [
     ("gyro_compensator", ("rotor", "inertia_kgm2"), 0.01),
     ("valve_actuator_duty", ("duty", "duty_type"), "S3"),
     ("rudder_actuator_duty", ("duty", "cycles_per_hour"), 3600.0),
+    ("rudder_actuator", ("application", "kind"), "rotor"),
+    ("rudder_actuator", ("application", "kind"), "linear"),
+    ("rudder_actuator", ("application", "kind"), "Rotary"),
 ]
 
 
@@ -288,3 +291,139 @@ def test_the_models_own_checks_decide_alike(example, path, value):
     assert (rec is None) == (model is None), messages
     if rec is not None:
         _same(rec, model)
+
+
+# ------------------------------------------------------------ what the generator refuses
+def _refusable_models() -> list:
+    """Small models using what spec_gen cannot compile faithfully (a reviewer's list): each
+    must stop the generator rather than give a validator that accepts or builds otherwise."""
+    from typing import Annotated, Literal
+
+    from pydantic import (
+        ConfigDict,
+        Field,
+        computed_field,
+        field_serializer,
+        field_validator,
+        model_validator,
+    )
+
+    from advisor.core.requirements import _Strict
+
+    class Alias(_Strict):
+        x: Annotated[float, Field(validation_alias="y")] = 1.0
+
+    class LiteralLength(_Strict):
+        x: Annotated[Literal["a", "bb"], Field(max_length=1)] = "a"
+
+    class Star(_Strict):
+        x: float = 1.0
+
+        @field_validator("*")
+        @classmethod
+        def _any(cls, v):
+            return v
+
+    class StrMax(_Strict):
+        model_config = ConfigDict(str_max_length=3)
+        x: str = ""
+
+    class Strip(_Strict):
+        model_config = ConfigDict(str_strip_whitespace=True)
+        x: str = ""
+
+    class Excluded(_Strict):
+        x: Annotated[float, Field(exclude=True)] = 1.0
+
+    class Computed(_Strict):
+        x: float = 1.0
+
+        @computed_field
+        @property
+        def twice(self) -> float:
+            return 2 * self.x
+
+    class Serialized(_Strict):
+        x: float = 1.0
+
+        @field_serializer("x")
+        def _ser(self, v):
+            return v
+
+    class ValidateDefault(_Strict):
+        x: Annotated[float, Field(validate_default=True)] = 1.0
+
+    class PostInit(_Strict):
+        x: float = 1.0
+
+        def model_post_init(self, context):
+            pass
+
+    class OwnProperty(_Strict):
+        x: float = 1.0
+
+        @property
+        def twice(self) -> float:
+            return 2 * self.x
+
+    class Mixin:
+        @property
+        def twice(self) -> float:
+            return 2 * self.x
+
+    class UnslottedMixin(Mixin, _Strict):
+        x: float = 1.0
+
+    class Before(_Strict):
+        x: float = 1.0
+
+        @field_validator("x", mode="before")
+        @classmethod
+        def _b(cls, v):
+            return v
+
+    class NoTwin(_Strict):
+        x: float = 1.0
+
+        @model_validator(mode="after")
+        def _check(self):
+            return self
+
+    return [
+        Alias,
+        LiteralLength,
+        Star,
+        StrMax,
+        Strip,
+        Excluded,
+        Computed,
+        Serialized,
+        ValidateDefault,
+        PostInit,
+        OwnProperty,
+        UnslottedMixin,
+        Before,
+        NoTwin,
+    ]
+
+
+@pytest.mark.parametrize("model", _refusable_models(), ids=lambda m: m.__name__)
+def test_the_generator_refuses_what_it_cannot_compile(model):
+    from advisor.core import spec_gen
+
+    with pytest.raises(ValueError):
+        spec_gen._compile(model, {})
+
+
+def test_records_hash_and_pickle_as_the_frozen_models_do():
+    import pickle
+
+    data = read_toml(next(p for p in EXAMPLES if p.stem == "gyro_compensator"))
+    rec, again = light.validate(data), light.validate(copy.deepcopy(data))
+    assert hash(rec.rotor.aero) == hash(again.rotor.aero)
+    back = pickle.loads(pickle.dumps(rec))
+    assert back == rec and back.model_fields_set == rec.model_fields_set
+    assert back.rotor.inertia == rec.rotor.inertia  # the mixin came back with the class
+    rudder = light.validate(read_toml(next(p for p in EXAMPLES if p.stem == "rudder_actuator")))
+    with pytest.raises(TypeError):  # a list inside: unhashable, as for the pydantic model
+        hash(rudder.motor)

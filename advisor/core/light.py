@@ -54,7 +54,13 @@ class Record:
             return NotImplemented
         return self._model == other._model and self.model_dump() == other.model_dump()
 
-    __hash__ = None  # type: ignore[assignment]
+    def __hash__(self) -> int:
+        # as a frozen pydantic model: by its values (a table holding a list is unhashable)
+        return hash((self._model, *(self.__dict__[k] for k in self._fields)))
+
+    def __reduce__(self) -> tuple[Any, ...]:
+        values = {k: self.__dict__[k] for k in self._fields}
+        return (_make, (self._model, values, set(self.model_fields_set)))
 
     def __repr__(self) -> str:
         inner = ", ".join(f"{k}={self.__dict__[k]!r}" for k in self._fields)

@@ -68,8 +68,8 @@ def _type(ann: Any, metadata: list[Any], models: dict[str, Any]) -> tuple:
         return ("optional", _type(args[0], metadata, models))
     if origin is Literal:
         values = get_args(ann)
-        if not all(type(v) is str for v in values):
-            raise ValueError(f"unsupported literal {ann!r}")
+        if not all(type(v) is str for v in values) or _constraints(metadata):
+            raise ValueError(f"unsupported literal or constraint on it {ann!r}")
         return ("literal", values)
     if origin is list:
         (item,) = get_args(ann)
@@ -82,6 +82,8 @@ def _type(ann: Any, metadata: list[Any], models: dict[str, Any]) -> tuple:
     if ann in (float, int, str):
         return (ann.__name__, _constraints(metadata))
     if ann is bool:
+        if _constraints(metadata):
+            raise ValueError("unsupported constraint on a bool")
         return ("bool",)
     raise ValueError(f"unsupported annotation {ann!r}")
 
@@ -111,6 +113,37 @@ def _light(fn: Any) -> str:
     raise ValueError(f"validator {fn!r} has no pydantic-free twin (see after_check)")
 
 
+#: The model settings the compiled validator follows; any other would change what it accepts.
+_CONFIG_KNOWN = {"extra", "strict", "frozen", "allow_inf_nan", "defer_build", "title"}
+
+
+def _refuse_what_changes_values(model: type[BaseModel], name: str) -> None:
+    """Anything of a model that changes the values it gives or its dump, which a record would
+    not do: serializers, computed fields, a post-init, and methods or properties of its own
+    (those belong to a mixin with ``__slots__ = ()``, which records inherit)."""
+    decs = model.__pydantic_decorators__
+    if decs.field_serializers or decs.model_serializers or model.model_computed_fields:
+        raise ValueError(f"{name}: serializers and computed fields are not compiled")
+    if model.__pydantic_post_init__ is not None:
+        raise ValueError(f"{name}: model_post_init is not compiled")
+    for cls in model.__mro__:
+        if cls in (BaseModel, object):
+            continue
+        own = {
+            k
+            for k in vars(cls)
+            if not k.startswith("_") and k not in model.model_fields and k != "model_config"
+        }
+        if issubclass(cls, BaseModel):
+            if own:
+                raise ValueError(
+                    f"{name}: {sorted(own)} of {cls.__qualname__}: put them in a mixin with "
+                    "__slots__ = () (records inherit it)"
+                )
+        elif own and vars(cls).get("__slots__") != ():
+            raise ValueError(f"{name}: mixin {cls.__qualname__} needs __slots__ = ()")
+
+
 def _compile(model: type[BaseModel], models: dict[str, Any]) -> None:
     name = model_name(model)
     if name in models:
@@ -119,10 +152,25 @@ def _compile(model: type[BaseModel], models: dict[str, Any]) -> None:
     cfg = model.model_config
     if cfg.get("extra") != "forbid" or not cfg.get("strict") or cfg.get("allow_inf_nan", True):
         raise ValueError(f"{name}: the compiled validator knows strict, closed, finite models")
+    unknown_cfg = set(cfg) - _CONFIG_KNOWN
+    if unknown_cfg:
+        raise ValueError(f"{name}: model_config {sorted(unknown_cfg)} is not compiled")
+    _refuse_what_changes_values(model, name)
     fields = []
     for key, info in model.model_fields.items():
-        if info.alias or info.default_factory is not None:
-            raise ValueError(f"{name}.{key}: aliases and default factories are not compiled")
+        if (
+            info.alias
+            or info.validation_alias
+            or info.serialization_alias
+            or info.default_factory is not None
+            or info.exclude
+            or info.validate_default
+            or info.discriminator
+        ):
+            raise ValueError(
+                f"{name}.{key}: aliases, default factories, exclude, validate_default and "
+                "discriminators are not compiled"
+            )
         required = info.is_required()
         fields.append(
             (
@@ -138,6 +186,8 @@ def _compile(model: type[BaseModel], models: dict[str, Any]) -> None:
         if dec.info.mode != "after":
             raise ValueError(f"{name}: only 'after' field validators are compiled")
         for f in dec.info.fields:
+            if f not in model.model_fields:  # "*" or a name not declared
+                raise ValueError(f"{name}: a validator of {f!r} is not compiled")
             checks.setdefault(f, []).append(_light(dec.func))
     after = []
     for dec in decs.model_validators.values():

@@ -4,6 +4,15 @@
 
 from typing import Any
 
+#: The smallest load share taken as a load; below it the share is 0 (no load) or a slip.
+LOAD_SHARE_MIN = 1e-3
+
+
+def share_zero_or_range(v: float) -> float:
+    if 0 < v < LOAD_SHARE_MIN:
+        raise ValueError(f"must be 0 or from {LOAD_SHARE_MIN:g} to 10")
+    return v
+
 
 def move_has_distance(seg: Any) -> None:
     if seg.kind == "move" and seg.distance_m is None:

@@ -8,7 +8,7 @@ parameters.
 
 from typing import Annotated, Literal
 
-from advisor.core.requirements import _num, _Strict, after_check, ask
+from advisor.core.requirements import _num, _Strict, after_check, ask, field_check
 from advisor.duty import requirement_checks as checks
 
 STEP = 4  # the wizard step that asks the duty
@@ -18,7 +18,7 @@ class PositioningDutyReq(_Strict):
     cycle_time_s: Annotated[
         float,
         _num(
-            gt=0,
+            ge=1e-3,
             le=1e6,
             desc="time of one cycle: one move of positioning.travel_rad, then rest, s",
             label="Cycle time",
@@ -39,7 +39,7 @@ class _Segment(_Strict):
     time_s: Annotated[
         float,
         _num(
-            gt=0,
+            ge=1e-3,
             le=1e6,
             desc="duration of the segment (a move: the time it may take), s",
             label="time",
@@ -93,7 +93,7 @@ class RotarySegmentReq(_Segment):
     accel_fraction: Annotated[
         float,
         _num(
-            gt=0,
+            ge=0.01,
             lt=0.5,
             desc="share of a trapezoidal move spent accelerating (and braking)",
             label="accelerating share",
@@ -125,8 +125,15 @@ class RotarySegmentReq(_Segment):
 class LoadShareReq(_Strict):
     load_share: Annotated[
         float,
-        _num(ge=0, le=10, desc="load as a share of the rated load", label="load share", step=STEP),
+        _num(
+            ge=0,
+            le=10,
+            desc="load as a share of the rated load: 0 (no load) or 0.001 … 10",
+            label="load share",
+            step=STEP,
+        ),
     ]
+    _share_zero_or_range = field_check("load_share", checks.share_zero_or_range)
     time_share: Annotated[
         float,
         _num(gt=0, le=1, desc="share of the time at that load", label="time share", step=STEP),
@@ -149,7 +156,7 @@ class _CycleDuty(_Strict):
     cycles_per_hour: Annotated[
         float | None,
         _num(
-            gt=0,
+            ge=1e-3,
             le=36000,
             desc="how often the segments repeat, 1/h",
             label="Cycles per hour",
@@ -169,7 +176,11 @@ class _CycleDuty(_Strict):
     starts_per_hour: Annotated[
         float | None,
         _num(
-            gt=0, le=36000, desc="starts per hour (S4, S5, S7)", label="Starts per hour", step=STEP
+            ge=1e-3,
+            le=36000,
+            desc="starts per hour (S4, S5, S7)",
+            label="Starts per hour",
+            step=STEP,
         ),
     ] = None
     duration_min: Annotated[
@@ -186,7 +197,7 @@ class _CycleDuty(_Strict):
     cycle_time_s: Annotated[
         float,
         _num(
-            gt=0,
+            ge=1e-3,
             le=1e6,
             desc="cycle time of an S3–S6 duty, s (IEC: 10 min)",
             label="Cycle time (S3, S6, S9, S10)",
@@ -247,7 +258,11 @@ class RotaryDutyReq(_CycleDuty):
     motor_inertia_kgm2: Annotated[
         float,
         _num(
-            gt=0, le=1e3, desc="rotor inertia of the motor, kg·m²", label="Motor inertia", step=STEP
+            ge=1e-9,
+            le=1e3,
+            desc="rotor inertia of the motor, kg·m²",
+            label="Motor inertia",
+            step=STEP,
         ),
     ]
     thermal_time_constant_s: Annotated[
