@@ -216,9 +216,25 @@ def _pool_context():
         return None
 
 
-#: Files queued per worker (issue 16): with one, a worker idles between two files for the
+#: Tasks queued per worker (issue 16): with one, a worker idles between two tasks for the
 #: round trip of its result through the parent.
 IN_FLIGHT = 2
+#: Files per task at most: a task of several files costs one round trip through the parent
+#: instead of one per file (on two cores the parent's wake-ups take time from the workers),
+#: while tasks stay small enough that the last ones share out evenly.
+CHUNK = 8
+
+
+def chunk_size(files: int, jobs: int) -> int:
+    """Files per task: about eight tasks per worker, at most :data:`CHUNK` files each."""
+    return max(1, min(CHUNK, files // (8 * jobs)))
+
+
+def advise_chunk(
+    items: list[tuple[int, Path, Path]], catalog_dir: Path | None
+) -> list[tuple[int, Outcome]]:
+    """:func:`advise_one` for each file of a task, in a worker."""
+    return [(i, advise_one(f, t, catalog_dir)) for i, f, t in items]
 
 
 def _run_pool(
@@ -227,14 +243,16 @@ def _run_pool(
     catalog_dir: Path | None,
     outcomes: dict[int, Outcome],
 ) -> tuple[list[tuple[int, Path, Path]], list[tuple[int, Path, Path]]]:
-    """Advise ``todo`` with ``jobs`` workers, at most ``IN_FLIGHT × jobs`` files in flight (a
-    worker finds its next file queued instead of waiting for the parent to hear of the last
-    one), recording each outcome as it arrives. When a worker dies (the pool is then broken)
-    returns the files in flight and those not started; else two empty lists."""
+    """Advise ``todo`` with ``jobs`` workers, in tasks of :func:`chunk_size` files, at most
+    ``IN_FLIGHT × jobs`` tasks in flight (a worker finds its next task queued instead of
+    waiting for the parent to hear of the last one), recording each outcome as it arrives.
+    When a worker dies (the pool is then broken) returns the files in flight and those not
+    started; else two empty lists."""
     from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
     from concurrent.futures.process import BrokenProcessPool
 
-    pending = list(reversed(todo))
+    size = chunk_size(len(todo), jobs)
+    pending = [todo[k : k + size] for k in range(0, len(todo), size)][::-1]
     pool = ProcessPoolExecutor(
         max_workers=jobs, mp_context=_pool_context(), initializer=_ignore_sigint
     )
@@ -242,25 +260,26 @@ def _run_pool(
     try:
         while pending or flight:
             while pending and len(flight) < IN_FLIGHT * jobs:
-                item = pending.pop()
-                flight[pool.submit(advise_one, item[1], item[2], catalog_dir)] = item
+                task = pending.pop()
+                flight[pool.submit(advise_chunk, task, catalog_dir)] = task
             done, _ = wait(flight, return_when=FIRST_COMPLETED)
             broken = False
             for fut in done:
-                item = flight.pop(fut)
+                task = flight.pop(fut)
                 try:
-                    outcomes[item[0]] = fut.result()
+                    outcomes.update(fut.result())
                 except BrokenProcessPool:
-                    flight[fut] = item
+                    flight[fut] = task
                     broken = True
             if broken:
-                return list(flight.values()), list(reversed(pending))
+                held = [item for task in flight.values() for item in task]
+                return held, [item for task in reversed(pending) for item in task]
         return [], []
     except KeyboardInterrupt:  # let the files in progress finish, and count their reports
         pool.shutdown(wait=True, cancel_futures=True)
-        for fut, item in flight.items():
+        for fut in flight:
             if fut.done() and not fut.cancelled() and fut.exception() is None:
-                outcomes[item[0]] = fut.result()
+                outcomes.update(fut.result())
         raise
     finally:
         pool.shutdown(wait=True, cancel_futures=True)
