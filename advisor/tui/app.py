@@ -419,6 +419,8 @@ class DriveAdvisorApp(App[None]):
         self._warming = False  # the warm-up is on (see _start)
         #: the document the warm-up advised on and its design (None: none, or taken)
         self._warm_advice: tuple[dict[str, Any], Any] | None = None
+        self._widgets: dict[str, Any] = {}  # id → widget, see _by_id
+        self._engine_said: tuple[Any, list[str]] | None = None  # document → its messages
         self._plots_preloaded = False  # the plotting library's import started (or done)
         self._views_report: Any = None  # the report whose plots and comparison are shown
         self._views_version = 0  # counts the results shown
@@ -681,7 +683,7 @@ class DriveAdvisorApp(App[None]):
         await box.mount(*widgets)
         if kind is not None:
             for f in F.fields_for(kind, s):  # the field's own error, if its text has one
-                w = self.query_one(f"#{f.id}")
+                w = self._by_id(f.id)
                 if isinstance(w, Input):
                     self._sync_input(f, w.value, quiet=True)
 
@@ -849,7 +851,7 @@ class DriveAdvisorApp(App[None]):
         was = self.field_errors.pop(f.id, None)
         if err is not None:
             self.field_errors[f.id] = err
-        label = self.query_one_optional(f"#{f.id}-err", Label)
+        label = self._by_id(f"{f.id}-err")
         # an empty field keeps what the engine said of it ("missing; required"), unless it
         # showed an error of its own text
         if label is not None and (err is not None or text.strip() or was is not None):
@@ -954,7 +956,7 @@ class DriveAdvisorApp(App[None]):
             )
         ok = True
         for f in F.fields_for(kind, step):
-            w = self.query_one(f"#{f.id}")
+            w = self._by_id(f.id)
             if isinstance(w, Input):
                 ok = self._sync_input(f, w.value) is None and ok
             elif f.id in self.field_errors:
@@ -970,9 +972,7 @@ class DriveAdvisorApp(App[None]):
             )
             if owner and target is not None and target in F.fields_for(kind, step):
                 if target.id not in self.field_errors:  # the field's own words come first
-                    self.query_one(f"#{target.id}-err", Label).update(
-                        plain(line.split(": ", 1)[-1])
-                    )
+                    self._by_id(f"{target.id}-err").update(plain(line.split(": ", 1)[-1]))
             else:
                 step_msgs.append(line)
             ok = False
@@ -1005,13 +1005,33 @@ class DriveAdvisorApp(App[None]):
             box.mount(*rows)
 
     def _engine_errors(self) -> list[str]:
+        """The engine's messages on the document as it is (kept for the same document:
+        ctrl+r and ctrl+n validate every step against one document)."""
         from advisor.core.reading import parse_requirements
 
+        doc = F.prune(self.doc)
+        if self._engine_said is not None and self._engine_said[0] == doc:
+            return list(self._engine_said[1])
         try:
-            parse_requirements(F.prune(self.doc))
+            parse_requirements(copy.deepcopy(doc))
+            said: list[str] = []
         except InputError as exc:
-            return exc.messages
-        return []
+            said = exc.messages
+        self._engine_said = (copy.deepcopy(doc), said)
+        return list(said)
+
+    def _by_id(self, wid: str) -> Any:
+        """The widget with id ``wid`` (None: none): found once, then kept while it stays in
+        the DOM. Each ``query_one`` walks the DOM, and validating every field at each ctrl+r
+        that way cost about 20 ms of the keystroke's latency."""
+        w = self._widgets.get(wid)
+        if w is None or not w.is_attached or w.id != wid:
+            w = self.query_one_optional(f"#{wid}")
+            if w is None:
+                self._widgets.pop(wid, None)
+                return None
+            self._widgets[wid] = w
+        return w
 
     def _first_problem(self) -> int | None:
         """The first step (in the order walked) with an error on screen, checked the way
