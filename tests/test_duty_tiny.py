@@ -36,6 +36,8 @@ def _segment(base: dict, key: str, value: float) -> dict:
 S9 = {"duty_type": "S9", "loads": [{"load_share": 1.0, "time_share": 0.5}]}
 
 REFUSED = [
+    ("duty.segments[1].force_N", _segment(LINEAR, "force_N", 1e-300)),
+    ("duty.segments[1].force_N", _segment(LINEAR, "force_N", 0.5)),
     ("duty.segments[1].time_s", _segment(ROTARY, "time_s", 5e-324)),
     ("duty.segments[1].time_s", _segment(ROTARY, "time_s", 1e-300)),
     ("duty.segments[1].accel_fraction", _segment(ROTARY, "accel_fraction", 1e-300)),
@@ -69,8 +71,10 @@ def test_a_vanishing_duty_value_is_refused_by_name(field, doc):
 
 SMALLEST = [
     _segment(ROTARY, "time_s", 1e-3),
-    _segment(ROTARY, "accel_fraction", 0.01),
-    _with(ROTARY, motor_inertia_kgm2=1e-9),
+    _segment(ROTARY, "accel_fraction", 1e-3),
+    _with(ROTARY, motor_inertia_kgm2=1e-11),
+    _segment(LINEAR, "force_N", 0.0),
+    _segment(LINEAR, "force_N", 1.0),
     _with(ROTARY, {"duty_type": "S7", "starts_per_hour": 1e-3}),
     _with(ROTARY, {"duty_type": "S1", "cycle_time_s": 1e-3}),
     _with(LINEAR, {"duty_type": "S1", "cycle_time_s": 1e-3}),

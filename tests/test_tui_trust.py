@@ -481,3 +481,34 @@ def test_the_loss_curve_passes_through_every_candidate_speed():
     for cand in report.design.motor.candidates:
         assert curve[cand.speed_rpm]["total"] == pytest.approx(cand.losses_W.total, rel=1e-12)
     assert curve[5000.0]["total"] == pytest.approx(228.42, abs=0.01)
+
+
+async def test_a_message_the_engine_no_longer_gives_leaves_its_field(tmp_path):
+    """An S4 duty without starts_per_hour: the empty field says "missing; required for
+    duty_type = 'S4'". Once the duty is S3, the engine says nothing of it, and neither may
+    the field, while a design computed from the same inputs is shown (a reviewer found the
+    old message left in place)."""
+    from textual.widgets import Select
+
+    from advisor.tui import fields as F
+
+    doc = _doc(EXAMPLES / "rudder_actuator_duty.toml")
+    duty = doc["duty"]
+    del duty["segments"], duty["cycles_per_hour"]
+    duty |= {"duty_type": "S4", "cyclic_duration_factor": 0.4}
+    app = DriveAdvisorApp(doc, source=tmp_path / "r.toml", save_drafts=False, offer_draft=False)
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.pause()
+        await pilot.press("ctrl+r")
+        await pilot.pause(0.3)
+        ids = [f.id for f in F.fields_for(app.kind, 4)]
+        starts = next(i for i in ids if "starts-per-hour" in i)
+        kind = next(i for i in ids if "duty-type" in i)
+        label = app.query_one(f"#{starts}-err", Label)
+        assert "missing; required for duty_type = 'S4'" in _text(label)
+        assert app.report is None
+        app.query_one(f"#{kind}", Select).value = "S3"
+        await pilot.pause()
+        await _computed(app, pilot)
+        assert app.report is not None
+        assert _text(label).strip() == ""

@@ -14,6 +14,18 @@ def share_zero_or_range(v: float) -> float:
     return v
 
 
+#: The smallest axial force of a segment taken as a load (as linear.force_N); below it the
+#: force is 0 (no load) or a slip: the coast after switch-off, braked by the load alone,
+#: would not end in finite time.
+SEGMENT_FORCE_MIN_N = 1.0
+
+
+def force_zero_or_range(v: float | None) -> float | None:
+    if v is not None and 0 < v < SEGMENT_FORCE_MIN_N:
+        raise ValueError(f"must be 0 or from {SEGMENT_FORCE_MIN_N:g} to 5e+06 N")
+    return v
+
+
 def move_has_distance(seg: Any) -> None:
     if seg.kind == "move" and seg.distance_m is None:
         raise ValueError("duty.segments: a move needs distance_m (its path, m)")

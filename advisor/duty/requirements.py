@@ -66,12 +66,13 @@ class LinearSegmentReq(_Segment):
         _num(
             ge=0,
             le=5e6,
-            desc="axial load of the segment, N; default linear.force_N",
+            desc="axial load of the segment, N: 0 or 1 … 5·10⁶; default linear.force_N",
             label="force",
             step=STEP,
         ),
     ] = None
 
+    _force_zero_or_range = field_check("force_N", checks.force_zero_or_range)
     _move_has_distance = after_check(checks.move_has_distance)
 
 
@@ -93,7 +94,7 @@ class RotarySegmentReq(_Segment):
     accel_fraction: Annotated[
         float,
         _num(
-            ge=0.01,
+            ge=1e-3,
             lt=0.5,
             desc="share of a trapezoidal move spent accelerating (and braking)",
             label="accelerating share",
@@ -258,7 +259,7 @@ class RotaryDutyReq(_CycleDuty):
     motor_inertia_kgm2: Annotated[
         float,
         _num(
-            ge=1e-9,
+            ge=1e-11,
             le=1e3,
             desc="rotor inertia of the motor, kg·m²",
             label="Motor inertia",

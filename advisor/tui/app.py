@@ -420,6 +420,7 @@ class DriveAdvisorApp(App[None]):
         #: the document the warm-up advised on and its design (None: none, or taken)
         self._warm_advice: tuple[dict[str, Any], Any] | None = None
         self._widgets: dict[str, Any] = {}  # id → widget, see _by_id
+        self._engine_marked: set[str] = set()  # fields whose label shows an engine message
         self._engine_said: tuple[Any, list[str]] | None = None  # document → its messages
         self._plots_preloaded = False  # the plotting library's import started (or done)
         self._views_report: Any = None  # the report whose plots and comparison are shown
@@ -962,6 +963,7 @@ class DriveAdvisorApp(App[None]):
             elif f.id in self.field_errors:
                 ok = False
         step_msgs: list[str] = []
+        said: set[str] = set()  # the fields of this step the engine speaks of now
         for line in self._engine_errors():
             owner = F.error_owner(line, kind, step)
             if owner is None:
@@ -973,9 +975,20 @@ class DriveAdvisorApp(App[None]):
             if owner and target is not None and target in F.fields_for(kind, step):
                 if target.id not in self.field_errors:  # the field's own words come first
                     self._by_id(f"{target.id}-err").update(plain(line.split(": ", 1)[-1]))
+                    said.add(target.id)
             else:
                 step_msgs.append(line)
             ok = False
+        # what the engine said of a field and says no more goes (an S4's "starts_per_hour:
+        # missing" once the duty is S3); a field's own error stays
+        for f in F.fields_for(kind, step):
+            if f.id in self._engine_marked and f.id not in said and f.id not in self.field_errors:
+                label = self._by_id(f"{f.id}-err")
+                if label is not None:
+                    label.update("")
+        self._engine_marked = (
+            self._engine_marked - {f.id for f in F.fields_for(kind, step)}
+        ) | said
         self._show_step_messages(step, step_msgs)
         return ok
 
