@@ -242,8 +242,10 @@ def _run_pool(
     todo: list[tuple[int, Path, Path]],
     catalog_dir: Path | None,
     outcomes: dict[int, Outcome],
+    size: int | None = None,
 ) -> tuple[list[tuple[int, Path, Path]], list[tuple[int, Path, Path]]]:
-    """Advise ``todo`` with ``jobs`` workers, in tasks of :func:`chunk_size` files, at most
+    """Advise ``todo`` with ``jobs`` workers, in tasks of ``size`` files (by default
+    :func:`chunk_size`), at most
     ``IN_FLIGHT × jobs`` tasks in flight (a worker finds its next task queued instead of
     waiting for the parent to hear of the last one), recording each outcome as it arrives.
     When a worker dies (the pool is then broken) returns the files in flight and those not
@@ -251,7 +253,7 @@ def _run_pool(
     from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
     from concurrent.futures.process import BrokenProcessPool
 
-    size = chunk_size(len(todo), jobs)
+    size = size or chunk_size(len(todo), jobs)
     pending = [todo[k : k + size] for k in range(0, len(todo), size)][::-1]
     pool = ProcessPoolExecutor(
         max_workers=jobs, mp_context=_pool_context(), initializer=_ignore_sigint
@@ -332,9 +334,13 @@ def run_many(
                     notify(
                         f"a worker process died; {len(held)} file(s) it may have held are re-run"
                     )
-                for item in held:  # each alone: only the file that kills its worker fails
-                    if _run_pool(1, [item], catalog_dir, outcomes)[0]:
+                # the files of the tasks in flight, again in the pool but a file a task: only
+                # those in flight at a second death are then run alone
+                again, rest = _run_pool(jobs, held, catalog_dir, outcomes, size=1)
+                for item in again:  # each alone: only the file that kills its worker fails
+                    if _run_pool(1, [item], catalog_dir, outcomes, size=1)[0]:
                         outcomes[item[0]] = _died(item[1])
+                todo = rest + todo
         else:
             for i, f, t in todo:
                 outcomes[i] = advise_one(f, t, catalog_dir)
