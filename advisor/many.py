@@ -261,11 +261,19 @@ def _run_pool(
     flight: dict = {}
     try:
         while pending or flight:
+            broken = False
             while pending and len(flight) < IN_FLIGHT * jobs:
                 task = pending.pop()
-                flight[pool.submit(advise_chunk, task, catalog_dir)] = task
-            done, _ = wait(flight, return_when=FIRST_COMPLETED)
-            broken = False
+                try:
+                    fut = pool.submit(advise_chunk, task, catalog_dir)
+                except BrokenProcessPool:  # a worker died before this task was taken
+                    flight[None] = task  # held with those in flight: it is run again
+                    broken = True
+                    break
+                flight[fut] = task
+            done = [f for f in flight if f is not None and f.done()]
+            if not broken:
+                done, _ = wait(flight, return_when=FIRST_COMPLETED)
             for fut in done:
                 task = flight.pop(fut)
                 try:
@@ -280,7 +288,7 @@ def _run_pool(
     except KeyboardInterrupt:  # let the files in progress finish, and count their reports
         pool.shutdown(wait=True, cancel_futures=True)
         for fut in flight:
-            if fut.done() and not fut.cancelled() and fut.exception() is None:
+            if fut is not None and fut.done() and not fut.cancelled() and fut.exception() is None:
                 outcomes.update(fut.result())
         raise
     finally:

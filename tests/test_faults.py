@@ -652,3 +652,32 @@ def test_a_user_catalog_that_is_a_fifo_or_too_deep_is_refused_in_one_line(tmp_pa
     (d / MOTORS_FILE).write_text("x = " + "[" * 5000 + "]" * 5000 + "\n")
     with pytest.raises(CatalogError, match=r"^catalog .*nested more than 32 levels deep"):
         load_catalogs(d)
+
+
+def test_a_pool_broken_while_tasks_are_handed_out_loses_no_file(tmp_path, monkeypatch, capsys):
+    """A worker may die between two hand-outs: the next ``submit`` then raises
+    BrokenProcessPool itself. That is a dead worker like any other (its files run again), not
+    an internal error of the run (a reviewer's run hit it once in three)."""
+    from concurrent.futures import ProcessPoolExecutor
+    from concurrent.futures.process import BrokenProcessPool
+
+    real_submit = ProcessPoolExecutor.submit
+    calls = {"n": 0}
+
+    def submit(self, *args, **kwargs):
+        calls["n"] += 1
+        if calls["n"] == 3:  # once: as if a worker had just died
+            raise BrokenProcessPool("A child process terminated abruptly")
+        return real_submit(self, *args, **kwargs)
+
+    monkeypatch.setattr(ProcessPoolExecutor, "submit", submit)
+    monkeypatch.setattr(many, "usable_cpus", lambda: 2)
+    d = tmp_path / "in"
+    for i in range(40):
+        _linear(d, f"r{i:02}.toml")
+    rc = main(["--batch", str(d), "--out-dir", str(tmp_path / "o"), "-j", "2"])
+    printed = capsys.readouterr()
+    assert rc == ExitCode.OK, printed.err
+    assert len(list((tmp_path / "o").iterdir())) == 40
+    assert "40 designs" in printed.out
+    assert "a worker process died" in printed.err and "BrokenProcessPool" not in printed.err
