@@ -4,14 +4,14 @@
 
 from typing import Any
 
+from advisor.core.ranges import zero_or_from
+
 #: The smallest load share taken as a load; below it the share is 0 (no load) or a slip.
 LOAD_SHARE_MIN = 1e-3
 
 
 def share_zero_or_range(v: float) -> float:
-    if 0 < v < LOAD_SHARE_MIN:
-        raise ValueError(f"must be 0 or from {LOAD_SHARE_MIN:g} to 10")
-    return v
+    return zero_or_from(v, LOAD_SHARE_MIN, "10")
 
 
 #: The smallest axial force of a segment taken as a load (as linear.force_N); below it the
@@ -21,9 +21,7 @@ SEGMENT_FORCE_MIN_N = 1.0
 
 
 def force_zero_or_range(v: float | None) -> float | None:
-    if v is not None and 0 < v < SEGMENT_FORCE_MIN_N:
-        raise ValueError(f"must be 0 or from {SEGMENT_FORCE_MIN_N:g} to 5e+06 N")
-    return v
+    return zero_or_from(v, SEGMENT_FORCE_MIN_N, "5e+06 N")
 
 
 def move_has_distance(seg: Any) -> None:

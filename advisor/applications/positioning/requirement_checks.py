@@ -4,6 +4,8 @@ batch path (:mod:`advisor.core.light`). Each raises ValueError with the message 
 
 from typing import Any
 
+from advisor.core.ranges import zero_or_from
+
 #: The smallest non-zero load inertia and load torque taken as a load; below them the value
 #: is either 0 (no such load) or a typing error.
 LOAD_INERTIA_MIN_KGM2 = 1e-9
@@ -11,15 +13,11 @@ LOAD_TORQUE_MIN_NM = 1e-6
 
 
 def inertia_zero_or_range(v: float) -> float:
-    if 0 < v < LOAD_INERTIA_MIN_KGM2:
-        raise ValueError(f"must be 0 or from {LOAD_INERTIA_MIN_KGM2:g} to 1e+07 kg·m²")
-    return v
+    return zero_or_from(v, LOAD_INERTIA_MIN_KGM2, "1e+07 kg·m²")
 
 
 def torque_zero_or_range(v: float) -> float:
-    if 0 < v < LOAD_TORQUE_MIN_NM:
-        raise ValueError(f"must be 0 or from {LOAD_TORQUE_MIN_NM:g} to 1e+07 N·m")
-    return v
+    return zero_or_from(v, LOAD_TORQUE_MIN_NM, "1e+07 N·m")
 
 
 def unique_names(pos: Any) -> None:
