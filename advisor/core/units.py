@@ -3,123 +3,332 @@
 to the unit its key names before the requirement models see it. The report therefore echoes
 the requirement in the keys' (SI) units.
 
-pint parses the strings; it is imported only when a string sits in a numeric field, so a
-file of plain numbers costs nothing (pint itself imports numpy). Its parsed unit definitions
-are cached beside the catalog cache (``$XDG_CACHE_HOME/drive-advisor/pint``).
+The strings are read by a strict grammar of this module, never evaluated (issue 24: pint,
+which read them before, parses a unit string as an arithmetic expression, so ``"9**9**9 N"``
+never ended, ``"5 kN + 3 kN"`` was 8 kN, ``"3500 N*ln10"`` 8059 N, and its disk cache ran
+pickles from a writable folder). A quantity is::
 
-pint treats the radian as dimensionless, so ``1 Hz`` would become 9.55 rpm and ``5 rad`` a
-valid force ratio. An angle is therefore checked apart from the dimension: a field whose
-unit holds an angle (rad, deg, rpm, rad/s) takes only a value whose unit holds one, and the
-other way round. A number in quotes without a unit is refused: it is a slip or a unit left
-out, and guessing either way would hide it.
+    quantity := number unit (op unit)*        at most 64 characters
+    number   := [+-] digits [. digits] [e [+-] digits]     (finite)
+    unit     := name [^n | **n | ² | ³ | ⁻¹ …]              n a whole number, 1 ≤ |n| ≤ 4
+    op       := * | · | /                       at most one /, followed by one unit
+
+with ``name`` one of :data:`UNITS` (an SI symbol with or without an SI prefix, or one of a
+few other units engineers type: in, ft, lbf, kgf, rpm, deg, …). Nothing else: no
+parentheses, no arithmetic between numbers, no functions or constants, no ``%``, no
+comments, no control or bidi characters. A string is read in one pass, in time proportional
+to its length after the length cap, so any input is answered within microseconds.
+
+The conversion factors are exact definitions (SI Brochure, 9th ed., 2019, tables 8 and 9
+for the prefixes and the non-SI units accepted with the SI; NIST SP 811, 2008, appendix B.8
+for the inch, foot, pound, pound-force, kilogram-force, horsepower and psi), so no library
+is needed. The radian is kept as a dimension of its own (pint counted it as none), so a
+speed of rotation (rpm, rad/s, deg/s) is told apart from a frequency (Hz) and an angle from a
+pure number. An energy (J, cal, W·h) has the dimension of a torque but is not one: a torque
+field refuses it (issue 23, item 9). A number in quotes without a unit is refused: it is a
+slip or a unit left out, and guessing either way would hide it.
 """
 
 import math
-import os
 import re
+import unicodedata
 from functools import cache
-from typing import Any, get_args, get_origin
+from typing import Any, NamedTuple, get_args, get_origin
 
 from pydantic import BaseModel
 
 from advisor.core.errors import InputError
 from advisor.core.questions import _strip_optional
 
-#: pint's spelling of the units the keys name (the display units of
-#: :data:`advisor.core.questions.UNIT_SUFFIXES`); '' is a pure number.
-PINT_UNITS = {
-    "": "dimensionless",
-    "N": "N",
-    "N·m": "N*m",
-    "m": "m",
-    "mm": "mm",
-    "mm²": "mm**2",
-    "s": "s",
-    "min": "minute",
-    "h": "hour",
-    "rpm": "rpm",
-    "Hz": "Hz",
-    "kg": "kg",
-    "kg·m²": "kg*m**2",
-    "kg·m²/s": "kg*m**2/s",
-    "kg/m³": "kg/m**3",
-    "m²/s": "m**2/s",
-    "mm²/s": "mm**2/s",
-    "rad": "rad",
-    "rad/s": "rad/s",
-    "deg": "deg",
-    "W": "W",
-    "kW": "kW",
-    "A": "A",
-    "T": "T",
-    "Ω": "ohm",
+#: The longest quantity read; a longer string is refused before it is looked at.
+MAX_CHARS = 64
+
+# ------------------------------------------------------------------ the units known
+#: Dimension exponents, in this order: metre, kilogram, second, ampere, radian.
+Dims = tuple[int, int, int, int, int]
+
+
+class Unit(NamedTuple):
+    factor: float  # the SI value of one of it (in m, kg, s, A, rad and their products)
+    dims: Dims
+    energy: bool = False  # an energy or a power by name (J, cal, W·h, W, hp): never a torque
+
+
+_L, _M, _T, _I, _R = (
+    (1, 0, 0, 0, 0),
+    (0, 1, 0, 0, 0),
+    (0, 0, 1, 0, 0),
+    (0, 0, 0, 1, 0),
+    (0, 0, 0, 0, 1),
+)
+_NONE: Dims = (0, 0, 0, 0, 0)
+_FORCE: Dims = (1, 1, -2, 0, 0)
+_ENERGY: Dims = (2, 1, -2, 0, 0)  # also a torque (N·m)
+_POWER: Dims = (2, 1, -3, 0, 0)
+_PRESSURE: Dims = (-1, 1, -2, 0, 0)
+_TESLA: Dims = (0, 1, -2, -1, 0)
+_VOLT: Dims = (2, 1, -3, -1, 0)
+_OHM: Dims = (2, 1, -3, -2, 0)
+_HERTZ: Dims = (0, 0, -1, 0, 0)
+_ROTATION: Dims = (0, 0, -1, 0, 1)  # rad/s
+_VISCOSITY: Dims = (2, 0, -1, 0, 0)  # m²/s
+
+#: SI prefixes (SI Brochure, table 7); the micro sign, the Greek mu and 'u' all mean 10⁻⁶.
+_PREFIX = {"G": 1e9, "M": 1e6, "k": 1e3, "c": 1e-2, "d": 1e-1, "m": 1e-3, "u": 1e-6}
+_PREFIX |= {"µ": 1e-6, "μ": 1e-6, "n": 1e-9}
+
+#: Units that take prefixes: symbol → (the unit, the prefixes it takes).
+_PREFIXED: dict[str, tuple[Unit, str]] = {
+    "m": (Unit(1.0, _L), "kcdmuµμn"),
+    "g": (Unit(1e-3, _M), "kmuµμ"),
+    "s": (Unit(1.0, _T), "muµμn"),
+    "N": (Unit(1.0, _FORCE), "GMkmuµμ"),
+    "Hz": (Unit(1.0, _HERTZ), "GMkm"),
+    "W": (Unit(1.0, _POWER, True), "GMkmuµμ"),
+    "A": (Unit(1.0, _I), "kmuµμ"),
+    "T": (Unit(1.0, _TESLA), "muµμn"),
+    "Pa": (Unit(1.0, _PRESSURE), "GMk"),
+    "bar": (Unit(1e5, _PRESSURE), "m"),
+    "V": (Unit(1.0, _VOLT), "kmuµμ"),
+    "ohm": (Unit(1.0, _OHM), "GMkm"),
+    "Ω": (Unit(1.0, _OHM), "GMkm"),
+    "J": (Unit(1.0, _ENERGY, True), "GMkm"),
+    "Wh": (Unit(3600.0, _ENERGY, True), "GMk"),
+    "cal": (Unit(4.184, _ENERGY, True), "k"),  # thermochemical calorie (NIST SP 811, B.8)
+    "rad": (Unit(1.0, _R), "m"),
+    "Nm": (Unit(1.0, _ENERGY), "Mkm"),  # N·m written without its dot, as engineers do
+    "St": (Unit(1e-4, _VISCOSITY), "c"),  # stokes; cSt = mm²/s
 }
 
-#: Units that carry an angle (pint counts the radian as no dimension at all).
-_ANGULAR = {"rad", "deg", "rpm", "rad/s"}
+#: Units without prefixes.
+_PLAIN: dict[str, Unit] = {
+    "t": Unit(1e3, _M),  # tonne
+    "lb": Unit(0.45359237, _M),
+    "in": Unit(0.0254, _L),
+    "inch": Unit(0.0254, _L),
+    "ft": Unit(0.3048, _L),
+    "lbf": Unit(4.4482216152605, _FORCE),
+    "kgf": Unit(9.80665, _FORCE),
+    "min": Unit(60.0, _T),
+    "h": Unit(3600.0, _T),
+    "hp": Unit(745.69987158227022, _POWER, True),  # 550 ft·lbf/s
+    "psi": Unit(6894.757293168361, _PRESSURE),
+    "G": Unit(1e-4, _TESLA),  # gauss: 10⁻⁴ T (SI Brochure, table 9, note)
+    "deg": Unit(math.pi / 180, _R),
+    "°": Unit(math.pi / 180, _R),
+    "rev": Unit(2 * math.pi, _R),
+    "turn": Unit(2 * math.pi, _R),
+    "rpm": Unit(2 * math.pi / 60, _ROTATION),
+    "rps": Unit(2 * math.pi, _ROTATION),
+}
 
-#: Words for what a unit measures, for messages (matched by dimension).
-_DIMENSION_WORDS = (
-    ("m", "a length"),
-    ("kg", "a mass"),
-    ("s", "a time"),
-    ("Hz", "a frequency"),
-    ("N", "a force"),
-    ("N*m", "a torque or energy"),
-    ("W", "a power"),
-    ("kg*m**2", "a moment of inertia"),
-    ("kg*m**2/s", "an angular momentum"),
-    ("kg/m**3", "a density"),
-    ("m**2/s", "a kinematic viscosity"),
-    ("m**2", "an area"),
-    ("A", "a current"),
-    ("T", "a flux density"),
-    ("ohm", "a resistance"),
-    ("m/s", "a speed"),
-    ("Pa", "a pressure"),
-    ("V", "a voltage"),
-    ("dimensionless", "a pure number"),
-)
 
-#: A number, then a unit: what the JSON Schema allows as a string.
+def _all_units() -> dict[str, Unit]:
+    out = dict(_PLAIN)
+    for symbol, (unit, prefixes) in _PREFIXED.items():
+        for p in "" + prefixes:
+            name = p + symbol
+            assert name not in out, name  # every name means one unit
+            out[name] = Unit(_PREFIX.get(p, 1.0) * unit.factor, unit.dims, unit.energy)
+        out[symbol] = unit
+    return out
+
+
+#: Every unit name the grammar knows, with its SI value and dimension.
+UNITS: dict[str, Unit] = _all_units()
+
+#: Words for what a dimension measures, for messages.
+_WORDS: dict[Dims, str] = {
+    _NONE: "a pure number",
+    _L: "a length",
+    _M: "a mass",
+    _T: "a time",
+    _I: "a current",
+    _R: "an angle",
+    _HERTZ: "a frequency",
+    _ROTATION: "a speed of rotation",
+    (0, 0, -2, 0, 1): "an angular acceleration",
+    _FORCE: "a force",
+    _ENERGY: "a torque",
+    _POWER: "a power",
+    (2, 1, 0, 0, 0): "a moment of inertia",
+    (2, 1, -1, 0, 0): "an angular momentum",
+    (-3, 1, 0, 0, 0): "a density",
+    _VISCOSITY: "a kinematic viscosity",
+    (2, 0, 0, 0, 0): "an area",
+    (3, 0, 0, 0, 0): "a volume",
+    (1, 0, -1, 0, 0): "a speed",
+    (1, 0, -2, 0, 0): "an acceleration",
+    _PRESSURE: "a pressure",
+    _TESLA: "a flux density",
+    _VOLT: "a voltage",
+    _OHM: "a resistance",
+}
+
+#: A few units of each kind to name in a refusal ("what is allowed").
+_SHOWN = (
+    "N kN MN mN lbf kgf N·m kN·m N·cm N·mm lbf·ft m mm cm km µm in ft s ms min h rpm rad/s "
+    "deg/s rev/s Hz kHz rad deg rev kg g t lb W kW MW hp A mA T mT G Ω kΩ mΩ Pa kPa MPa "
+    "kg·m² kg·cm² kg·m²/s kg/m³ g/cm³ m²/s mm²/s cSt mm² cm² m²"
+).split()
+
+# ------------------------------------------------------------------ the grammar
+#: A number, then a unit: what the JSON Schema allows as a string (the grammar decides).
 PATTERN = r"^\s*[-+]?(\d+(\.\d*)?|\.\d+)([eE][-+]?\d+)?\s*[^\s\d.+-].*$"
-_NUMBER = re.compile(r"^\s*[-+]?(\d+(\.\d*)?|\.\d+)([eE][-+]?\d+)?\s*$")
 
+#: Spaces a quantity copied from a typeset page holds (SI Brochure 5.4.3: a thin space
+#: between number and unit), read as a plain space.
+_SPACES = str.maketrans({"\u00a0": " ", "\u2009": " ", "\u202f": " "})
+_ALLOWED = set("0123456789.+-eE*/^ \t·²³¹⁴⁻µμΩ°")
+_NUMBER_RE = re.compile(r"[+-]?(?:[0-9]+(?:\.[0-9]*)?|\.[0-9]+)(?:[eE][+-]?[0-9]+)?", re.ASCII)
+_NAME_RE = re.compile(r"[A-Za-zµμΩ°]+")
+_POWER_RE = re.compile(r"(?:\^|\*\*)([+-]?[0-9]+)|(⁻?[¹²³⁴])")
+_OP_RE = re.compile(r"[ \t]*([*·/])[ \t]*")
+_SUPERSCRIPT = {"¹": 1, "²": 2, "³": 3, "⁴": 4}
 
-_GARBAGE = 'must be a number or a quantity with a unit, like "5 kN", "200 mm" or "1500 rpm"'
+_GARBAGE = "must be a number or a quantity with a unit"
+
+#: What a quantity may be, said in every refusal of the grammar.
+GRAMMAR = 'a number, then units joined by *, · or /, powers as ^2 (e.g. "5 kN", "2 kg*m^2")'
 
 
 class UnitError(ValueError):
     """A string that is not a quantity of the field's unit; the message says why."""
 
 
+class _NumberOnly(UnitError):
+    """A number in quotes without a unit."""
+
+
+class _Infinite(UnitError):
+    """A number beyond the largest float (1e400)."""
+
+
+class _Structure(UnitError):
+    """Units not joined as the grammar joins them."""
+
+
+class Parsed(NamedTuple):
+    number: float
+    unit_text: str  # the unit as typed, for messages
+    factor: float  # SI value of one of the unit
+    dims: Dims
+    energy: bool  # holds an energy or power by name (J, cal, W·h, W, hp)
+
+
+def _char_problem(text: str) -> str | None:
+    """The first character no quantity holds, named (a control or bidi character by its
+    code point and Unicode name, so that the message shows what cannot be seen)."""
+    for ch in text:
+        if ch in _ALLOWED or (ch.isascii() and ch.isalpha()):
+            continue
+        if ch in "()[]{}":
+            return "parentheses are not allowed"
+        if ch.isprintable() and not unicodedata.category(ch).startswith(("C", "Z")):
+            return f"{ch!r} is not allowed"
+        name = unicodedata.name(ch, "a control character")
+        return f"U+{ord(ch):04X} ({name}) is not allowed"
+    return None
+
+
+def _power(text: str, pos: int) -> tuple[int, int]:
+    """The exponent written at ``pos`` (1 if none) and the position after it."""
+    m = _POWER_RE.match(text, pos)
+    if not m:
+        return 1, pos
+    if m.group(1) is not None:
+        digits = m.group(1)
+        n = int(digits) if len(digits) <= 3 else 99
+    else:
+        sup = m.group(2)
+        n = -_SUPERSCRIPT[sup[-1]] if sup.startswith("⁻") else _SUPERSCRIPT[sup]
+    if not 1 <= abs(n) <= 4:
+        raise _Structure(f"a power is a whole number from -4 to 4, not {m.group(0)!r}")
+    return n, m.end()
+
+
+def _units(text: str, pos: int) -> tuple[float, Dims, bool]:
+    """The unit expression of ``text`` from ``pos`` to its end: its SI factor, dimension and
+    whether it names an energy; :class:`UnitError` for anything the grammar does not hold."""
+    factor, dims, energy = 1.0, (0, 0, 0, 0, 0), False
+    sign, divided = 1, False
+    while True:
+        m = _NAME_RE.match(text, pos)
+        if not m:
+            at = repr(text[pos : pos + 8]) if pos < len(text) else "the end"
+            raise _Structure(f"a unit expected at {at}")
+        unit = UNITS.get(m.group(0))
+        if unit is None:
+            raise UnitError(f"{m.group(0)[:16]!r} is not a unit known here")
+        n, pos = _power(text, m.end())
+        n *= sign
+        factor *= unit.factor**n
+        dims = tuple(d + n * u for d, u in zip(dims, unit.dims, strict=True))  # type: ignore[assignment]
+        energy = energy or unit.energy
+        if pos == len(text):
+            return factor, dims, energy
+        op = _OP_RE.match(text, pos)
+        if not op:
+            raise _Structure(f"{text[pos : pos + 8]!r} cannot follow a unit")
+        if divided:
+            raise _Structure("one unit only after '/' (kg/m^3, not kg/m/s)")
+        if op.group(1) == "/":
+            sign, divided = -1, True
+        pos = op.end()
+
+
+def parse(text: str) -> Parsed:
+    """A quantity read by the grammar of this module; :class:`UnitError` saying why not.
+
+    >>> parse("5 kN").number, parse("5 kN").factor, parse("5 kN").dims
+    (5.0, 1000.0, (1, 1, -2, 0, 0))
+    """
+    if len(text) > MAX_CHARS:  # before anything looks at it: a 1 MiB string costs nothing
+        raise UnitError(f"at most {MAX_CHARS} characters")
+    text = text.translate(_SPACES)
+    bad = _char_problem(text)
+    if bad:
+        raise UnitError(bad)
+    s = text.strip(" \t")
+    m = _NUMBER_RE.match(s)
+    if not m:
+        raise _Structure("a number first")
+    number = float(m.group(0))
+    if not math.isfinite(number):
+        raise _Infinite("must be finite")
+    pos = m.end()
+    while pos < len(s) and s[pos] in " \t":
+        pos += 1
+    if pos == len(s):
+        raise _NumberOnly(m.group(0))
+    factor, dims, energy = _units(s, pos)
+    return Parsed(number, s[pos:], factor, dims, energy)
+
+
 @cache
-def _registry() -> Any:
-    import pint
-
-    folder = None
-    if not os.environ.get("DRIVE_ADVISOR_NO_CACHE"):
-        base = os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache")
-        folder = os.path.join(base, "drive-advisor", "pint")
-    try:
-        ureg = pint.UnitRegistry(cache_folder=folder)
-    except OSError:  # an unwritable cache: parse the definitions every time
-        ureg = pint.UnitRegistry()
-    ureg.define("rev = revolution")  # "1 rev/s", as engineers write it
-    return ureg
+def _target(unit: str) -> Parsed | None:
+    """A key's unit (``N·m``, ``kg·m²``, ``mm²/s``) read by the same grammar; None for
+    a pure number ('')."""
+    if not unit:
+        return None
+    return parse("1 " + unit)
 
 
-def _words(dimensionality: Any) -> str:
-    ureg = _registry()
-    for unit, words in _DIMENSION_WORDS:
-        if ureg.Unit(unit).dimensionality == dimensionality:
-            return words
-    return f"of dimension {dimensionality}"
+def _kind(dims: Dims, energy: bool) -> str:
+    if dims == _ENERGY and energy:
+        return "an energy"
+    return _WORDS.get(dims, "of another kind")
 
 
-def _has_angle(units: Any) -> bool:
-    """Whether a unit holds an angle: in base units, the radian stays (Hz does not)."""
-    return "radian" in str((1 * units).to_base_units().units)
+@cache
+def allowed(unit: str) -> str:
+    """Units a field of ``unit`` takes, a few named (for a refusal)."""
+    want = _target(unit)
+    dims = want.dims if want else _NONE
+    same = [u for u in _SHOWN if parse("1 " + u).dims == dims]
+    if unit and unit not in same:
+        same.insert(0, unit)
+    return ", ".join(same[:8]) if same else "a pure number"
 
 
 def to_unit(text: str, unit: str) -> float:
@@ -132,34 +341,36 @@ def to_unit(text: str, unit: str) -> float:
     >>> to_unit("90 deg", "rad"), to_unit("3 N*m", "N·m")
     (1.57079632679, 3.0)
     """
-    if _NUMBER.match(text):  # a number in quotes: a slip, or a unit left out
-        n = text.strip()
+    try:
+        want = _target(unit)
+    except UnitError:
+        raise UnitError(f"this field takes numbers in {unit} only") from None
+    try:
+        q = parse(text)
+    except _NumberOnly as exc:  # a number in quotes: a slip, or a unit left out
+        n = str(exc)
         if len(n) > 24:
-            raise UnitError("must be a number, or a quantity with its unit; not a number in quotes")
+            raise UnitError(
+                "must be a number, or a quantity with its unit; not a number in quotes"
+            ) from None
         raise UnitError(
             f"must be a number ({n})"
             + (f' or a quantity with its unit ("{n} {unit}")' if unit else "")
-        )
-    if not re.match(PATTERN, text):  # a unit alone ("kN") is 1 kN to pint: not here
-        raise UnitError(_expected(unit, _GARBAGE))
-    target = PINT_UNITS.get(unit)
-    if target is None:
-        raise UnitError(f"this field takes numbers in {unit} only")
-    ureg = _registry()
-    import pint
-
-    try:
-        q = ureg.Quantity(text.strip())
-    except (pint.errors.PintError, ValueError, TypeError, SyntaxError, AttributeError):
-        raise UnitError(_expected(unit, _GARBAGE)) from None
-    if not isinstance(q, ureg.Quantity) or not isinstance(q.magnitude, int | float):
-        raise UnitError(_expected(unit, _GARBAGE))
-    want = ureg.Unit(target)
-    if q.dimensionality != want.dimensionality or _has_angle(q.units) != (unit in _ANGULAR):
+        ) from None
+    except _Infinite:
+        raise UnitError(_expected(unit, "must be finite")) from None
+    except _Structure as exc:
+        raise UnitError(_expected(unit, f"{_GARBAGE} ({exc}; {GRAMMAR})")) from None
+    except UnitError as exc:
         raise UnitError(
-            _expected(unit, f"{_given(q)} is {_kind(q, ureg)}, not {_wanted(unit, want)}")
-        )
-    value = float(q.to(want).magnitude)
+            _expected(unit, f"{_GARBAGE} ({exc}; units here: {allowed(unit)})")
+        ) from None
+    dims, factor = (want.dims, want.factor) if want else (_NONE, 1.0)
+    wrong = q.dims != dims or (q.energy and dims == _ENERGY)
+    if wrong:
+        what = "a torque" if dims == _ENERGY else _kind(dims, False)
+        raise UnitError(_expected(unit, f"{q.unit_text} is {_kind(q.dims, q.energy)}, not {what}"))
+    value = q.number * (q.factor / factor)
     if not math.isfinite(value):
         raise UnitError(_expected(unit, "must be finite"))
     return _round12(value)
@@ -173,25 +384,6 @@ def _round12(x: float) -> float:
 
 def _expected(unit: str, what: str) -> str:
     return f"{what}; expected {unit or 'a pure number'}"
-
-
-def _given(q: Any) -> str:
-    return f"{q.units:~P}" or "a pure number"
-
-
-def _kind(q: Any, ureg: Any) -> str:
-    """What a quantity measures, in words (an angle told apart from a pure number)."""
-    if _has_angle(q.units):
-        return "an angle" if q.dimensionality == {} else "a speed of rotation"
-    return _words(q.dimensionality)
-
-
-def _wanted(unit: str, want: Any) -> str:
-    if unit in ("rad", "deg"):
-        return "an angle"
-    if unit in ("rpm", "rad/s"):
-        return "a speed of rotation"
-    return _words(want.dimensionality)
 
 
 # ------------------------------------------------------------------ requirement documents
@@ -257,14 +449,14 @@ def _convert(data: Any, model: type[BaseModel], path: tuple[Any, ...], errors: l
         ann = _strip_optional(info.annotation)
         here = (*path, name)
         if isinstance(value, str) and _is_number(ann):
-            out[name] = _one(value, _unit(name, info), ann, here, errors)
+            out[name] = _one(value, _unit(name, info), here, errors)
         elif isinstance(value, list) and get_origin(ann) is list:
             item = _strip_optional(get_args(ann)[0])
             item = get_args(item)[0] if get_origin(item) is not None and get_args(item) else item
             if _is_number(item):
                 unit = _unit(name, info)
                 out[name] = [
-                    _one(v, unit, item, (*here, i), errors) if isinstance(v, str) else v
+                    _one(v, unit, (*here, i), errors) if isinstance(v, str) else v
                     for i, v in enumerate(value)
                 ]
             elif _models(item):
@@ -281,7 +473,7 @@ def _convert(data: Any, model: type[BaseModel], path: tuple[Any, ...], errors: l
     return out
 
 
-def _one(text: str, unit: str, ann: Any, path: tuple[Any, ...], errors: list[str]) -> Any:
+def _one(text: str, unit: str, path: tuple[Any, ...], errors: list[str]) -> Any:
     try:
         value = to_unit(text, unit)
     except UnitError as exc:
