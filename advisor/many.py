@@ -94,48 +94,125 @@ def report_name(source: Path, taken: set[str]) -> str:
     return name
 
 
-def advise_one(source: Path, target: Path, catalog_dir: Path | None) -> Outcome:
-    """Advise one file and write its report; every failure becomes an Outcome."""
+class Advised(NamedTuple):
+    """One file advised, not yet written: its outcome and, for a design, the report text
+    that :func:`write_report` writes at ``outcome.report``."""
+
+    outcome: Outcome
+    text: str | None
+
+
+def advise_one(source: Path, target: Path, catalog_dir: Path | None) -> Advised:
+    """Advise one file; every failure becomes an Outcome. Nothing is written here: with
+    ``-j N`` this runs in a worker, and a worker can be killed at any instant (the pool kills
+    its siblings when one dies), so the files are written by the parent alone
+    (:func:`write_report`), which no pool kills in mid-write."""
     from advisor.core.engine import advise
     from advisor.core.reading import read_requirements
     from advisor.core.registry import headline
-    from advisor.core.report import to_toml, write_atomic
+    from advisor.core.report import to_toml
     from advisor.io_safety import same_file, show
 
     try:
         if same_file(source, target):
             raise InputError(f"{show(target, 200)}: is the input itself; it is not replaced")
         report = advise(read_requirements(source), catalog_dir)
-        write_atomic(target, to_toml(report))
+        text = to_toml(report)
         from advisor.ignored import IGNORED_PREFIX
 
         notes = tuple(w for w in report.warnings if w.startswith(IGNORED_PREFIX))
-        return Outcome(str(source), ExitCode.OK, str(target), headline(report), notes)
-    except InfeasibleError as exc:
-        return Outcome(str(source), exc.exit_code, None, exc.summary, tuple(exc.reasons))
-    except AdvisorError as exc:
-        lines = [line.removeprefix(f"{source}: ") for line in str(exc).splitlines()]
-        return Outcome(str(source), exc.exit_code, None, lines[0], tuple(lines[1:]))
-    except OSError as exc:
-        return Outcome(
-            str(source),
-            ExitCode.INVALID_INPUT,
-            None,
-            f"{show(target, 200)}: cannot write ({exc.strerror})",
-            (),
+        return Advised(
+            Outcome(str(source), ExitCode.OK, str(target), headline(report), notes), text
         )
+    except InfeasibleError as exc:
+        return Advised(
+            Outcome(str(source), exc.exit_code, None, exc.summary, tuple(exc.reasons)), None
+        )
+    except AdvisorError as exc:
+        return Advised(_refused(source, exc), None)
     except RecursionError:
-        return Outcome(
-            str(source), ExitCode.INVALID_INPUT, None, "nested too deeply to be read", ()
+        return Advised(
+            Outcome(str(source), ExitCode.INVALID_INPUT, None, "nested too deeply to be read", ()),
+            None,
         )
     except Exception as exc:  # a bug in one file must not stop the others
-        return Outcome(
-            str(source),
-            ExitCode.INTERNAL_ERROR,
+        return Advised(
+            Outcome(
+                str(source),
+                ExitCode.INTERNAL_ERROR,
+                None,
+                f"internal error ({type(exc).__name__}: {exc})",
+                (),
+            ),
             None,
-            f"internal error ({type(exc).__name__}: {exc})",
+        )
+
+
+def _refused(source: Path | str, exc: AdvisorError) -> Outcome:
+    lines = [line.removeprefix(f"{source}: ") for line in str(exc).splitlines()]
+    return Outcome(str(source), exc.exit_code, None, lines[0], tuple(lines[1:]))
+
+
+def write_report(advised: Advised) -> Outcome:
+    """Write an advised file's report (atomically: a temporary file renamed over the target,
+    removed by the writer on any failure, Ctrl-C included); a target that cannot be written
+    becomes the file's outcome."""
+    from advisor.core.report import write_atomic
+    from advisor.io_safety import show
+
+    o = advised.outcome
+    if advised.text is None or o.report is None:
+        return o
+    try:
+        write_atomic(Path(o.report), advised.text)
+    except AdvisorError as exc:  # the target turned into a FIFO or a directory meanwhile
+        return _refused(o.source, exc)
+    except OSError as exc:
+        return Outcome(
+            o.source,
+            ExitCode.INVALID_INPUT,
+            None,
+            f"{show(o.report, 200)}: cannot write ({exc.strerror})",
             (),
         )
+    return o
+
+
+def settle(results: list[tuple[int, Advised]], outcomes: dict[int, Outcome]) -> None:
+    """Write the reports of advised files and record their outcomes. Ctrl-C is held off
+    until the batch is recorded (then raised as usual): a report on disk is always counted
+    among those written, and one counted is on disk."""
+    with _SigintHeld():
+        for i, advised in results:
+            outcomes[i] = write_report(advised)
+
+
+class _SigintHeld:
+    """SIGINT noted inside the block and acted on at its end by the handler it replaced
+    (Python's raises KeyboardInterrupt). Blocking the signal with ``pthread_sigmask`` would
+    not do: it blocks one thread, and the kernel hands the signal to another (the process
+    pool's manager thread), whose handler still interrupts the main thread."""
+
+    def __enter__(self) -> None:
+        import signal
+
+        self.caught = False
+        try:
+            self.old = signal.signal(signal.SIGINT, self._note)
+        except ValueError:  # not the main thread: signals go to the main thread anyway
+            self.old = None
+
+    def _note(self, signum: int, frame: object) -> None:
+        self.caught = True
+
+    def __exit__(self, *exc: object) -> None:
+        import signal
+
+        if self.old is None:
+            return
+        signal.signal(signal.SIGINT, self.old)
+        if self.caught and callable(self.old):
+            self.old(signal.SIGINT, None)
 
 
 def _identities(paths: list[Path]) -> set[tuple[int, int]]:
@@ -232,8 +309,9 @@ def chunk_size(files: int, jobs: int) -> int:
 
 def advise_chunk(
     items: list[tuple[int, Path, Path]], catalog_dir: Path | None
-) -> list[tuple[int, Outcome]]:
-    """:func:`advise_one` for each file of a task, in a worker."""
+) -> list[tuple[int, Advised]]:
+    """:func:`advise_one` for each file of a task, in a worker; the parent writes the
+    reports (:func:`settle`)."""
     return [(i, advise_one(f, t, catalog_dir)) for i, f, t in items]
 
 
@@ -277,10 +355,12 @@ def _run_pool(
             for fut in done:
                 task = flight.pop(fut)
                 try:
-                    outcomes.update(fut.result())
+                    results = fut.result()
                 except BrokenProcessPool:
                     flight[fut] = task
                     broken = True
+                else:
+                    settle(results, outcomes)
             if broken:
                 held = [item for task in flight.values() for item in task]
                 return held, [item for task in reversed(pending) for item in task]
@@ -289,7 +369,7 @@ def _run_pool(
         pool.shutdown(wait=True, cancel_futures=True)
         for fut in flight:
             if fut is not None and fut.done() and not fut.cancelled() and fut.exception() is None:
-                outcomes.update(fut.result())
+                settle(fut.result(), outcomes)
         raise
     finally:
         pool.shutdown(wait=True, cancel_futures=True)
@@ -351,7 +431,7 @@ def run_many(
                 todo = rest + todo
         else:
             for i, f, t in todo:
-                outcomes[i] = advise_one(f, t, catalog_dir)
+                settle([(i, advise_one(f, t, catalog_dir))], outcomes)
     except KeyboardInterrupt:
         written = sum(o.code == ExitCode.OK for o in outcomes.values())
         raise Interrupted(written, len(files)) from None

@@ -681,3 +681,56 @@ def test_a_pool_broken_while_tasks_are_handed_out_loses_no_file(tmp_path, monkey
     assert len(list((tmp_path / "o").iterdir())) == 40
     assert "40 designs" in printed.out
     assert "a worker process died" in printed.err and "BrokenProcessPool" not in printed.err
+
+
+def test_a_worker_writes_nothing_the_parent_writes_the_report(tmp_path):
+    """The cause of the temp file a killed worker left (issue 24): the pool kills a worker's
+    siblings when one dies, and a sibling killed while it wrote left its
+    ``.NAME.report.toml.PID-XXXX.tmp``. A worker now only advises (:func:`many.advise_one`
+    writes nothing); the parent writes (:func:`many.write_report`)."""
+    src = _linear(tmp_path / "in")
+    target = tmp_path / "o" / "r.report.toml"
+    target.parent.mkdir()
+    advised = many.advise_one(src, target, None)
+    assert list(target.parent.iterdir()) == []  # nothing on disk yet, not even a temp file
+    assert advised.outcome.code == ExitCode.OK and advised.outcome.report == str(target)
+    assert many.write_report(advised) == advised.outcome
+    assert target.read_text(encoding="utf-8") == advised.text
+    assert [p.name for p in target.parent.iterdir()] == ["r.report.toml"]
+
+
+def test_ctrl_c_while_the_parent_writes_counts_what_is_on_disk(tmp_path, monkeypatch):
+    """SIGINT arriving in the middle of a write is held until the batch is recorded: both
+    reports are on disk and both are counted, then KeyboardInterrupt is raised."""
+    from advisor import io_safety
+
+    real = io_safety.write_atomic
+    writes = []
+
+    def interrupted_write(path, text):
+        writes.append(path)
+        if len(writes) == 1:
+            os.kill(os.getpid(), signal.SIGINT)  # Ctrl-C lands in the middle of the batch
+        real(path, text)
+
+    monkeypatch.setattr(io_safety, "write_atomic", interrupted_write)
+    import advisor.core.report as report_module
+
+    monkeypatch.setattr(report_module, "write_atomic", interrupted_write)
+    out = tmp_path / "o"
+    out.mkdir()
+    batch = [
+        (
+            i,
+            many.advise_one(
+                _linear(tmp_path / "in", f"r{i}.toml"), out / f"r{i}.report.toml", None
+            ),
+        )
+        for i in range(2)
+    ]
+    outcomes: dict = {}
+    with pytest.raises(KeyboardInterrupt):
+        many.settle(batch, outcomes)
+    assert sorted(outcomes) == [0, 1] and all(o.code == ExitCode.OK for o in outcomes.values())
+    assert sorted(p.name for p in out.iterdir()) == ["r0.report.toml", "r1.report.toml"]
+    assert signal.getsignal(signal.SIGINT) is signal.default_int_handler
