@@ -282,3 +282,82 @@ def size(kind: str, torque_Nm: float, rollers: int = 6) -> Device | None:
 
 
 TYPES = ("roller_clutch", "em_clutch", "worm", "inverse_gear")
+
+
+# ------------------------------------------------------------------ torque through a device
+class Passage(NamedTuple):
+    """How a holding device at the motor side passes torque between the motor and the load.
+
+    ``efficiency``: driving (the motor gives 1/η times the torque the device passes on).
+    ``back_drivable``: whether a load that drives (a torque with the motion) can turn the
+    motor through it; the electromagnetic clutch, energised, transmits both ways. A
+    self-locking device does not: the motor must drive the load down itself, with
+    ``lowering_factor`` times the load's torque, and nothing is regenerated."""
+
+    type: str
+    efficiency: float
+    back_drivable: bool
+    lowering_factor: float
+    basis: str
+
+
+def worm_lowering_factor(p: WormDesign = WORM) -> float:
+    """The worm torque that lowers a wheel load, per unit of the load's torque at the worm:
+    −tan(γ − φ)/tan γ, minus the back-driven efficiency of seed 004 (1 at γ = φ/2)."""
+    phi = math.atan(p.friction)
+    _, back = worm_efficiency(p.lead_share * phi, phi)
+    return -back
+
+
+def self_braking_lowering_factor(efficiency: float) -> float:
+    """For a self-braking pair known only by its driving efficiency η: with small angles
+    η = γ/(γ + φ) and the back-driven η' = (γ − φ)/γ = 2 − 1/η, so the motor lowers the load
+    with (1/η − 2) times its torque (0 at η = 0.5, the edge of self-locking)."""
+    return max(0.0, 1.0 / efficiency - 2.0)
+
+
+def passage(kind: str) -> Passage:
+    """Seed 004's devices as parts of the chain. The roller clutch passes rotation only from
+    its input to its output (the rollers wedge when the output drives): self-locking, and its
+    release takes only the rollers' friction, neglected (lowering factor 0). The worm and the
+    braking-profile gear are self-locking gears; the electromagnetic clutch is a clutch."""
+    if kind == "roller_clutch":
+        return Passage(kind, 1.0, False, 0.0, "seed 004: the rollers wedge when the load drives")
+    if kind == "em_clutch":
+        return Passage(kind, 1.0, True, 0.0, "seed 004: an energised clutch passes both ways")
+    if kind == "worm":
+        d = worm(1.0)
+        return Passage(
+            kind,
+            d.efficiency,
+            False,
+            worm_lowering_factor(),
+            "seed 004: tan γ/tan(γ + φ) driving, tan(γ − φ)/tan γ ≤ 0 back-driven",
+        )
+    if kind == "inverse_gear":
+        eta = INVERSE_GEAR.pair_efficiency
+        return Passage(
+            kind,
+            eta,
+            False,
+            self_braking_lowering_factor(eta),
+            f"seed 004: self-braking, η {eta:g} estimated; lowering factor 1/η − 2 "
+            "(small-angle friction model)",
+        )
+    raise ValueError(f"unknown one-way device {kind!r}")
+
+
+#: No device in the chain: torque passes unchanged both ways.
+NO_DEVICE = Passage("none", 1.0, True, 0.0, "no device")
+
+
+def motor_torque_through(p: Passage, torque_Nm: float) -> float:
+    """The motor torque that gives ``torque_Nm`` on the device's load side: T/η while the
+    motor drives (T ≥ 0); T (regenerating) through a back-drivable device while the load
+    drives (T < 0, the clutch's η = 1); through a self-locking one the motor drives the load
+    down with lowering_factor·|T| and takes nothing back."""
+    if torque_Nm >= 0.0:
+        return torque_Nm / p.efficiency
+    if p.back_drivable:
+        return torque_Nm * p.efficiency
+    return p.lowering_factor * -torque_Nm

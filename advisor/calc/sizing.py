@@ -342,6 +342,13 @@ class ThreadScreen(NamedTuple):
     revolutions: float
     speed_rpm: float
     self_locking_at_low_friction: bool
+    #: the driving efficiency of a holding device between the motor and this screw (seed
+    #: 004): the motor gives the screw torque divided by it
+    device_efficiency: float = 1.0
+
+    @property
+    def motor_torque_Nm(self) -> float:
+        return self.torque_Nm / self.device_efficiency
 
 
 def screen_threads(

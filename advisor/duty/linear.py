@@ -21,6 +21,7 @@ import math
 
 from advisor.calc import duty as du
 from advisor.calc import induction as im
+from advisor.calc import one_way as ow
 from advisor.calc.sizing import Check
 from advisor.core.cite import cite
 from advisor.core.errors import InfeasibleError
@@ -113,19 +114,39 @@ class MotorModel:
         return out, mm, mm / (mm - load) if load > 0 else 1.0
 
 
-def _segments_cycle(req, ev, mot: MotorModel, holder: str | None):
-    """Phases of the segments, the starts per cycle, the worst k_L, and problems."""
+def _unheld(ev, n: int, force: float, when: str) -> str:
+    return (
+        f"segment {n}: {when} the load of {force:g} N back-drives the screw "
+        f"{ev.thread.name} (not self-locking at the low end of its friction range) and an "
+        "induction motor on the line cannot hold a load at standstill; set "
+        "application.hold_without_power = true for a one-way device"
+    )
+
+
+def _segments_cycle(req, ev, mot: MotorModel, holder: str | None, passage=ow.NO_DEVICE):
+    """Phases of the segments, the starts per cycle, the worst k_L, and problems.
+
+    A load stands on the screw from a move or a hold until a dwell takes it off. Where it
+    back-drives the screw, something must hold it whenever the motor is off (the stop of a
+    move, its rest, a hold, the cycle's closing rest): the self-locking screw, or the one-way
+    device; an induction motor on the line holds nothing at standstill. Through the device
+    the motor gives the screw torque over its efficiency, and a self-locking device passes
+    no torque back (:func:`advisor.calc.one_way.motor_torque_through`)."""
     duty, lin = req.duty, req.linear
     lead = _lead_m(ev)
     phases: list[du.Phase] = []
     problems: list[str] = []
     starts, k_l, peak_load = 0, 1.0, 0.0
+    standing = 0.0  # the force on the screw at rest
     for n, seg in enumerate(duty.segments, 1):
         force = lin.force_N if seg.force_N is None else seg.force_N
         label = f"{n} {seg.kind}"
         if seg.kind == "move":
-            load = screw_torque(ev, force, seg.direction)
+            screw = screw_torque(ev, force, seg.direction)
+            load = ow.motor_torque_through(passage, screw) if holder == "one_way" else screw
             peak_load = max(peak_load, abs(load))
+            if holder is None and force > 0:
+                problems.append(_unheld(ev, n, force, "switched off at the end of the move,"))
             try:
                 ph, _, kl = mot.move(label, seg.distance_m / lead * 2.0 * math.pi, load)
             except ValueError:
@@ -145,26 +166,29 @@ def _segments_cycle(req, ev, mot: MotorModel, holder: str | None):
                 phases.append(du.Phase(f"{label}: rest", seg.time_s - t, 0.0, 0.0, 0.0))
             starts += 1
             k_l = max(k_l, kl)
-        elif seg.kind == "hold" and holder is None and force > 0:
-            problems.append(
-                f"segment {n}: holding {force:g} N at standstill: the screw "
-                f"{ev.thread.name} is not self-locking over its friction range and an induction "
-                "motor on the line cannot hold a load at standstill; set "
-                "application.hold_without_power = true for a one-way device"
-            )
+            standing = force
+        elif seg.kind == "hold":
+            if holder is None and force > 0:
+                problems.append(_unheld(ev, n, force, "holding at standstill,"))
+            phases.append(du.Phase(label, seg.time_s, 0.0, 0.0, 0.0))
+            standing = force
         else:
             phases.append(du.Phase(label, seg.time_s, 0.0, 0.0, 0.0))
+            standing = 0.0
     rest = 3600.0 / duty.cycles_per_hour - sum(s.time_s for s in duty.segments)
     if rest > 1e-9:
+        if holder is None and standing > 0:
+            problems.append(_unheld(ev, len(duty.segments), standing, "in the cycle's closing rest"))
         phases.append(du.Phase("rest", rest, 0.0, 0.0, 0.0))
     return phases, starts * duty.cycles_per_hour, k_l, peak_load, problems
 
 
-def _iec_cycle(req, ev, mot: MotorModel):
-    """Phases of one cycle of an IEC 60034-1 duty type at the rated force's screw torque."""
+def _iec_cycle(req, ev, mot: MotorModel, passage=ow.NO_DEVICE):
+    """Phases of one cycle of an IEC 60034-1 duty type at the rated force's screw torque
+    (through the holding device's efficiency where one sits at the motor)."""
     duty = req.duty
     t = duty.duty_type
-    load = ev.torque_Nm
+    load = ow.motor_torque_through(passage, ev.torque_Nm)
     s = mot.slip(load)
     problems: list[str] = []
     if s is None:
@@ -216,19 +240,28 @@ def _iec_cycle(req, ev, mot: MotorModel):
             wk = mot.w0 * (1.0 - sk)
             ph.append(du.Phase(f"load {k}", x.time_share * period, wk, wk, x.load_share * load))
         starts_h = 0.0
-    peak = max((abs(p.torque_Nm) for p in ph if "start" not in p.name), default=0.0)
+    # the load's torque: the motor's own starting and braking torques are not a demand
+    peak = max(
+        (abs(p.torque_Nm) for p in ph if "start" not in p.name and "brake" not in p.name),
+        default=0.0,
+    )
     return ph, starts_h, k_l, peak, problems, braking
 
 
-def evaluate(req, ev, m, j_load: float, holder: str | None) -> dict:
-    """The cycle with motor m: phases, RMS, starts and every problem."""
+def evaluate(req, ev, m, j_load: float, holder: str | None, passage=ow.NO_DEVICE) -> dict:
+    """The cycle with motor m: phases, RMS, starts and every problem. ``holder``: what holds
+    the load at standstill ('screw', 'one_way' or None); ``passage``: the one-way device's."""
     mot = MotorModel(m, j_load)
     duty = req.duty
     braking = 0.0
+    if not holder == "one_way":
+        passage = ow.NO_DEVICE
     if duty.segments:
-        phases, starts_h, k_l, peak_load, problems = _segments_cycle(req, ev, mot, holder)
+        phases, starts_h, k_l, peak_load, problems = _segments_cycle(
+            req, ev, mot, holder, passage
+        )
     else:
-        phases, starts_h, k_l, peak_load, problems, braking = _iec_cycle(req, ev, mot)
+        phases, starts_h, k_l, peak_load, problems, braking = _iec_cycle(req, ev, mot, passage)
     # a start's heat, the load's share included (k_L), is counted by the starts per hour:
     # in the equivalent torque it counts as a ramp at zero torque
     thermal = [p._replace(torque_Nm=0.0) if p.name.endswith("start") else p for p in phases]
@@ -291,7 +324,7 @@ def evaluate(req, ev, m, j_load: float, holder: str | None) -> dict:
     }
 
 
-def advise_duty(req, ev, selected, cat, holder: str | None, trace: Trace):
+def advise_duty(req, ev, selected, cat, holder: str | None, trace: Trace, passage=ow.NO_DEVICE):
     """The motor for the cycle: the point's motor, or the next larger of its pole count that
     passes; the duty table, the checks and the warnings."""
     duty, lin = req.duty, req.linear
@@ -301,7 +334,7 @@ def advise_duty(req, ev, selected, cat, holder: str | None, trace: Trace):
         for m in cat.motors_with_poles(selected.poles)
         if m.rated_power_kW >= selected.rated_power_kW
     ]
-    tried = [evaluate(req, ev, m, j_load, holder) for m in line]
+    tried = [evaluate(req, ev, m, j_load, holder, passage) for m in line]
     ok = [e for e in tried if not e["problems"]]
     if duty.duty_type:
         trace.apply(

@@ -17,13 +17,16 @@ temperature rise, class 155 (F) by resistance), shows the rise over repeated cyc
 """
 
 import math
+from typing import NamedTuple
 
 from advisor.calc import duty as du
+from advisor.calc import one_way as ow
 from advisor.calc.checks import Check
 from advisor.core.cite import cite, note
 from advisor.core.errors import InfeasibleError
 from advisor.core.rulebook import Trace
 from advisor.duty.report import DutyOut, ThermalOut, phases_out
+from rules import bldc as bl_rules
 from rules import duty as du_rules
 
 RPM = 30.0 / math.pi
@@ -66,16 +69,58 @@ class Frame:
         return self.ref.torque_Nm * math.sqrt(room / self.ohmic_ref) if room > 0 else 0.0
 
 
-def _at_motor(m_out: float, q: float, eta: float) -> float:
+class Holder(NamedTuple):
+    """What holds the load at rest: a one-way device (its passage of torque and where it
+    sits), or nothing (the motor holds with power on)."""
+
+    passage: ow.Passage | None
+    at_output: bool = False
+
+    @property
+    def device(self) -> bool:
+        return self.passage is not None
+
+    def words(self) -> str:
+        if self.passage is None:
+            return "the motor with power on (the wave gear is back-drivable)"
+        where = "output" if self.at_output else "motor"
+        kind = self.passage.type.replace("_", " ")
+        return f"the {kind} at the {where} side"
+
+
+NO_HOLDER = Holder(None)
+
+
+def _through_reducer(m_in: float, q: float, eta: float) -> float:
     return (
-        du.reflected_torque(m_out, q, eta, driving=True)
-        if m_out >= 0
-        else -(du.reflected_torque(-m_out, q, eta, driving=False))
+        du.reflected_torque(m_in, q, eta, driving=True)
+        if m_in >= 0
+        else -(du.reflected_torque(-m_in, q, eta, driving=False))
     )
 
 
+def _at_motor(m_out: float, q: float, eta: float, holder: Holder = NO_HOLDER) -> float:
+    """The output torque at the motor, through the reducer and the holding device (seed
+    004): a device at the motor side passes the reducer's input torque, one at the output
+    passes the load's torque to the reducer; a self-locking device passes no torque back and
+    the motor drives a helping load down (:func:`advisor.calc.one_way.motor_torque_through`)."""
+    p = holder.passage
+    if p is None:
+        return _through_reducer(m_out, q, eta)
+    if holder.at_output:
+        return _through_reducer(ow.motor_torque_through(p, m_out), q, eta)
+    return ow.motor_torque_through(p, _through_reducer(m_out, q, eta))
+
+
 def _move_phases(
-    label: str, seg, load_Nm: float, j_load: float, j_motor: float, q: float, eta: float
+    label: str,
+    seg,
+    load_Nm: float,
+    j_load: float,
+    j_motor: float,
+    q: float,
+    eta: float,
+    holder: Holder = NO_HOLDER,
 ) -> list[du.Phase]:
     """Accelerate, run, decelerate over the segment's angle in its time (output side)."""
     theta = math.radians(seg.angle_deg)
@@ -96,24 +141,34 @@ def _move_phases(
     ):
         if t <= 0:
             continue
-        torque = _at_motor(j_load * eps * sign + m_l, q, eta) + j_motor * eps * q * sign
+        load_side = j_load * eps * sign + m_l
+        torque = _at_motor(load_side, q, eta, holder) + j_motor * eps * q * sign
+        if load_side < 0 and holder.passage and not holder.passage.back_drivable:
+            # the load drives against a self-locking device: it brakes the whole chain, the
+            # rotor included, as soon as the motor eases off; nothing is regenerated
+            torque = max(torque, 0.0)
         out.append(du.Phase(f"{label}: {name}", t, w0, w1, torque))
     return out
 
 
-def cycle(req, q: float, eta: float, speed_rpm: float, frame: Frame, holder: bool):
-    """The phases of one cycle at the motor, and the problems found building it."""
+def cycle(req, q: float, eta: float, speed_rpm: float, frame: Frame, holder: Holder):
+    """The phases of one cycle at the motor, and the problems found building it.
+
+    A load stands on the drive from a move or a hold until a dwell takes it off (a dwell
+    holds no load); at rest it is held by the holding device, or else by the motor with power
+    on through the back-drivable wave gear (M_L·η/q): the cycle's closing rest too."""
     duty, rot = req.duty, req.rotary
     jl, jm = duty.load_inertia_kgm2, duty.motor_inertia_kgm2
     phases: list[du.Phase] = []
     problems: list[str] = []
     w_max = speed_rpm / RPM
     if duty.segments:
+        standing = 0.0  # the load torque on the drive at rest
         for n, seg in enumerate(duty.segments, 1):
             load = rot.torque_Nm if seg.torque_Nm is None else seg.torque_Nm
             label = f"{n} {seg.kind}"
             if seg.kind == "move":
-                ph = _move_phases(label, seg, load, jl, jm, q, eta)
+                ph = _move_phases(label, seg, load, jl, jm, q, eta, holder)
                 top = max(p.speed_end_rad_s for p in ph)
                 if top > w_max * (1 + 1e-9):
                     problems.append(
@@ -122,18 +177,33 @@ def cycle(req, q: float, eta: float, speed_rpm: float, frame: Frame, holder: boo
                         f"{speed_rpm:g} rpm"
                     )
                 phases += ph
-            elif seg.kind == "hold" and not holder:
-                phases.append(du.Phase(label, seg.time_s, 0.0, 0.0, load * eta / q))
+                standing = load
+            elif seg.kind == "hold":
+                phases.append(du.Phase(label, seg.time_s, 0.0, 0.0, _held(load, q, eta, holder)))
+                standing = load
             else:
                 phases.append(du.Phase(label, seg.time_s, 0.0, 0.0, 0.0))
+                standing = 0.0
         rest = 3600.0 / duty.cycles_per_hour - sum(s.time_s for s in duty.segments)
         if rest > 1e-9:
-            phases.append(du.Phase("rest", rest, 0.0, 0.0, 0.0))
+            phases.append(du.Phase("rest", rest, 0.0, 0.0, _held(standing, q, eta, holder)))
         return phases, problems
-    # an IEC duty type at the rated point: the output torque at the output speed
+    return _iec_cycle(req, q, eta, w_max, frame, holder)
+
+
+def _held(load_Nm: float, q: float, eta: float, holder: Holder) -> float:
+    """The motor torque that holds an output load at rest: none where a device holds it,
+    M_L·η/q through the back-driven wave gear where the motor holds (friction helps)."""
+    return 0.0 if holder.device else load_Nm * eta / q
+
+
+def _iec_cycle(req, q: float, eta: float, w: float, frame: Frame, holder: Holder):
+    """An IEC duty type at the rated point: the output torque at the output speed."""
+    duty, rot = req.duty, req.rotary
+    jl, jm = duty.load_inertia_kgm2, duty.motor_inertia_kgm2
+    problems: list[str] = []
     t = duty.duty_type
-    w = w_max
-    run_torque = rot.torque_Nm / (q * eta)
+    run_torque = _at_motor(rot.torque_Nm, q, eta, holder)
     cdf = duty.cyclic_duration_factor or 1.0
     period = 3600.0 / duty.starts_per_hour if t in ("S4", "S5", "S7") else duty.cycle_time_s
     on = cdf * period if t != "S7" else period
@@ -148,8 +218,12 @@ def cycle(req, q: float, eta: float, speed_rpm: float, frame: Frame, holder: boo
         ], []
     if t in ("S4", "S5", "S7"):
         peak = duty.peak_torque_factor * frame.continuous_torque()
-        j = jm + jl / (q * q * eta)
+        eta_d = holder.passage.efficiency if holder.passage else 1.0
+        j = jm + jl / (q * q * eta * eta_d)
         ta = j * w / (peak - run_torque) if peak > run_torque else math.inf
+        # a self-locking device stops the load by itself: no electric braking through it,
+        # the stop takes as long as the electric one would, at no motor torque
+        back = holder.passage is None or holder.passage.back_drivable
         tb = (jm + jl * eta / (q * q)) * w / (peak + run_torque) if t != "S4" else 0.0
         if ta + tb > on:
             problems.append(
@@ -159,7 +233,11 @@ def cycle(req, q: float, eta: float, speed_rpm: float, frame: Frame, holder: boo
             return [], problems
         out = [du.Phase("start", ta, 0.0, w, peak), du.Phase("run", on - ta - tb, w, w, run_torque)]
         if tb:
-            out.append(du.Phase("electric brake", tb, w, 0.0, -peak))
+            out.append(
+                du.Phase("electric brake", tb, w, 0.0, -peak)
+                if back
+                else du.Phase("stop by the self-locking device", tb, w, 0.0, 0.0)
+            )
         if period > on:
             out.append(du.Phase("rest", period - on, 0.0, 0.0, 0.0))
         return out, problems
@@ -169,7 +247,7 @@ def cycle(req, q: float, eta: float, speed_rpm: float, frame: Frame, holder: boo
     ], problems
 
 
-def evaluate(req, q: float, eta: float, speed_rpm: float, frame: Frame, holder: bool) -> dict:
+def evaluate(req, q: float, eta: float, speed_rpm: float, frame: Frame, holder: Holder) -> dict:
     phases, problems = cycle(req, q, eta, speed_rpm, frame, holder)
     if not phases:
         return {"phases": [], "problems": problems}
@@ -180,12 +258,13 @@ def evaluate(req, q: float, eta: float, speed_rpm: float, frame: Frame, holder: 
     total = copper + core
     peak = du.peak_torque(phases)
     peak_limit = req.duty.peak_torque_factor * frame.continuous_torque()
-    if total > frame.limit_W * (1 + 1e-9):
+    if not bl_rules.within_limit(total, frame.limit_W):
         problems.append(
             f"{speed_rpm:g} rpm: cycle-averaged losses {total:.4g} W (copper {copper:.4g}, "
-            f"iron and magnets {core:.4g}) above the frame's limit {frame.limit_W:.4g} W"
+            f"iron and magnets {core:.4g}) above the frame's limit {frame.limit_W:.4g} W "
+            f"(+ {bl_rules.LIMIT_REL_TOL:.1%} allowance)"
         )
-    if peak > peak_limit * (1 + 1e-9):
+    if peak > peak_limit:  # the check's own margin: limit/peak below 1
         problems.append(
             f"{speed_rpm:g} rpm: peak torque {peak:.4g} N·m above {peak_limit:.4g} N·m "
             f"({req.duty.peak_torque_factor:g} × the continuous {frame.continuous_torque():.4g})"
@@ -202,14 +281,22 @@ def evaluate(req, q: float, eta: float, speed_rpm: float, frame: Frame, holder: 
     }
 
 
-def passing_speeds(req, cands: list[dict], frame_for, holder: bool, limit_W: float) -> list[dict]:
+def passing_speeds(req, cands: list[dict], frame_for, holder_for, limit_W: float) -> list[dict]:
     """The candidate speeds whose motor passes the cycle with its rule reducer (and the point
-    check); exit 3 with the numbers when none does."""
+    check, with the same limit and allowance as the checks that report them); exit 3 naming
+    each candidate's reason when none does. ``holder_for(candidate)``: what holds the load."""
     ok, reasons = [], []
     for c in cands:
-        if c["losses"]["total"] > limit_W * (1 + 1e-9):
+        if not bl_rules.within_limit(c["losses"]["total"], limit_W):
+            reasons.append(
+                f"{c['speed_rpm']:g} rpm: losses at the rated point {c['losses']['total']:.4g} W "
+                f"above the frame's limit {limit_W:.4g} W (+ {bl_rules.LIMIT_REL_TOL:.1%} "
+                "allowance)"
+            )
             continue
-        e = evaluate(req, c["q_total"], c["eta"], c["speed_rpm"], frame_for(c["speed_rpm"]), holder)
+        e = evaluate(
+            req, c["q_total"], c["eta"], c["speed_rpm"], frame_for(c["speed_rpm"]), holder_for(c)
+        )
         if e["problems"]:
             reasons += e["problems"]
         else:
@@ -227,7 +314,7 @@ def passing_speeds(req, cands: list[dict], frame_for, holder: bool, limit_W: flo
 
 
 def advise_duty(
-    req, q: float, eta: float, speed_rpm: float, frame: Frame, holder: bool, trace: Trace
+    req, q: float, eta: float, speed_rpm: float, frame: Frame, holder: Holder, trace: Trace
 ):
     """The duty of the adopted design: the table, the checks and the warnings."""
     duty = req.duty
@@ -288,14 +375,14 @@ def advise_duty(
             "cycle's mean losses pass: the cycle is long against the motor's time constant"
         )
     out_J, back_J = du.energies(phases)
+    from advisor.applications.rotary import motor as bm
+
     checks = [
-        Check(
+        bm.losses_check(
             "duty_losses",
             "cycle-averaged losses of the motor within the frame's limit",
             e["total"],
             frame.limit_W,
-            "W",
-            frame.limit_W / e["total"] if e["total"] > 0 else math.inf,
             cite("seed-000", "eqs. (4), (5), (9)").with_note(
                 "issue 15; the frame's limit of the point check"
             ),
@@ -327,6 +414,7 @@ def advise_duty(
         mean_speed_rpm=du.mean_speed(phases) * RPM,
         cycles_per_hour=3600.0 / t_cycle,
         duty_type=duty.duty_type or "cycle",
+        held_by=holder.words(),
         losses_W={"copper": e["copper"], "iron_and_magnets": e["core"], "total": e["total"]},
         loss_limit_W=frame.limit_W,
         thermal=ThermalOut.make(

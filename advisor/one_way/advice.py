@@ -21,6 +21,20 @@ def _sized(torque_Nm: float, rollers: int) -> dict[str, ow.Device]:
     return out
 
 
+def device_passage(
+    req_one_way, motor_torque_Nm: float, output_torque_Nm: float, at_output: bool = False
+) -> ow.Passage:
+    """How the device that :func:`choose_device` would choose passes torque (its driving
+    efficiency, whether a load can drive back through it), before the choice is recorded:
+    the motor's own choice and the duty cycle must already see it."""
+    here = output_torque_Nm if at_output else motor_torque_Nm
+    options = _sized(here, req_one_way.rollers)
+    chosen = rules.device_type(
+        req_one_way.type, req_one_way.priority, {k: d._asdict() for k, d in options.items()}
+    ).value
+    return ow.passage(chosen)
+
+
 def choose_device(
     req_one_way,
     motor_torque_Nm: float,

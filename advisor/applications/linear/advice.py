@@ -19,7 +19,9 @@ from advisor.applications.linear.report import (
     back_driving_words,
 )
 from advisor.calc import induction as im
+from advisor.calc import one_way as ow_calc
 from advisor.calc import screw as sc
+from advisor.calc.one_way import NO_DEVICE
 from advisor.calc.sizing import (
     Check,
     MotorEvaluation,
@@ -119,7 +121,7 @@ def line_option(
     first test of :func:`drive_working_speed`); the line's reach is the running maximum of
     the smaller of the two, and a bisection on it skips those motors at once instead of
     testing them one by one (issue 16: the joint choice screens every thread)."""
-    torque, fits = ev.torque_Nm, line.fits
+    torque, fits = ev.motor_torque_Nm, line.fits
     for i in range(bisect_left(line.reach, torque), len(fits)):
         fit = fits[i]
         if fit.motor.rated_power_kW > max_power_kW:
@@ -134,7 +136,7 @@ def line_option(
             thread.pitch_mm,
             ev.starts,
             ev.self_locking_at_low_friction,
-            torque,  # screw_torque_Nm
+            ev.torque_Nm,  # screw_torque_Nm
             m.model,
             line.pole_pairs,
             m.rated_power_kW,
@@ -181,7 +183,7 @@ def first_drive_option(
             continue
         flag = not ev.self_locking_at_low_friction if hold else False
         for line in lines:
-            i = bisect_left(line.reach, ev.torque_Nm)
+            i = bisect_left(line.reach, ev.motor_torque_Nm)
             if i == len(line.fits):
                 continue  # no motor of the line drives it
             cap = math.inf
@@ -287,7 +289,27 @@ def _material(
     )
 
 
-def _one_way(req, trace: Trace, ev, thread: str, friction_low: float):
+def _device_efficiency(req: Requirements) -> float:
+    """The driving efficiency of the one-way device the requirement asks for, known before
+    the thread and the motor are chosen: the motor's choice must see it. 'auto' chooses
+    between the two clutches (OW-02), both of η = 1."""
+    kind = req.one_way.type
+    return 1.0 if kind == "auto" else ow_calc.passage(kind).efficiency
+
+
+def _through_device(screens: list[ThreadScreen], efficiency: float) -> list[ThreadScreen]:
+    """The screens with the device's efficiency on every thread that needs the device (one
+    not self-locking at the low end of its friction range): their motor gives 1/η times the
+    screw torque."""
+    if efficiency == 1.0:
+        return screens
+    return [
+        sc._replace(device_efficiency=efficiency) if not sc.self_locking_at_low_friction else sc
+        for sc in screens
+    ]
+
+
+def _one_way(req, trace: Trace, ev, thread: str, friction_low: float, motor_torque: float):
     """Seed 004 for a screw drive: no device when the screw holds with margin, otherwise one
     at the motor side carrying the screw torque."""
     from advisor.one_way.advice import choose_device
@@ -302,7 +324,7 @@ def _one_way(req, trace: Trace, ev, thread: str, friction_low: float):
             torque_Nm=ev.torque_Nm,
             basis=f"{thread} is self-locking over the whole friction range of the pair",
         ), []
-    power = ev.torque_Nm * ev.speed_rpm * math.pi / 30.0
+    power = motor_torque * ev.speed_rpm * math.pi / 30.0
     device, warnings = choose_device(req.one_way, ev.torque_Nm, ev.torque_Nm, power, trace)
     warnings.insert(
         0,
@@ -359,9 +381,10 @@ def advise_linear(
     freq = req.motor.supply_frequency_Hz
     starts_options = (s.starts,) if s.starts is not None else STARTS_FREE
     parts = _catalog_parts(cat)
-    screens = screen_threads(parts.threads, starts_options, **lean)
-    fits = parts.fits
     hold = req.application.hold_without_power
+    device_eta = _device_efficiency(req) if hold else 1.0
+    screens = _through_device(screen_threads(parts.threads, starts_options, **lean), device_eta)
+    fits = parts.fits
     options = choice_options(screens, parts.lines, s.thread, hold)
     if s.thread is not None:
         imposed = [sc for sc in screens if sc.name == s.thread]
@@ -411,7 +434,14 @@ def advise_linear(
         )
     trace.apply(im_rules.choose_pole_pairs, chosen.pole_pairs, ev.speed_rpm, pole_options)
     motor = next(m for m in cat.motors if m.model == chosen.motor_model)
-    plan = plan_motor(ev, motor, cat, freq, trace)
+    passage = None  # the one-way device in the chain, where one holds the load
+    if hold and not ev.self_locking_at_low_friction:
+        from advisor.one_way.advice import device_passage
+
+        passage = device_passage(req.one_way, ev.torque_Nm, ev.torque_Nm)
+    # the motor drives the screw through the device: it gives the screw torque over its η
+    at_motor = ev if passage is None else ev._replace(torque_Nm=ev.torque_Nm / passage.efficiency)
+    plan = plan_motor(at_motor, motor, cat, freq, trace)
     chosen_name = chosen.label
 
     warnings: list[str] = []
@@ -422,16 +452,18 @@ def advise_linear(
         holder = "screw" if ev.self_locking_at_low_friction else None
         holder = holder or ("one_way" if req.application.hold_without_power else None)
         duty, motor, duty_checks, duty_warnings = advise_duty(
-            req, ev, plan.selected, cat, holder, trace
+            req, ev, plan.selected, cat, holder, trace, passage or NO_DEVICE
         )
         warnings += duty_warnings
         if motor is not plan.selected:
             power = motor.rated_power_kW
-            evaluations = {**plan.evaluations, power: _eval_motor(motor, ev)}
+            evaluations = {**plan.evaluations, power: _eval_motor(motor, at_motor)}
             plan = plan._replace(selected=motor, evaluations=evaluations)
     one_way = None
     if req.application.hold_without_power:
-        one_way, dev_warnings = _one_way(req, trace, ev, chosen_name, material.friction_low)
+        one_way, dev_warnings = _one_way(
+            req, trace, ev, chosen_name, material.friction_low, at_motor.torque_Nm
+        )
         warnings += dev_warnings
     if s.friction_model == "paper":
         warnings.append(
@@ -441,18 +473,24 @@ def advise_linear(
     advisor_choice = trace.find("SCR-04").inputs.get("advisor_choice")
     design = LinearDesignOut.make(
         screw=_screw_out(ev, req, material, f_range, advisor_choice),
-        motor=_motor_out(plan, ev, cat, freq),
+        motor=_motor_out(plan, at_motor, cat, freq),
         one_way=one_way,
         duty=duty,
     )
     sel = plan.evaluations[plan.selected.rated_power_kW]
     assert sel is not None
+    demand = (
+        "the screw torque"
+        if passage is None or passage.efficiency == 1.0
+        else f"the screw torque through the {passage.type.replace('_', ' ')} "
+        f"(η {passage.efficiency:.3g})"
+    )
     checks = [
         *ev.checks,
         Check(
             "motor_rated_torque",
-            "motor rated torque against the screw torque",
-            ev.torque_Nm,
+            f"motor rated torque against {demand}",
+            at_motor.torque_Nm,
             sel.rated_torque_Nm,
             "N·m",
             sel.rated_torque_margin,
@@ -460,8 +498,8 @@ def advise_linear(
         ),
         Check(
             "motor_starting_torque",
-            "motor starting torque against the screw torque",
-            ev.torque_Nm,
+            f"motor starting torque against {demand}",
+            at_motor.torque_Nm,
             sel.starting_torque_Nm,
             "N·m",
             sel.starting_torque_margin,
@@ -480,7 +518,7 @@ def advise_linear(
         ),
     ]
     if sel.travel_time_s and sel.travel_time_s < FAST_SHARE * lin.travel_time_s:
-        warnings.append(_too_fast(ev, sel, plan, screens, cat, lin.travel_time_s))
+        warnings.append(_too_fast(at_motor, sel, plan, screens, cat, lin.travel_time_s))
     if duty is not None:
         checks += duty_checks
     return design, checks, warnings

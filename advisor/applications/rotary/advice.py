@@ -253,8 +253,9 @@ def advise_rotary(req: Requirements, cat: Catalogs, trace: Trace):
         from advisor.duty import rotary as dr
 
         frame_for = dr.frames(ref, steel, steel_mass, terms, limit)
-        holds = req.application.hold_without_power
-        reducible = dr.passing_speeds(req, reducible, frame_for, holds, limit)
+        reducible = dr.passing_speeds(
+            req, reducible, frame_for, lambda c: _holder(req, c["q_total"], c["eta"]), limit
+        )
     speed = trace.apply(
         bl_rules.choose_speed,
         {c["speed_rpm"]: c["losses"]["total"] for c in reducible},
@@ -364,13 +365,28 @@ def advise_rotary(req: Requirements, cat: Catalogs, trace: Trace):
         warnings += dev_warnings
     duty = None
     if req.duty is not None:
+        holder = _holder(req, design.total_ratio, design.efficiency)
         duty, duty_checks, duty_warnings = dr.advise_duty(
-            req, design.total_ratio, design.efficiency, speed, frame_for(speed), holds, trace
+            req, design.total_ratio, design.efficiency, speed, frame_for(speed), holder, trace
         )
         checks += duty_checks
         warnings += duty_warnings
     design_out = RotaryDesignOut.make(motor=motor, gearbox=gearbox, one_way=one_way, duty=duty)
     return design_out, checks, warnings
+
+
+def _holder(req: Requirements, q: float, eta: float):
+    """What holds the load in the duty cycle: the one-way device that would be chosen for
+    this reducer (its passage of torque), or the motor with power on."""
+    from advisor.duty import rotary as dr
+
+    if not req.application.hold_without_power:
+        return dr.NO_HOLDER
+    from advisor.one_way.advice import device_passage
+
+    at_output = req.one_way.location == "output_side"
+    torque = req.rotary.torque_Nm
+    return dr.Holder(device_passage(req.one_way, torque / (q * eta), torque, at_output), at_output)
 
 
 def _one_way(
