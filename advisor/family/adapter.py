@@ -106,6 +106,12 @@ def field_problems(requirement: dict[str, Any]) -> list[FieldProblem]:
     except ValidationError as exc:
         model, errors = _Head, exc
     else:
+        from advisor.core.units import convert
+
+        try:  # "1 kN*m" is read as advisor --batch reads it (issue 24): units first
+            requirement = convert(requirement, model)
+        except InputError as exc:
+            return [FieldProblem(m.split(" = ", 1)[0], m, False) for m in exc.messages]
         try:
             model.model_validate(requirement)
             return []
