@@ -1,22 +1,94 @@
-"""The datasheet as Markdown, for wikis: the HTML's sections without the plots."""
+"""The datasheet as Markdown, for wikis: the HTML's sections without the plots.
+
+Every text that goes in is escaped, ours and the user's alike (a title, a motor model of a
+user catalog, a candidate's name are the user's), as the HTML datasheet escapes its text:
+a title must not become a heading, a link, an image or raw HTML in somebody's wiki. The
+rules are CommonMark's (https://spec.commonmark.org/0.31.2/) and GitHub's table extension:
+
+- a backslash before ASCII punctuation makes it literal (§2.4): ``\\ ` * _ [ ] # | ~ $``
+  are escaped wherever they stand, and ``(`` after ``]`` (a ``](`` would open a link
+  destination); with ``[`` escaped no link or image can open (``![img](…)``);
+- ``<``, ``>`` and ``&`` are written as entity references (§2.5): no raw HTML (§4.6, §6.6)
+  and no autolink ``<javascript:…>`` can form, and ``\\<`` would still read as ``<script``;
+- a line break would start a new block (a heading, a list, a quote): line breaks and tabs
+  become spaces; other control characters and bidirectional overrides are shown escaped
+  (``\\x1b``), as the terminal shows them;
+- text that begins a block (a list item, a paragraph) has a leading ``-``, ``+``, ``=`` or
+  ``1.`` escaped (a list, a thematic break, a setext underline) and no leading spaces (an
+  indented code block, §4.4);
+- in a table cell ``|`` is escaped (GFM tables, example 200).
+"""
+
+import re
 
 from advisor.datasheet.content import Block, Sheet, Table
 
 MARK = {"fails": "✗ FAILS", "tight": "⚠ tight", "passes": "✓"}
 
+#: Headings stop at level 6 (CommonMark §4.2: ``#######`` is a paragraph), as in the HTML.
+DEEPEST = 6
 
-def _esc(text: str) -> str:
-    return str(text).replace("|", "\\|").replace("\n", " ")
+#: Characters that start or end Markdown syntax anywhere in a line (CommonMark §6, GFM
+#: strikethrough ``~``, table ``|``, and ``$`` of the math wikis render).
+_SPECIAL = re.compile(r"([\\`*_\[\]#|~$])")
+#: Characters that break a line (``str.splitlines``' set) and the tab (indentation).
+_BREAKS = re.compile("[\n\r\t\v\f\x1c\x1d\x1e\x85\u2028\u2029]")
+_LEADING = re.compile(r"^([-+=]|\d{1,9}(?=[.)]))")
+
+
+def text(value: object) -> str:
+    r"""User or report text as literal Markdown inline text, on one line.
+
+    >>> text("# Title\n![img](http://x/y.png) <iframe src=x> a_b | c & d")
+    '\\# Title !\\[img\\]\\(http://x/y.png) &lt;iframe src=x&gt; a\\_b \\| c &amp; d'
+    """
+    from advisor.io_safety import printable
+
+    s = _BREAKS.sub(" ", str(value))
+    s = printable(s, newlines=False)  # the controls left (ESC, NUL…) shown as \x1b, bidi too
+    s = s.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;")
+    s = _SPECIAL.sub(r"\\\1", s)
+    return s.replace("\\](", "\\]\\(")
+
+
+def lead(value: object) -> str:
+    r"""Text that begins a block (a paragraph, a list item): also no list, thematic break,
+    setext underline or indented code at its start.
+
+    >>> lead("  - item"), lead("1. first"), lead("=== x"), lead("2024 was")
+    ('\\- item', '1\\. first', '\\=== x', '2024 was')
+    """
+    s = text(value).lstrip(" ")
+    m = _LEADING.match(s)
+    if m is None:
+        return s
+    if m.group().isdigit():
+        return f"{m.group()}\\{s[m.end() :]}"
+    return f"\\{s}"
+
+
+def strong(value: object) -> str:
+    """Bold text; nothing for empty text (``****`` alone is a thematic break)."""
+    s = text(value).strip()
+    return f"**{s}**" if s else ""
+
+
+def _cell(value: object) -> str:
+    return text(value).strip()
+
+
+def _heading(level: int, title: object) -> str:
+    return f"{'#' * min(level, DEEPEST)} {lead(title).strip()}"
 
 
 def _table(columns: list[str], rows: list[list[str]]) -> list[str]:
-    out = ["| " + " | ".join(_esc(c) for c in columns) + " |", "|" + "---|" * len(columns)]
-    out += ["| " + " | ".join(_esc(c) for c in r) + " |" for r in rows]
+    out = ["| " + " | ".join(_cell(c) for c in columns) + " |", "|" + "---|" * len(columns)]
+    out += ["| " + " | ".join(_cell(c) for c in r) + " |" for r in rows]
     return [*out, ""]
 
 
 def _block(b: Block, level: int) -> list[str]:
-    out = [f"{'#' * level} {b.title}", ""]
+    out = [_heading(level, b.title), ""]
     if b.rows:
         out += _table(["", "value", "unit"], [[k, v, u] for k, v, u in b.rows])
     for t in b.tables:
@@ -27,15 +99,19 @@ def _block(b: Block, level: int) -> list[str]:
 
 
 def _tables(t: Table, level: int) -> list[str]:
-    return [f"{'#' * level} {t.title}", "", *_table(t.columns, t.rows)]
+    return [_heading(level, t.title), "", *_table(t.columns, t.rows)]
+
+
+def _items(lines: list[str]) -> list[str]:
+    return [f"- {lead(w)}" for w in lines] or ["None."]
 
 
 def render(s: Sheet) -> str:
-    out = [f"# {s.title}", "", f"Drive Advisor {s.version} — {s.application}, {s.status}", ""]
-    out += ["## Summary", "", f"**{s.headline}**", ""]
+    out = [_heading(1, s.title), ""]
+    out += [f"Drive Advisor {text(s.version)} — {text(s.application)}, {text(s.status)}", ""]
+    out += ["## Summary", "", strong(s.headline), ""]
     out += _table(["", ""], [[k, v] for k, v in s.summary])
-    out += ["## Warnings", ""]
-    out += [f"- {w}" for w in s.warnings] or ["None."]
+    out += ["## Warnings", "", *_items(s.warnings)]
     out += ["", "## Components", ""]
     for b in s.components:
         out += _block(b, 3)
@@ -49,14 +125,14 @@ def render(s: Sheet) -> str:
     )
     out += ["## Decisions", ""]
     for d in s.decisions:
-        out += [f"### {d.id} — {d.title}", "", f"**{d.decision}**", "", d.rationale, ""]
-        out += [f"*Source:* {d.source}", ""]
+        out += [f"{_heading(3, d.id)} — {text(d.title).strip()}", ""]
+        out += [strong(d.decision), "", lead(d.rationale), ""]
+        out += [f"*Source:* {text(d.source)}", ""]
         if d.inputs:
-            out += [f"*Inputs:* {d.inputs}", ""]
+            out += [f"*Inputs:* {text(d.inputs)}", ""]
     out += ["## Requirements (SI)", ""]
     for b in s.requirements:
         out += _block(b, 3)
-    out += ["## References", ""]
-    out += [f"- {r}" for r in s.references] or ["None."]
+    out += ["## References", "", *_items(s.references)]
     out += ["", "Plots: see the HTML datasheet (`--format html`).", ""]
     return "\n".join(out)
