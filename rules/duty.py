@@ -36,6 +36,7 @@ def motor_for_cycle(rows: dict[str, tuple[float, float, bool, str]]) -> Finding[
         f"Motor {best} at i = {ok[best][1]:.4g}: the fastest move whose motor passes the cycle.",
         "Each motor's move is the fastest of seed 003 at the ratio where its RMS torque over "
         f"the cycle stays within its rated torque and the move fits in the cycle — {table}.",
+        {"motor": best, "ratio": ok[best][1], "move_time_s": ok[best][0]},
     )
 
 
@@ -57,6 +58,7 @@ def motor_for_cycle_linear(
         "The smallest motor of the rated point's pole count, from the point's motor up, whose "
         "equivalent torque, starts per hour and starting torque pass the cycle — "
         f"{tried}. Load inertia at the motor: {inertia_basis}.",
+        {"motor": best, "rated_power_kW": rows[best][0], "point_motor": point_motor},
     )
 
 
@@ -72,6 +74,13 @@ def least_rms_ratio(
         "running torque M_p/i, and past the inertia match the transients tend to 2·ω0·J0/M_λ, "
         "while the move lengthens; the least RMS often lies where the move fills the whole "
         "cycle. That ratio runs coolest, the chosen one moves fastest.",
+        {
+            "motor": motor,
+            "min_rms_ratio": ratio,
+            "min_rms_torque_Nm": rms_Nm,
+            "ratio": chosen,
+            "rms_torque_Nm": chosen_rms_Nm,
+        },
     )
 
 
@@ -96,6 +105,7 @@ def thermal(utilisation: float, basis: str) -> Finding[float]:
         utilisation,
         f"Thermal utilisation {utilisation:.3g} ({'passes' if utilisation <= 1 else 'fails'}).",
         basis,
+        {"thermal_utilisation": utilisation},
     )
 
 
@@ -112,7 +122,10 @@ def peak(
             f"Largest load torque {peak_Nm:.4g} N·m against the starting torque "
             f"{limit_Nm:.4g} N·m; the cycle's peak torque is {cycle_peak_Nm:.4g} N·m."
         )
-    return Finding(peak_Nm, said, basis)
+    inputs = {"peak_torque_Nm": peak_Nm, "peak_torque_limit_Nm": limit_Nm}
+    if cycle_peak_Nm is not None:
+        inputs["cycle_peak_torque_Nm"] = cycle_peak_Nm
+    return Finding(peak_Nm, said, basis, inputs)
 
 
 @rule("DU-06", "Starts per hour", cite("iec-60034-1", "S4, S5: inertia factor FI"))
@@ -121,6 +134,7 @@ def starts(required: float, allowed: float, basis: str) -> Finding[bool]:
         required <= allowed,
         f"{required:.4g} starts/h against {allowed:.4g} allowed.",
         basis,
+        {"starts_per_hour": required, "allowed_starts_per_hour": allowed},
     )
 
 

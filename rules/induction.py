@@ -38,6 +38,8 @@ def choose_pole_pairs(
     }
     table["pole_pairs"] = chosen
     best = next(o for o in options if o.pole_pairs == chosen)
+    table["synchronous_speed_rpm"] = best.synchronous_speed_rpm
+    table["required_speed_rpm"] = required_speed_rpm
     others = [o for o in options if o.motor_model and o.pole_pairs != chosen]
     return Finding(
         chosen,

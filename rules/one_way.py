@@ -29,7 +29,12 @@ def placement(
             "Seed 004, conclusions 4 and 6 put the device where the torque is least, at the "
             "motor; the requirement overrides the place. The report shows the same device at "
             "the motor side for comparison.",
-            {"torque_Nm": output_torque_Nm, "location": "output side"},
+            {
+                "torque_Nm": output_torque_Nm,
+                "location": "output side",
+                "ratio_times_efficiency": ratio * efficiency,
+                "motor_side_torque_Nm": at_motor,
+            },
         )
     return Finding(
         at_motor,
@@ -38,7 +43,13 @@ def placement(
         "Seed 004, conclusions 4 and 6: every one-way device grows with the torque it holds, "
         "so it goes where the torque is least — at the motor, before the first stage. The "
         "report shows the same device at the output side for comparison.",
-        {"torque_Nm": at_motor, "location": "motor side"},
+        {
+            "torque_Nm": at_motor,
+            "location": "motor side",
+            "output_torque_Nm": output_torque_Nm,
+            "ratio": ratio,
+            "efficiency": efficiency,
+        },
     )
 
 

@@ -71,7 +71,7 @@ def friction_model(asked: str) -> Finding[str]:
         "Reduced friction tan φ' = f / cos(α/2) with α = 30° (trapezoidal flank angle).",
         "The friction force on a flank inclined at α/2 is raised by 1/cos(α/2); this is the "
         "textbook form for trapezoidal threads. Seed 001 prints cos(ψ/2), a slip.",
-        {"friction_model": "standard"},
+        {"friction_model": "standard", "flank_angle_deg": 30.0},
     )
 
 

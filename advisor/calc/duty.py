@@ -240,6 +240,12 @@ S3_POWER_FACTOR: tuple[tuple[float, float], ...] = (
 )
 
 
+#: A value within this relative distance of a table's row is read as that row: a cdf typed
+#: as 0.25 or computed as 0.25·(1 + 1e-9) is the 25 % row, as the stage limits of the wave
+#: gear read a ratio (rules.wavegear.RATIO_REL_TOL); no knife edge at a row.
+TABLE_REL_TOL = 1e-6
+
+
 def s2_power_factor(duration_min: float) -> float:
     """SEW's power increasing factor K of an S1 motor run in S2 for ``duration_min``
     (:data:`S2_POWER_FACTOR`). The table is not interpolated: a period between two rows takes
@@ -251,7 +257,7 @@ def s2_power_factor(duration_min: float) -> float:
     (1.4, 1.2, 1.1, 1.0)
     """
     for period, k in S2_POWER_FACTOR:
-        if duration_min <= period:
+        if duration_min <= period * (1.0 + TABLE_REL_TOL):
             return k
     return 1.0
 
@@ -266,7 +272,7 @@ def s3_power_factor(cyclic_duration_factor: float) -> float:
     (1.15, 1.15, 1.4, 1.0)
     """
     for cdf, k in S3_POWER_FACTOR:
-        if cyclic_duration_factor <= cdf:
+        if cyclic_duration_factor <= cdf * (1.0 + TABLE_REL_TOL):
             return k
     return 1.0
 

@@ -178,7 +178,9 @@ def _segments_cycle(req, ev, mot: MotorModel, holder: str | None, passage=ow.NO_
     rest = 3600.0 / duty.cycles_per_hour - sum(s.time_s for s in duty.segments)
     if rest > 1e-9:
         if holder is None and standing > 0:
-            problems.append(_unheld(ev, len(duty.segments), standing, "in the cycle's closing rest"))
+            problems.append(
+                _unheld(ev, len(duty.segments), standing, "in the cycle's closing rest")
+            )
         phases.append(du.Phase("rest", rest, 0.0, 0.0, 0.0))
     return phases, starts * duty.cycles_per_hour, k_l, peak_load, problems
 
@@ -257,9 +259,7 @@ def evaluate(req, ev, m, j_load: float, holder: str | None, passage=ow.NO_DEVICE
     if not holder == "one_way":
         passage = ow.NO_DEVICE
     if duty.segments:
-        phases, starts_h, k_l, peak_load, problems = _segments_cycle(
-            req, ev, mot, holder, passage
-        )
+        phases, starts_h, k_l, peak_load, problems = _segments_cycle(req, ev, mot, holder, passage)
     else:
         phases, starts_h, k_l, peak_load, problems, braking = _iec_cycle(req, ev, mot, passage)
     # a start's heat, the load's share included (k_L), is counted by the starts per hour:
@@ -319,9 +319,24 @@ def evaluate(req, ev, m, j_load: float, holder: str | None, passage=ow.NO_DEVICE
         "k_l": k_l,
         "peak_load": peak_load,
         "start_torque": start_torque,
+        "mean_start": _mean_start(phases),
         "braking": braking,
         "problems": problems,
     }
+
+
+def _held_by(ev, holder: str | None, passage) -> str:
+    """What holds the load whenever the motor is off, in words for the report."""
+    if holder == "screw":
+        return f"the screw {ev.thread.name}, self-locking over its whole friction range"
+    if holder == "one_way":
+        return f"the {passage.type.replace('_', ' ')} at the motor side"
+    return "nothing: no load stands on the screw while the motor is off"
+
+
+def _mean_start(phases: list[du.Phase]) -> float | None:
+    """The motor's mean starting torque where the cycle has a start (the same in every one)."""
+    return next((p.torque_Nm for p in phases if p.name.endswith("start")), None)
 
 
 def advise_duty(req, ev, selected, cat, holder: str | None, trace: Trace, passage=ow.NO_DEVICE):
@@ -490,8 +505,11 @@ def advise_duty(req, ev, selected, cat, holder: str | None, trace: Trace, passag
         ratio=2.0 * math.pi / _lead_m(ev),
         cycle_time_s=t_cycle,
         move_time_s=move,
-        peak_torque_Nm=peak,
+        # the check's demand and capacity: the largest load torque at the motor against the
+        # starting torque; the motor's own mean starting torque stated beside them
+        peak_torque_Nm=e["peak_load"],
         peak_torque_limit_Nm=e["start_torque"],
+        mean_starting_torque_Nm=e["mean_start"],
         rms_torque_Nm=e["rms"],
         rated_torque_Nm=e["rated"],
         thermal_utilisation=util,
@@ -504,6 +522,7 @@ def advise_duty(req, ev, selected, cat, holder: str | None, trace: Trace, passag
         # S2 is one run from cold, not a cycle that repeats
         cycles_per_hour=None if duty.duty_type == "S2" else 3600.0 / t_cycle if t_cycle else 0.0,
         duty_type=duty.duty_type or "cycle",
+        held_by=_held_by(ev, holder, passage),
         standstill_cooling_factor=beta0,
         starts_per_hour=e["starts"],
         # the starts allowed mean something only where starts are counted (S4, S5, S7, moves)

@@ -47,7 +47,6 @@ class DutyOut(_Out):
     cycles_per_hour: float | None = None
     duty_type: str
     held_by: str | None = None  # what holds the load at rest and against back-driving
-    peak_load_torque_Nm: float | None = None  # the largest load torque at the motor
     mean_starting_torque_Nm: float | None = None  # an induction motor's mean start torque
     rated_torque_Nm: float | None = None
     min_rms_ratio: float | None = None

@@ -101,8 +101,10 @@ def linear_outputs(report: dict[str, Any]) -> Row:
 
 
 def positioning_outputs(report: dict[str, Any]) -> Row:
-    mo = report["design"]["motion"]
-    return {"motor": mo["motor"], "ratio": mo["optimal_ratio"], **_lowest_margin(report)}
+    # the drive to build: the duty cycle's ratio where there is one (the fastest may fail it)
+    mo, duty = report["design"]["motion"], report["design"].get("duty")
+    src = duty if duty is not None else {"motor": mo["motor"], "ratio": mo["optimal_ratio"]}
+    return {"motor": src["motor"], "ratio": src["ratio"], **_lowest_margin(report)}
 
 
 def spinning_rotor_outputs(report: dict[str, Any]) -> Row:

@@ -46,10 +46,24 @@ class PositioningDesignOut(_Out):
     duty: DutyOut | None = None
 
 
+def design_ratio(report) -> tuple[str, float, float]:
+    """The motor, ratio and move time of the drive to build: the duty cycle's where the
+    requirement has one (the fastest ratio may fail the cycle), else the fastest move's."""
+    mo, duty = report.design.motion, report.design.duty
+    if duty is not None:
+        return duty.motor, duty.ratio, duty.move_time_s
+    return mo.motor, mo.optimal_ratio, mo.move_time_s
+
+
 def headline(report) -> str:
-    """The design in a few words: motor, ratio, move time."""
+    """The design in a few words: motor, ratio, move time; with a duty cycle, the cycle's
+    ratio, the fastest move's beside it, labelled so."""
     mo = report.design.motion
-    return (
-        f"motor {mo.motor}, i = {mo.optimal_ratio:.4g}, {mo.move_time_s:.4g} s "
-        f"({mo.profile_actual})"
-    )
+    motor, ratio, time_s = design_ratio(report)
+    text = f"motor {motor}, i = {ratio:.4g}, {time_s:.4g} s ({mo.profile_actual})"
+    if report.design.duty is not None and (motor, ratio) != (mo.motor, mo.optimal_ratio):
+        text += (
+            f" for the duty cycle; fastest move without the cycle: motor {mo.motor}, "
+            f"i = {mo.optimal_ratio:.4g}, {mo.move_time_s:.4g} s"
+        )
+    return text
