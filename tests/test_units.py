@@ -38,6 +38,104 @@ def test_conversions_by_hand(text, unit, by_hand):
     assert to_unit(text, unit) == pytest.approx(by_hand, rel=1e-11)
 
 
+@pytest.mark.parametrize(
+    ("text", "unit", "by_hand"),
+    [
+        # gauss: 1 G = 1e-4 T (SI Brochure, 9th ed., table 9 note): 15000 G = 1.5 T (issue 23)
+        ("15000 G", "T", 15000 * 1e-4),
+        ("800 mT", "T", 0.8),
+        # N·m however it is written (issue 24)
+        ("1 kN*m", "N·m", 1000.0),
+        ("1 kN·m", "N·m", 1000.0),
+        ("1.62 kNm", "N·m", 1620.0),
+        ("5 Nm", "N·m", 5.0),
+        ("250 N*mm", "N·m", 0.25),
+        ("10 lbf*ft", "N·m", 10 * 4.4482216152605 * 0.3048),  # 13.558 N·m (NIST SP 811)
+        ("2 kgf", "N", 2 * 9.80665),
+        ("3 MN", "N", 3e6),
+        ("2 kg*m^2", "kg·m²", 2.0),
+        ("2 kg·m²", "kg·m²", 2.0),
+        ("2 kg*m**2", "kg·m²", 2.0),
+        ("150 kg*cm^2", "kg·m²", 150 * 1e-4),
+        ("7.8 g·cm⁻³", "kg/m³", 7800.0),
+        ("7800 kg*m^-3", "kg/m³", 7800.0),
+        ("32 cSt", "mm²/s", 32.0),
+        ("1.5e-5 m^2/s", "m²/s", 1.5e-5),
+        ("1.5e-5 m²/s", "mm²/s", 15.0),
+        ("30 rev/min", "rpm", 30.0),
+        ("3 rps", "rpm", 180.0),
+        ("180 °", "rad", math.pi),
+        ("90°", "deg", 90.0),
+        ("360 deg/s", "rpm", 60.0),
+        ("25 µm", "mm", 0.025),
+        ("25 um", "mm", 0.025),
+        ("2 ft", "m", 0.6096),
+        ("1 hp", "kW", 0.74569987158227022),
+        ("1 hp", "W", 745.69987158227022),
+        ("40 min", "h", 40 / 60),
+        ("1 h", "min", 60.0),
+        ("2.2 kΩ", "Ω", 2200.0),
+        ("2.2 kohm", "Ω", 2200.0),
+        ("500 mA", "A", 0.5),
+        ("5\u202fkN", "N", 5000.0),  # the thin space of typeset pages (SI Brochure 5.4.3)
+        ("-5 kN", "N", -5000.0),  # the sign is the model's to judge
+        ("1e-400 N", "N", 0.0),  # underflows to zero: the model's range says why not
+    ],
+)
+def test_spellings_engineers_type(text, unit, by_hand):
+    assert to_unit(text, unit) == pytest.approx(by_hand, rel=1e-11, abs=0)
+
+
+@pytest.mark.parametrize(
+    ("text", "unit", "said"),
+    [
+        # issue 23 item 9: an energy has a torque's dimension but is not one
+        ("1620 J", "N·m", "J is an energy, not a torque; expected N·m"),
+        ("1 kcal", "N·m", "kcal is an energy, not a torque; expected N·m"),
+        ("1 kWh", "N·m", "kWh is an energy, not a torque; expected N·m"),
+        ("1620 W*s", "N·m", "W*s is an energy, not a torque; expected N·m"),
+        ("5 N*m", "N", "N*m is a torque, not a force; expected N"),
+        ("15000 G", "N", "G is a flux density, not a force; expected N"),
+        ("5 N m", "N·m", "' m' cannot follow a unit"),  # units are joined by * or ·
+        ("5 kg/m/s", "N", "one unit only after '/'"),
+        ("5 N^0", "N", "a power is a whole number from -4 to 4, not '^0'"),
+        ("5 N^5", "N", "not '^5'"),
+        ("5 daN", "N", "'daN' is not a unit known here; units here: N, kN, MN, mN, lbf, kgf"),
+        ("5 newton", "N", "'newton' is not a unit known here"),
+        ("0,5 kN", "N", "',' is not allowed"),
+        ("5 kN\n", "N", "U+000A (a control character) is not allowed"),
+        ("5 kN\u200f", "N", "U+200F (RIGHT-TO-LEFT MARK) is not allowed"),
+        ("5 N" + "m" * 70, "N", "at most 64 characters"),
+        ("1 m", "", "m is a length, not a pure number; expected a pure number"),
+    ],
+)
+def test_what_the_grammar_refuses(text, unit, said):
+    with pytest.raises(UnitError) as err:
+        to_unit(text, unit)
+    assert said in str(err.value)
+
+
+def test_every_field_unit_is_read_by_the_grammar():
+    """Every unit a requirement key names converts to itself: 1 of it is 1."""
+    from advisor.core.questions import UNIT_SUFFIXES
+
+    for unit in [*UNIT_SUFFIXES.values(), "min", "kW"]:
+        assert to_unit(f"1 {unit}", unit) == 1.0, unit
+
+
+def test_the_unit_table_holds_exact_definitions():
+    from advisor.core.units import UNITS
+
+    # SI Brochure table 8 and NIST SP 811 B.8, by hand
+    assert UNITS["in"].factor == 0.0254 and UNITS["ft"].factor == 0.3048
+    assert UNITS["lbf"].factor == 4.4482216152605 and UNITS["kgf"].factor == 9.80665
+    assert UNITS["kcal"].factor == 4184.0 and UNITS["kWh"].factor == 3.6e6
+    assert UNITS["rpm"].factor == pytest.approx(2 * math.pi / 60, rel=1e-15)
+    assert UNITS["kg"].factor == 1.0 and UNITS["t"].factor == 1000.0
+    assert UNITS["µm"] == UNITS["μm"] == UNITS["um"]  # micro sign, Greek mu, u
+    assert UNITS["Nm"].dims == UNITS["J"].dims and UNITS["J"].energy and not UNITS["Nm"].energy
+
+
 def test_the_hand_values_of_the_issue():
     assert to_unit("5 kN", "N") == 5000.0
     assert round(to_unit("1500 rpm", "rad/s"), 2) == 157.08
