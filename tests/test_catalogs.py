@@ -234,15 +234,15 @@ def test_estimated_4a_inertias_grow_with_the_frame():
         )
         return a.inertia_kgm2 * (b.inertia_kgm2 / a.inertia_kgm2) ** t
 
-    # 4A63B4: M_n = 370/(1365·π/30) = 2.589 N·m between 4A63A4 (1.730 N·m, 0.0012 kg·m²) and
+    # 4AA63B4: M_n = 370/(1365·π/30) = 2.589 N·m between 4AA63A4 (1.730 N·m, 0.0012 kg·m²) and
     # 4A71A4 (3.779 N·m, 0.0013 kg·m²): t = ln(2.589/1.730)/ln(3.779/1.730) = 0.5158,
     # J = 0.0012·(13/12)^0.5158 = 0.001251
-    assert between("4A63A4", "4A63B4", "4A71A4") == pytest.approx(0.001251, abs=1e-6)
-    assert by["4A63B4"].inertia_kgm2 == pytest.approx(
-        between("4A63A4", "4A63B4", "4A71A4"), rel=0.01
+    assert between("4AA63A4", "4AA63B4", "4A71A4") == pytest.approx(0.001251, abs=1e-6)
+    assert by["4AA63B4"].inertia_kgm2 == pytest.approx(
+        between("4AA63A4", "4AA63B4", "4A71A4"), rel=0.01
     )
     assert by["4A71A6"].inertia_kgm2 == pytest.approx(
-        between("4A63B6", "4A71A6", "4A71B6"), rel=0.01
+        between("4AA63B6", "4A71A6", "4A71B6"), rel=0.01
     )
 
 
@@ -269,3 +269,56 @@ def test_skf_rows_d40_to_50_from_the_catalogue():
     assert (b.C_kN, b.C0_kN, b.Pu_kN, b.limiting_speed_rpm, b.mass_kg) == (40, 31, 1.32, 9000, 0.47)
     for name in (*table, "7210 BECBP"):
         assert all(s in cat.bearing_sources for s in cat.bearing(name).source)
+
+
+def test_4a_frames_56_and_63_carry_the_4aa_designation():
+    # Issue 23, item 10. The 4A series (Kravchik et al., «Асинхронные двигатели серии 4А»,
+    # 1982) builds frames 50–63 with an aluminium-alloy frame and end shields and designates
+    # them 4AA (4AA56A2, 4AA63B4, …); frames 71 and up are 4A. A public reproduction of the
+    # same course-design table (a C# course-work listing found by the stored code search)
+    # prints 4АА56А2, 4АА56В2, 4АА56А4, 4АА63А4, 4АА63В4, 4АА63А6, 4АА63В6 with the same
+    # P, s, n, Mmax/Mn, Mst/Mn as our rows (see catalogs/induction_4a.toml).
+    by = {m.model: m for m in load_catalogs().motors}
+    small = sorted(n for n in by if n[2:4] in ("56", "63") or n[3:5] in ("56", "63"))
+    assert small == [
+        "4AA56A2", "4AA56B2", "4AA56B4", "4AA63A2", "4AA63A4",
+        "4AA63A6", "4AA63B2", "4AA63B4", "4AA63B6",
+    ]  # fmt: skip
+    assert not any(n.startswith(("4A56", "4A63")) for n in by)
+    # the frame from 71 up keeps the one-A designation
+    assert {"4A71A4", "4A71B6", "4A80A2"} <= set(by)
+    # the rename touched names only: 4AA63B4 is the table's 0.37 kW, s = 9.0 %, 1365 rpm,
+    # Mmax/Mn = Mst/Mn = 2.0; M_n = 370 W / (1365·π/30 rad/s) = 2.5885 N·m
+    m = by["4AA63B4"]
+    assert (m.poles, m.rated_power_kW, m.slip_pct, m.rated_speed_rpm) == (4, 0.37, 9.0, 1365.0)
+    assert (m.breakdown_torque_ratio, m.starting_torque_ratio) == (2.0, 2.0)
+    assert m.rated_torque_Nm == pytest.approx(2.5885, abs=1e-4)
+
+
+def test_tr11_row_gost_24738_81():
+    # Issue 23, item 10. GOST 24738-81 (= ISO 2902, ST SEV 639-77), table 1, row d = 11
+    # (2nd row of diameters): pitches 3 and 2. The pitch list is the one of the ISO 2904
+    # basic-dimension table at roymech.org/Useful_Tables/Screws/Trapezoidal.html (rows
+    # "11 | 2" and "11 | 3") and of engineersedge.com/hardware/iso-metric-trapezoidal-threads1.htm
+    # (TR11x2, TR11x3). Preferred pitch 2, as the catalog row states: the plan's preferred
+    # pitches run 2 for d = 9…11, 3 for d = 12 and 14, 4 for d = 16…20 (no copy showing the bold
+    # marking could be opened; see the comment on the row in the catalog).
+    cat = load_catalogs()
+    tr11 = [t for t in cat.threads if t.d_mm == 11]
+    assert [t.name for t in tr11] == ["Tr11x3", "Tr11x2"]
+    assert {t.series for t in tr11} == {2}
+    assert [t.name for t in tr11 if t.preferred] == ["Tr11x2"]
+    # the neighbours Tr8…Tr20 as the table gives them (pitches, preferred pitch)
+    plan = {
+        8: ([1.5], 1.5), 9: ([2, 1.5], 2), 10: ([2, 1.5], 2), 11: ([3, 2], 2),
+        12: ([3, 2], 3), 14: ([3, 2], 3), 16: ([4, 2], 4), 18: ([4, 2], 4), 20: ([4, 2], 4),
+    }  # fmt: skip
+    for d, (pitches, preferred) in plan.items():
+        rows = [t for t in cat.threads if t.d_mm == d]
+        assert [t.pitch_mm for t in rows] == pitches, d
+        assert [t.pitch_mm for t in rows if t.preferred] == [preferred], d
+    # GOST 24737-81 dimensions of Tr11x2: ac = 0.25, d2 = 11 − 1 = 10, d3 = 11 − 2·1.25 = 8.5,
+    # D1 = 11 − 2 = 9, D4 = 11 + 0.5 = 11.5 (the roymech row "11 | 2 | 10,000 | 11,500 |
+    # 8,500 | 9,000")
+    t = cat.thread("Tr11x2")
+    assert (t.d2_mm, t.D4_mm, t.d3_mm, t.D1_mm) == (10.0, 11.5, 8.5, 9.0)
