@@ -285,10 +285,17 @@ def test_the_schema_allows_the_strings_on_number_fields_only():
     pattern = re.compile(quantity["pattern"])
     assert all(pattern.match(t) for t in ("5 kN", "200 mm", "1.5e3 rpm", "90 deg"))
     assert not any(pattern.match(t) for t in ("kN", "five kN", "", "5.5.5 m", "3"))
+    # the grammar's shape: an editor flags arithmetic, parentheses and comments too
+    assert all(pattern.match(t) for t in ("2 kg*m^2", "7.8 g·cm⁻³", "1 kN·m", "32 mm²/s"))
+    bad = ("5 kN + 3 kN", "1 N*(1/0)", "5 kN # x", "3500 N%", "5 N*", "9**9**8 N", "5 kN\u202e")
+    assert not any(pattern.match(t) for t in bad)
     starts = schema["$defs"]["ScrewReq"]["properties"]["starts"]
     assert starts["type"] == "integer" and "anyOf" not in starts
-    text = json.dumps(schema)
-    assert '"type": "number"' in text and text.count(quantity["pattern"].replace("\\", "\\\\")) > 10
+    text = json.dumps(schema, ensure_ascii=False)
+    assert (
+        '"type": "number"' in text
+        and text.count(json.dumps(quantity["pattern"], ensure_ascii=False)[1:-1]) > 10
+    )
 
 
 def test_the_wizard_opens_a_file_with_units_in_si():

@@ -173,8 +173,17 @@ _SHOWN = (
 ).split()
 
 # ------------------------------------------------------------------ the grammar
-#: A number, then a unit: what the JSON Schema allows as a string (the grammar decides).
-PATTERN = r"^\s*[-+]?(\d+(\.\d*)?|\.\d+)([eE][-+]?\d+)?\s*[^\s\d.+-].*$"
+#: The grammar's shape (not its list of names) as the JSON Schema states it, so that an
+#: editor flags "5 kN + 3 kN" as the advisor would; the length cap and the names are checked
+#: here.
+_U = r"[A-Za-zµμΩ°]+((\^|\*\*)[-+]?[0-9]+|⁻?[¹²³⁴])?"
+PATTERN = (
+    r"^[ \t]*[-+]?([0-9]+(\.[0-9]*)?|\.[0-9]+)([eE][-+]?[0-9]+)?[ \t]*"
+    + _U
+    + r"([ \t]*[*·/][ \t]*"
+    + _U
+    + r")*[ \t]*$"
+)
 
 #: Spaces a quantity copied from a typeset page holds (SI Brochure 5.4.3: a thin space
 #: between number and unit), read as a plain space.
