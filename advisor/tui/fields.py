@@ -191,7 +191,8 @@ def to_text(field: Field, value: Any) -> str:
 
 def _number(field: Field, text: str) -> float:
     """A number, or a quantity with a unit ("5 kN") in the field's unit, as a requirement
-    file takes it (:mod:`advisor.core.units`; pint is imported for the latter only)."""
+    file takes it (:mod:`advisor.core.units`: a strict grammar, so any text typed so far is
+    a value or a :class:`~advisor.core.units.UnitError` worded for the user)."""
     try:
         return float(text)
     except ValueError:
