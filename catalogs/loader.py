@@ -88,6 +88,16 @@ class Catalogs(NamedTuple):
     def motors_with_poles(self, poles: int) -> list[InductionMotor]:
         return sorted((m for m in self.motors if m.poles == poles), key=lambda m: m.rated_power_kW)
 
+    def power_series(self, poles: int) -> list[float]:
+        """The rated powers a motor of ``poles`` is placed among (its neighbours, rule IM-02):
+        the GOST 12139-84 main series with the powers of the catalog's motors of that pole
+        count merged in. A shipped 4A motor is rated on the series (a test checks it), so
+        for the shipped catalog this is the series itself; a user's motor off the series
+        (100 or 500 kW) gets its neighbours from the catalog in use."""
+        return sorted(
+            {*self.rated_powers_kW, *(m.rated_power_kW for m in self.motors_with_poles(poles))}
+        )
+
 
 #: A catalog is read whole; one larger than this is not a catalog (``/dev/zero``).
 CATALOG_MAX_BYTES = 16 << 20
@@ -234,7 +244,7 @@ def _load_motors(
             m = InductionMotor(
                 **MotorSchema.model_validate(
                     {**row, "supply_frequency_Hz": float(freq)}
-                ).model_dump()
+                ).model_dump(exclude={"rated_torque_Nm"})  # checked, not kept: M_n = P/ω
             )
         except ValidationError as exc:
             raise _fail(path, where, exc) from None
@@ -510,7 +520,7 @@ def _check_unique(path: Path, names: list[str], what: str) -> None:
 
 
 # ---------------------------------------------------------------- cache of validated catalogs
-CACHE_VERSION = 4
+CACHE_VERSION = 5  # 5: rows checked for physical consistency (issue 24)
 
 
 def _cache_file(files: list[Path]) -> Path | None:

@@ -13,12 +13,28 @@ class _Row(BaseModel):
     model_config = ConfigDict(extra="forbid", strict=True, frozen=True, defer_build=True)
 
 
+def _field(name: str, value: object, why: str) -> ValueError:
+    """A row's refusal naming its field: a check across fields has no single location."""
+    return ValueError(f"field {name} = {value!r}: {why}")
+
+
 # ---------------------------------------------------------------- threads (GOST 24738-81)
+#: The pitches GOST 24737-81 gives the profile for (its table of ac: 1.5 … 44 mm).
+PITCH_RANGE_MM = (1.5, 44.0)
+#: |given − computed| allowed for a row's d2_mm / d3_mm: the formulas give the diameters on
+#: a 0.05 mm grid, so a value copied from the standard's table agrees to its rounding.
+THREAD_DIAMETER_TOLERANCE_MM = 0.01
+
+
 class ThreadPlanRow(_Row):
     d_mm: Positive
     series: Annotated[int, Field(ge=1, le=2)]
     pitches_mm: list[Positive]
     preferred_mm: Positive
+    #: optional, one per pitch: the diameters as a table prints them, checked against the
+    #: profile computed by GOST 24737-81 (never used in its place)
+    d2_mm: list[Positive] | None = None
+    d3_mm: list[Positive] | None = None
 
     @model_validator(mode="after")
     def _preferred_is_listed(self) -> "ThreadPlanRow":
@@ -26,7 +42,54 @@ class ThreadPlanRow(_Row):
             raise ValueError(f"preferred_mm = {self.preferred_mm} is not among pitches_mm")
         if len(set(self.pitches_mm)) != len(self.pitches_mm):
             raise ValueError("pitches_mm lists a pitch twice")
+        for p in self.pitches_mm:
+            _check_profile(self.d_mm, p)
+        for name in ("d2_mm", "d3_mm"):
+            given = getattr(self, name)
+            if given is not None:
+                _check_given_diameters(name, given, self.d_mm, self.pitches_mm)
         return self
+
+
+def _check_profile(d: float, p: float) -> None:
+    """A pitch the GOST 24737-81 profile is defined for and fits inside the diameter: the
+    pitch below d, and d2 = d − 0.5·P, D1 = d − P, d3 = d − 2·h3 (h3 = 0.5·P + ac) all
+    positive (d3 is the smallest, so it decides)."""
+    from catalogs.threads import trapezoidal_profile
+
+    lo, hi = PITCH_RANGE_MM
+    if not lo <= p <= hi:
+        raise _field(
+            "pitches_mm",
+            p,
+            f"GOST 24737-81 gives the trapezoidal profile for pitches {lo:g} … {hi:g} mm",
+        )
+    if not p < d:
+        raise _field("pitches_mm", p, f"the pitch must be below the diameter d_mm = {d:g}")
+    t = trapezoidal_profile(d, p)
+    if not t.d3_mm > 0:
+        raise _field(
+            "pitches_mm",
+            p,
+            f"the minor diameter d3 = d − 2·h3 = {d:g} − 2·{t.h3_mm:g} = {t.d3_mm:g} mm "
+            "(GOST 24737-81) must be positive",
+        )
+
+
+def _check_given_diameters(name: str, given: list[float], d: float, pitches: list[float]) -> None:
+    from catalogs.threads import trapezoidal_profile
+
+    if len(given) != len(pitches):
+        raise _field(name, given, f"give one value per pitch ({len(pitches)}), in their order")
+    for p, g in zip(pitches, given, strict=True):
+        want = getattr(trapezoidal_profile(d, p), name)
+        if abs(g - want) > THREAD_DIAMETER_TOLERANCE_MM:
+            raise _field(
+                name,
+                g,
+                f"Tr{d:g}x{p:g} has {name.removesuffix('_mm')} = {want:g} mm by GOST 24737-81 "
+                f"(allowed difference {THREAD_DIAMETER_TOLERANCE_MM:g} mm)",
+            )
 
 
 # ---------------------------------------------------------------- induction motors
@@ -44,6 +107,12 @@ MOTOR_FIELDS = {
 
 #: |n − n₀·(1 − s)| allowed between a row's published speed and slip, as a share of n₀.
 SPEED_SLIP_TOLERANCE = 0.015
+#: |M_n − P/ω_n| allowed for a row that states its rated torque, as a share of P/ω_n: a
+#: datasheet rounds the speed and the torque to three or four digits, well inside 3 %.
+TORQUE_TOLERANCE = 0.03
+#: A rating above this is not a motor (refused as non-physical): the largest induction
+#: machines built (compressor and pumped-storage drives) are rated in tens of megawatts.
+MAX_RATED_POWER_KW = 1e5
 
 
 class InductionMotor(_Row):
@@ -62,11 +131,20 @@ class InductionMotor(_Row):
     source: str
     estimated: list[str] = []
     supply_frequency_Hz: float = 50.0
+    #: optional: the rated torque as the datasheet states it, checked against P/ω_n (the
+    #: advisor computes M_n from the power and the speed, never takes it from here)
+    rated_torque_Nm: Positive | None = None
 
     @model_validator(mode="after")
     def _consistent(self) -> "InductionMotor":
         if self.poles not in (2, 4, 6, 8):
             raise ValueError(f"poles = {self.poles}: allowed 2, 4, 6, 8")
+        if self.rated_power_kW > MAX_RATED_POWER_KW:
+            raise _field(
+                "rated_power_kW",
+                self.rated_power_kW,
+                f"above {MAX_RATED_POWER_KW:g} kW (100 MW): no induction motor is rated so high",
+            )
         n0 = 120.0 * self.supply_frequency_Hz / self.poles
         if not self.rated_speed_rpm < n0:
             raise ValueError(
@@ -85,10 +163,41 @@ class InductionMotor(_Row):
                 f"starting_torque_ratio = {self.starting_torque_ratio} exceeds "
                 f"breakdown_torque_ratio = {self.breakdown_torque_ratio}"
             )
+        _check_power_flow(self, n0)
         unknown = set(self.estimated) - MOTOR_FIELDS
         if unknown:
             raise ValueError(f"estimated names unknown fields {sorted(unknown)}")
         return self
+
+
+def _check_power_flow(m: InductionMotor, n0: float) -> None:
+    """Power, torque and speed of the rated point agree (P = M·ω), and the efficiency is
+    below what the slip allows: the rotor turns the air-gap power P_δ into mechanical power
+    (1 − s)·P_δ and loses s·P_δ in its cage, and the input exceeds P_δ, so
+    η = P/P_in < 1 − s = n/n₀ (the energy diagram of the induction machine, as every text
+    on electric machines draws it)."""
+    import math
+
+    omega = m.rated_speed_rpm * math.pi / 30.0
+    torque = m.rated_power_kW * 1e3 / omega
+    if (
+        m.rated_torque_Nm is not None
+        and abs(m.rated_torque_Nm - torque) > TORQUE_TOLERANCE * torque
+    ):
+        raise _field(
+            "rated_torque_Nm",
+            m.rated_torque_Nm,
+            f"P/ω = {m.rated_power_kW:g} kW at {m.rated_speed_rpm:g} rpm is {torque:.4g} N·m "
+            f"(allowed difference {TORQUE_TOLERANCE:.0%})",
+        )
+    limit = m.rated_speed_rpm / n0
+    if m.efficiency_pct / 100.0 >= limit:
+        raise _field(
+            "efficiency_pct",
+            m.efficiency_pct,
+            f"must be below n/n₀ = {m.rated_speed_rpm:g}/{n0:g} = {limit:.1%}: the slip's share "
+            "of the air-gap power is lost in the rotor",
+        )
 
 
 # ---------------------------------------------------------------- screw materials
@@ -185,6 +294,11 @@ class FrictionRow(_Row):
     source: str
 
 
+#: Density of bearing steel (100Cr6 ≈ 7830 kg/m³, rounded up): a bearing is its rings,
+#: balls and cage inside the envelope d × D × B, none of it denser, so never heavier than a
+#: solid steel ring of that envelope (the shipped rows weigh 0.65–0.72 of it).
+STEEL_DENSITY_KG_M3 = 7850.0
+
 BEARING_ESTIMABLE = {"C_kN", "C0_kN", "f0", "ball_count", "ball_diameter_mm", "pitch_diameter_mm"}
 
 
@@ -231,6 +345,25 @@ class BearingRow(_Row):
                 f"ball_diameter_mm = {self.ball_diameter_mm} does not fit the ring section "
                 f"(D − d)/2 = {(self.D_mm - self.d_mm) / 2:g} mm"
             )
+        if self.Pu_kN is not None and not self.Pu_kN < self.C0_kN:
+            raise _field(
+                "Pu_kN",
+                self.Pu_kN,
+                f"the fatigue load limit must be below the static rating C0_kN = {self.C0_kN:g} "
+                "(the fatigue load limit, Cu of ISO 281, is a small share of C0)",
+            )
+        if self.mass_kg is not None:
+            import math
+
+            solid = STEEL_DENSITY_KG_M3 * math.pi / 4 * (self.D_mm**2 - self.d_mm**2) * self.B_mm
+            solid *= 1e-9  # mm³ → m³
+            if self.mass_kg > solid:
+                raise _field(
+                    "mass_kg",
+                    self.mass_kg,
+                    f"heavier than a solid steel ring of the bearing's envelope "
+                    f"(d {self.d_mm:g}, D {self.D_mm:g}, B {self.B_mm:g} mm: {solid:.3g} kg)",
+                )
         unknown = set(self.estimated) - BEARING_ESTIMABLE
         if unknown:
             raise ValueError(f"estimated names unknown fields {sorted(unknown)}")

@@ -234,7 +234,7 @@ def plan_motor(
 
     sel = evaluate(motor.rated_power_kW)
     assert sel is not None and sel.working_speed_rpm is not None
-    series = list(cat.rated_powers_kW)
+    series = cat.power_series(2 * pp)  # a user motor may be off the GOST series
     p_req_kW = ev.torque_Nm * ev.speed_rpm * math.pi / 30.0 / 1e3
     p_work_kW = ev.torque_Nm * sel.working_speed_rpm * math.pi / 30.0 / 1e3
     band = trace.apply(im_rules.rated_power_band, p_req_kW, p_work_kW, motor.rated_power_kW, series)
