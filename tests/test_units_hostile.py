@@ -371,3 +371,30 @@ async def test_typing_a_quantity_key_by_key_never_crashes(
         assert app.is_running and app.return_code is None
     # each string reached a value or a hint at its end, and both happened along the way
     assert seen["value"] >= 4 and seen["hint"] >= 10, seen
+
+
+async def test_the_wizard_opens_a_hostile_file_and_quits(tmp_path, monkeypatch):
+    """Issue 24: the wizard opened on such a file froze and ignored ctrl+q. Each string stays
+    in its field with the grammar's reason, and ctrl+q ends the app."""
+    from textual.widgets import Input, Label
+
+    from advisor.tui.app import DriveAdvisorApp
+
+    monkeypatch.setenv("XDG_STATE_HOME", str(tmp_path / "state"))
+    monkeypatch.setenv("TEXTUAL_ANIMATIONS", "none")
+    monkeypatch.chdir(tmp_path)
+    doc = _with_force("9**9**9 N")
+    doc["linear"]["stroke_m"] = "5 " + "k" * 50000 + "m"
+    app = DriveAdvisorApp(doc, tmp_path / "hostile.toml", save_drafts=False)
+    start = time.monotonic()
+    async with app.run_test(size=(120, 40)) as pilot:
+        await pilot.press("ctrl+n")
+        assert app.step == 1  # the step of the two fields
+        assert app.query_one("#f-linear-force-N", Input).value == "9**9**9 N"
+        said = _shown(app.query_one("#f-linear-force-N-err", Label))
+        assert "'9**9**9 N': must be a number or a quantity with a unit" in said
+        assert "at most 64 characters" in _shown(app.query_one("#f-linear-stroke-m-err", Label))
+        await pilot.press("ctrl+q")
+        await pilot.pause()
+        assert not app.is_running
+    assert time.monotonic() - start < 30
