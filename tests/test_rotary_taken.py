@@ -85,7 +85,11 @@ def test_the_device_at_the_output_holds_the_output_torque(by_rules):
     assert "output_side" not in ow
     assert all(a["location"] == "output side" for a in ow["alternatives"])
     ow1 = _decisions(rep)["OW-01"]
-    assert ow1["inputs"] == {"torque_Nm": 1000.0, "location": "output side"}
+    assert ow1["inputs"]["torque_Nm"] == 1000.0
+    assert ow1["inputs"]["location"] == "output side"
+    # the decision's q·η and motor-side torque are stated in its inputs too
+    assert ow1["inputs"]["motor_side_torque_Nm"] == pytest.approx(at_motor, rel=1e-5)
+    assert ow1["inputs"]["ratio_times_efficiency"] == pytest.approx(1000.0 / at_motor, rel=1e-5)
     assert "as the requirement asks (one_way.location)" in ow1["decision"]
 
 
