@@ -364,7 +364,7 @@ def parse_requirements(data: dict[str, Any]) -> Requirements:
     from advisor.ignored import contradictions
 
     try:
-        data = convert(data, model)  # "5 kN" → 5000 (pint only if such a string is there)
+        data = convert(data, model)  # "5 kN" → 5000 by the strict quantity grammar
     except InputError as exc:
         raise InputError(*capped(exc.messages)) from None
     conflicts = contradictions(data)
