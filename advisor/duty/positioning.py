@@ -204,7 +204,9 @@ def advise_duty(
     elif abs(i / fastest[best] - 1.0) > 1e-9:
         warnings.append(
             f"duty: the cycle needs i = {i:.4g}, not the fastest ratio {fastest[best]:.4g}: "
-            "there the RMS torque exceeds the rated torque"
+            "there the RMS torque exceeds the rated torque; i is the ratio nearest the fastest "
+            "where the RMS torque equals the rated one, so its thermal margin is 1.000 by "
+            "construction — a ratio a little larger runs cooler at almost the same move time"
         )
     src = du_rules.KLYUCHEV + du_rules.ISSUE_15
     checks = [
