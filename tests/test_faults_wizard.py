@@ -174,3 +174,63 @@ async def test_a_draft_that_cannot_be_saved_is_a_notice_not_a_crash():
         notes = [n.message for n in app._notifications]
         assert any("the draft cannot be saved" in m and "FIFO" in m for m in notes)
     assert app.return_code in (None, 0)
+
+
+def _notes(app, words: str) -> list[str]:
+    return [n.message for n in app._notifications if words in n.message]
+
+
+async def _type_force(app, pilot, keys: str) -> None:
+    await pilot.press("ctrl+n")
+    await pilot.pause()
+    assert app.focused.id == "f-linear-force-N"
+    await pilot.press(*keys)
+    await pilot.pause()
+
+
+async def test_a_state_directory_that_is_a_file_is_said_once_and_the_input_kept(
+    tmp_path, monkeypatch
+):
+    """XDG_STATE_HOME names a regular file: no draft can be written below it. Said once (a
+    notice and the status line), not at each of the four keys; the input stays in memory."""
+    blocker = tmp_path / "not-a-dir"
+    blocker.write_text("")
+    monkeypatch.setenv("XDG_STATE_HOME", str(blocker))
+    app = DriveAdvisorApp({"application": {"kind": "linear"}}, offer_draft=False)
+    async with app.run_test(size=SIZE) as pilot:
+        await _type_force(app, pilot, "3500")
+        assert len(_notes(app, "the draft cannot be saved")) == 1
+        assert "Not a directory" in _notes(app, "the draft cannot be saved")[0]
+        status = app.query_one("#draft-status", Static)
+        assert status.display and "Draft not saved" in _text(status)
+        assert "Not a directory" in _text(status)
+        assert app.doc["linear"]["force_N"] == 3500.0
+        # the place can be written again: the next change is saved and the line goes
+        blocker.unlink()
+        await pilot.press("0")
+        await pilot.pause()
+        assert not status.display
+        assert drafts.load_draft(None).doc["linear"]["force_N"] == 35000.0
+    assert app.return_code in (None, 0)
+
+
+async def test_a_read_only_state_directory_is_said_once_and_the_input_kept(monkeypatch):
+    """A read-only directory (root writes there all the same, so the write is made to fail
+    as it does for a user: PermissionError)."""
+
+    def refuse(path, text):
+        raise PermissionError(13, "Permission denied", str(path))
+
+    monkeypatch.setattr(drafts, "write_atomic", refuse)
+    app = DriveAdvisorApp({"application": {"kind": "linear"}}, offer_draft=False)
+    async with app.run_test(size=SIZE) as pilot:
+        await _type_force(app, pilot, "600")
+        await pilot.press("enter", "2", "5")
+        await pilot.pause()
+        assert len(_notes(app, "the draft cannot be saved")) == 1
+        status = app.query_one("#draft-status", Static)
+        assert status.display and "Permission denied" in _text(status)
+        assert app.doc["linear"] == {"force_N": 600.0, "stroke_m": 25.0}
+        assert app.query_one("#f-linear-stroke-m", Input).value == "25"
+    assert app.return_code in (None, 0)
+    assert drafts.load_draft(None).doc is None  # nothing was written

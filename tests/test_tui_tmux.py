@@ -7,6 +7,7 @@ import shutil
 import subprocess
 import sys
 import time
+import tomllib
 import uuid
 
 import pytest
@@ -15,17 +16,28 @@ from helpers import EXAMPLES
 from advisor.core.engine import advise
 from advisor.core.report import to_toml
 from advisor.core.requirements import read_requirements
+from advisor.tui.draft import draft_path
 
 pytestmark = pytest.mark.skipif(shutil.which("tmux") is None, reason="tmux is not installed")
 
 
-# a private server: tests running side by side (or a user's own tmux) never share it, and
-# killing our session never takes another run's server down
-_SOCKET = f"advisor-e2e-{uuid.uuid4().hex[:8]}"
+# a private server per test: tests running side by side (or a user's own tmux) never share
+# it, killing our session never takes another run's server down, and a test never starts
+# its server on the socket of one still shutting down ("server exited unexpectedly")
+_SOCKET = [""]
+
+
+@pytest.fixture(autouse=True)
+def _own_server():
+    _SOCKET[0] = f"advisor-e2e-{uuid.uuid4().hex[:8]}"
+    yield
+    _tmux("kill-server", check=False)
 
 
 def _tmux(*args: str, check: bool = True) -> str:
-    r = subprocess.run(["tmux", "-L", _SOCKET, *args], capture_output=True, text=True, check=check)
+    r = subprocess.run(
+        ["tmux", "-L", _SOCKET[0], *args], capture_output=True, text=True, check=check
+    )
     return r.stdout
 
 
@@ -68,6 +80,49 @@ def test_wizard_in_tmux_exports_the_batch_report(tmp_path):
                 break
             time.sleep(0.1)
         assert out.read_text(encoding="utf-8") == to_toml(advise(read_requirements(src)))
+        _tmux("send-keys", "-t", session, "C-q")
+    finally:
+        _tmux("kill-server", check=False)
+
+
+def test_a_burst_of_keys_in_tmux_fills_field_after_field(tmp_path, monkeypatch):
+    """Issue 24: ``send-keys "600" Enter "25" Enter`` in one call (one write to the terminal,
+    read by the wizard as one burst) gave an axial force of 60025 N and no stroke; each
+    number must land in its own field, and the draft must hold 600 N and 25 m."""
+    src = tmp_path / "lin.toml"
+    src.write_text('[application]\nkind = "linear"\n', encoding="utf-8")
+    state = tmp_path / "state"
+    session = f"advisor-e2e-{uuid.uuid4().hex[:8]}"
+    env = (
+        f"XDG_STATE_HOME={state} TEXTUAL_ANIMATIONS=none "
+        f"PATH={os.path.dirname(sys.executable)}:{os.environ.get('PATH', '')}"
+    )
+    command = f"cd {tmp_path} && env {env} {sys.executable} -m advisor {src}"
+    _tmux("new-session", "-d", "-s", session, "-x", "120", "-y", "40", command)
+    try:
+        _wait_for(session, "What must the drive do?")
+        _tmux("send-keys", "-t", session, "C-n")
+        _wait_for(session, "Axial force [N]")
+        _tmux("send-keys", "-t", session, "600", "Enter", "25", "Enter")
+        monkeypatch.setenv("XDG_STATE_HOME", str(state))  # where the wizard saves its draft
+        draft = draft_path(src)
+        want = {"force_N": 600.0, "stroke_m": 25.0}
+        saved: dict = {}
+        for _ in range(300):  # a loaded machine can take seconds (the draft goes key by key)
+            if draft.exists():
+                saved = tomllib.loads(draft.read_text(encoding="utf-8"))
+                if saved.get("linear") == want:
+                    break
+            time.sleep(0.1)
+        assert saved.get("linear") == want
+        lines = _tmux("capture-pane", "-p", "-t", session).splitlines()
+        shown = {
+            name: lines[i].split("▊")[-1].strip(" ▎")
+            for i, line in enumerate(lines)
+            for name in ("Axial force [N]", "Stroke [m]")
+            if name in line
+        }
+        assert shown == {"Axial force [N]": "600", "Stroke [m]": "25"}
         _tmux("send-keys", "-t", session, "C-q")
     finally:
         _tmux("kill-server", check=False)

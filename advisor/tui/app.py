@@ -75,6 +75,7 @@ _REVIEW = len(registry.DEFAULT_STEPS) + 1
 CSS = """
 Screen { layout: vertical; }
 #steps { height: 1; padding: 0 1; background: $boost; }
+#draft-status { height: auto; padding: 0 1; color: $warning; display: none; }
 #main { height: 1fr; }
 .step { padding: 0 1; }
 .field { height: auto; margin: 0; }
@@ -119,7 +120,8 @@ HELP = """\
   [ / ]    previous / next plot on the Plot view
   f1       this help           ctrl+q   quit
   enter moves to the next field (on the last one, to the next step);
-  tab / shift+tab move between fields; arrows choose in lists
+  tab / shift+tab move between fields; arrows choose in lists; a
+  paste of several lines fills field after field, a line each
 
 Nothing is computed or exported while a field shows an error: ctrl+r and
 ctrl+s take you to it first.
@@ -410,6 +412,8 @@ class DriveAdvisorApp(App[None]):
         self.results_version = 0
         self.last_compute_s = 0.0
         self._last_doc: Any = None  # the document as last saved (or opened)
+        #: why the last draft save failed (None: it worked, or none was tried)
+        self.draft_unsaved: str | None = None
         self._offered: Any = None  # the draft offered (a drafts.Loaded), while it is
         # None: in a terminal, not under a test's Pilot (headless), where it would only cost
         self.warm_up = warm_up
@@ -454,6 +458,7 @@ class DriveAdvisorApp(App[None]):
         kind, title = self._first_look()
         yield Header()
         yield SteadyStatic("", id="steps")
+        yield SteadyStatic("", id="draft-status")  # shown while the draft cannot be saved
         with ContentSwitcher(initial="wizard", id="main"):
             with ContentSwitcher(initial="step-0", id="wizard"):
                 with VerticalScroll(id="step-0", classes="step"):
@@ -501,10 +506,104 @@ class DriveAdvisorApp(App[None]):
             self.screen.call_after_refresh(self._start)
 
     async def on_event(self, event: events.Event) -> None:
-        """Keys, clicks and pastes wait (in order) until the start-up is done (_start)."""
+        """Keys, clicks and pastes wait (in order) until the start-up is done (_start); keys
+        and pastes then act in the order typed (:meth:`_key_in_order`, :meth:`_paste_lines`)."""
         if isinstance(event, events.InputEvent | events.Paste) and not self._built.is_set():
             await self._built.wait()
+        if isinstance(event, events.Key) and not event.is_forwarded:
+            if await self._key_in_order(event):
+                return
+        elif isinstance(event, events.Paste) and not event.is_forwarded:
+            if await self._paste_lines(event):
+                return
         await super().on_event(event)
+
+    async def _settle(self, widget: Any) -> None:
+        """Wait until ``widget`` has handled every event already sent to it.
+
+        textual hands a key to the focused widget by queueing it there and goes on with the
+        next key at once: in a burst ("600⏎25⏎" from tmux, a paste typed by the terminal, a
+        fast typist on a loaded machine) every key was queued in the first box before that
+        box handled its enter, and the focus moved only after all of them had landed in it
+        (60025 N and an empty stroke). A callback queued behind them runs once they are
+        handled (milliseconds); a widget closing meanwhile holds the keys at most 5 s."""
+        done = asyncio.Event()
+        if widget.is_attached and widget.call_later(done.set):
+            try:
+                await asyncio.wait_for(done.wait(), timeout=5.0)
+            except TimeoutError:
+                pass
+
+    def _wizard_box(self) -> Input | None:
+        """The wizard's field (a text box) that has the focus, if any (not a dialog's)."""
+        box = self.focused
+        if isinstance(box, Input) and self._field_by_id(box.id) is not None:
+            return box
+        return None
+
+    async def _key_in_order(self, event: events.Key) -> bool:
+        """A key that moves the focus acts in the order typed (True: it was handled here).
+
+        A printable key goes to the focused box, behind the keys before it (one queue, in
+        order). Any other key first waits until the focused box has handled those: a
+        binding (ctrl+n, ctrl+r …) then sees the text typed before it. Enter in a wizard's
+        field, tab and shift+tab move the focus here and now, before the next key is handed
+        on, instead of bubbling up from the box while the keys after them land in it."""
+        box = self.focused
+        if not isinstance(box, Input) or event.is_printable:
+            return False
+        await self._settle(box)
+        if box is not self.focused:  # (the focus moved meanwhile, as by a click: textual's)
+            return False
+        if event.key == "enter" and self._wizard_box() is box:
+            await self._enter_in(box)
+            return True
+        if event.key in ("tab", "shift+tab") and not self._bindings_for(box, event.key):
+            if event.key == "tab":
+                self.screen.focus_next()
+            else:
+                self.screen.focus_previous()
+            return True
+        return False
+
+    @staticmethod
+    def _bindings_for(box: Input, key: str) -> bool:
+        """Whether the box or one of its containers (below the screen) binds ``key``."""
+        node: Any = box
+        while node is not None and node is not box.screen:
+            if node._bindings.key_to_bindings.get(key):
+                return True
+            node = node.parent
+        return False
+
+    async def _paste_lines(self, event: events.Paste) -> bool:
+        """A paste of several lines into a wizard's field: each line into the field that
+        has the focus, and each line break acts as enter (the next field), as if typed.
+        textual's own box keeps the first line only; typed by a terminal without bracketed
+        paste, the lines ran together (“6 kN250 mm”). True: it was handled here."""
+        text = event.text.replace("\r\n", "\n").replace("\r", "\n")
+        if "\n" not in text or self._wizard_box() is None:
+            return False
+        lines = text.split("\n")
+        for i, line in enumerate(lines):
+            box = self._wizard_box()
+            if box is None:  # the focus left the fields (a fix to make, the review): stop
+                break
+            if line:
+                box._forward_event(events.Paste(line))
+                await self._settle(box)
+            if i < len(lines) - 1:
+                await self._enter_in(box)
+        return True
+
+    async def _enter_in(self, box: Input) -> None:
+        """enter in a wizard's field: the next field; on the step's last one, the next step."""
+        step = self.query_one(f"#step-{self.step}")
+        chain = [w for w in step.query("Input, Select, Switch") if w.can_focus]
+        if box in chain and chain.index(box) < len(chain) - 1:
+            self.set_focus(chain[chain.index(box) + 1])
+        else:
+            await self.action_next()
 
     async def _start(self) -> None:
         """Everything the first screen did not need: the warm-up of the engine started in
@@ -829,16 +928,45 @@ class DriveAdvisorApp(App[None]):
             return
         self._last_doc = copy.deepcopy(now)
         if self.save_drafts and self._offered is None:  # not while a draft is being offered
-            try:
-                drafts.save_draft(F.prune(self.doc), self.source)
-            except OSError as exc:
-                self.notify(
-                    f"the draft cannot be saved ({exc.strerror})", severity="warning", markup=False
-                )
-            except InputError as exc:  # the draft's place is a directory, a FIFO, a device
-                self.notify(f"the draft cannot be saved: {exc}", severity="warning", markup=False)
+            self._save_draft()
         if self.report is not None:
             self._show_result_status()
+
+    def _save_draft(self) -> None:
+        """Save the draft; when it cannot be (its directory is a file, read-only, full …),
+        say so once, as a notice and on the status line under the steps, and keep the input
+        in memory: a notice at every keystroke would bury the screen. The line stays while
+        the saves fail, and goes at the first save that works again."""
+        try:
+            drafts.save_draft(F.prune(self.doc), self.source)
+        except OSError as exc:
+            why = f"{exc.strerror or type(exc).__name__}"
+            if exc.filename:
+                why = f"{show(exc.filename, 120)}: {why}"
+        except InputError as exc:  # the draft's place is a directory, a FIFO, a device
+            why = str(exc).splitlines()[0] if str(exc) else type(exc).__name__
+        except ValueError as exc:  # text the file's encoding cannot hold (a lone surrogate)
+            why = show(exc, 120)
+        else:
+            if self.draft_unsaved is not None:
+                self.draft_unsaved = None
+                self._show_draft_status("")
+            return
+        first = self.draft_unsaved is None
+        self.draft_unsaved = why
+        self._show_draft_status(
+            f"Draft not saved ({why}); your input is kept until you quit: ctrl+s exports it."
+        )
+        if first:
+            self.notify(
+                f"the draft cannot be saved ({why})", severity="warning", markup=False, timeout=8
+            )
+
+    def _show_draft_status(self, text: str) -> None:
+        line = self._by_id("draft-status")
+        if line is not None:
+            line.update(plain(text))
+            line.display = bool(text)
 
     def _sync_input(self, f: "F.Field", text: str, quiet: bool = False) -> str | None:
         """Put what a field shows into the document: its value, or nothing while it shows an
@@ -883,16 +1011,12 @@ class DriveAdvisorApp(App[None]):
 
     @on(Input.Submitted)
     async def _input_submitted(self, event: Input.Submitted) -> None:
-        """enter: the next field; on the step's last one, the next step."""
+        """A submit that was not an enter key (those :meth:`_key_in_order` handles): the
+        next field; on the step's last one, the next step."""
         if event.input.id == "export-path" or self._field_by_id(event.input.id) is None:
             return
         event.stop()
-        box = self.query_one(f"#step-{self.step}")
-        chain = [w for w in box.query("Input, Select, Switch") if w.can_focus]
-        if event.input in chain and chain.index(event.input) < len(chain) - 1:
-            self.set_focus(chain[chain.index(event.input) + 1])
-        else:
-            await self.action_next()
+        await self._enter_in(event.input)
 
     @on(Select.Changed)
     def _select_changed(self, event: Select.Changed) -> None:
