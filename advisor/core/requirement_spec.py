@@ -20,11 +20,26 @@ MODELS = {
     'advisor.applications.linear.requirements:LinearRequirements': {
         'fields': (
             ('application', ('model', 'advisor.core.requirements:ApplicationReq'), True, None),
+            ('project', ('optional', ('model', 'advisor.core.requirements:ProjectReq')), False, None),
             ('linear', ('model', 'advisor.applications.linear.requirements:LinearReq'), True, None),
             ('motor', ('model', 'advisor.applications.linear.requirements:InductionMotorReq'), True, None),
             ('screw', ('model', 'advisor.applications.linear.requirements:ScrewReq'), False, ('record', 'advisor.applications.linear.requirements:ScrewReq', (), {'friction_coefficient': None, 'starts': None, 'friction_model': 'standard', 'thread': None, 'material_pair': 'steel_bronze', 'lubrication': 'oil', 'screw_steel': '45'})),
             ('one_way', ('model', 'advisor.core.requirements:OneWayReq'), False, ('record', 'advisor.core.requirements:OneWayReq', (), {'type': 'auto', 'rollers': 6, 'priority': 'mass'})),
             ('duty', ('optional', ('model', 'advisor.duty.requirements:LinearDutyReq')), False, None),
+        ),
+        'field_checks': {},
+        'after': (),
+        'mixins': (),
+    },
+    'advisor.core.requirements:ProjectReq': {
+        'fields': (
+            ('name', ('str', {'max_length': 200}), False, ''),
+            ('document_number', ('str', {'max_length': 80}), False, ''),
+            ('revision', ('str', {'max_length': 40}), False, ''),
+            ('date', ('str', {'max_length': 40}), False, ''),
+            ('author', ('str', {'max_length': 200}), False, ''),
+            ('checked_by', ('str', {'max_length': 200}), False, ''),
+            ('approved_by', ('str', {'max_length': 200}), False, ''),
         ),
         'field_checks': {},
         'after': (),
@@ -117,6 +132,7 @@ MODELS = {
     'advisor.applications.rotary.requirements:RotaryRequirements': {
         'fields': (
             ('application', ('model', 'advisor.core.requirements:ApplicationReq'), True, None),
+            ('project', ('optional', ('model', 'advisor.core.requirements:ProjectReq')), False, None),
             ('rotary', ('model', 'advisor.applications.rotary.requirements:RotaryReq'), True, None),
             ('envelope', ('model', 'advisor.applications.rotary.requirements:EnvelopeReq'), False, ('record', 'advisor.applications.rotary.requirements:EnvelopeReq', (), {'max_outer_diameter_mm': None, 'max_length_mm': None})),
             ('motor', ('model', 'advisor.applications.rotary.requirements:BldcMotorReq'), True, None),
@@ -248,6 +264,7 @@ MODELS = {
     'advisor.applications.positioning.requirements:PositioningRequirements': {
         'fields': (
             ('application', ('model', 'advisor.core.requirements:ApplicationReq'), True, None),
+            ('project', ('optional', ('model', 'advisor.core.requirements:ProjectReq')), False, None),
             ('positioning', ('model', 'advisor.applications.positioning.requirements:PositioningReq'), True, None),
             ('duty', ('optional', ('model', 'advisor.duty.requirements:PositioningDutyReq')), False, None),
         ),
@@ -290,6 +307,7 @@ MODELS = {
     'advisor.applications.spinning_rotor.requirements:SpinningRotorRequirements': {
         'fields': (
             ('application', ('model', 'advisor.core.requirements:ApplicationReq'), True, None),
+            ('project', ('optional', ('model', 'advisor.core.requirements:ProjectReq')), False, None),
             ('rotor', ('model', 'advisor.applications.spinning_rotor.requirements:RotorReq'), True, None),
         ),
         'field_checks': {},

@@ -183,6 +183,33 @@ class OneWayReq(_Strict):
     ] = "mass"
 
 
+def _doc_text(desc: str, label: str, example: str, length: int = 200) -> Any:
+    return ask(desc, label=label, example=example, max_length=length)
+
+
+class ProjectReq(_Strict):
+    """The ``[project]`` table: the header of the datasheet a design review signs. Every
+    field is text, copied as written (the date too: the advisor never reads the clock, so
+    two runs of one file give the same datasheet)."""
+
+    name: Annotated[str, _doc_text("the project", "Project", "Rudder actuator, batch 2")] = ""
+    document_number: Annotated[
+        str, _doc_text("the document number", "Document number", "DA-0042", 80)
+    ] = ""
+    revision: Annotated[str, _doc_text("the revision", "Revision", "B", 40)] = ""
+    date: Annotated[str, _doc_text("the date, as text in quotes", "Date", "2025-03-14", 40)] = ""
+    author: Annotated[str, _doc_text("who prepared the design", "Author", "A. Engineer")] = ""
+    checked_by: Annotated[str, _doc_text("who checked it", "Checked by", "C. Checker")] = ""
+    approved_by: Annotated[str, _doc_text("who approved it", "Approved by", "D. Approver")] = ""
+
+
+#: The optional ``[project]`` table every application's requirement model declares.
+ProjectField = Annotated[
+    ProjectReq | None,
+    Field(description="the [project] table: name, document_number, revision, date, author…"),
+]
+
+
 class _Head(BaseModel):
     """Only the [application] table, read first to know which model validates the file."""
 

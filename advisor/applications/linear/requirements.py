@@ -8,6 +8,7 @@ from advisor.applications.linear import requirement_checks as checks
 from advisor.core.requirements import (
     ApplicationReq,
     OneWayReq,
+    ProjectField,
     _num,
     _Strict,
     after_check,
@@ -111,6 +112,7 @@ class LinearRequirements(_Strict):
     """A linear actuator: induction motor + sliding screw–nut (seed 001)."""
 
     application: ApplicationReq
+    project: ProjectField = None  # the datasheet's header (advisor.core.requirements)
     linear: Annotated[
         LinearReq,
         Field(description="the [linear] table: force_N, stroke_m, travel_time_s, support_span_m"),

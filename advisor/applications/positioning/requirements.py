@@ -9,7 +9,15 @@ from typing import Annotated, Literal
 from pydantic import Field
 
 from advisor.applications.positioning import requirement_checks as checks
-from advisor.core.requirements import ApplicationReq, _num, _Strict, after_check, ask, field_check
+from advisor.core.requirements import (
+    ApplicationReq,
+    ProjectField,
+    _num,
+    _Strict,
+    after_check,
+    ask,
+    field_check,
+)
 from advisor.duty.requirements import PositioningDutyReq
 
 
@@ -114,6 +122,7 @@ class PositioningRequirements(_Strict):
     """A positioning drive: which motor and which ratio make the move fastest."""
 
     application: ApplicationReq
+    project: ProjectField = None  # the datasheet's header (advisor.core.requirements)
     positioning: Annotated[
         PositioningReq,
         Field(description="the [positioning] table: travel_rad, load_inertia_kgm2, load_torque_Nm"),

@@ -18,6 +18,7 @@ from advisor.applications.rotary import requirement_checks as checks
 from advisor.core.requirements import (
     ApplicationReq,
     OneWayReq,
+    ProjectField,
     _num,
     _Strict,
     after_check,
@@ -198,6 +199,7 @@ class RotaryRequirements(_Strict):
     """A rotary actuator: PM brushless motor + wave-gear reducer with rolling bodies."""
 
     application: ApplicationReq
+    project: ProjectField = None  # the datasheet's header (advisor.core.requirements)
     rotary: Annotated[RotaryReq, Field(description="the [rotary] table: torque_Nm, speed_rpm")]
     # defaults made without validation (they are valid): a nested model builds no validator
     # of its own (defer_build), and validating one here would build it at import (issue 16)

@@ -10,7 +10,15 @@ from advisor.applications.spinning_rotor.requirement_checks import (
     MIN_SLEW_RATE_rad_s,
     RotorDerived,
 )
-from advisor.core.requirements import ApplicationReq, _num, _Strict, after_check, ask, field_check
+from advisor.core.requirements import (
+    ApplicationReq,
+    ProjectField,
+    _num,
+    _Strict,
+    after_check,
+    ask,
+    field_check,
+)
 
 
 def _rng(lo: float, hi: float, desc: str, *, open_lo: bool = False, **question: Any) -> Any:
@@ -169,6 +177,7 @@ class SpinningRotorRequirements(_Strict):
     torque that brings it to speed in time."""
 
     application: ApplicationReq
+    project: ProjectField = None  # the datasheet's header (advisor.core.requirements)
     rotor: Annotated[
         RotorReq,
         Field(
