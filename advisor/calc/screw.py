@@ -195,3 +195,179 @@ def nut_bearing_pressure(force_N: float, d2_m: float, h1_m: float, turns: float)
     8.252
     """
     return force_N / (math.pi * d2_m * h1_m * turns)
+
+
+# ------------------------------------------------------------------ thrust face (issue 26)
+def collar_torque(force_N: float, friction_coefficient: float, mean_diameter_m: float) -> float:
+    """Friction torque of a plain thrust collar, T_c = F·f_c·d_c/2  [N·m].
+
+    Shigley, «Mechanical Engineering Design», eq. (8-6), with d_c the mean collar diameter
+    (Bhandari, «Design of Machine Elements», §6.6, writes μc·W·R_m with R_m = (D_o + D_i)/4,
+    the uniform-wear mean radius: the same number).
+
+    Bhandari Ex. 6.6: W = 2 kN, μc = 0.12, collar 60/100 mm → d_c = 80 mm, 9.6 N·m:
+
+    >>> round(collar_torque(2000, 0.12, 0.080), 6)
+    9.6
+    """
+    return force_N * friction_coefficient * mean_diameter_m / 2.0
+
+
+def thread_efficiency_with_thrust(
+    force_N: float, lead_m: float, thread_torque_Nm: float, thrust_torque_Nm: float
+) -> float:
+    """Overall efficiency of screw and thrust face, η = F·L / (2π·(T_thread + T_thrust)).
+
+    Bhandari Ex. 6.6: 2000·8 mm / (2π·19.684 N·m) = 0.1294:
+
+    >>> round(thread_efficiency_with_thrust(2000, 0.008, 10.0841, 9.6), 4)
+    0.1294
+    """
+    return force_N * lead_m / (2.0 * math.pi * (thread_torque_Nm + thrust_torque_Nm))
+
+
+# ------------------------------------------------------------------ nut wear and heat
+def flank_sliding_speed(d2_m: float, speed_rpm: float, psi_rad: float) -> float:
+    """Sliding speed of the nut on the flanks along the helix, v_s = π·d2·n / cos ψ  [m/s].
+
+    Seed 001's Tr16x2 at 1200 rpm (ψ = 2.43°): π·0.015·20/cos ψ = 0.9433 m/s:
+
+    >>> round(flank_sliding_speed(0.015, 1200, math.atan(0.002 / (math.pi * 0.015))), 4)
+    0.9433
+    """
+    return math.pi * d2_m * speed_rpm / 60.0 / math.cos(psi_rad)
+
+
+#: Safe bearing pressure of a screw–nut pair by sliding speed: Shigley, «Mechanical
+#: Engineering Design», 9th/10th ed., Table 8-4 "Screw bearing pressure p_b" (from H. A.
+#: Rothbart, «Mechanical Design Handbook»), rows (pair, upper sliding speed in m/min, low
+#: and high end of the safe p_b in MPa). The SI rows convert the table's psi and ft/min
+#: (2500–3500 psi low speed; 1600–2500 psi ≤ 10 fpm; 1800–2500 psi cast iron ≤ 8 fpm;
+#: 800–1400 psi 20–40 fpm; 600–1000 psi cast iron 20–40 fpm; 150–240 psi ≥ 50 fpm).
+#: Between the table's speed bands the lower band's value is kept (conservative), and the
+#: low end of each range is used. The values could not be verified online (the search found
+#: the neighbouring Tables 8-5 and 8-6 but not 8-4): they are the printed table as recalled
+#: and are marked so in the report.
+SHIGLEY_BEARING_PRESSURE: dict[str, tuple[tuple[float, float, float], ...]] = {
+    # steel screw on a bronze nut: "low speed", ≤ 3 m/min, 6–12 m/min, ≥ 15 m/min
+    "bronze": ((0.6, 17.2, 24.1), (3.0, 11.0, 17.2), (12.0, 5.5, 9.7), (math.inf, 1.0, 1.7)),
+    # steel screw on a cast-iron nut: ≤ 2.4 m/min, 6–12 m/min (none given above)
+    "cast_iron": ((2.4, 12.4, 17.2), (12.0, 4.1, 6.9)),
+}
+
+
+def shigley_bearing_pressure(nut: str, sliding_speed_m_s: float) -> tuple[float, str]:
+    """The safe flank pressure of Shigley's Table 8-4 at a sliding speed  [Pa], and the
+    table's row in words. Raises KeyError for a nut material the table lacks and returns
+    ``(0, …)`` above the last speed band the table gives for it (no safe pressure).
+
+    >>> shigley_bearing_pressure("bronze", 0.94)
+    (1000000.0, 'steel–bronze, ≥ 15 m/min: 1–1.7 MPa')
+    >>> shigley_bearing_pressure("bronze", 0.15)
+    (5500000.0, 'steel–bronze, 6–12 m/min: 5.5–9.7 MPa')
+    """
+    v = sliding_speed_m_s * 60.0
+    rows = SHIGLEY_BEARING_PRESSURE[nut]
+    lower = 0.0
+    for top, lo, hi in rows:
+        if v <= top:
+            band = (
+                "low speed"
+                if top < 1
+                else f"≥ {lower:g} m/min"
+                if top == math.inf
+                else f"≤ {top:g} m/min"
+                if lower < 1
+                else f"{lower:g}–{top:g} m/min"
+            )
+            name = "bronze" if nut == "bronze" else "cast iron"
+            return lo * 1e6, f"steel–{name}, {band}: {lo:g}–{hi:g} MPa"
+        lower = 15.0 if top == 12.0 else (6.0 if top in (3.0, 2.4) else top)
+    return 0.0, f"steel–{nut.replace('_', ' ')}: above {rows[-1][0]:g} m/min, no safe value"
+
+
+#: Natural-convection film coefficient of the nut's outer surface in still air, W/(m²·K): the
+#: middle of the 10–20 W/(m²·K) range usual for small bodies in air (e.g. Incropera, ch. 9).
+NUT_FILM_COEFFICIENT = 15.0
+#: Outer diameter of a nut body as a multiple of the thread's nominal diameter (the usual
+#: flanged-nut proportion D_n ≈ 1.5·d; an assumption, stated in the report).
+NUT_OUTER_DIAMETER_RATIO = 1.5
+#: Allowed temperature rise of a lubricated bronze nut: 40 K over a 40 °C ambient keeps the
+#: nut at 80 °C, the usual ceiling for mineral-oil and grease lubrication of sliding pairs.
+#: A stated design rule, not a value of a verified table.
+NUT_ALLOWED_RISE_K = 40.0
+
+
+def friction_power(torque_Nm: float, speed_rpm: float, efficiency: float) -> float:
+    """Power turned into heat in the thread, P_f = M·ω·(1 − η)  [W].
+
+    Issue 26's 8 kN case, Tr18x4 at 943 rpm with about 1 kW at the screw and η ≈ 0.4:
+    60 % of 1 kW is heat. Seed 001 (5.085 N·m, 1200 rpm, η 0.2191): 499 W:
+
+    >>> round(friction_power(5.085, 1200, 0.2191))
+    499
+    """
+    return torque_Nm * speed_rpm * math.pi / 30.0 * (1.0 - efficiency)
+
+
+def nut_surface(d_m: float, nut_length_m: float) -> float:
+    """Outer surface of the nut body that gives its heat to the air  [m²]: the cylinder of
+    diameter D_n = 1.5·d over the nut's length and its two annular end faces.
+
+    Tr16 nut 18 mm long: D_n = 24 mm, π·24·18 + 2·π/4·(24² − 16²) = 1357.2 + 502.7 mm²:
+
+    >>> round(nut_surface(0.016, 0.018) * 1e6)
+    1860
+    """
+    dn = NUT_OUTER_DIAMETER_RATIO * d_m
+    return math.pi * dn * nut_length_m + 2.0 * math.pi / 4.0 * (dn**2 - d_m**2)
+
+
+def nut_temperature_rise(mean_power_W: float, surface_m2: float) -> float:
+    """Steady temperature rise of the nut, ΔT = P̄_f / (h·A)  [K]: the mean friction power
+    over the cycle leaves through the nut's outer surface by natural convection (h of
+    :data:`NUT_FILM_COEFFICIENT`). Heat carried away by the screw and the carriage is
+    neglected, so the estimate errs high.
+
+    10 W through 1860 mm²: 10/(15·0.00186) = 358.4 K:
+
+    >>> round(nut_temperature_rise(10.0, 0.00186), 1)
+    358.4
+    """
+    return mean_power_W / (NUT_FILM_COEFFICIENT * surface_m2)
+
+
+# ------------------------------------------------------------------ whirling speed
+#: Eigenvalue β·L of the first bending mode of a uniform shaft for the end fixities of
+#: :data:`END_FIXITY_FACTOR` (Blevins, «Formulas for Natural Frequency and Mode Shape»,
+#: table 8-1: clamped–free 1.87510, pinned–pinned π, clamped–pinned 3.92660,
+#: clamped–clamped 4.73004).
+WHIRL_EIGENVALUE: dict[str, float] = {
+    "fixed-free": 1.87510,
+    "pinned-pinned": math.pi,
+    "fixed-pinned": 3.92660,
+    "fixed-fixed": 4.73004,
+}
+#: Share of the critical speed a screw may run at (the usual 80 % rule of screw makers'
+#: catalogues, e.g. THK and NSK ball-screw selection: permissible speed 0.8·n_cr).
+WHIRL_ALLOWED_SHARE = 0.8
+
+
+def critical_speed_rpm(
+    d3_m: float, span_m: float, fixity: str, elastic_modulus_Pa: float, density_kg_m3: float
+) -> float:
+    """First whirling (critical) speed of the screw core between its supports  [rpm].
+
+    n_cr = (β·L)²/(2π·L²)·√(E·I/(ρ·A)) · 60, with the core a round bar of diameter d3
+    (√(I/A) = d3/4) and β·L of :data:`WHIRL_EIGENVALUE` for the end fixity.
+
+    Hand check, Tr16x2 core (d3 = 13.5 mm) pinned–pinned over 0.4 m, steel (E = 210 GPa,
+    ρ = 7850 kg/m³): √(E/ρ) = 5172.2 m/s, d3/4 = 3.375 mm,
+    ω = π²·5172.2·0.003375/0.16 = 1076.8 rad/s → 10 283 rpm.
+
+    >>> round(critical_speed_rpm(0.0135, 0.4, "pinned-pinned", 210e9, 7850))
+    10283
+    """
+    beta_l = WHIRL_EIGENVALUE[fixity]
+    omega = beta_l**2 / span_m**2 * math.sqrt(elastic_modulus_Pa / density_kg_m3) * d3_m / 4.0
+    return omega * 30.0 / math.pi

@@ -210,6 +210,23 @@ ProjectField = Annotated[
 ]
 
 
+class DesignReq(_Strict):
+    """The [design] table: what the whole design must meet, whatever the application (issue
+    26). Shared by the applications that declare it."""
+
+    service_factor: Annotated[
+        float | None,
+        _num(
+            ge=1,
+            le=5,
+            desc="service factor f_B multiplying the load of every strength check; 1 … 5; "
+            "left out: 1",
+            label="Service factor f_B (empty: 1)",
+            step=1,
+        ),
+    ] = None
+
+
 class _Head(BaseModel):
     """Only the [application] table, read first to know which model validates the file."""
 
