@@ -124,3 +124,13 @@ def field_problems(requirement: dict[str, Any]) -> list[FieldProblem]:
         cross = err["type"] == "value_error" and (not loc or holds_table)
         out.append(FieldProblem(_where(loc), line, cross))
     return out
+
+
+def check_catalogs(catalog_dir: str) -> None:
+    """Load the user catalogs once, before a study starts: a missing directory or a broken
+    catalog is refused in one line (InputError), not found again in every variant."""
+    from pathlib import Path
+
+    from catalogs import load_catalogs
+
+    load_catalogs(Path(catalog_dir))

@@ -3,16 +3,25 @@
 Exit codes: 0 the study is complete (whatever the variants' own outcomes: they are in
 designs.csv), 2 a bad family file or option (before any work starts), 130 interrupted
 (rerun the same command to resume), 1 a variant hit a bug (its row says which).
+
+Everything that can be checked is checked before a cluster starts or a file is written:
+the options (a scheduler address of the form ``tcp://HOST:PORT``), the family file (its
+size counted, not built), and the results folder (writable, and none of its results is an
+input of the study, through symbolic links too).
 """
 
 import argparse
+import contextlib
 import os
+import re
+import signal
 import sys
 import time
+from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
 
-from advisor.family.adapter import AdvisorError, ExitCode
+from advisor.family.adapter import AdvisorError, ExitCode, InputError
 
 PROG = "advisor family"
 
@@ -50,6 +59,12 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--no-html", action="store_true", help="skip family.html (and matplotlib)")
     p.add_argument("--quiet", action="store_true", help="no progress bar")
     p.add_argument("--catalog-dir", type=Path, metavar="DIR", help="a directory of user catalogs")
+    p.add_argument(
+        "--max-variants",
+        type=int,
+        metavar="N",
+        help="refuse a family of more variants than this (default: 1000000)",
+    )
     return p
 
 
@@ -58,22 +73,225 @@ def _err(message: str) -> None:
         print(f"advisor: {line}", file=sys.stderr)
 
 
+#: ``tcp://HOST:PORT``: a host name, an IPv4 address or an IPv6 one in brackets.
+_ADDRESS = re.compile(r"tcp://(\[[0-9A-Fa-f:.]+\]|[A-Za-z0-9](?:[A-Za-z0-9.-]{0,252}))?:(\d{1,5})")
+
+
+def check_scheduler(address: str) -> str:
+    """A scheduler address as this command connects to it, or an :class:`InputError`.
+
+    Only ``tcp://HOST:PORT`` with PORT 1 to 65535 (what ``dask scheduler`` prints); an
+    ``http://`` dashboard address, ``inproc://`` (in-process only) or a port that is not a
+    number would fail after a connection attempt, or inside Dask.
+
+    >>> check_scheduler("tcp://127.0.0.1:8786"), check_scheduler("tcp://[::1]:8786")
+    ('tcp://127.0.0.1:8786', 'tcp://[::1]:8786')
+    """
+    from advisor.io_safety import show_repr
+
+    m = _ADDRESS.fullmatch(address)
+    if m is None or m.group(1) is None or not 1 <= int(m.group(2)) <= 65535:
+        raise InputError(
+            f"--scheduler {show_repr(address)}: not a scheduler address; "
+            "give tcp://HOST:PORT (PORT 1 to 65535), as `dask scheduler` prints it"
+        )
+    return address
+
+
+def check_options(args: argparse.Namespace) -> None:
+    """The options alone, before the family file is read."""
+    for flag, v in (
+        ("--workers", args.workers),
+        ("--chunk-size", args.chunk_size),
+        ("--max-variants", args.max_variants),
+    ):
+        if v is not None and v < 1:
+            raise InputError(f"{flag} = {v}: must be at least 1")
+    if args.scheduler is not None and args.workers is not None:
+        raise InputError(
+            "--workers sizes the local cluster; with --scheduler the cluster has its own"
+        )
+    if args.scheduler is not None:
+        check_scheduler(args.scheduler)
+
+
+#: What a study writes into DIR: files, then folders.
+RESULT_FILES = ("designs.csv", "summary.toml", "family.html")
+RESULT_DIRS = ("chunks", "reports")
+
+
+def _inside(path: str, folder: str) -> bool:
+    return path == folder or path.startswith(folder.rstrip(os.sep) + os.sep)
+
+
+def results(html: bool = True, reports: bool = True) -> tuple[list[str], list[str]]:
+    """The files and the folders a study writes into DIR."""
+    files = [f for f in RESULT_FILES if html or f != "family.html"]
+    return files, [d for d in RESULT_DIRS if reports or d != "reports"]
+
+
+def check_not_an_input(
+    out: Path, inputs: tuple[str, ...], html: bool = True, reports: bool = True
+) -> None:
+    """Refuse a DIR where the study would write over one of its own inputs (the family
+    file or a member's base): compared by real path, so a symbolic link either way counts,
+    and by file identity (a hard link)."""
+    from advisor.io_safety import same_file, show
+
+    files, folders = results(html, reports)
+    for given in inputs:
+        real = os.path.realpath(given)
+        for name in files:
+            target = out / name
+            if os.path.realpath(target) == real or same_file(target, Path(given)):
+                raise InputError(
+                    f"--out {show(out, 200)}: the study writes {name} there, which is its "
+                    f"input {show(given, 200)}; choose another --out"
+                )
+        for name in folders:
+            if _inside(real, os.path.realpath(out / name)):
+                raise InputError(
+                    f"--out {show(out, 200)}: the study writes into {name}/ there, which holds "
+                    f"its input {show(given, 200)}; choose another --out"
+                )
+
+
+def check_out(out: Path, inputs: tuple[str, ...], html: bool, reports: bool) -> None:
+    """DIR as the study will use it, checked without writing anything."""
+    import stat
+
+    from advisor.io_safety import show
+
+    if out.exists() and not out.is_dir():
+        raise InputError(f"--out {show(out, 200)}: exists and is not a directory")
+    check_not_an_input(out, inputs, html, reports)
+    files, folders = results(html, reports)
+    for name in (*files, *folders):
+        try:
+            mode = os.stat(out / name).st_mode
+        except OSError:
+            continue
+        want_dir = name in RESULT_DIRS
+        if stat.S_ISDIR(mode) != want_dir or not (want_dir or stat.S_ISREG(mode)):
+            what = "a folder" if want_dir else "a regular file"
+            raise InputError(
+                f"--out {show(out, 200)}: {name} there is not {what}; the study writes "
+                f"its {name} there (move it away or choose another --out)"
+            )
+
+
+def make_out_dir(out: Path) -> list[Path]:
+    """Create DIR (and missing parents); return the folders created, outermost first."""
+    from advisor.io_safety import show
+
+    missing = []
+    p = out.absolute()
+    while not p.exists() and p != p.parent:
+        missing.append(p)
+        p = p.parent
+    try:
+        out.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise InputError(f"--out {show(out, 200)}: cannot create ({exc.strerror})") from None
+    return missing[::-1]
+
+
+def check_writable(folder: Path, what: str) -> None:
+    """Create and remove a file in ``folder``: the one sure test (permissions, a read-only
+    file system, root's privileges, access lists all answer it)."""
+    import tempfile
+
+    from advisor.io_safety import show
+
+    try:
+        fd, probe = tempfile.mkstemp(prefix=".advisor-probe.", suffix=".tmp", dir=folder)
+    except OSError as exc:
+        raise InputError(
+            f"{what} {show(folder, 200)}: cannot write there ({exc.strerror})"
+        ) from None
+    os.close(fd)
+    os.unlink(probe)
+
+
+def remove_if_empty(created: list[Path]) -> None:
+    """Remove the folders this run created (innermost first) that are still empty."""
+    for d in reversed(created):
+        try:
+            d.rmdir()  # refuses a folder that is not empty
+        except OSError:
+            return
+
+
+@contextlib.contextmanager
+def sigint_blocked_in_new_threads() -> Iterator[None]:
+    """Block SIGINT in this thread while Dask starts its threads; they inherit the mask,
+    and so do the worker processes those threads start, now and after a restart.
+
+    ctrl+c signals the whole process group: a worker that receives it dies with a
+    KeyboardInterrupt traceback of its own (four workers, 66 lines). Blocked, it never
+    sees it; the client (this process, whose main thread does not block it) stops the
+    study and closes the cluster, which ends the workers. A SIGINT that arrives while the
+    mask is set stays pending and is delivered when it is lifted.
+    """
+    if not hasattr(signal, "pthread_sigmask"):  # Windows: no process groups to signal
+        yield
+        return
+    from multiprocessing import resource_tracker
+
+    # multiprocessing starts its resource tracker from the first thread that needs it and
+    # then UNBLOCKS SIGINT in that thread (Dask's event loop): start it here, before
+    resource_tracker.ensure_running()
+    old = signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT})
+    try:
+        yield
+    finally:
+        signal.pthread_sigmask(signal.SIG_SETMASK, old)
+
+
+#: Loggers that write to the terminal on their own: Dask's (e.g. "Couldn't gather keys"
+#: after a worker died, which the study recovers from), tornado's, asyncio's.
+NOISY_LOGGERS = ("distributed", "tornado", "bokeh", "asyncio")
+
+
+def quiet_dask_logging() -> None:
+    """Keep Dask's log lines off the user's terminal in this process: what matters reaches
+    the user as an exception, in one line."""
+    import logging
+
+    silent = logging.CRITICAL + 1
+    for name in NOISY_LOGGERS:
+        lg = logging.getLogger(name)
+        lg.setLevel(silent)
+        for h in lg.handlers:
+            h.setLevel(silent)
+    # the loggers of Dask's modules carry levels of their own (distributed.client: warning)
+    # and propagate to the handler silenced above; the handler decides
+
+
 def make_client(scheduler: str | None, workers: int | None) -> tuple[Any, Any]:
     """A Dask client on the given scheduler, or on a new local cluster (returned too)."""
     import logging
+    import warnings
 
-    from dask.distributed import Client, LocalCluster
-
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")  # import-time deprecation notes of Dask's own
+        from dask.distributed import Client, LocalCluster
+    quiet_dask_logging()
     if scheduler:
         return Client(scheduler, timeout="20s"), None
-    cluster = LocalCluster(
-        n_workers=workers or os.cpu_count() or 1,
-        threads_per_worker=1,
-        processes=True,
-        dashboard_address=None,
-        silence_logs=logging.ERROR,
-    )
-    return Client(cluster), cluster
+    with sigint_blocked_in_new_threads():
+        cluster = LocalCluster(
+            n_workers=workers or os.cpu_count() or 1,
+            threads_per_worker=1,
+            processes=True,
+            dashboard_address=None,  # no dashboard
+            # nor the scheduler's HTTP routes on the default port 8787 (another cluster's:
+            # "Port 8787 is already in use"): a free port on this machine only
+            scheduler_kwargs={"dashboard_address": "127.0.0.1:0"},
+            silence_logs=logging.CRITICAL,
+        )
+        client = Client(cluster)
+    return client, cluster
 
 
 def main(argv: list[str]) -> int:
@@ -87,10 +305,13 @@ def main(argv: list[str]) -> int:
         _err(str(exc))
         return exc.exit_code
     except KeyboardInterrupt:
-        _err(
-            f"interrupted; the chunks written so far are kept in {args.out}/chunks: run the "
-            "same command again to resume"
-        )
+        if (args.out / "chunks").is_dir():
+            _err(
+                f"interrupted; the chunks written so far are kept in {args.out}/chunks: run "
+                "the same command again to resume"
+            )
+        else:
+            _err("interrupted before any result was written")
         return 130
     except Exception as exc:  # a bug: one line, never a traceback
         _err(f"internal error ({type(exc).__name__}: {exc}); please report it with the input")
@@ -98,33 +319,37 @@ def main(argv: list[str]) -> int:
 
 
 def _run(args: argparse.Namespace) -> int:
-    from advisor.family.adapter import InputError
-    from advisor.family.spec import read_family
+    from advisor.family.spec import DEFAULT_MAX_VARIANTS, read_family
 
-    for flag, v in (("--workers", args.workers), ("--chunk-size", args.chunk_size)):
-        if v is not None and v < 1:
-            raise InputError(f"{flag} = {v}: must be at least 1")
-    if args.scheduler is not None and args.workers is not None:
-        raise InputError(
-            "--workers sizes the local cluster; with --scheduler the cluster has its own"
-        )
-    if args.scheduler is not None and not args.scheduler.strip():
-        raise InputError("--scheduler: empty address; give tcp://HOST:PORT")
-    family = read_family(args.family)  # every input error is raised here, before any work
+    check_options(args)
+    # every error of the family file is raised here, before any work (its size first)
+    family = read_family(args.family, args.max_variants or DEFAULT_MAX_VARIANTS)
+    if args.catalog_dir is not None:
+        from advisor.family.adapter import check_catalogs
+
+        check_catalogs(str(args.catalog_dir))
     out: Path = args.out
-    if out.exists() and not out.is_dir():
-        raise InputError(f"--out {out}: exists and is not a directory")
+    check_out(out, family.inputs, not args.no_html, args.reports)
+    from advisor.family.study import precheck_manifest
+
+    precheck_manifest(out, family, args.chunk_size or family.chunk_size, args.reports)
+    created = make_out_dir(out)
     try:
-        out.mkdir(parents=True, exist_ok=True)
-    except OSError as exc:
-        raise InputError(f"--out {out}: cannot create ({exc.strerror})") from None
-    return run(family, out, args)
+        check_writable(out, "--out")
+        for name in results(reports=args.reports)[1]:
+            if (out / name).is_dir():
+                check_writable(out / name, "--out")
+        return run(family, out, args)
+    except BaseException:
+        remove_if_empty(created)  # no empty folder left behind by a run that failed
+        raise
 
 
 def run(family: Any, out: Path, args: argparse.Namespace) -> int:
     from advisor.family.study import (
         Progress,
         auto_chunk_size,
+        chunk_count,
         join_chunks,
         previous_chunk_size,
         run_study,
@@ -134,10 +359,9 @@ def run(family: Any, out: Path, args: argparse.Namespace) -> int:
     try:
         client, cluster = make_client(args.scheduler, args.workers)
     except (OSError, TimeoutError) as exc:
-        from advisor.family.adapter import InputError
-
         why = (str(exc).splitlines() or [type(exc).__name__])[0]
         raise InputError(f"--scheduler {args.scheduler}: cannot connect ({why})") from None
+    progress = None
     try:
         workers = len(client.scheduler_info()["workers"]) or 1
         size = (
@@ -146,7 +370,7 @@ def run(family: Any, out: Path, args: argparse.Namespace) -> int:
             or previous_chunk_size(out)
             or auto_chunk_size(family.size, workers)
         )
-        chunks = -(-family.size // size)
+        chunks = chunk_count(family.size, size)
         if not args.quiet:
             print(
                 f"{family.name}: {family.size} variants in {chunks} chunks of {size} on "
@@ -164,6 +388,10 @@ def run(family: Any, out: Path, args: argparse.Namespace) -> int:
             catalog_dir=args.catalog_dir,
             progress=progress,
         )
+    except BaseException:
+        if progress is not None:
+            progress.end_line()  # the message that follows starts on a line of its own
+        raise
     finally:
         client.close()
         if cluster is not None:

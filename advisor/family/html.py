@@ -32,6 +32,12 @@ def _label(v: Any) -> str:
     return f"{v:g}" if isinstance(v, float) else str(v)
 
 
+def _mpl(text: str) -> str:
+    """User text as matplotlib draws it literally: a ``$`` would start mathtext (and a
+    broken formula in a member's name would stop the page)."""
+    return text.replace("$", r"\$")
+
+
 def _sample(n: int, k: int) -> list[int]:
     if n <= k:
         return list(range(n))
@@ -88,7 +94,7 @@ def output_plots(member: Member, rows: list[dict[str, str]]) -> list[str]:
                     coords[ax_i] = k
                     ys.append(_grid_value(rows, member, coords, col))
                 label = (
-                    f"{member.axes[other].key} = {_label(member.axes[other].values[li])}"
+                    _mpl(f"{member.axes[other].key} = {_label(member.axes[other].values[li])}")
                     if other is not None
                     else None
                 )
@@ -96,7 +102,7 @@ def output_plots(member: Member, rows: list[dict[str, str]]) -> list[str]:
             if a.scale == "log":
                 axp.set_xscale("log")
             if not _numeric_axis(a):
-                axp.set_xticks(xs, [_label(v) for v in a.values], rotation=30)
+                axp.set_xticks(xs, [_mpl(_label(v)) for v in a.values], rotation=30)
             axp.set_xlabel(a.key)
             axp.set_title(col, fontsize=10)
             axp.grid(alpha=0.3)
@@ -110,7 +116,7 @@ def output_plots(member: Member, rows: list[dict[str, str]]) -> list[str]:
             if j not in (ax_i, other)
         ]
         title = f"{member.name}: key outputs against {a.key}"
-        fig.suptitle(title + (f" ({', '.join(rest)})" if rest else ""), fontsize=11)
+        fig.suptitle(_mpl(title + (f" ({', '.join(rest)})" if rest else "")), fontsize=11)
         fig.tight_layout()
         out.append(_svg(fig))
     return out
@@ -157,12 +163,14 @@ def status_map(member: Member, rows: list[dict[str, str]]) -> str | None:
     )
     step0 = max(1, len(a0.values) // 12)
     ax.set_xticks(
-        range(0, len(a0.values), step0), [_label(v) for v in a0.values[::step0]], rotation=45
+        range(0, len(a0.values), step0),
+        [_mpl(_label(v)) for v in a0.values[::step0]],
+        rotation=45,
     )
     ax.set_xlabel(a0.key)
     if a1 is not None:
         step1 = max(1, n1 // 12)
-        ax.set_yticks(range(0, n1, step1), [_label(v) for v in a1.values[::step1]])
+        ax.set_yticks(range(0, n1, step1), [_mpl(_label(v)) for v in a1.values[::step1]])
         ax.set_ylabel(a1.key)
     else:
         ax.set_yticks([])
@@ -176,7 +184,7 @@ def status_map(member: Member, rows: list[dict[str, str]]) -> str | None:
     )
     rest = [f"{b.key} = {_label(b.values[mid[j]])}" for j, b in enumerate(axes) if j > 1]
     ax.set_title(
-        f"{member.name}: outcome of each variant" + (f" ({', '.join(rest)})" if rest else ""),
+        _mpl(f"{member.name}: outcome of each variant" + (f" ({', '.join(rest)})" if rest else "")),
         fontsize=11,
     )
     fig.tight_layout()
@@ -270,6 +278,13 @@ def render(family: Family, rows: list[dict[str, str]], doc: dict[str, Any]) -> s
 
 
 def write_html(path: Path, family: Family, rows: list[dict[str, str]], doc: dict[str, Any]) -> None:
+    import warnings
+
     from advisor.family.adapter import write_atomic
 
-    write_atomic(path, render(family, rows, doc))
+    # matplotlib warns when a long title leaves no room for tight_layout ("Tight layout not
+    # applied"): the plot is drawn all the same, and the warning is not the user's business
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        text = render(family, rows, doc)
+    write_atomic(path, text)

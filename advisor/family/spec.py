@@ -24,7 +24,9 @@ Several members (a range built two ways, or several applications)::
 
 The variants are numbered member by member, in the product order of the axes (the last axis
 varies fastest). Every problem of the file is an :class:`InputError` raised before any work
-starts: an unknown key, an empty range, a value outside its field's range.
+starts: an unknown key, an empty range, a value outside its field's range, a value given
+twice, an axis on the ``application`` table, or more variants than the stated limit (the
+count is the product of the axis lengths: the product itself is never built).
 """
 
 import hashlib
@@ -41,6 +43,10 @@ MEMBER_KEYS = ("name", "base", "axes")
 RANGE_KEYS = ("from", "to", "steps", "scale")
 SCALES = ("linear", "log")
 MAX_STEPS = 100_000
+#: Variants a study may have unless ``--max-variants`` raises it: at about 10 ms a variant
+#: on one core (benchmarks/README.md), a million variants are hours of work, and the
+#: summary holds every row in memory.
+DEFAULT_MAX_VARIANTS = 1_000_000
 
 
 @dataclass(frozen=True)
@@ -83,6 +89,9 @@ class Family:
     source: str
     members: tuple[Member, ...]
     chunk_size: int | None = None
+    #: every file the family was read from (the family file, the members' bases): the
+    #: study must never write over one of them
+    inputs: tuple[str, ...] = ()
 
     @property
     def size(self) -> int:
@@ -130,6 +139,26 @@ def _num(x: Any) -> bool:
     return isinstance(x, int | float) and not isinstance(x, bool) and math.isfinite(x)
 
 
+def _same_key(v: Any) -> Any:
+    """A key equal for values a requirement reads as equal: ``100`` and ``100.0`` (and
+    ``[1, 2]`` and ``[1.0, 2]``) are one value; ``true`` is not ``1``."""
+    if isinstance(v, bool):
+        return ("bool", v)
+    if isinstance(v, int | float):
+        return ("number", v)  # 100 == 100.0 and hash(100) == hash(100.0)
+    if isinstance(v, list):
+        return ("list", tuple(_same_key(x) for x in v))
+    if isinstance(v, dict):
+        return ("table", tuple(sorted((str(k), _same_key(x)) for k, x in v.items())))
+    return (type(v).__name__, str(v))
+
+
+def _show(v: Any) -> str:
+    from advisor.io_safety import show_repr
+
+    return show_repr(v) if isinstance(v, str) else repr(v)[:80]
+
+
 def _round6(x: float) -> float:
     """Six significant digits, as the report writes numbers: clean axis values in the CSV."""
     if x == 0:
@@ -143,8 +172,18 @@ def axis_values(key: str, spec: Any) -> Axis:
     if isinstance(spec, list):
         if not spec:
             raise InputError(f"{where}: empty list; give at least one value")
-        if len({json.dumps(v, sort_keys=True) for v in spec}) != len(spec):
-            raise InputError(f"{where}: a value appears twice in {spec!r}")
+        seen: dict[Any, int] = {}
+        for i, v in enumerate(spec):
+            if isinstance(v, float) and not math.isfinite(v):
+                raise InputError(f"{where}: value {v!r}: must be a finite number")
+            first = spec[seen.setdefault(_same_key(v), i)]
+            if seen[_same_key(v)] != i:
+                twice = (
+                    f"{_show(v)} appears twice"
+                    if repr(first) == repr(v)
+                    else f"{_show(first)} and {_show(v)} are the same value"
+                )
+                raise InputError(f"{where}: {twice}; give each value once")
         return Axis(key, tuple(spec), "list")
     if not isinstance(spec, dict):
         raise InputError(
@@ -172,11 +211,12 @@ def axis_values(key: str, spec: Any) -> Axis:
         raise InputError(f"{where}: a log range needs from > 0 and to > 0 (got {lo:g}, {hi:g})")
     if steps == 1:
         return Axis(key, (lo,), scale)
-    if scale == "log":
-        r = math.log(hi / lo)
-        raw = [lo * math.exp(r * k / (steps - 1)) for k in range(steps)]
-    else:
-        raw = [lo + (hi - lo) * k / (steps - 1) for k in range(steps)]
+    raw = _range(lo, hi, steps, scale)
+    if not all(math.isfinite(v) and (scale == "linear" or v > 0) for v in raw):
+        raise InputError(
+            f"{where}: {steps} {scale} steps from {lo:g} to {hi:g} leave the finite "
+            "numbers; use a narrower range"
+        )
     values = [_round6(v) for v in raw]
     values[0], values[-1] = lo, hi  # the ends exactly as written
     if all(isinstance(v, int) for v in (lo, hi)) and all(float(v).is_integer() for v in values):
@@ -184,6 +224,16 @@ def axis_values(key: str, spec: Any) -> Axis:
     if len(set(values)) != len(values):
         raise InputError(f"{where}: {steps} steps from {lo:g} to {hi:g} repeat values; use fewer")
     return Axis(key, tuple(values), scale)
+
+
+def _range(lo: float, hi: float, steps: int, scale: str) -> list[float]:
+    """``steps`` values from ``lo`` to ``hi``, written so that no intermediate overflows:
+    a log range from 1e-300 to 1e300 (whose ratio is not a float) and a linear one from
+    -1e308 to 1e308 (whose width is not a float) give finite values."""
+    if scale == "log":
+        a, b = math.log(lo), math.log(hi)
+        return [math.exp(a + (b - a) * k / (steps - 1)) for k in range(steps)]
+    return [lo * (1 - k / (steps - 1)) + hi * (k / (steps - 1)) for k in range(steps)]
 
 
 def _axes(table: Any, where: str) -> tuple[Axis, ...]:
@@ -223,17 +273,31 @@ def check_member(member: Member) -> None:
 
 
 def _member(name: str, base: dict[str, Any], axes: tuple[Axis, ...]) -> Member:
+    """A member, its values not yet checked against the fields (see :func:`check_member`)."""
     app = base.get("application", {})
     kind = app.get("kind", "") if isinstance(app, dict) else ""
     for a in axes:
-        if a.key.split(".")[0] == "application" and a.key.endswith(".kind"):
+        # the whole table: an axis "application" = [{kind = …}, …] or "application.kind"
+        # would change the application, and with it the meaning of every other key
+        if a.key.split(".")[0].strip() == "application":
             raise InputError(
-                f"family axis {a.key!r}: the application cannot vary along an axis; "
+                f"family axis {a.key!r}: the [application] table cannot vary along an axis; "
                 "use [[family.members]], one per application"
             )
-    m = Member(name or str(kind), str(kind), base, axes)
-    check_member(m)
-    return m
+    return Member(name or str(kind), str(kind), base, axes)
+
+
+def check_size(members: list[Member], max_variants: int) -> None:
+    """Refuse more variants than ``max_variants``, counted as the product of the axis
+    lengths (the product itself is never built)."""
+    total = sum(m.size for m in members)
+    if total <= max_variants:
+        return
+    shape = " + ".join(" × ".join(str(len(a.values)) for a in m.axes) for m in members)
+    raise InputError(
+        f"family: {total:,} variants ({shape}) are more than the limit of {max_variants:,}; "
+        "use fewer values or steps, or raise the limit with --max-variants N"
+    )
 
 
 def _read_toml(path: Path) -> dict[str, Any]:
@@ -244,7 +308,9 @@ def _read_toml(path: Path) -> dict[str, Any]:
     return read_toml(path)
 
 
-def parse_family(doc: dict[str, Any], source: Path) -> Family:
+def parse_family(
+    doc: dict[str, Any], source: Path, max_variants: int = DEFAULT_MAX_VARIANTS
+) -> Family:
     """Validate a family document; ``source`` locates relative ``base`` files."""
     fam = doc.get("family")
     if not isinstance(fam, dict):
@@ -263,6 +329,7 @@ def parse_family(doc: dict[str, Any], source: Path) -> Family:
         raise InputError(f"family.chunk_size = {chunk!r}: must be a whole number ≥ 1")
     inline = {k: v for k, v in doc.items() if k != "family"}
     here = source.parent
+    inputs = [source]
     if "members" in fam:
         if inline or "axes" in fam or "base" in fam:
             raise InputError(
@@ -286,25 +353,29 @@ def parse_family(doc: dict[str, Any], source: Path) -> Family:
                 )
             if not isinstance(m.get("base"), str):
                 raise InputError(f"{where}.base: missing; the requirement file of this member")
-            base = _read_toml(here / m["base"])
+            inputs.append(here / m["base"])
+            base = _read_toml(inputs[-1])
             members.append(_member(str(m.get("name", "")), base, _axes(m.get("axes"), where)))
         names = [m.name for m in members]
         dup = next((x for x in names if names.count(x) > 1), None)
         if dup is not None:
             raise InputError(f"family.members: two members named {dup!r}; give each a name")
-        members_t = tuple(members)
     else:
         if "base" in fam:
             if inline:
                 raise InputError(
                     "family.base: give the base requirement in the file or as family.base, not both"
                 )
-            base = _read_toml(here / str(fam["base"]))
+            inputs.append(here / str(fam["base"]))
+            base = _read_toml(inputs[-1])
         else:
             base = inline
-        members_t = (_member("", base, _axes(fam.get("axes"), "family.axes")),)
-    return Family(name, str(source), members_t, chunk)
+        members = [_member("", base, _axes(fam.get("axes"), "family.axes"))]
+    check_size(members, max_variants)  # before the values are checked: that costs time
+    for m in members:
+        check_member(m)
+    return Family(name, str(source), tuple(members), chunk, tuple(str(p) for p in inputs))
 
 
-def read_family(path: Path) -> Family:
-    return parse_family(_read_toml(path), path)
+def read_family(path: Path, max_variants: int = DEFAULT_MAX_VARIANTS) -> Family:
+    return parse_family(_read_toml(path), path, max_variants)

@@ -8,6 +8,7 @@ chunks: the scheduler reassigns them. When every chunk is in, the chunks are joi
 ``DIR/designs.csv``.
 """
 
+import itertools
 import json
 import math
 import os
@@ -34,13 +35,22 @@ class StudyResult(NamedTuple):
     advise_seconds: float  # time the workers spent advising (sum over computed chunks)
 
 
-def chunk_bounds(variants: int, size: int) -> list[tuple[int, int]]:
-    """``[(start, stop), …]`` blocks of ``size`` variants; the last may be shorter.
+def chunk_count(variants: int, size: int) -> int:
+    """How many chunks of ``size`` variants: counted, never listed.
 
-    >>> chunk_bounds(10, 4)
+    >>> chunk_count(10, 4), chunk_count(8, 4), chunk_count(0, 4)
+    (3, 2, 0)
+    """
+    return -(-variants // size)
+
+
+def chunk_range(number: int, variants: int, size: int) -> tuple[int, int]:
+    """``(start, stop)`` of chunk ``number``; the last may be shorter.
+
+    >>> [chunk_range(n, 10, 4) for n in range(3)]
     [(0, 4), (4, 8), (8, 10)]
     """
-    return [(s, min(s + size, variants)) for s in range(0, variants, size)]
+    return number * size, min((number + 1) * size, variants)
 
 
 def auto_chunk_size(variants: int, workers: int) -> int:
@@ -63,19 +73,52 @@ def chunk_path(out_dir: Path, number: int) -> Path:
     return out_dir / "chunks" / f"c{number:06d}.csv"
 
 
+def make_manifest(family: Family, chunk_size: int, reports: bool) -> dict[str, Any]:
+    """What identifies a study's chunks: a rerun resumes only the same study."""
+    return {
+        "fingerprint": family.fingerprint(),
+        "chunk_size": chunk_size,
+        "variants": family.size,
+        "reports": reports,
+        "columns": columns(family),
+    }
+
+
+def _read_manifest(out_dir: Path) -> dict[str, Any] | None:
+    try:
+        old = json.loads((out_dir / "chunks" / MANIFEST).read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return None
+    return old if isinstance(old, dict) else None
+
+
+def _another_study(out_dir: Path) -> InputError:
+    return InputError(
+        f"{out_dir}: holds chunks of another study (family, chunk size or --reports "
+        "differ); use another --out DIR or delete its chunks/ folder"
+    )
+
+
+def precheck_manifest(out_dir: Path, family: Family, chunk_size: int | None, reports: bool) -> None:
+    """Refuse, before any cluster starts, a DIR that holds chunks of another study (the
+    chunk size is compared only when it is already known: given, or kept from that study)."""
+    path = out_dir / "chunks" / MANIFEST
+    if not path.exists():
+        return
+    old = _read_manifest(out_dir)
+    if old is None:
+        raise _another_study(out_dir)
+    want = make_manifest(family, chunk_size or old.get("chunk_size"), reports)  # type: ignore[arg-type]
+    if old != want:
+        raise _another_study(out_dir)
+
+
 def check_manifest(out_dir: Path, manifest: dict[str, Any]) -> None:
     """Write the study's manifest, or refuse a DIR that holds chunks of another study."""
     path = out_dir / "chunks" / MANIFEST
     if path.exists():
-        try:
-            old = json.loads(path.read_text(encoding="utf-8"))
-        except (OSError, ValueError):
-            old = None
-        if old != manifest:
-            raise InputError(
-                f"{out_dir}: holds chunks of another study (family, chunk size or --reports "
-                "differ); use another --out DIR or delete its chunks/ folder"
-            )
+        if _read_manifest(out_dir) != manifest:
+            raise _another_study(out_dir)
         return
     path.parent.mkdir(parents=True, exist_ok=True)
     write_atomic(path, json.dumps(manifest, indent=1, sort_keys=True) + "\n")
@@ -102,6 +145,7 @@ class Progress:
         self.t0 = time.monotonic()
         self.last = -math.inf
         self.start_variants: int | None = None
+        self.open_line = False  # a bar drawn on a terminal without its line ended
 
     def update(self, chunks_done: int, variants_done: int, final: bool = False) -> None:
         now = time.monotonic()
@@ -120,9 +164,17 @@ class Progress:
         )
         if self.tty:
             self.stream.write("\r" + line + ("\n" if final else "\x1b[K"))
+            self.open_line = not final
         else:
             self.stream.write(line + "\n")
         self.stream.flush()
+
+    def end_line(self) -> None:
+        """End a bar left open on a terminal, so that a message after it has its own line."""
+        if self.open_line:
+            self.stream.write("\n")
+            self.stream.flush()
+            self.open_line = False
 
 
 def progress_line(
@@ -159,6 +211,22 @@ def _duration(s: float) -> str:
     return f"{s / 3600:.1f} h"
 
 
+def chunks_written(out_dir: Path, chunks: int) -> set[int]:
+    """The numbers of the chunks already in ``out_dir/chunks`` (read from the folder: a
+    study of many chunks is not stat-ed chunk by chunk)."""
+    try:
+        names = os.listdir(out_dir / "chunks")
+    except FileNotFoundError:
+        return set()
+    done = set()
+    for name in names:
+        if name.startswith("c") and name.endswith(".csv") and name[1:-4].isdigit():
+            n = int(name[1:-4])
+            if n < chunks:
+                done.add(n)
+    return done
+
+
 def run_study(
     family: Family,
     out_dir: Path,
@@ -169,54 +237,62 @@ def run_study(
     catalog_dir: Path | None = None,
     progress: Progress | None = None,
     on_chunk: Callable[[int], None] | None = None,
+    window: int | None = None,
 ) -> StudyResult:
     """Compute every chunk not yet written in ``out_dir/chunks``; return what was done.
 
-    ``on_chunk(n_written_this_run)`` is called after each chunk is written (tests use it to
-    interrupt a study or kill a worker in mid-study).
+    At most ``window`` tasks are on the cluster at a time (default: four per worker, at
+    least 16); the next is submitted as one arrives, so neither the client nor the
+    scheduler ever holds the whole study. ``on_chunk(n_written_this_run)`` is called after
+    each chunk is written (tests use it to interrupt a study or kill a worker in
+    mid-study).
     """
     from dask.distributed import as_completed
 
-    bounds = chunk_bounds(family.size, chunk_size)
-    manifest = {
-        "fingerprint": family.fingerprint(),
-        "chunk_size": chunk_size,
-        "variants": family.size,
-        "reports": reports,
-        "columns": columns(family),
-    }
+    n_chunks = chunk_count(family.size, chunk_size)
+    manifest = make_manifest(family, chunk_size, reports)
     check_manifest(out_dir, manifest)
     if reports:
         (out_dir / "reports").mkdir(exist_ok=True)
-    pending = [n for n in range(len(bounds)) if not chunk_path(out_dir, n).exists()]
-    done_chunks = len(bounds) - len(pending)
-    todo = set(pending)
-    done_variants = sum(b - a for n, (a, b) in enumerate(bounds) if n not in todo)
+    done = chunks_written(out_dir, n_chunks)
+    done_chunks = len(done)
+    done_variants = sum(b - a for a, b in (chunk_range(n, family.size, chunk_size) for n in done))
     if progress is not None:
-        progress.update(done_chunks, done_variants, final=not pending)
+        progress.update(done_chunks, done_variants, final=done_chunks == n_chunks)
+    if window is None:
+        window = max(16, 4 * len(client.scheduler_info()["workers"]))
     t0 = time.perf_counter()
     advise_s = 0.0
     cat = str(catalog_dir) if catalog_dir is not None else None
     # a key of its own per run: the tasks of an interrupted run may still be cancelling
     run_id = f"{manifest['fingerprint']}-{uuid.uuid4().hex[:8]}"
-    futures = [
-        client.submit(
+    pending = (n for n in range(n_chunks) if n not in done)
+    in_flight: set[Any] = set()
+
+    def submit(n: int) -> Any:
+        fut = client.submit(
             run_chunk,
             family,
             n,
-            *bounds[n],
+            *chunk_range(n, family.size, chunk_size),
             cat,
             reports,
             key=f"advisor-family-{run_id}-{n}",
             retries=2,
         )
-        for n in pending
-    ]
+        in_flight.add(fut)
+        return fut
+
     computed = 0
     try:
-        for fut in as_completed(futures):
+        queue = as_completed([submit(n) for n in itertools.islice(pending, window)])
+        for fut in queue:
             res: ChunkResult = fut.result()
+            in_flight.discard(fut)
             fut.release()
+            nxt = next(pending, None)
+            if nxt is not None:
+                queue.add(submit(nxt))
             for name, text in res.reports:
                 write_replace(out_dir / "reports" / name, text)
             write_atomic(chunk_path(out_dir, res.number), rows_csv(res.rows))
@@ -225,22 +301,28 @@ def run_study(
             done_chunks += 1
             done_variants += len(res.rows)
             if progress is not None:
-                progress.update(done_chunks, done_variants, final=done_chunks == len(bounds))
+                progress.update(done_chunks, done_variants, final=done_chunks == n_chunks)
             if on_chunk is not None:
                 on_chunk(computed)
     except BaseException:
-        client.cancel(futures)
+        client.cancel(list(in_flight))
         raise
-    return StudyResult(family.size, len(bounds), computed, time.perf_counter() - t0, advise_s)
+    return StudyResult(family.size, n_chunks, computed, time.perf_counter() - t0, advise_s)
 
 
 def write_replace(path: Path, text: str) -> None:
     """Write a per-variant report: whole or not at all (temporary file, then rename), without
     the flush to disk of :func:`write_atomic` (a thousand fsyncs would cost more than the
     advice). The chunk's CSV, written after its reports, is flushed: it marks them done."""
-    tmp = path.with_name(f".{path.name}.tmp")
-    tmp.write_text(text, encoding="utf-8", newline="\n")
-    os.replace(tmp, path)
+    # a name of its own (as io_safety.write_atomic's): two studies writing the same report
+    # into one folder at once must not rename each other's temporary file away
+    tmp = path.with_name(f".{path.name[:100]}.{os.getpid()}-{os.urandom(6).hex()}.tmp")
+    try:
+        tmp.write_text(text, encoding="utf-8", newline="\n")
+        os.replace(tmp, path)
+    except BaseException:
+        tmp.unlink(missing_ok=True)
+        raise
 
 
 def join_chunks(family: Family, out_dir: Path, chunk_size: int) -> Path:
@@ -251,7 +333,7 @@ def join_chunks(family: Family, out_dir: Path, chunk_size: int) -> Path:
     try:
         with os.fdopen(fd, "w", encoding="utf-8", newline="") as fh:
             fh.write(header)
-            for n in range(len(chunk_bounds(family.size, chunk_size))):
+            for n in range(chunk_count(family.size, chunk_size)):
                 fh.write(chunk_path(out_dir, n).read_text(encoding="utf-8"))
             fh.flush()
             os.fsync(fh.fileno())

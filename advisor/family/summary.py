@@ -16,8 +16,14 @@ _NUMBER = re.compile(r"[-+]?\d+(?:\.\d+)?(?:e[-+]?\d+)?", re.IGNORECASE)
 
 
 def read_rows(path: Path) -> list[dict[str, str]]:
+    """The rows of designs.csv, each text as the study had it (without the quote that
+    keeps a spreadsheet from reading it as a formula)."""
+    from advisor.family.chunks import uncell
+
     with path.open(encoding="utf-8", newline="") as fh:
-        return list(csv.DictReader(fh))
+        rd = csv.reader(fh)
+        head = [uncell(h) for h in next(rd, [])]
+        return [dict(zip(head, map(uncell, r), strict=True)) for r in rd]
 
 
 def _value(text: str) -> Any:

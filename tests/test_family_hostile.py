@@ -1,0 +1,673 @@
+"""Hostile input on ``advisor family`` (issue 24, "Family studies").
+
+The contract: exit 0 a complete study, 2 invalid input (one line naming the field, the value
+and what is allowed), 130 interrupted (one line); exit 1, a traceback, a hang or a lost file
+is a bug. Every refusal here is made before any cluster starts: the ``no_cluster`` fixture
+turns starting one into a failure of the test, and one subprocess shows that Dask is not
+even imported. One test starts real clusters (three study runs): ctrl+c after a worker was
+killed, then two identical studies into one folder at once.
+"""
+
+import contextlib
+import csv
+import io
+import os
+import signal
+import socket
+import subprocess
+import sys
+import threading
+import time
+import tomllib
+import warnings
+from dataclasses import replace
+from pathlib import Path
+
+import pytest
+from helpers import EXAMPLES
+
+from advisor.cli import main
+from advisor.family import cli as family_cli
+from advisor.family.chunks import cell, neutral, rows_csv, run_chunk, uncell
+from advisor.family.spec import axis_values, parse_family, read_family
+from advisor.family.study import write_replace
+from advisor.family.summary import read_rows
+
+ROTARY = (EXAMPLES / "rudder_actuator.toml").read_text(encoding="utf-8")
+LINEAR = (EXAMPLES / "linear_screw_actuator.toml").read_text(encoding="utf-8")
+
+
+class ClusterStarted(BaseException):
+    """Raised where a cluster would start: a BaseException, so that nothing catches it."""
+
+
+@pytest.fixture
+def no_cluster(monkeypatch):
+    def tripwire(*args, **kwargs):
+        raise ClusterStarted
+
+    monkeypatch.setattr(family_cli, "make_client", tripwire)
+
+
+def family_file(path: Path, axes: str, base: str = ROTARY, name: str = "x") -> Path:
+    path.write_text(f"[family]\nname = '{name}'\n[family.axes]\n{axes}\n\n{base}", encoding="utf-8")
+    return path
+
+
+def refused(capsys, argv: list[str], *words: str) -> str:
+    """Run ``advisor family ARGV``: exit 2 with one line holding every word."""
+    assert main(["family", *argv]) == 2
+    err = capsys.readouterr().err
+    lines = err.strip().splitlines()
+    assert len(lines) == 1, err
+    for w in words:
+        assert w in lines[0], lines[0]
+    return lines[0]
+
+
+def tree(folder: Path) -> dict[str, bytes]:
+    return {
+        str(p.relative_to(folder)): p.read_bytes() if p.is_file() else b"<dir>"
+        for p in sorted(folder.rglob("*"))
+    }
+
+
+# ------------------------------------------------------------------ the study's own input
+
+
+def _summary_is_family(tmp_path: Path) -> tuple[Path, Path]:
+    d = tmp_path / "d"
+    d.mkdir()
+    return family_file(d / "summary.toml", '"rotary.speed_rpm" = [2, 5]'), d
+
+
+def _designs_is_family(tmp_path: Path) -> tuple[Path, Path]:
+    d = tmp_path / "d"
+    d.mkdir()
+    return family_file(d / "designs.csv", '"rotary.speed_rpm" = [2, 5]'), d
+
+
+def _html_is_family(tmp_path: Path) -> tuple[Path, Path]:
+    d = tmp_path / "d"
+    d.mkdir()
+    return family_file(d / "family.html", '"rotary.speed_rpm" = [2, 5]'), d
+
+
+def _family_in_reports(tmp_path: Path) -> tuple[Path, Path]:
+    d = tmp_path / "d"
+    (d / "reports").mkdir(parents=True)
+    return family_file(d / "reports" / "f.toml", '"rotary.speed_rpm" = [2, 5]'), d
+
+
+def _family_in_chunks(tmp_path: Path) -> tuple[Path, Path]:
+    d = tmp_path / "d"
+    (d / "chunks").mkdir(parents=True)
+    return family_file(d / "chunks" / "f.toml", '"rotary.speed_rpm" = [2, 5]'), d
+
+
+def _link_to_summary(tmp_path: Path) -> tuple[Path, Path]:
+    fam, d = _summary_is_family(tmp_path)
+    link = tmp_path / "link.toml"
+    link.symlink_to(fam)
+    return link, d
+
+
+def _summary_links_to_family(tmp_path: Path) -> tuple[Path, Path]:
+    fam = family_file(tmp_path / "f.toml", '"rotary.speed_rpm" = [2, 5]')
+    d = tmp_path / "d"
+    d.mkdir()
+    (d / "summary.toml").symlink_to(fam)
+    return fam, d
+
+
+def _out_links_to_family_folder(tmp_path: Path) -> tuple[Path, Path]:
+    fam, d = _designs_is_family(tmp_path)
+    (tmp_path / "alias").symlink_to(d)
+    return fam, tmp_path / "alias"
+
+
+def _member_base_is_designs(tmp_path: Path) -> tuple[Path, Path]:
+    d = tmp_path / "d"
+    d.mkdir()
+    (d / "designs.csv").write_text(ROTARY, encoding="utf-8")
+    fam = tmp_path / "f.toml"
+    fam.write_text(
+        "[family]\n[[family.members]]\nname = 'm'\nbase = 'd/designs.csv'\n"
+        "[family.members.axes]\n'rotary.speed_rpm' = [2, 5]\n",
+        encoding="utf-8",
+    )
+    return fam, d
+
+
+@pytest.mark.parametrize(
+    ("setup", "words"),
+    [
+        (_summary_is_family, "writes summary.toml there"),
+        (_designs_is_family, "writes designs.csv there"),
+        (_html_is_family, "writes family.html there"),
+        (_family_in_reports, "writes into reports/ there"),
+        (_family_in_chunks, "writes into chunks/ there"),
+        (_link_to_summary, "writes summary.toml there"),
+        (_summary_links_to_family, "writes summary.toml there"),
+        (_out_links_to_family_folder, "writes designs.csv there"),
+        (_member_base_is_designs, "writes designs.csv there"),
+    ],
+)
+def test_the_study_never_writes_over_its_own_input(tmp_path, capsys, no_cluster, setup, words):
+    fam, out = setup(tmp_path)
+    before = tree(tmp_path)
+    refused(capsys, [str(fam), "--out", str(out), "--reports"], f"--out {out}", words)
+    assert tree(tmp_path) == before  # nothing written, nothing removed
+
+
+def test_an_output_that_is_not_written_is_not_refused(tmp_path, capsys, no_cluster):
+    """With --no-html the study writes no family.html: a family file of that name is safe."""
+    fam, d = _html_is_family(tmp_path)
+    with pytest.raises(ClusterStarted):
+        main(["family", str(fam), "--out", str(d), "--no-html"])
+
+
+def test_a_result_name_taken_by_a_folder_is_refused(tmp_path, capsys, no_cluster):
+    fam = family_file(tmp_path / "f.toml", '"rotary.speed_rpm" = [2, 5]')
+    (tmp_path / "d" / "designs.csv").mkdir(parents=True)
+    refused(capsys, [str(fam), "--out", str(tmp_path / "d")], "designs.csv there is not a regular")
+
+
+# ------------------------------------------------------------------ the size of a study
+
+
+BIG_AXES = (
+    '"rotary.torque_Nm" = { from = 100, to = 2000, steps = 100000 }\n'
+    '"rotary.speed_rpm" = { from = 1, to = 10, steps = 100000 }\n'
+    '"gearbox.stage_efficiency" = { from = 0.5, to = 0.9, steps = 100 }'
+)
+
+
+def test_a_family_of_a_trillion_variants_is_counted_and_refused_at_once(
+    tmp_path, capsys, no_cluster
+):
+    fam = family_file(tmp_path / "big.toml", BIG_AXES)
+    out = tmp_path / "out"
+    t0 = time.perf_counter()
+    # 100000 × 100000 × 100 = 10^12 variants, against the default limit of 10^6
+    refused(
+        capsys,
+        [str(fam), "--out", str(out)],
+        "1,000,000,000,000 variants (100000 × 100000 × 100)",
+        "limit of 1,000,000",
+        "--max-variants N",
+    )
+    assert time.perf_counter() - t0 < 2.0  # counted, never built (it took 80 s, then died)
+    assert not out.exists()
+
+
+def test_the_limit_is_an_option(tmp_path, capsys, no_cluster):
+    fam = family_file(
+        tmp_path / "f.toml", '"rotary.torque_Nm" = [100, 200]\n"rotary.speed_rpm" = [2, 5, 10]'
+    )
+    # 2 × 3 = 6 variants
+    refused(
+        capsys,
+        [str(fam), "--out", str(tmp_path / "o"), "--max-variants", "5"],
+        "6 variants (2 × 3)",
+        "limit of 5",
+    )
+    with pytest.raises(ClusterStarted):
+        main(["family", str(fam), "--out", str(tmp_path / "o"), "--max-variants", "6"])
+    refused(
+        capsys,
+        [str(fam), "--out", str(tmp_path / "o"), "--max-variants", "0"],
+        "--max-variants = 0: must be at least 1",
+    )
+    assert not (tmp_path / "o").exists()  # the run that reached the cluster left no empty folder
+
+
+def test_members_add_up_against_the_limit(tmp_path, capsys, no_cluster):
+    fam = tmp_path / "f.toml"
+    fam.write_text(
+        f"[family]\n[[family.members]]\nname = 'a'\nbase = '{EXAMPLES / 'rudder_actuator.toml'}'\n"
+        "[family.members.axes]\n'rotary.torque_Nm' = [100, 200]\n'rotary.speed_rpm' = [2, 5]\n"
+        f"[[family.members]]\nname = 'b'\nbase = '{EXAMPLES / 'rudder_actuator.toml'}'\n"
+        "[family.members.axes]\n'rotary.speed_rpm' = [2, 5, 10]\n",
+        encoding="utf-8",
+    )
+    # 2 × 2 + 3 = 7
+    refused(
+        capsys,
+        [str(fam), "--out", str(tmp_path / "o"), "--max-variants", "6"],
+        "7 variants (2 × 2 + 3)",
+    )
+
+
+# ------------------------------------------------------------------ options: exit 2, not 1
+
+
+@pytest.mark.parametrize(
+    "address",
+    [
+        "tcp://127.0.0.1:notaport",
+        "http://127.0.0.1:8787",
+        "inproc://x",
+        "tcp://127.0.0.1:0",
+        "tcp://127.0.0.1:65536",
+        "tcp://:8786",
+        "tcp://127.0.0.1:8786/status",
+        "127.0.0.1:8786 ",
+        "",
+    ],
+)
+def test_a_scheduler_address_of_the_wrong_form_is_refused_before_anything(
+    tmp_path, capsys, no_cluster, address
+):
+    fam = family_file(tmp_path / "f.toml", '"rotary.speed_rpm" = [2, 5]')
+    out = tmp_path / "o"
+    refused(
+        capsys,
+        [str(fam), "--out", str(out), "--scheduler", address],
+        "--scheduler",
+        "tcp://HOST:PORT",
+    )
+    assert not out.exists()
+
+
+def test_scheduler_addresses_of_the_right_form_pass():
+    for a in ("tcp://127.0.0.1:8786", "tcp://[::1]:1", "tcp://sched-1.example.org:65535"):
+        assert family_cli.check_scheduler(a) == a
+
+
+def test_a_scheduler_that_does_not_answer_leaves_no_folder(tmp_path, capsys, monkeypatch):
+    def refused_connection(*args, **kwargs):
+        raise OSError("Timed out trying to connect to tcp://127.0.0.1:1 after 20 s")
+
+    monkeypatch.setattr(family_cli, "make_client", refused_connection)
+    fam = family_file(tmp_path / "f.toml", '"rotary.speed_rpm" = [2, 5]')
+    kept = tmp_path / "kept"  # the user's own empty folder stays
+    kept.mkdir()
+    out = kept / "new" / "deeper"
+    refused(
+        capsys, [str(fam), "--out", str(out), "--scheduler", "tcp://127.0.0.1:1"], "cannot connect"
+    )
+    assert kept.is_dir() and list(kept.iterdir()) == []
+    refused(
+        capsys, [str(fam), "--out", str(kept), "--scheduler", "tcp://127.0.0.1:1"], "cannot connect"
+    )
+    assert kept.is_dir()
+
+
+def test_a_read_only_out_is_refused_before_the_cluster(tmp_path, capsys, no_cluster):
+    fam = family_file(tmp_path / "f.toml", '"rotary.speed_rpm" = [2, 5]')
+    if os.geteuid() == 0:  # root writes through permission bits: /proc takes no new file
+        ro = Path("/proc")
+    else:
+        ro = tmp_path / "ro"
+        ro.mkdir()
+        ro.chmod(0o555)
+    refused(capsys, [str(fam), "--out", str(ro)], f"--out {ro}: cannot write there")
+    refused(capsys, [str(fam), "--out", str(ro / "new")], f"--out {ro / 'new'}: cannot")
+
+
+def test_a_folder_of_another_study_is_refused_before_the_cluster(tmp_path, capsys, no_cluster):
+    fam = family_file(tmp_path / "f.toml", '"rotary.speed_rpm" = [2, 5]')
+    (tmp_path / "o" / "chunks").mkdir(parents=True)
+    (tmp_path / "o" / "chunks" / "study.json").write_text('{"fingerprint": "0", "chunk_size": 1}')
+    refused(capsys, [str(fam), "--out", str(tmp_path / "o")], "holds chunks of another study")
+
+
+def test_a_broken_catalog_dir_is_refused_before_the_cluster(tmp_path, capsys, no_cluster):
+    fam = family_file(tmp_path / "f.toml", '"rotary.speed_rpm" = [2, 5]')
+    refused(
+        capsys,
+        [str(fam), "--out", str(tmp_path / "o"), "--catalog-dir", str(tmp_path / "none")],
+        "catalog directory",
+    )
+    assert not (tmp_path / "o").exists()
+
+
+def test_refusals_import_no_dask():
+    """In a fresh process: the refusals above never import distributed (so no cluster)."""
+    code = f"""
+import contextlib, io, sys, tempfile
+from pathlib import Path
+from advisor.cli import main
+d = Path(tempfile.mkdtemp())
+base = Path({str(EXAMPLES / "rudder_actuator.toml")!r}).read_text()
+(d / "big.toml").write_text("[family]\\n[family.axes]\\n" + {BIG_AXES!r} + "\\n" + base)
+(d / "f.toml").write_text("[family]\\n[family.axes]\\n'rotary.speed_rpm' = [2, 5]\\n" + base)
+codes = []
+with contextlib.redirect_stderr(io.StringIO()):
+    codes.append(main(["family", str(d / "big.toml"), "--out", str(d / "o")]))
+    codes.append(main(["family", str(d / "f.toml"), "--out", str(d / "o"), "--scheduler", "http://x:1"]))
+    codes.append(main(["family", str(d / "f.toml"), "--out", str(d / "f.toml")]))
+print([int(c) for c in codes], [m for m in ("dask", "distributed") if m in sys.modules])
+"""
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
+    assert r.returncode == 0, r.stderr
+    assert r.stdout.strip() == "[2, 2, 2] []"
+
+
+# ------------------------------------------------------------------ axes
+
+
+def test_a_log_range_beyond_the_floats_is_finite_and_refused_by_its_field(
+    tmp_path, capsys, no_cluster
+):
+    # log-spaced: exponents -300, -150, 0, 150, 300 (the ratio 1e600 is not a float)
+    a = axis_values("k", {"from": 1e-300, "to": 1e300, "steps": 5, "scale": "log"})
+    assert a.values == (1e-300, 1e-150, 1.0, 1e150, 1e300)
+    # linear: the width 2e308 is not a float; the quarters are
+    a = axis_values("k", {"from": -1e308, "to": 1e308, "steps": 5})
+    assert a.values == (-1e308, -5e307, 0.0, 5e307, 1e308)
+    fam = family_file(
+        tmp_path / "f.toml",
+        '"rotary.torque_Nm" = { from = 1e-300, to = 1e300, steps = 7, scale = "log" }',
+    )
+    refused(
+        capsys,
+        [str(fam), "--out", str(tmp_path / "o")],
+        "family axis 'rotary.torque_Nm' value 1e-300",
+    )
+    assert not (tmp_path / "o").exists()
+
+
+@pytest.mark.parametrize(
+    ("axis", "words"),
+    [
+        (
+            '"application.kind" = ["rotary", "linear"]',
+            "'application.kind': the [application] table",
+        ),
+        (
+            '"application" = [{ kind = "rotary" }, { kind = "linear" }]',
+            "'application': the [application] table",
+        ),
+        ('"application.title" = ["a", "b"]', "'application.title': the [application] table"),
+        (
+            '"rotary.torque_Nm" = [100, 100.0]',
+            "'rotary.torque_Nm': 100 and 100.0 are the same value",
+        ),
+        ('"rotary.speed_rpm" = [2, 5, 2]', "'rotary.speed_rpm': 2 appears twice"),
+        (
+            '"motor.candidate_speeds_rpm" = [[1500, 3000], [1500.0, 3000]]',
+            "[1500, 3000] and [1500.0, 3000] are the same value",
+        ),
+        (
+            '"rotary.torque_Nm" = [100, nan]',
+            "'rotary.torque_Nm': value nan: must be a finite number",
+        ),
+        ('"rotary.torque_Nm" = [100, inf]', "value inf: must be a finite number"),
+    ],
+)
+def test_bad_axes_are_refused_naming_the_axis(tmp_path, capsys, no_cluster, axis, words):
+    fam = family_file(tmp_path / "f.toml", axis)
+    refused(capsys, [str(fam), "--out", str(tmp_path / "o")], "family axis", words)
+    assert not (tmp_path / "o").exists()
+
+
+# ------------------------------------------------------------------ spreadsheet formulas
+
+
+def test_cells_that_would_start_a_formula_are_neutralised_and_numbers_are_not():
+    hyperlink = '=HYPERLINK("http://x","y")'
+    assert cell(hyperlink) == "'" + hyperlink
+    assert cell("@SUM(A1)") == "'@SUM(A1)"
+    assert [cell(x) for x in ("+1 kN", "-5", "\tx", "\rx")] == ["'+1 kN", "'-5", "'\tx", "'\rx"]
+    assert [cell(x) for x in (-5, -5.5, 0, 1e-7, True, None)] == [
+        "-5",
+        "-5.5",
+        "0",
+        "1e-07",
+        "true",
+        "",
+    ]
+    assert cell("bldc 3000 rpm") == "bldc 3000 rpm" and cell([-1, 2]) == "[-1, 2]"
+    for text in (hyperlink, "@SUM(A1)", "'=x", "''@x", "'plain", "plain", "-5", ""):
+        assert uncell(neutral(text)) == text  # the summary reads back exactly what was given
+
+
+def test_designs_csv_of_hostile_names_and_values(tmp_path):
+    """The rows of a study (run in this process, as a worker runs them): every text cell a
+    spreadsheet would evaluate starts with a quote; read back, the names are exact."""
+    hyperlink = '=HYPERLINK("http://x","y")'
+    fam = tmp_path / "f.toml"
+    fam.write_text(
+        f"[family]\n[[family.members]]\nname = '{hyperlink}'\nbase = '{EXAMPLES / 'linear_screw_actuator.toml'}'\n"
+        "[family.members.axes]\n'linear.force_N' = ['+3500 N', 2000]\n"
+        f"[[family.members]]\nname = '@SUM(A1)'\nbase = '{EXAMPLES / 'linear_screw_actuator.toml'}'\n"
+        "[family.members.axes]\n'linear.travel_time_s' = [5]\n",
+        encoding="utf-8",
+    )
+    family = read_family(fam)
+    res = run_chunk(family, 0, 0, family.size, None, False)
+    from advisor.family.chunks import columns
+
+    text = rows_csv(res.rows, columns(family))
+    raw = list(csv.reader(io.StringIO(text)))
+    assert [r[1] for r in raw[1:]] == ["'" + hyperlink, "'" + hyperlink, "'@SUM(A1)"]
+    assert [r[3] for r in raw[1:]] == ["'+3500 N", "2000", ""]  # the number as it was
+    assert {r[raw[0].index("status")] for r in raw[1:]} == {"design"}
+    (tmp_path / "designs.csv").write_text(text, encoding="utf-8")
+    rows = read_rows(tmp_path / "designs.csv")
+    assert [r["member"] for r in rows] == [hyperlink, hyperlink, "@SUM(A1)"]
+    assert rows[0]["linear.force_N"] == "+3500 N"
+
+
+# ------------------------------------------------------------------ quiet
+
+
+def _page(tmp_path: Path, name: str, axis: str, values: list) -> tuple[Path, str]:
+    from advisor.family.html import write_html
+    from advisor.family.summary import summarize
+
+    doc = tomllib.loads(LINEAR)
+    doc["family"] = {"axes": {axis: values}}
+    fam = parse_family(doc, tmp_path / "f.toml")
+    fam = replace(fam, members=(replace(fam.members[0], name=name),))
+    from advisor.family.outputs import COLUMNS
+
+    rows = [
+        {
+            **dict.fromkeys(COLUMNS, ""),
+            "variant": str(i),
+            "member": name,
+            "status": "design",
+            "reason": "",
+            "mass_kg": str(2.0 + i),
+        }
+        for i in range(len(values))
+    ]
+    path = tmp_path / "family.html"
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # any warning that reaches the user fails the test
+        write_html(path, fam, rows, summarize(fam, rows, {}))
+    return path, path.read_text(encoding="utf-8")
+
+
+def test_the_page_of_one_text_axis_warns_nothing(tmp_path):
+    # one text axis: the outcome map is one row high, and tight_layout warned
+    # "Tight layout not applied. The bottom and top margins cannot be made large enough"
+    _, page = _page(
+        tmp_path,
+        "screws",
+        "screw.material_pair",
+        ["steel_bronze", "steel_steel", "hardened_steel_bronze"],
+    )
+    assert page.count("<svg") >= 2
+
+
+def test_a_formula_in_a_member_name_is_drawn_as_text(tmp_path):
+    # "$\frac{$" is a broken mathtext formula: matplotlib raised ValueError (exit 1, after
+    # the whole study) where it should draw the name
+    _, page = _page(tmp_path, r"$\frac{$ <b>", "linear.travel_time_s", [2, 5, 10])
+    assert "&lt;b&gt;" in page and "<b>" not in page
+
+
+def test_dask_log_lines_do_not_reach_the_terminal():
+    """What distributed logs after a worker was killed ("Couldn't gather keys", at ERROR)
+    is printed without the quieting and not with it."""
+    code = """
+import logging, sys
+import distributed
+logging.getLogger("distributed.scheduler").error("Couldn't gather keys: before")
+from advisor.family.cli import quiet_dask_logging
+quiet_dask_logging()
+logging.getLogger("distributed.scheduler").error("Couldn't gather keys: after")
+logging.getLogger("distributed.client").warning("Couldn't gather 1 keys, rescheduling: after")
+logging.getLogger("tornado.application").error("Exception in callback: after")
+logging.getLogger("asyncio").error("Task was destroyed but it is pending: after")
+"""
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
+    assert r.returncode == 0, r.stderr
+    assert "Couldn't gather keys: before" in r.stderr  # the control: Dask does print it
+    assert "after" not in r.stderr, r.stderr
+
+
+# ------------------------------------------------------------------ unique temporary names
+
+
+def test_two_writers_of_one_report_never_collide(tmp_path):
+    target = tmp_path / "v0000708.report.toml"
+    errors = []
+
+    def write(text: str) -> None:
+        try:
+            for _ in range(300):
+                write_replace(target, text)
+        except Exception as exc:  # a fixed temporary name: FileNotFoundError
+            errors.append(exc)
+
+    threads = [threading.Thread(target=write, args=(t,)) for t in ("a" * 5000, "b" * 5000)]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    assert errors == []
+    assert target.read_text() in ("a" * 5000, "b" * 5000)
+    assert [p.name for p in tmp_path.iterdir()] == [target.name]  # no temporary file left
+
+
+# ------------------------------------------------------------------ on a real cluster
+
+
+HOSTILE_FAMILY = """
+[family]
+name = "Hostile"
+
+[[family.members]]
+name = '=HYPERLINK("http://x","y")'
+base = "{linear}"
+[family.members.axes]
+"linear.force_N" = {{ from = 500, to = 12000, steps = 40, scale = "log" }}
+"linear.travel_time_s" = [2, 5, 10]
+
+[[family.members]]
+name = "@SUM(A1)"
+base = "{linear}"
+[family.members.axes]
+"screw.material_pair" = ["steel_bronze", "steel_steel", "hardened_steel_bronze"]
+
+[[family.members]]
+name = "units"
+base = "{linear}"
+[family.members.axes]
+"linear.force_N" = ["+3500 N", "5 kN"]
+"""
+HOSTILE_VARIANTS = 40 * 3 + 3 + 2
+
+
+def _chunks(out: Path) -> int:
+    return len(list((out / "chunks").glob("c*.csv")))
+
+
+def _workers(pid: int) -> list[int]:
+    """The Dask worker processes of the study ``pid`` (its children but the resource
+    tracker of multiprocessing)."""
+    kids: list[str] = []
+    for task in os.listdir(f"/proc/{pid}/task"):
+        with open(f"/proc/{pid}/task/{task}/children") as fh:
+            kids += fh.read().split()
+    out = []
+    for k in kids:
+        try:
+            with open(f"/proc/{k}/cmdline", "rb") as fh:
+                if b"resource_tracker" not in fh.read():
+                    out.append(int(k))
+        except OSError:
+            pass
+    return out
+
+
+def _wait(cond, timeout: float = 180.0) -> None:
+    t0 = time.monotonic()
+    while not cond():
+        assert time.monotonic() - t0 < timeout, "timed out"
+        time.sleep(0.02)
+
+
+@pytest.mark.skipif(not Path("/proc/self/task").is_dir(), reason="reads /proc to find workers")
+def test_killed_worker_then_ctrl_c_then_two_identical_studies_at_once(tmp_path):
+    pytest.importorskip("distributed")
+    fam = tmp_path / "hostile.toml"
+    fam.write_text(HOSTILE_FAMILY.format(linear=EXAMPLES / "linear_screw_actuator.toml"))
+    out = tmp_path / "out"
+    cmd = [sys.executable, "-m", "advisor", "family", str(fam), "--out", str(out)]
+    cmd += ["--chunk-size", "1", "--reports", "--quiet"]
+    # another cluster's dashboard port: Dask said "Port 8787 is already in use"
+    port = socket.socket()
+    with contextlib.suppress(OSError):
+        port.bind(("", 8787))
+        port.listen()
+    try:
+        # 1. two workers; one is killed after 2 chunks (the nanny starts another), then
+        # ctrl+c reaches the whole process group: exit 130, one line, no worker traceback
+        study = subprocess.Popen(
+            [*cmd, "--workers", "2"],
+            stdout=subprocess.PIPE,
+            stderr=subprocess.PIPE,
+            text=True,
+            start_new_session=True,
+        )
+        try:
+            _wait(lambda: _chunks(out) >= 2)
+            os.kill(_workers(study.pid)[0], signal.SIGKILL)
+            _wait(lambda: _chunks(out) >= 8)
+            os.killpg(study.pid, signal.SIGINT)
+            stdout, stderr = study.communicate(timeout=120)
+        finally:
+            if study.poll() is None:
+                os.killpg(study.pid, signal.SIGKILL)
+        assert study.returncode == 130, stderr
+        assert stderr.splitlines() == [
+            f"advisor: interrupted; the chunks written so far are kept in {out}/chunks: run "
+            "the same command again to resume"
+        ]
+        assert 8 <= _chunks(out) < HOSTILE_VARIANTS
+        # 2. the same command twice at once, into the same folder: both finish the study
+        runs = [
+            subprocess.Popen(
+                [*cmd, "--workers", "1"], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True
+            )
+            for _ in range(2)
+        ]
+        results = [r.communicate(timeout=300) for r in runs]
+    finally:
+        port.close()
+    for r, (stdout, stderr) in zip(runs, results, strict=True):
+        assert r.returncode == 0, stderr
+        assert stderr == ""  # no tight_layout warning, no Dask log line, no port notice
+        assert f"{HOSTILE_VARIANTS} variants:" in stdout
+    assert not list(out.rglob("*.tmp"))
+    rows = read_rows(out / "designs.csv")
+    assert [int(r["variant"]) for r in rows] == list(range(HOSTILE_VARIANTS))
+    designs = [r for r in rows if r["status"] == "design"]
+    assert len(list((out / "reports").iterdir())) == len(designs) > 0
+    raw = (out / "designs.csv").read_text(encoding="utf-8")
+    # the quote goes inside the CSV quoting: the cell is '=HYPERLINK("http://x","y")
+    assert '\n0,"\'=HYPERLINK(""http://x"",""y"")",linear,500,2,,' in raw
+    assert "\n120,'@SUM(A1),linear,,,steel_bronze," in raw
+    assert "\n123,units,linear,'+3500 N,,," in raw  # a text cell; the numbers as numbers
+    summary = tomllib.loads((out / "summary.toml").read_text(encoding="utf-8"))
+    assert [m["name"] for m in summary["members"]] == [
+        '=HYPERLINK("http://x","y")',
+        "@SUM(A1)",
+        "units",
+    ]
