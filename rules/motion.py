@@ -1,9 +1,13 @@
 """Rules of the positioning drive (seed 003)."""
 
-from advisor.core.cite import cite
+from typing import NamedTuple
+
+from advisor.core.cite import cite, note
 from advisor.core.rulebook import Finding, rule
 
 SEED_003 = cite("seed-003")
+#: Sizing by a required time: the project's issue 25, not a published source.
+ISSUE_25 = note("issue 25")
 
 
 @rule("MO-01", "Gear ratio of each motor", SEED_003)
@@ -88,49 +92,97 @@ def profile_check(
     )
 
 
-#: The uncertainty of an estimated rotor inertia (catalogs/induction_4a.toml: ±30 %).
+#: The uncertainty of an estimated rotor inertia (catalogs/induction_4a.toml: ±30 %). A
+#: catalog motor with an estimated inertia meets a required time only at the top of the band
+#: (MO-05): the estimate must not decide that a motor is fast enough.
 INERTIA_BAND = 0.30
 
 
-@rule("MO-04", "Motor choice under estimated inertias", SEED_003)
-def robust_motor(
-    nominal: str, best_case: dict[str, float], worst_case: dict[str, float], band: float
-) -> Finding[tuple[str, tuple[str, ...]]]:
-    """Estimated inertias may decide only through this rule: a motor the estimate could make
-    the fastest is a contender; if the nominal fastest is the only one, it stands; otherwise
-    the contender with the least worst-case time (every inertia at the top of its band) is
-    taken, and the decision names the contenders."""
-    contenders = sorted(
-        (
-            n
-            for n, t in best_case.items()
-            if t <= min((w for k, w in worst_case.items() if k != n), default=t)
-        ),
-        key=worst_case.__getitem__,
-    )
-    pct = f"{band * 100:.0f} %"
-    if contenders == [nominal]:
-        return Finding(
-            (nominal, (nominal,)),
-            f"Motor {nominal} stays the fastest with every estimated inertia anywhere within "
-            f"±{pct}.",
-            f"Its time is {best_case[nominal]:.4g}…{worst_case[nominal]:.4g} s with its "
-            f"inertia from {pct} below to {pct} above the estimate, and no other motor can be "
-            "the fastest with its own inertia anywhere in that band: the estimated inertias "
-            "do not decide.",
-            {"motor": nominal, "contenders": [nominal]},
-        )
-    choice = min(contenders, key=worst_case.__getitem__)
-    table = ", ".join(f"{n}: {best_case[n]:.4g}…{worst_case[n]:.4g} s" for n in contenders[:6])
-    more = f" and {len(contenders) - 6} more" if len(contenders) > 6 else ""
+class Sized(NamedTuple):
+    """A candidate of MO-05: its size, its time at its optimal ratio and the time that decides
+    (the same, or with an estimated inertia at the top of its band)."""
+
+    power_W: float
+    inertia_kgm2: float
+    move_time_s: float
+    decisive_time_s: float
+
+
+@rule("MO-05", "Smallest motor that meets the required move time", SEED_003 + ISSUE_25)
+def smallest_meeting(
+    required_s: float, rows: dict[str, Sized], power_basis: str, band: float
+) -> Finding[str]:
+    """The smallest motor (power, then inertia) whose move at its own optimal ratio (seed 003,
+    eq. (4) or the triangular law) takes no longer than the requirement; a motor with an
+    estimated inertia must meet it with that inertia at the top of its band. The fastest
+    motor is stated beside it: faster is not the requirement, and costs size."""
+    ok = {n: r for n, r in rows.items() if r.decisive_time_s <= required_s}
+    order = sorted(rows, key=lambda n: (rows[n].power_W, rows[n].inertia_kgm2, n))
+    best = min(ok, key=lambda n: (ok[n].power_W, ok[n].inertia_kgm2, n))
+    fastest = min(rows, key=lambda n: rows[n].move_time_s)
+    smaller = [n for n in order[: order.index(best)]][-3:]
+    r = rows[best]
+
+    def show(n: str) -> str:
+        x = rows[n]
+        t = f"{x.move_time_s:.4g} s"
+        if x.decisive_time_s != x.move_time_s:
+            t += f" ({x.decisive_time_s:.4g} s with its inertia {band * 100:.0f} % higher)"
+        return f"{n} ({x.power_W / 1e3:.4g} kW, J0 = {x.inertia_kgm2:.3g} kg·m²): {t}"
+
+    fails = "; ".join(show(n) for n in smaller) or "none: it is the smallest candidate"
     return Finding(
-        (choice, tuple(contenders)),
-        f"Motor {choice}: the estimated inertias (±{pct}) cannot separate "
-        f"{len(contenders)} motors; {choice} has the least worst-case time. Confirm the "
-        "rotor inertias with the maker's data.",
-        f"The rotor inertias of the catalog are estimated values. Move times with each inertia "
-        f"from {pct} below to {pct} above its estimate — {table}{more}. Any of these "
-        f"could be the fastest; the rule takes the one that is fastest when every inertia is "
-        f"at the top of its band (nominal fastest: {nominal}).",
-        {"motor": choice, "contenders": contenders},
+        best,
+        f"Motor {best}, the smallest that moves the load within {required_s:g} s "
+        f"({r.move_time_s:.4g} s at its optimal ratio); the fastest, {fastest}, takes "
+        f"{rows[fastest].move_time_s:.4g} s.",
+        f"Candidates ranked by {power_basis}, then rotor inertia; each at its own optimal "
+        f"ratio (seed 003). The motor chosen — {show(best)}. The next smaller ones fail the "
+        f"time — {fails}. {len(ok)} of {len(rows)} candidates meet it; an estimated inertia "
+        f"counts at the top of its ±{band * 100:.0f} % band.",
+        {
+            "motor": best,
+            "required_move_time_s": required_s,
+            "move_time_s": r.move_time_s,
+            "decisive_move_time_s": r.decisive_time_s,
+            "power_W": r.power_W,
+            "inertia_kgm2": r.inertia_kgm2,
+            "smaller_failing": {n: rows[n].decisive_time_s for n in smaller},
+            "fastest_motor": fastest,
+            "fastest_move_time_s": rows[fastest].move_time_s,
+            "meeting": len(ok),
+        },
+    )
+
+
+@rule("MO-06", "Smallest motor for the cycle", SEED_003.at("the move") + ISSUE_25)
+def smallest_for_cycle(
+    required_s: float,
+    rows: dict[str, tuple[float, float, bool, str]],
+    size: dict[str, tuple[float, float]],
+) -> Finding[str]:
+    """rows: name -> (move time, ratio, passes the cycle and the time, why not); size: name ->
+    (power W, inertia kg·m²). The smallest motor that passes, as MO-05 for the single move."""
+    ok = [n for n, r in rows.items() if r[2]]
+    best = min(ok, key=lambda n: (*size[n], n))
+    order = sorted(rows, key=lambda n: (*size[n], n))
+    smaller = order[: order.index(best)][-3:]
+    why = "; ".join(
+        f"{n} ({size[n][0] / 1e3:.4g} kW): {rows[n][0]:.4g} s at i = {rows[n][1]:.4g}"
+        + ("" if rows[n][2] else f" ({rows[n][3]})")
+        for n in smaller
+    )
+    return Finding(
+        best,
+        f"Motor {best} at i = {rows[best][1]:.4g}: the smallest that passes the cycle and moves "
+        f"the load within {required_s:g} s ({rows[best][0]:.4g} s).",
+        "Each motor at the fastest ratio where its RMS torque over the cycle stays within its "
+        "rated torque and the move fits; ranked by power, then inertia. The next smaller ones "
+        f"fail — {why or 'none: it is the smallest candidate'}.",
+        {
+            "motor": best,
+            "ratio": rows[best][1],
+            "move_time_s": rows[best][0],
+            "required_move_time_s": required_s,
+        },
     )

@@ -255,7 +255,7 @@ def positioning_requirements(draw) -> dict:
 def check_positioning(rep: dict) -> None:
     d = _decisions(rep)
     mo = rep["design"]["motion"]
-    chooser = d.get("MO-02") or d["MO-04"]
+    chooser = d.get("MO-02") or d["MO-05"]
     assert chooser["motor"] == mo["motor"]
     if "MO-02" in d:
         times = {c["name"]: c["move_time_s"] for c in mo["candidates"]}

@@ -203,14 +203,6 @@ def test_a_short_move_is_reported_and_reoptimised():
     assert m.move_time_s == pytest.approx(mo.move_time_triangular(d, 0.2, m.optimal_ratio))
 
 
-def test_catalog_candidates_when_none_given():
-    req = _req()
-    req["positioning"]["motors"] = []
-    rep = advise(parse_requirements(req))
-    assert len(rep.design.motion.candidates) >= 50
-    assert any("estimated" in w for w in rep.warnings)
-
-
 def test_bad_positioning_inputs():
     with pytest.raises(InputError, match=r"positioning.travel_rad = 0.0: must be ≥ 0.0001"):
         parse_requirements(_req(travel_rad=0.0))
@@ -221,59 +213,164 @@ def test_bad_positioning_inputs():
         parse_requirements(_req(profile="sinusoidal"))
 
 
-def test_estimated_inertias_decide_only_through_mo_04():
-    from rules.motion import robust_motor
+# Issue 25, item 3: a required move time chooses the smallest motor that meets it.
+# The example's three motors with the rated torques of examples/indexing_table_duty.toml;
+# each one's time at its own optimal ratio, by hand (eq. (4) with the root of eq. (6)):
+#   A: ω0 150, J0 0.01, M_λ 20: I = 500, m = 5, i = 12.003 (test above);
+#      t = 10·12.003/150 + 150·0.01/20·(144.07 + 500)/(144.07 − 25) = 0.8002 + 0.4057 = 1.2059 s
+#   B: ω0 300, J0 0.004, M_λ 12: I = 1250, m = 8.333, A = 2·300²·0.004·(69.44 + 1250)/(10·12)
+#      = 7916.7; (i² − m²)²/i = A at i ≈ 22.08 (22: 7812, 22.1: 7943);
+#      t = 10·22.08/300 + 300·0.004/12·(487.5 + 1250)/(487.5 − 69.44) = 0.736 + 0.4156 = 1.1516 s
+#   C: ω0 100, J0 0.03, M_λ 45: I = 166.7, m = 2.222, A = 2·100²·0.03·(4.938 + 166.7)/(10·45)
+#      = 228.8; root at i ≈ 6.622 (6.6: 226.0, 6.62: 228.5);
+#      t = 10·6.622/100 + 100·0.03/45·(43.85 + 166.7)/(43.85 − 4.938) = 0.6622 + 0.3607 = 1.0229 s
+# Size: rated power M_n·ω0 — A 10·150 = 1500 W, B 5·300 = 1500 W (less inertia than A),
+# C 18·100 = 1800 W: smallest first B, A, C.
+HAND_TIMES = {"A": 1.2059, "B": 1.1516, "C": 1.0229}
+RATED = {"A": 10.0, "B": 5.0, "C": 18.0}
 
-    # A is nominally fastest (1.10 s), but with inertias ±30 % A spans 1.00…1.20 s and B
-    # 1.05…1.15 s: either could be the fastest; B is the faster in the worst case
-    f = robust_motor("A", {"A": 1.0, "B": 1.05, "C": 1.5}, {"A": 1.2, "B": 1.15, "C": 1.9}, 0.3)
-    assert f.value == ("B", ("B", "A"))
-    assert "cannot separate 2 motors" in f.decision and "maker's data" in f.decision
-    # A spans 1.00…1.04 s and nothing else can get below 1.05 s: A stands
-    f = robust_motor("A", {"A": 1.0, "B": 1.05}, {"A": 1.04, "B": 1.2}, 0.3)
-    assert f.value == ("A", ("A",)) and "do not decide" in f.rationale
+
+def _three(move_time_s=None):
+    motors = [
+        {"name": "A", "speed_rad_s": 150.0, "inertia_kgm2": 0.01, "accel_torque_Nm": 20.0},
+        {"name": "B", "speed_rad_s": 300.0, "inertia_kgm2": 0.004, "accel_torque_Nm": 12.0},
+        {"name": "C", "speed_rad_s": 100.0, "inertia_kgm2": 0.03, "accel_torque_Nm": 45.0},
+    ]
+    for m in motors:
+        m["rated_torque_Nm"] = RATED[m["name"]]
+    req = _req(motors=motors)
+    if move_time_s is not None:
+        req["positioning"]["move_time_s"] = move_time_s
+    return advise(parse_requirements(req))
 
 
-def test_catalog_choice_when_the_estimate_cannot_separate_motors():
+def test_hand_worked_times_of_the_three_motors():
+    rep = _three(2.0)
+    times = {c.name: c.move_time_s for c in rep.design.motion.candidates}
+    for name, t in HAND_TIMES.items():
+        assert times[name] == pytest.approx(t, abs=2e-3), name
+
+
+@pytest.mark.parametrize(
+    ("required", "chosen"),
+    [
+        (2.0, "B"),  # all meet: the smallest, B (1500 W, 0.004 kg·m² against A's 0.01)
+        (1.16, "B"),  # B 1.152 ≤ 1.16
+        (1.15, "C"),  # B 1.152 and A 1.206 fail; C 1.023 is the only one
+        (1.03, "C"),
+    ],
+)
+def test_the_smallest_motor_that_meets_the_required_time(required, chosen):
+    rep = _three(required)
+    mo_ = rep.design.motion
+    assert mo_.motor == chosen
+    assert mo_.required_move_time_s == required
+    assert mo_.fastest_motor == "C"  # shown beside the choice
+    assert mo_.fastest_move_time_s == pytest.approx(HAND_TIMES["C"], abs=2e-3)
+    assert mo_.move_time_s <= required
+    d = {x.id: x for x in rep.decisions}
+    assert "MO-02" not in d and d["MO-05"].inputs["motor"] == chosen
+    speed = {"A": 150.0, "B": 300.0, "C": 100.0}
+    assert d["MO-05"].inputs["power_W"] == pytest.approx(RATED[chosen] * speed[chosen])
+    # the decision states the numbers: the time required, the chosen motor's, the fastest
+    assert (
+        f"within {required:g} s" in d["MO-05"].decision and "the fastest, C" in d["MO-05"].decision
+    )
+    if chosen == "C":  # the smaller ones that fail are named with their times
+        assert set(d["MO-05"].inputs["smaller_failing"]) == {"A", "B"}
+    from advisor.applications.positioning.report import headline
+
+    assert f"required ≤ {required:.4g} s" in headline(rep)
+
+
+def test_no_motor_meets_the_required_time():
+    from advisor.core.errors import InfeasibleError
+
+    with pytest.raises(InfeasibleError, match=r"within positioning.move_time_s = 1 s") as e:
+        _three(1.0)
+    assert any("C, takes 1.023" in r for r in e.value.reasons)
+
+
+def test_listed_motors_without_a_time_keep_seed_003s_rule():
+    rep = _three()
+    assert rep.design.motion.motor == "C"
+    assert rep.design.motion.required_move_time_s is None
+    assert [d.id for d in rep.decisions] == ["MO-02", "MO-01", "MO-03"]
+
+
+def test_catalog_without_time_or_motors_is_refused():
+    req = _req()
+    req["positioning"]["motors"] = []
+    with pytest.raises(InputError, match=r"positioning.move_time_s: missing"):
+        parse_requirements(req)
+
+
+def _catalog_times(path, j_p, m_p, band=1.0):
+    """Each catalog motor's time at its own optimal ratio, its inertia times ``band``
+    (computed here independently of the advice)."""
     from catalogs import load_catalogs
 
-    req = _req(travel_rad=0.5, load_torque_Nm=10.0)
-    req["positioning"]["motors"] = []
-    rep = advise(parse_requirements(req))
-    mo04 = next(d for d in rep.decisions if d.id == "MO-04")
-    assert "cannot separate" in mo04.decision
-    assert mo04.decision.startswith(f"Motor {rep.design.motion.motor}:")
-    assert "MO-02" not in [d.id for d in rep.decisions]
-    assert any("decision MO-04" in w for w in rep.warnings)
-    # the motor taken is the one with the least time when every inertia is 30 % above its
-    # estimate, each at its own optimal ratio (computed here independently)
-    worst = {}
+    out = {}
     for m in load_catalogs().motors:
         d = mo.Drive(
             m.rated_speed_rpm * math.pi / 30,
-            m.inertia_kgm2 * 1.3,
+            m.inertia_kgm2 * band,
             m.starting_torque_ratio * m.rated_torque_Nm,
-            5.0,
-            10.0,
+            j_p,
+            m_p,
         )
-        i = mo.optimal_ratio_trapezoidal(d, 0.5)
-        if mo.move_time(d, 0.5, i)[1] == "triangular":
-            i = mo.optimal_ratio_triangular(d, 0.5)
-        worst[m.model] = mo.move_time(d, 0.5, i)[0]
-    assert rep.design.motion.motor == min(worst, key=worst.get)
+        i = mo.optimal_ratio_trapezoidal(d, path)
+        if mo.move_time(d, path, i)[1] == "triangular":
+            i = mo.optimal_ratio_triangular(d, path)
+        out[m.model] = (m.rated_power_kW, m.inertia_kgm2, mo.move_time(d, path, i)[0])
+    return out
 
 
-def test_catalog_choice_that_the_estimate_does_not_change():
-    req = _req()
-    req["positioning"]["motors"] = []
+def test_issue_25_quarter_turn_gets_the_smallest_catalog_motor_not_11_kW():
+    # a 90° move of 2 kg·m² against 5 N·m; before issue 25 the catalog's fastest, a 4A132M4
+    # of 11 kW, was chosen. With 0.3 s required the smallest motor meeting it, its estimated
+    # inertia 30 % higher, is chosen
+    path = math.pi / 2
+    req = {
+        "application": {"kind": "positioning"},
+        "positioning": {
+            "travel_rad": path,
+            "load_inertia_kgm2": 2.0,
+            "load_torque_Nm": 5.0,
+            "move_time_s": 0.3,
+        },
+    }
+    rep = advise(parse_requirements(req))
+    worst = _catalog_times(path, 2.0, 5.0, 1.3)
+    meeting = [n for n, (_, _, t) in worst.items() if t <= 0.3]
+    expect = min(meeting, key=lambda n: (worst[n][0], worst[n][1], n))
+    assert rep.design.motion.motor == expect
+    nominal = _catalog_times(path, 2.0, 5.0)
+    assert rep.design.motion.fastest_motor == min(nominal, key=lambda n: nominal[n][2])
+    assert worst[expect][0] < 11.0
+    d = next(x for x in rep.decisions if x.id == "MO-05")
+    assert d.inputs["decisive_move_time_s"] == pytest.approx(worst[expect][2], rel=1e-6)
+    # every smaller motor fails the time at the top of its inertia band
+    assert all(worst[n][2] > 0.3 for n in worst if (worst[n][0], worst[n][1]) < worst[expect][:2])
+
+
+def test_duty_cycle_time_is_the_requirement_of_catalog_candidates():
+    # no motors, no move_time_s, a cycle of 2 s: the smallest catalog motor whose move fits and
+    # whose RMS torque passes (decision MO-06), not the fastest
+    req = {
+        "application": {"kind": "positioning"},
+        "positioning": {"travel_rad": math.pi / 2, "load_inertia_kgm2": 2.0, "load_torque_Nm": 5.0},
+        "duty": {"cycle_time_s": 2.0},
+    }
     rep = advise(parse_requirements(req))
     ids = [d.id for d in rep.decisions]
-    assert ids == ["MO-04", "MO-01", "MO-03"]  # MO-04 takes the motor decision
-    assert rep.decisions[0].decision.startswith(
-        f"Motor {rep.design.motion.motor} stays the fastest"
-    )
-    times = {c.name: c.move_time_s for c in rep.design.motion.candidates}
-    assert rep.design.motion.motor == min(times, key=times.get)
+    assert "MO-05" in ids and "MO-06" in ids and "DU-01" not in ids
+    duty = rep.design.duty
+    assert duty.move_time_s <= 2.0 and duty.rms_torque_Nm <= duty.rated_torque_Nm * (1 + 1e-9)
+    from catalogs import load_catalogs
+
+    power = {m.model: m.rated_power_kW for m in load_catalogs().motors}
+    assert power[duty.motor] < power[rep.design.motion.fastest_motor]
 
 
 def test_no_load_torque_has_no_checks_and_the_summary_says_so(tmp_path, capsys):

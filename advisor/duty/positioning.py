@@ -18,6 +18,7 @@ from advisor.core.errors import InfeasibleError
 from advisor.core.rulebook import Trace
 from advisor.duty.report import DutyOut, phases_out
 from rules import duty as du_rules
+from rules import motion as mo_rules
 
 RPM = 30.0 / math.pi
 
@@ -132,8 +133,13 @@ def advise_duty(
     cycle_time_s: float,
     seed_best: str,
     trace: Trace,
+    sizing: tuple[float, dict[str, tuple[float, float]]] | None = None,
 ) -> tuple[DutyOut, list[Check], list[str]]:
-    """Choose motor and ratio for the cycle; the checks and warnings of that choice."""
+    """Choose motor and ratio for the cycle; the checks and warnings of that choice.
+
+    ``sizing`` — (required move time, name → (power, inertia)): a motor passes only if its
+    move at the cycle's ratio also meets the required time, and the smallest that passes is
+    chosen (issue 25, decision MO-06); without it, the fastest that passes (DU-01)."""
     _eval.cache_clear()  # one advice's evaluations are shared, never a previous advice's
     rows: dict[str, tuple[float, float, bool, str]] = {}
     reasons = []
@@ -157,10 +163,21 @@ def advise_duty(
                 f"against its rated torque {rated[name]:.4g} N·m"
             )
             continue
+        if sizing is not None and found[1] > sizing[0]:
+            rows[name] = (found[1], found[0], False, f"move > {sizing[0]:g} s required")
+            reasons.append(
+                f"motor {name}: its move at the ratio that passes the cycle, i = "
+                f"{found[0]:.4g}, takes {found[1]:.4g} s, longer than the required "
+                f"{sizing[0]:g} s"
+            )
+            continue
         rows[name] = (found[1], found[0], True, "")
     if not any(r[2] for r in rows.values()):
         raise InfeasibleError("no feasible design: no motor passes the duty cycle", reasons)
-    best = trace.apply(du_rules.motor_for_cycle, rows)
+    if sizing is None:
+        best = trace.apply(du_rules.motor_for_cycle, rows)
+    else:
+        best = trace.apply(mo_rules.smallest_for_cycle, sizing[0], rows, sizing[1])
     d = dict(drives)[best]
     i = rows[best][1]
     phases = cycle(d, path, i, cycle_time_s)
@@ -197,8 +214,9 @@ def advise_duty(
             f"{du_rules.INERTIA_RATIO_GUIDELINE:g}): expect a hard-to-tune control loop"
         )
     if best != seed_best:
+        single = "the fastest motor" if sizing is None else "the motor"
         warnings.append(
-            f"duty: the cycle chooses motor {best}, not the fastest motor of the single move "
+            f"duty: the cycle chooses motor {best}, not {single} of the single move "
             "(design.motion), which does not pass the cycle"
         )
     elif abs(i / fastest[best] - 1.0) > 1e-9:

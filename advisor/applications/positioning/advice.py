@@ -1,7 +1,9 @@
 """The positioning drive advice (seed 003): for each candidate motor the ratio of the fastest
-move, and the fastest motor. Orchestration only."""
+move; then the motor — the fastest of the listed motors (seed 003), or, where a move time is
+required, the smallest motor that meets it (issue 25). Orchestration only."""
 
 import math
+from typing import NamedTuple
 
 from advisor.applications.positioning.report import (
     CurveOut,
@@ -18,14 +20,22 @@ from catalogs import Catalogs
 from rules import motion as mo_rules
 
 
-def _candidates(
-    req: Requirements, cat: Catalogs
-) -> tuple[list[tuple[str, mo.Drive]], list[str], set[str]]:
-    """The candidate drives, the warnings about them and the names whose inertia is an
-    estimate."""
+class Candidates(NamedTuple):
+    drives: list[tuple[str, mo.Drive]]
+    warnings: list[str]
+    estimated: set[str]  # names whose rotor inertia is an estimate
+    power_W: dict[str, float]  # the size that ranks them (MO-05)
+    power_basis: str  # what that size is
+
+
+def _candidates(req: Requirements, cat: Catalogs) -> Candidates:
+    """The candidate drives, the warnings about them, the names whose inertia is an estimate,
+    and each candidate's size: the rated power, or for listed motors without a rated torque
+    the power M_λ·ω0 at their starting torque."""
     pos = req.positioning
     if pos.motors:
-        return (
+        rated = all(m.rated_torque_Nm is not None for m in pos.motors)
+        return Candidates(
             [
                 (
                     m.name,
@@ -41,6 +51,13 @@ def _candidates(
             ],
             [],
             set(),
+            {
+                m.name: (m.rated_torque_Nm if rated else m.accel_torque_Nm) * m.speed_rad_s
+                for m in pos.motors
+            },
+            "rated power M_n·ω0"
+            if rated
+            else "power at the starting torque M_λ·ω0 (no rated torque listed for every motor)",
         )
     drives = [
         (
@@ -57,10 +74,32 @@ def _candidates(
     ]
     estimated = {m.model for m in cat.motors if "inertia_kgm2" in m.estimated}
     note = (
-        "no [[positioning.motors]] given: candidates are the induction motors of the catalog at "
-        "their rated speed with their starting torque; their rotor inertias are estimated values"
+        "no [[positioning.motors]] given: candidates are the induction motors of the catalog "
+        "at their rated speed with their starting torque"
     )
-    return drives, [note], estimated
+    if estimated:
+        note += (
+            f"; the rotor inertias of {len(estimated)} of them are estimated values, counted "
+            f"{mo_rules.INERTIA_BAND * 100:.0f} % higher where they decide (MO-05)"
+        )
+    return Candidates(
+        drives,
+        [note],
+        estimated,
+        {m.model: m.rated_power_kW * 1e3 for m in cat.motors},
+        "rated power of the catalog",
+    )
+
+
+def required_time(req: Requirements) -> tuple[float, str] | None:
+    """The move time the drive must meet and the field that sets it: positioning.move_time_s,
+    or, with catalog candidates and a duty cycle, the cycle (the move must fit in it)."""
+    pos = req.positioning
+    if pos.move_time_s is not None:
+        return pos.move_time_s, "positioning.move_time_s"
+    if not pos.motors and req.duty is not None:
+        return req.duty.cycle_time_s, "duty.cycle_time_s"
+    return None
 
 
 def _solve(d: mo.Drive, path: float, asked: str) -> dict:
@@ -108,10 +147,52 @@ def _inertia_band(d: mo.Drive, path: float, asked: str, band: float) -> tuple[fl
     return _solve(lo, path, asked)["time"], _solve(hi, path, asked)["time"]
 
 
+def _smallest_meeting(
+    solved: dict[str, tuple[mo.Drive, dict]],
+    cands: Candidates,
+    required: tuple[float, str],
+    path: float,
+    profile: str,
+    trace: Trace,
+) -> str:
+    """MO-05: the smallest candidate whose move meets the required time (an estimated inertia
+    at the top of its band); none: no feasible design, with the fastest named."""
+    t_req, field = required
+    band = mo_rules.INERTIA_BAND
+    rows = {
+        n: mo_rules.Sized(
+            cands.power_W[n],
+            d.inertia_kgm2,
+            s["time"],
+            _inertia_band(d, path, profile, band)[1] if n in cands.estimated else s["time"],
+        )
+        for n, (d, s) in solved.items()
+    }
+    if not any(r.decisive_time_s <= t_req for r in rows.values()):
+        fast = min(rows, key=lambda n: rows[n].decisive_time_s)
+        i = solved[fast][1]["ratio"]
+        raise InfeasibleError(
+            f"no feasible design: no motor moves the load within {field} = {t_req:g} s",
+            [
+                f"the fastest of {len(rows)} candidates, {fast}, takes "
+                f"{rows[fast].decisive_time_s:.4g} s at its optimal ratio i = {i:.4g}"
+                + (
+                    f" (its estimated inertia {band * 100:.0f} % higher)"
+                    if fast in cands.estimated
+                    else ""
+                ),
+                f"allow a longer {field}, or list stronger or faster motors in "
+                "[[positioning.motors]]",
+            ],
+        )
+    return trace.apply(mo_rules.smallest_meeting, t_req, rows, cands.power_basis, band)
+
+
 def advise_positioning(req: Requirements, cat: Catalogs, trace: Trace):
     pos = req.positioning
     path = pos.travel_rad
-    drives, warnings, estimated = _candidates(req, cat)
+    cands = _candidates(req, cat)
+    drives, warnings = cands.drives, cands.warnings
     # A motor whose torque only balances the load near the top of the ratios searched cannot
     # be given a ratio that moves the load with any margin
     usable = [(n, d) for n, d in drives if d.torque_ratio < mo.RATIO_MAX / 2.0]
@@ -134,31 +215,12 @@ def advise_positioning(req: Requirements, cat: Catalogs, trace: Trace):
         )
     solved = {name: (d, _solve(d, path, pos.profile)) for name, d in usable}
     times = {n: s["time"] for n, (_, s) in solved.items()}
-    best = min(times, key=times.__getitem__)
-    if best not in estimated:
+    fastest = min(times, key=times.__getitem__)
+    required = required_time(req)
+    if required is None:  # listed motors, no time: seed 003's rule, the fastest move
         best = trace.apply(mo_rules.fastest_motor, times)
     else:
-        # the estimate would decide: MO-04 takes the decision (it states the motor adopted,
-        # with the nominal fastest in its rationale)
-        bands = {
-            n: _inertia_band(d, path, pos.profile, mo_rules.INERTIA_BAND)
-            if n in estimated
-            else (s["time"], s["time"])
-            for n, (d, s) in solved.items()
-        }
-        best, contenders = trace.apply(
-            mo_rules.robust_motor,
-            best,
-            {n: b[0] for n, b in bands.items()},
-            {n: b[1] for n, b in bands.items()},
-            mo_rules.INERTIA_BAND,
-        )
-        if len(contenders) > 1:
-            warnings.append(
-                f"the estimated rotor inertias (±{mo_rules.INERTIA_BAND * 100:.0f} %) cannot "
-                f"separate {len(contenders)} motors: {best} is taken by its worst-case time "
-                "(decision MO-04); confirm the inertias with the maker's data"
-            )
+        best = _smallest_meeting(solved, cands, required, path, pos.profile, trace)
     d, s = solved[best]
     trace.apply(
         mo_rules.ratio_per_motor,
@@ -208,6 +270,9 @@ def advise_positioning(req: Requirements, cat: Catalogs, trace: Trace):
         profile_actual=s["actual"],
         inertia_ratio=d.inertia_ratio,
         torque_ratio=d.torque_ratio,
+        required_move_time_s=None if required is None else required[0],
+        fastest_motor=None if required is None else fastest,
+        fastest_move_time_s=None if required is None else times[fastest],
         candidates=[
             MotionCandidateOut.make(
                 name=n,
@@ -252,6 +317,9 @@ def advise_positioning(req: Requirements, cat: Catalogs, trace: Trace):
             req.duty.cycle_time_s,
             best,
             trace,
+            sizing=None
+            if required is None
+            else (required[0], {n: (cands.power_W[n], dd.inertia_kgm2) for n, dd in usable}),
         )
         checks += duty_checks
         warnings += duty_warnings

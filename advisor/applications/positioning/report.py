@@ -37,6 +37,11 @@ class MotionOut(_Out):
     profile_actual: str
     inertia_ratio: float
     torque_ratio: float
+    #: with a required move time (issue 25): the time, and the fastest motor beside the
+    #: smallest that meets it (decision MO-05)
+    required_move_time_s: float | None = None
+    fastest_motor: str | None = None
+    fastest_move_time_s: float | None = None
     candidates: list[MotionCandidateOut]
     curve: CurveOut
 
@@ -56,14 +61,20 @@ def design_ratio(report) -> tuple[str, float, float]:
 
 
 def headline(report) -> str:
-    """The design in a few words: motor, ratio, move time; with a duty cycle, the cycle's
-    ratio, the fastest move's beside it, labelled so."""
+    """The design in a few words: motor, ratio, move time; with a required move time, that
+    time and the fastest motor beside the chosen one (MO-05); with a duty cycle, the cycle's
+    ratio, the single move's beside it, labelled so."""
     mo = report.design.motion
     motor, ratio, time_s = design_ratio(report)
     text = f"motor {motor}, i = {ratio:.4g}, {time_s:.4g} s ({mo.profile_actual})"
+    if mo.required_move_time_s is not None:
+        text += f", required ≤ {mo.required_move_time_s:.4g} s"
+        if mo.fastest_motor is not None and mo.fastest_motor != motor:
+            text += f" (fastest: motor {mo.fastest_motor}, {mo.fastest_move_time_s:.4g} s)"
     if report.design.duty is not None and (motor, ratio) != (mo.motor, mo.optimal_ratio):
+        single = "fastest move" if mo.required_move_time_s is None else "the move's choice"
         text += (
-            f" for the duty cycle; fastest move without the cycle: motor {mo.motor}, "
+            f" for the duty cycle; {single} without the cycle: motor {mo.motor}, "
             f"i = {mo.optimal_ratio:.4g}, {mo.move_time_s:.4g} s"
         )
     return text

@@ -40,3 +40,16 @@ def rated_for_duty(req: Any) -> None:
                     f"positioning.motors[{k}].rated_torque_Nm: missing; required when "
                     "[duty] is given (continuous (S1) torque, N·m)"
                 )
+
+
+def time_or_motors(req: Any) -> None:
+    """Without listed motors the catalog is searched for the smallest motor that meets a
+    required time (issue 25): a required time is needed, the move's own or the duty cycle's,
+    else "the fastest move wins" would crown the largest motor of the catalog."""
+    pos = req.positioning
+    if not pos.motors and pos.move_time_s is None and req.duty is None:
+        raise ValueError(
+            "positioning.move_time_s: missing; required without [[positioning.motors]] (the "
+            "advisor chooses the smallest catalog motor that moves the load within it), or "
+            "list the candidate motors"
+        )

@@ -1,4 +1,5 @@
-"""Requirements of the positioning drive (seed 003): the fastest move through a reducer.
+"""Requirements of the positioning drive (seed 003): the move through a reducer, the fastest
+among listed motors, or the smallest motor that meets a required move time.
 
 Every number has a physically meaningful range, stated in its description; a value outside it
 is an input error naming the field and the range (exit 2). The ranges keep every quantity the
@@ -102,6 +103,19 @@ class PositioningReq(_Strict):
             step=1,
         ),
     ]
+    move_time_s: Annotated[
+        float | None,
+        _num(
+            ge=1e-4,
+            le=1e6,
+            desc=(
+                "required move time, 10⁻⁴ … 10⁶ s: the smallest motor that moves the load "
+                "within it is chosen; required without candidate motors (or a [duty] cycle)"
+            ),
+            label="Required move time",
+            step=1,
+        ),
+    ] = None
     motors: Annotated[
         list[CandidateMotor],
         ask(
@@ -133,3 +147,5 @@ class PositioningRequirements(_Strict):
     ] = None
 
     _rated_for_duty = after_check(checks.rated_for_duty)
+
+    _time_or_motors = after_check(checks.time_or_motors)

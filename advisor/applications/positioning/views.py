@@ -102,7 +102,7 @@ def compare(report) -> list[Any]:
         Section(
             "Candidate motors",
             t,
-            decision(report, "MO-02"),
+            decision(report, "MO-02") or decision(report, "MO-05"),
             tuple(options),
             "“Use” keeps that motor alone in the requirement's list of motors.",
         )
