@@ -143,3 +143,46 @@ def skf_friction(
     mu_sl = phi_bl * MU_BL + (1.0 - phi_bl) * MU_EHL
     phi_ish = 1.0 / (1.0 + 1.84e-9 * (n * dm) ** 1.28 * nu**0.64)
     return SkfFriction(phi_ish * m_rr * 1e-3, mu_sl * g_sl * 1e-3, phi_ish)
+
+
+def rating_life_Mrev(C_N: float, load_N: float, exponent: float = 3.0) -> float:
+    """L10 = (C/P)^p  [millions of revolutions], p = 3 for ball bearings (ISO 281:2007,
+    eq. (1)).
+
+    SKF General Catalogue, calculation example 1: 6309, C = 55.3 kN, P = F_r = 10 kN →
+    (5.53)³ = 169.1 million revolutions.
+
+    >>> round(rating_life_Mrev(55300.0, 10000.0), 1)
+    169.1
+    """
+    if load_N <= 0:
+        return math.inf
+    return (C_N / load_N) ** exponent
+
+
+def hours_from_Mrev(life_Mrev: float, speed_rpm: float) -> float:
+    """L10h = 10⁶/(60·n)·L10  [h] (ISO 281:2007). SKF's example 1: 169 million revolutions at
+    3000 r/min → 10⁶/(60·3000)·169 = 939 h, printed as 940 h.
+
+    >>> round(hours_from_Mrev(169.0, 3000.0))
+    939
+    """
+    return 1e6 / (60.0 * speed_rpm) * life_Mrev
+
+
+def pair_loads(
+    radial_N: float, axial_N: float, moment_Nm: float, spacing_mm: float | None
+) -> tuple[float, float]:
+    """The radial and axial load on the most loaded output bearing: one bearing takes the
+    forces as they are; a pair ``spacing_mm`` apart takes the radial force half each, the
+    tilting moment as a couple ±M/a, and the axial force on the locating one (counted on the
+    most loaded one: errs high).
+
+    >>> pair_loads(10000.0, 0.0, 0.0, None)
+    (10000.0, 0.0)
+    >>> pair_loads(2000.0, 500.0, 100.0, 100.0)  # 1000 + 100/0.1
+    (2000.0, 500.0)
+    """
+    if spacing_mm is None:
+        return radial_N, axial_N
+    return radial_N / 2.0 + moment_Nm / (spacing_mm * 1e-3), axial_N

@@ -442,3 +442,60 @@ def frames(ref, steel, steel_mass: float, terms, limit_W: float):
         return steel_mass * bm.specific_iron_loss(ref, steel, terms, f)[0]
 
     return lambda rpm: Frame(ref, iron_at, rpm, limit_W)
+
+
+def output_loads(req, q: float, eta: float, speed_rpm: float, frame: Frame, holder: Holder):
+    """The cycle at the reducer's output, for its load spectrum (issue 26, item 2): per phase
+    the torque the output carries and its mean |speed| (rpm).
+
+    Moves, holds and dwells give the output torque J_L·ε ± M_L themselves (what
+    :func:`_move_phases` reflects to the motor); a hold or the closing rest carries the
+    standing load at standstill. An IEC duty type is read back from its motor phases:
+    M_out = M_m·q·η while the motor drives, M_m·q/η while it brakes; the rotor's own
+    acceleration torque is thereby counted in the output (errs high)."""
+    from advisor.calc.load_spectrum import Load
+
+    duty, rot = req.duty, req.rotary
+    if not duty.segments:
+        phases, _ = cycle(req, q, eta, speed_rpm, frame, holder)
+        return [
+            Load(
+                p.torque_Nm * q * eta if p.torque_Nm >= 0 else p.torque_Nm * q / eta,
+                abs(p.mean_speed_rad_s) * RPM / q,
+                p.time_s,
+            )
+            for p in phases
+        ]
+    jl = duty.load_inertia_kgm2
+    out = []
+    standing = 0.0
+    for seg in duty.segments:
+        load = rot.torque_Nm if seg.torque_Nm is None else seg.torque_Nm
+        if seg.kind == "move":
+            theta = math.radians(seg.angle_deg)
+            if seg.profile == "triangular":
+                ta, tc = seg.time_s / 2.0, 0.0
+            else:
+                ta = seg.accel_fraction * seg.time_s
+                tc = seg.time_s - 2.0 * ta
+            w_out = theta / (ta + tc)
+            m_l = load if seg.direction == "against" else -load
+            for t, w_mean, sign in ((ta, w_out / 2, 1.0), (tc, w_out, 0.0), (ta, w_out / 2, -1.0)):
+                if t > 0:
+                    out.append(Load(jl * w_out / ta * sign + m_l, w_mean * RPM, t))
+            standing = load
+        elif seg.kind == "hold":
+            out.append(Load(load, 0.0, seg.time_s))
+            standing = load
+        else:
+            out.append(Load(0.0, 0.0, seg.time_s))
+            standing = 0.0
+    rest = 3600.0 / duty.cycles_per_hour - sum(s.time_s for s in duty.segments)
+    if rest > 1e-9:
+        out.append(Load(standing, 0.0, rest))
+    return out
+
+
+def motor_phases(req, q: float, eta: float, speed_rpm: float, frame: Frame, holder: Holder):
+    """The phases of one cycle at the motor (the same as the duty's)."""
+    return cycle(req, q, eta, speed_rpm, frame, holder)[0]

@@ -27,6 +27,7 @@ from advisor.calc import bldc
 from advisor.calc import reducer as rd
 from advisor.calc import wavegear as wg
 from advisor.calc.checks import Check
+from advisor.calc.service_factor import service_factor
 from advisor.core.cite import Cite, note
 from advisor.core.errors import InfeasibleError, InputError
 from advisor.core.reading import Requirements
@@ -119,7 +120,7 @@ def _stage_count(q_total: float, split: list[float], req: Requirements, params) 
     return _adopted_stages(
         q_total,
         tuple(split),
-        req.rotary.torque_Nm,
+        params.torque_Nm,
         req.gearbox.choice,
         env.max_outer_diameter_mm,
         env.max_length_mm,
@@ -216,8 +217,11 @@ def advise_rotary(req: Requirements, cat: Catalogs, trace: Trace):
         ref.stator_steel_area_mm2, ref.stack_length_mm, ref.stacking_factor, ref.steel_density_kg_m3
     )
     terms = bldc.fit_eq5(steel.p10_50_W_kg, steel.p15_50_W_kg, steel.p10_400_W_kg)
+    # the stages are sized (eq. (16)) for the output torque times the service factor: every
+    # strength check of the reducer then holds f_B·demand within its capacity (issue 26)
+    sf = service_factor(req.design)
     params = rd.ReducerParams(
-        torque_Nm=rot.torque_Nm,
+        torque_Nm=rot.torque_Nm * sf.value,
         k_rb=wg.ROLLING_BODY_FACTOR[gb.rolling_body],
         stage_efficiency=gb.stage_efficiency,
         density_kg_m3=gb.density_kg_m3,
@@ -270,13 +274,13 @@ def advise_rotary(req: Requirements, cat: Catalogs, trace: Trace):
     # ---- reducer
     q_total = chosen["q_total"]
     split = trace.apply(wg_rules.split_ratio, q_total, rd.STAGE_RATIO_MIN, rd.STAGE_RATIO_MAX)
-    needed = _rows_needed(rot.torque_Nm, env.max_outer_diameter_mm, split, params)
+    needed = _rows_needed(params.torque_Nm, env.max_outer_diameter_mm, split, params)
     rows = trace.apply(wg_rules.choose_rows, len(split), needed, MAX_ROWS)
     space = rd.sweep(q_total, params)
     optimum = _optimum(space, q_total, "mass", params, env)
     slimmest = _optimum(space, q_total, "diameter", params, env)
     if optimum is None or slimmest is None:
-        raise _no_reducer(space, rot.torque_Nm, env)
+        raise _no_reducer(space, params.torque_Nm, env)
     design = rd.evaluate(split, rows, params) if rows else None
     warnings: list[str] = []
     by_rules = design if design is not None and _fits(design, env) else None
@@ -371,8 +375,58 @@ def advise_rotary(req: Requirements, cat: Catalogs, trace: Trace):
         )
         checks += duty_checks
         warnings += duty_warnings
-    design_out = RotaryDesignOut.make(motor=motor, gearbox=gearbox, one_way=one_way, duty=duty)
+    extra = _reviewer_checks(req, cat, design, speed, frame_for if req.duty else None, sf)
+    checks += extra.checks
+    warnings += extra.warnings
+    design_out = RotaryDesignOut.make(
+        motor=motor,
+        gearbox=gearbox,
+        one_way=one_way,
+        duty=duty,
+        reducer_load=extra.reducer_load,
+        output_bearing=extra.output_bearing,
+        regeneration=extra.regeneration,
+    )
     return design_out, checks, warnings
+
+
+class _Review(NamedTuple):
+    reducer_load: object
+    output_bearing: object
+    regeneration: object
+    checks: list[Check]
+    warnings: list[str]
+
+
+def _reviewer_checks(req, cat, design: rd.Reducer, speed: float, frame_for, sf) -> _Review:
+    """Issue 26: the reducer under its load spectrum, the output bearing under an external
+    load, and the regenerated energy of the duty cycle (:mod:`.loads`)."""
+    from advisor.applications.rotary import loads
+
+    q, eta = design.total_ratio, design.efficiency
+    if req.duty is not None:
+        from advisor.duty import rotary as dr
+
+        holder = _holder(req, q, eta)
+        spectrum = dr.output_loads(req, q, eta, speed, frame_for(speed), holder)
+        regeneration = loads.regeneration(
+            dr.motor_phases(req, q, eta, speed, frame_for(speed), holder), req.drive
+        )
+        basis = "duty cycle"
+    else:
+        from advisor.calc.load_spectrum import Load
+
+        spectrum = [Load(req.rotary.torque_Nm, req.rotary.speed_rpm, 1.0)]
+        regeneration, basis = None, "working point (rotary.torque_Nm at rotary.speed_rpm)"
+    rolling = req.gearbox.rolling_body
+    reducer_load, checks, warnings = loads.reducer_load(req, design, spectrum, basis, sf, rolling)
+    bearing = None
+    if req.output_load is not None:
+        bearing, more = loads.output_bearing(
+            req, cat, design, reducer_load.mean_output_speed_rpm or req.rotary.speed_rpm, sf
+        )
+        checks += more
+    return _Review(reducer_load, bearing, regeneration, checks, warnings)
 
 
 def _holder(req: Requirements, q: float, eta: float):
@@ -385,8 +439,18 @@ def _holder(req: Requirements, q: float, eta: float):
     from advisor.one_way.advice import device_passage
 
     at_output = req.one_way.location == "output_side"
-    torque = req.rotary.torque_Nm
-    return dr.Holder(device_passage(req.one_way, torque / (q * eta), torque, at_output), at_output)
+    motor_side, output_side = _device_torques(req, q, eta)
+    return dr.Holder(device_passage(req.one_way, motor_side, output_side, at_output), at_output)
+
+
+def _device_torques(req: Requirements, q: float, eta: float) -> tuple[float, float]:
+    """The torques the holding device is sized for, at the motor side and at the output: the
+    output torque or, if larger, the emergency stop's momentary peak (issue 26, item 4), each
+    times the service factor; M/(q·η) at the motor side (seed 004, OW-01)."""
+    out = req.rotary.torque_Nm
+    stop = req.rotary.emergency_stop_torque_Nm
+    sized = max(out, stop or 0.0) * service_factor(req.design).value
+    return sized / (q * eta), sized
 
 
 def _one_way(
@@ -409,15 +473,15 @@ def _one_way(
     )
     motor_torque, speed = working["torque_Nm"], working["speed_rpm"]
     power = motor_torque * speed * math.pi / 30.0
+    q, eta = design.total_ratio, design.efficiency
+    at_output = req.one_way.location == "output_side"
+    sized_motor, sized_output = _device_torques(req, q, eta)
     device, warnings = choose_device(
-        req.one_way,
-        motor_torque,
-        req.rotary.torque_Nm,
-        power,
-        trace,
-        at_output=req.one_way.location == "output_side",
+        req.one_way, sized_motor, sized_output, power, trace, at_output=at_output
     )
     checks = []
+    if req.rotary.emergency_stop_torque_Nm is not None:  # else it holds what it is sized for
+        checks.append(_device_holds_stop(req, q, eta, at_output, device.torque_Nm))
     if device.efficiency < 1.0:
         ref = req.motor.reference
         with_device = bm.losses_at(
@@ -433,6 +497,28 @@ def _one_way(
             )
         )
     return device, checks, warnings
+
+
+def _device_holds_stop(req, q: float, eta: float, at_output: bool, capacity: float) -> Check:
+    """Issue 26, item 4: the device holds the momentary peak of an emergency stop where it
+    sits (M_peak at the output, M_peak/(q·η) at the motor side, conservatively the driving
+    share), times the service factor, within the torque it is sized for."""
+    from advisor.applications.rotary.loads import momentary_torque
+    from rules import one_way as ow_rules
+
+    sf = service_factor(req.design)
+    peak, basis = momentary_torque(req)
+    demand = sf.value * (peak if at_output else peak / (q * eta))
+    where = "output" if at_output else f"motor side, M/(q·η) with q·η = {q * eta:.4g}"
+    return Check(
+        "one_way_holds_emergency_stop",
+        f"holding device carries the emergency-stop torque × f_B = {sf.value:g} ({where})",
+        demand,
+        capacity,
+        "N·m",
+        capacity / demand,
+        ow_rules.SEED_004.with_note(basis),
+    )
 
 
 def _fits(r: rd.Reducer, env) -> bool:

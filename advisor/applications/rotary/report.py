@@ -138,11 +138,89 @@ class GearboxOut(GearboxSummaryOut):
     fig1: Fig1Out
 
 
+class StageLifeOut(_Out):
+    position: str
+    rated_torque_Nm: float  # the torque eq. (16) sized the stage for
+    mean_input_speed_rpm: float
+    max_input_speed_rpm: float
+    life_L50_h: float
+    life_L10_h: float
+
+
+class ReducerLoadOut(_Out):
+    """The reducer under its load spectrum (issue 26, item 2): figures at the output."""
+
+    basis: str  # "duty cycle" | "working point"
+    service_factor: float
+    service_factor_basis: str
+    mean_torque_Nm: float  # T_av, cube-mean weighted by revolutions
+    mean_output_speed_rpm: float
+    max_output_speed_rpm: float
+    repeated_peak_torque_Nm: float
+    momentary_peak_torque_Nm: float
+    momentary_peak_basis: str
+    rated_torque_Nm: float  # the output stage's sizing torque (eq. (16))
+    average_torque_limit_Nm: float
+    repeated_peak_limit_Nm: float
+    momentary_peak_limit_Nm: float
+    emergency_stop_time_s: float
+    emergency_stops: int | None = None
+    emergency_stops_allowed: float
+    life_model: str
+    required_life_h: float | None = None
+    stages: list[StageLifeOut]
+    phases_torque_Nm: list[float]
+    phases_speed_rpm: list[float]
+    phases_time_s: list[float]
+
+
+class OutputBearingOut(_Out):
+    designation: str
+    chosen: str  # "given" | "automatic"
+    arrangement: str
+    radial_N: float  # on the most loaded bearing
+    axial_N: float
+    service_factor: float
+    equivalent_load_N: float
+    X: float
+    Y: float
+    C_kN: float
+    C0_kN: float
+    speed_rpm: float
+    life_L10_Mrev: float
+    life_L10_h: float
+    required_life_h: float | None = None
+    static_safety: float
+    limiting_speed_rpm: float
+
+
+class RegenerationOut(_Out):
+    """Energy the motor gives back per cycle, and what absorbs it (issue 26, item 6)."""
+
+    regenerated_per_cycle_J: float
+    brakings_per_cycle: int
+    largest_braking_J: float
+    peak_power_W: float
+    bus_voltage_V: float
+    bus_max_voltage_V: float
+    capacitance_for_largest_uF: float
+    bus_capacitance_uF: float | None = None
+    bus_energy_J: float
+    resistor_needed: bool
+    resistor_peak_power_W: float
+    resistor_average_power_W: float
+    resistor_max_ohm: float | None = None
+    rule: str
+
+
 class RotaryDesignOut(_Out):
     motor: BldcMotorOut
     gearbox: GearboxOut
     one_way: OneWayOut | None = None
     duty: DutyOut | None = None
+    reducer_load: ReducerLoadOut | None = None
+    output_bearing: OutputBearingOut | None = None
+    regeneration: RegenerationOut | None = None
 
 
 def headline(report) -> str:

@@ -29,3 +29,20 @@ def reducer_reduces(req: Any) -> None:
             f"rotary.speed_rpm = {req.rotary.speed_rpm:g} is not below the slowest "
             f"motor.candidate_speeds_rpm ({slowest:g}): the reducer lowers the speed"
         )
+
+
+def moment_needs_pair(load: Any) -> None:
+    if load.tilting_moment_Nm > 0 and load.bearing_spacing_mm is None:
+        raise ValueError(
+            f"output_load.tilting_moment_Nm = {load.tilting_moment_Nm:g} needs "
+            "output_load.bearing_spacing_mm: a pair of bearings takes a tilting moment"
+        )
+
+
+def bus_rises(drive: Any) -> None:
+    if drive.bus_max_voltage_V <= drive.bus_voltage_V:
+        raise ValueError(
+            f"drive.bus_max_voltage_V = {drive.bus_max_voltage_V:g} is not above "
+            f"drive.bus_voltage_V = {drive.bus_voltage_V:g}: the bus absorbs energy only by "
+            "rising"
+        )

@@ -17,6 +17,7 @@ from pydantic import Field
 from advisor.applications.rotary import requirement_checks as checks
 from advisor.core.requirements import (
     ApplicationReq,
+    DesignReq,
     OneWayReq,
     ProjectField,
     _num,
@@ -49,6 +50,135 @@ class RotaryReq(_Strict):
             step=1,
         ),
     ]
+    emergency_stop_torque_Nm: Annotated[
+        float | None,
+        _num(
+            ge=1,
+            le=1e6,
+            desc="momentary peak torque at the output in an emergency stop or a collision, "
+            "1 … 10⁶ N·m; left out: the output torque (the stages and the holding device are "
+            "checked against it)",
+            label="Emergency-stop torque (optional)",
+            step=1,
+        ),
+    ] = None
+    emergency_stop_time_s: Annotated[
+        float,
+        _num(
+            gt=0,
+            le=10,
+            desc="how long one emergency-stop peak lasts, > 0 … 10 s",
+        ),
+    ] = 0.15
+    emergency_stops: Annotated[
+        int | None,
+        Field(
+            ge=1,
+            le=10**7,
+            description="emergency stops over the life, 1 … 10⁷; compared with the count a "
+            "strain-wave gear's momentary peak allows",
+        ),
+    ] = None
+
+
+class OutputLoadReq(_Strict):
+    """An external load on the output shaft ([output_load]): its bearing is checked by
+    ISO 281 with the SKF catalog (issue 26, item 3)."""
+
+    radial_N: Annotated[
+        float,
+        _num(
+            ge=0, le=1e7, desc="radial force on the output, 0 … 10⁷ N", label="Radial load", step=2
+        ),
+    ] = 0.0
+    axial_N: Annotated[
+        float,
+        _num(ge=0, le=1e7, desc="axial force on the output, 0 … 10⁷ N", label="Axial load", step=2),
+    ] = 0.0
+    tilting_moment_Nm: Annotated[
+        float,
+        _num(
+            ge=0,
+            le=1e6,
+            desc="tilting moment on the output, 0 … 10⁶ N·m (taken by a pair of bearings "
+            "bearing_spacing_mm apart)",
+            label="Tilting moment",
+            step=2,
+        ),
+    ] = 0.0
+    speed_rpm: Annotated[
+        float | None,
+        _num(
+            gt=0,
+            le=1e4,
+            desc="output speed the bearing's life is counted at, > 0 … 10⁴ rpm; left out: "
+            "the mean output speed of the duty cycle, or rotary.speed_rpm",
+        ),
+    ] = None
+    bearing: Annotated[
+        str,
+        ask(
+            "SKF designation of the output bearing (e.g. 6309), or auto: the lightest of the "
+            "catalog that gives design.life_h",
+            label="Output bearing",
+            step=2,
+            max_length=40,
+        ),
+    ] = "auto"
+    bearing_spacing_mm: Annotated[
+        float | None,
+        _num(
+            gt=0,
+            le=1e4,
+            desc="distance between the two output bearings that take a tilting moment, "
+            "> 0 … 10⁴ mm; left out: one bearing takes the loads (no tilting moment)",
+        ),
+    ] = None
+
+    _moment_needs_pair = after_check(checks.moment_needs_pair)
+
+
+class DriveReq(_Strict):
+    """The servo drive's DC bus ([drive]): where the energy the motor gives back goes."""
+
+    bus_voltage_V: Annotated[
+        float, _num(ge=12, le=2000, desc="nominal DC-bus voltage, 12 … 2000 V")
+    ] = 300.0
+    bus_max_voltage_V: Annotated[
+        float,
+        _num(
+            ge=12,
+            le=2500,
+            desc="largest DC-bus voltage (the braking chopper's threshold), 12 … 2500 V",
+        ),
+    ] = 400.0
+    bus_capacitance_uF: Annotated[
+        float | None,
+        _num(
+            gt=0,
+            le=1e6,
+            desc="the drive's DC-bus capacitance, > 0 … 10⁶ µF; left out: the resistor is "
+            "sized as if the bus took nothing",
+        ),
+    ] = None
+
+    _bus_rises = after_check(checks.bus_rises)
+
+
+class RotaryDesignReq(DesignReq):
+    """[design] of the rotary actuator: the shared service factor and the required life."""
+
+    life_h: Annotated[
+        float | None,
+        _num(
+            ge=1,
+            le=1e7,
+            desc="required L10 life of the reducer's rolling elements and of the output "
+            "bearing, 1 … 10⁷ h; left out: the lives are reported, not checked",
+            label="Required life L10 (optional)",
+            step=1,
+        ),
+    ] = None
 
 
 class EnvelopeReq(_Strict):
@@ -207,6 +337,12 @@ class RotaryRequirements(_Strict):
     motor: Annotated[BldcMotorReq, Field(description="the [motor] table: kind = 'bldc'")]
     gearbox: GearboxReq = GearboxReq.model_construct()
     one_way: RotaryOneWayReq = RotaryOneWayReq.model_construct()
+    design: RotaryDesignReq = RotaryDesignReq.model_construct()
+    output_load: Annotated[
+        OutputLoadReq | None,
+        Field(description="the [output_load] table: radial_N, axial_N, tilting_moment_Nm"),
+    ] = None
+    drive: DriveReq = DriveReq.model_construct()
     duty: Annotated[
         RotaryDutyReq | None,
         Field(description="the [duty] table: segments with cycles_per_hour, or duty_type"),
