@@ -13,6 +13,7 @@ register(
         headline="advisor.applications.linear.report:headline",
         summary_rows="advisor.applications.linear.report:summary_rows",
         views="advisor.applications.linear.views",
+        covers="advisor.applications.linear.coverage:COVERS",
         steps=("Load and stroke", "Screw and holding", "Motor and friction", "Duty cycle"),
     )
 )
@@ -24,6 +25,7 @@ register(
         pipeline="advisor.applications.rotary.advice:advise_rotary",
         headline="advisor.applications.rotary.report:headline",
         views="advisor.applications.rotary.views",
+        covers="advisor.applications.rotary.coverage:COVERS",
         steps=("Torque and speed", "Envelope and holding", "Motor and reducer", "Duty cycle"),
     )
 )
@@ -35,6 +37,7 @@ register(
         pipeline="advisor.applications.positioning.advice:advise_positioning",
         headline="advisor.applications.positioning.report:headline",
         views="advisor.applications.positioning.views",
+        covers="advisor.applications.positioning.coverage:COVERS",
         steps=("Move and load", "", "Candidate motors", "Duty cycle"),
     )
 )
@@ -46,6 +49,7 @@ register(
         pipeline="advisor.applications.spinning_rotor.advice:advise_spinning_rotor",
         headline="advisor.applications.spinning_rotor.report:headline",
         views="advisor.applications.spinning_rotor.views",
+        covers="advisor.applications.spinning_rotor.coverage:COVERS",
         steps=("Rotor and manoeuvre", "Aerodynamic drag", "Bearings", "Duty cycle"),
     )
 )

@@ -27,6 +27,9 @@ class Application(NamedTuple):
     summary_rows: Any = None  # "module:function" (report) -> [(name, text)] for -o
     views: Any = None  # "module" with components(report) and plots(report), for the wizard
     steps: tuple[str, ...] = DEFAULT_STEPS  # the wizard's names of its asking steps, in order
+    # "module:NAME", {requirement path: check id patterns}: which checks cover a requirement
+    # (the datasheet's required-vs-achieved table; see :func:`covering`)
+    covers: Any = None
 
 
 _APPLICATIONS: dict[str, Application] = {}
@@ -101,6 +104,14 @@ def views(kind: str) -> Any:
     """The wizard's views of an application's report (None: only the generic ones)."""
     app = application(kind)
     return load(app.views) if app.views else None
+
+
+def covers(kind: str) -> dict[str, tuple[str, ...]]:
+    """What an application says its checks cover: a requirement path (``linear.force_N``,
+    or a whole table, ``duty``) → the ids of the checks that cover it, ``fnmatch``
+    patterns (``duty_*``). Empty where the application says nothing."""
+    app = application(kind)
+    return dict(load(app.covers)) if app.covers else {}
 
 
 def expected_text(values: tuple[str, ...]) -> str:

@@ -15,12 +15,17 @@ class MissingExtra(RuntimeError):
 
 
 def _sheet(report: Any) -> tuple[Any, dict]:
-    from advisor.core.registry import headline, summary_rows
+    from advisor.core.registry import covers, headline, requirements_model, summary_rows
     from advisor.core.report import plain
     from advisor.datasheet.content import sheet
+    from advisor.datasheet.labels import requirement_defaults, requirement_labels
 
     doc = plain(report)
-    return sheet(doc, headline(report), summary_rows(report)), doc
+    kind = report.report.application
+    model = requirements_model(kind)
+    labels, defaults = requirement_labels(model), requirement_defaults(model)
+    s = sheet(doc, headline(report), summary_rows(report), labels, covers(kind), defaults)
+    return s, doc
 
 
 def render(report: Any, fmt: str) -> str:

@@ -10,38 +10,26 @@ import math
 from dataclasses import dataclass, field
 from typing import Any
 
-from advisor.core.questions import UNIT_SUFFIXES
 from advisor.core.report import _is_curve, curve_part
+from advisor.datasheet.labels import UNITS as UNITS  # re-exported
+from advisor.datasheet.labels import split_key as split_key  # re-exported
 from advisor.datasheet.references import readable, references
+from advisor.datasheet.review import TIGHT_MARGIN as TIGHT_MARGIN  # re-exported
+from advisor.datasheet.review import (
+    Bar,
+    Cycle,
+    Required,
+    load_cycle,
+    parts,
+    project,
+    required_vs_achieved,
+    status_of,
+    utilisation,
+)
 
-#: A check whose margin is below this passes, but with little to spare: marked "tight".
-TIGHT_MARGIN = 1.1
-
-#: Units named by the suffixes of report keys: the requirement suffixes and the report's own.
-UNITS = {
-    **UNIT_SUFFIXES,
-    "kW": "kW",
-    "pct": "%",
-    "cm3": "cm³",
-    "MPa": "MPa",
-    "m_s": "m/s",
-    "W_kg": "W/kg",
-    "cm3_per_Nm": "cm³/(N·m)",
-}
-
-
-def split_key(key: str) -> tuple[str, str]:
-    """``outer_diameter_mm`` → ("outer diameter", "mm"); the longest unit suffix wins.
-
-    >>> split_key("outer_diameter_mm"), split_key("speed_rad_s"), split_key("rows")
-    (('outer diameter', 'mm'), ('speed', 'rad/s'), ('rows', ''))
-    """
-    parts = key.split("_")
-    for k in (3, 2, 1):
-        suffix = "_".join(parts[-k:])
-        if len(parts) > k and suffix in UNITS:
-            return " ".join(parts[:-k]), UNITS[suffix]
-    return key.replace("_", " "), ""
+#: (label, unit) of a requirement field by its path (see
+#: :func:`advisor.datasheet.labels.requirement_labels`).
+Labels = dict[tuple[str, ...], tuple[str, str]]
 
 
 def number(x: Any) -> str:
@@ -121,6 +109,12 @@ class Sheet:
     checks: list[Check]
     warnings: list[str]
     references: list[str]
+    project: list[tuple[str, str]] = field(default_factory=list)
+    required: list[Required] = field(default_factory=list)
+    at_default: int = 0  # requirement fields at their defaults, not listed in ``required``
+    cycle: Cycle | None = None
+    bars: list[Bar] = field(default_factory=list)
+    parts: list[list[str]] = field(default_factory=list)
 
 
 def _scalar(v: Any) -> bool:
@@ -166,20 +160,22 @@ def table(title: str, items: list[dict]) -> Table:
     )
 
 
-def block(title: str, data: dict, unit: str = "") -> Block:
+def block(
+    title: str, data: dict, unit: str = "", labels: Labels | None = None, path: tuple = ()
+) -> Block:
     """A table of the report as a block: scalars as rows, sub-tables as parts, lists of
     tables as tables; curves left out (they are plotted). ``unit`` is the unit a parent key
     named for children without their own (``losses_W`` → ``ohmic``)."""
     b = Block(title)
     plotted = curve_part(data)
     for k, v in data.items():
-        label, own = split_key(k)
+        label, own = (labels or {}).get((*path, k)) or split_key(k)
         if _is_curve(v) or k in plotted:
             continue
         if _scalar(v):
             b.rows.append((label, number(v), own or unit))
         elif isinstance(v, dict):
-            b.parts.append(block(f"{title} — {label}", v, own or unit))
+            b.parts.append(block(f"{title} — {label}", v, own or unit, labels, (*path, k)))
         elif isinstance(v, list) and v and all(isinstance(x, dict) for x in v):
             b.tables.append(table(f"{title} — {label}", v))
     return b
@@ -189,10 +185,7 @@ def _words(key: str) -> str:
     return key.replace("_", " ")
 
 
-def _status(c: dict) -> str:
-    if not c.get("passed", True) or c["margin"] < 1:
-        return "fails"
-    return "tight" if c["margin"] < TIGHT_MARGIN else "passes"
+_status = status_of
 
 
 def _inputs(inputs: dict) -> str:
@@ -201,8 +194,19 @@ def _inputs(inputs: dict) -> str:
     )
 
 
-def sheet(doc: dict[str, Any], headline: str, summary: list[tuple[str, str]]) -> Sheet:
-    """The datasheet of a report's plain data (:func:`advisor.core.report.plain`)."""
+def sheet(
+    doc: dict[str, Any],
+    headline: str,
+    summary: list[tuple[str, str]],
+    labels: Labels | None = None,
+    covers: dict[str, tuple[str, ...]] | None = None,
+    defaults: dict[tuple[str, ...], Any] | None = None,
+) -> Sheet:
+    """The datasheet of a report's plain data (:func:`advisor.core.report.plain`);
+    ``labels`` name the requirement fields (from the application's model) and ``covers``
+    says which checks cover them (from its registry entry)."""
+    labels = labels or {}
+    required = required_vs_achieved(doc, labels, covers or {}, defaults)
     head = doc["report"]
     checks = [
         Check(
@@ -244,13 +248,21 @@ def sheet(doc: dict[str, Any], headline: str, summary: list[tuple[str, str]]) ->
         headline=headline,
         summary=rows,
         requirements=[
-            block(_words(k), v) for k, v in doc["requirements"].items() if isinstance(v, dict)
+            block(_words(k), v, "", labels, (k,))
+            for k, v in doc["requirements"].items()
+            if isinstance(v, dict) and k != "project"
         ],
         components=[block(_words(k), v) for k, v in doc["design"].items() if isinstance(v, dict)],
         decisions=decisions,
         checks=checks,
         warnings=list(doc.get("warnings", [])),
         references=references(doc, sources),
+        project=project(doc, labels),
+        required=required[0],
+        at_default=required[1],
+        cycle=load_cycle(doc),
+        bars=utilisation(doc),
+        parts=parts(doc),
     )
 
 

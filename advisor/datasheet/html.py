@@ -3,12 +3,17 @@ script, no link to anything outside it (it can be mailed or attached to a review
 
 from html import escape
 
-from advisor.datasheet.content import Block, Sheet, Table
+from advisor.datasheet.content import Bar, Block, Required, Sheet, Table
 from advisor.datasheet.plots import Plot, svg
 
 #: The sections, in order: their ids are what a reader (and the test) finds.
 SECTIONS = (
+    ("header", "Document"),
     ("summary", "Summary"),
+    ("required", "Required and achieved"),
+    ("utilisation", "Utilisation"),
+    ("load-cycle", "Load cycle"),
+    ("parts", "Parts"),
     ("warnings", "Warnings"),
     ("components", "Components"),
     ("checks", "Checks"),
@@ -34,10 +39,27 @@ tr.fails td { background: #fdd; } tr.tight td { background: #fff3cd; }
 .decision .what { font-weight: bold; } .src { color: #555; font-size: 0.85rem; }
 figure { margin: 1rem 0; } figure svg { max-width: 100%; height: auto; }
 h3 { margin-bottom: 0.2rem; } h4 { margin: 0.6rem 0 0.1rem; }
-@media print { section { break-inside: avoid-page; } }
+td, th { overflow-wrap: break-word; }
+.scroll { overflow-x: auto; max-width: 100%; }
+table.many { font-size: 0.75rem; } table.many th, table.many td { padding: 0.15rem 0.3rem; }
+td.mark, td[class^="mark-"] { white-space: nowrap; }
+table.wide { width: 100%; }
+#header table { width: 100%; border: 1px solid #444; }
+#header th { width: 22%; background: #f2f2f2; }
+#header td { height: 1.3rem; }
+.bar { position: relative; height: 0.9rem; width: 12rem; border: 1px solid #444;
+  background: #fff; }
+.bar .fill { height: 100%; background: #555; }
+.bar.tight .fill { background: repeating-linear-gradient(45deg, #555 0 3px, #fff 3px 5px); }
+.bar.fails .fill { background: #000; }
+.note { color: #555; font-size: 0.85rem; }
+section#summary { break-after: auto; }
+@page { size: A4; margin: 15mm; }
+@media print { body { margin: 0; max-width: none; } section { break-inside: auto; }
+  #required { break-after: page; } tr, figure { break-inside: avoid; } }
 """
 
-MARK = {"fails": "✗ fails", "tight": "⚠ tight", "passes": "✓"}
+MARK = {"fails": "✗ fails", "tight": "⚠ tight", "passes": "✓", "none": "no check"}
 
 
 def _e(text: object) -> str:
@@ -53,7 +75,11 @@ def _num_cell(text: str) -> str:
 def _table(t: Table, level: int) -> str:
     head = "".join(f"<th>{_e(c)}</th>" for c in t.columns)
     rows = "".join("<tr>" + "".join(_num_cell(c) for c in r) + "</tr>" for r in t.rows)
-    return f"<h{level}>{_e(t.title)}</h{level}><table><tr>{head}</tr>{rows}</table>"
+    cls = ' class="many"' if len(t.columns) > 6 else ""  # fits an A4 page in small print
+    return (
+        f'<h{level}>{_e(t.title)}</h{level}><div class="scroll"><table{cls}><tr>{head}</tr>'
+        f"{rows}</table></div>"
+    )
 
 
 def _block(b: Block, level: int) -> str:
@@ -75,8 +101,84 @@ def _figure(p: Plot, index: int) -> str:
     )
 
 
+def _header(s: Sheet) -> str:
+    cells = list(s.project)
+    rows = "".join(
+        f"<tr><th>{_e(a)}</th><td>{_e(b)}</td><th>{_e(c)}</th><td>{_e(d)}</td></tr>"
+        for (a, b), (c, d) in zip(cells[::2], [*cells[1::2], ("", "")], strict=False)
+    )
+    return f"<table>{rows}</table>"
+
+
+def _required(rows: list[Required], at_default: int) -> str:
+    out = [
+        '<table class="wide"><tr><th>requirement</th><th>required</th><th>covered by</th>'
+        "<th>achieved (value against limit)</th><th>margin</th><th></th></tr>"
+    ]
+    for r in rows:
+        more = f" (and {r.more} more)" if r.more else ""
+        mark = MARK.get(r.status, "—")
+        out.append(
+            f'<tr class="{r.status}" data-path="{_e(r.path)}"><th>{_e(r.label)}</th>'
+            f"<td>{_e(f'{r.value} {r.unit}'.strip())}</td><td>{_e(r.check + more)}</td>"
+            f"<td>{_e(r.achieved)}</td>{_num_cell(r.margin)}"
+            f'<td class="mark-{r.status}">{_e(mark)}</td></tr>'
+        )
+    out.append("</table>")
+    if at_default:
+        out.append(
+            f'<p class="note">{at_default} further requirements are at their defaults; '
+            "the Requirements section lists every value.</p>"
+        )
+    return "".join(out)
+
+
+def _bars(bars: list[Bar]) -> str:
+    rows = []
+    for b in bars:
+        width = min(b.utilisation, 1.0) * 100
+        rows.append(
+            f'<tr class="{b.status}"><td>{_e(b.name)}</td>'
+            f'<td><div class="bar {b.status}" role="meter" aria-valuenow="{b.utilisation:.3f}">'
+            f'<div class="fill" style="width: {width:.1f}%"></div></div></td>'
+            f"{_num_cell(f'{b.utilisation * 100:.0f} %')}"
+            f'<td class="mark-{b.status}">{_e(MARK[b.status])}</td></tr>'
+        )
+    return (
+        '<p class="note">Demand over capacity of each check (1 / margin): a full bar is a check '
+        "at its limit; hatched, tight (margin below 1.1); black, failing.</p>"
+        f'<table class="wide">{"".join(rows)}</table>'
+    )
+
+
+def _cycle(s: Sheet) -> str:
+    if s.cycle is None:
+        return "<p>This design has no duty cycle: its requirement has no [duty] table.</p>"
+    head = "".join(f"<th>{_e(c)}</th>" for c in s.cycle.columns)
+    rows = "".join("<tr>" + "".join(_num_cell(c) for c in r) + "</tr>" for r in s.cycle.rows)
+    return (
+        f'<table class="wide"><tr>{head}</tr>{rows}</table><p class="note">{_e(s.cycle.note)}</p>'
+    )
+
+
+def _parts(rows: list[list[str]]) -> str:
+    if not rows:
+        return "<p>No parts: this design names no component.</p>"
+    head = "".join(
+        f"<th>{c}</th>"
+        for c in ("component", "designation", "rating", "dimensions", "mass", "source")
+    )
+    body = "".join("<tr>" + "".join(f"<td>{_e(c)}</td>" for c in r) + "</tr>" for r in rows)
+    return f'<table class="wide"><tr>{head}</tr>{body}</table>'
+
+
 def render(s: Sheet, plots: list[Plot]) -> str:
     body: dict[str, str] = {}
+    body["header"] = _header(s)
+    body["required"] = _required(s.required, s.at_default)
+    body["utilisation"] = _bars(s.bars) if s.bars else "<p>No check applies.</p>"
+    body["load-cycle"] = _cycle(s)
+    body["parts"] = _parts(s.parts)
     summary = "".join(f"<tr><th>{_e(k)}</th><td>{_e(v)}</td></tr>" for k, v in s.summary)
     body["summary"] = f'<p class="headline">{_e(s.headline)}</p><table>{summary}</table>'
     body["warnings"] = "".join(f'<p class="warning">{_e(w)}</p>' for w in s.warnings) or (

@@ -6,6 +6,8 @@ creator, ids salted per plot (``svg.hashsalt``) instead of random, text kept as 
 """
 
 import io
+import itertools
+import math
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -28,6 +30,12 @@ class Plot:
     vlines: list[tuple[float, str]] = field(default_factory=list)
     hlines: list[tuple[float, str]] = field(default_factory=list)
     logx: bool = False
+
+
+#: The grey levels and dash patterns of successive lines: a plot printed in grey still tells
+#: its lines apart (with the legend's labels).
+MARKERS = ("o", "s", "^", "D", "v", "P", "X", "*")
+DASHES = ("-", "--", "-.", ":", (0, (5, 1, 1, 1, 1, 1)), (0, (1, 1)))
 
 
 def _get(doc: Any, *path: str) -> Any:
@@ -74,16 +82,28 @@ def motor_losses(doc: dict) -> Plot | None:
         return None
     cands = sorted(cands, key=lambda c: c["speed_rpm"])
     speeds = [c["speed_rpm"] for c in cands]
-    style = "line" if len(cands) > 1 else "points"
+    # the candidates are points of a curve the report does not hold: a straight line
+    # between two of them would draw a curve nobody computed
     lines = [
-        Line(part, speeds, [c["losses_W"][part] for c in cands], style)
+        Line(part, speeds, [c["losses_W"][part] for c in cands], "points")
         for part in ("ohmic", "iron", "magnets", "total")
         if all(part in c["losses_W"] for c in cands)
     ]
-    chosen = _get(doc, "design", "motor", "speed_rpm")
+    motor = _get(doc, "design", "motor") or {}
+    chosen, best = motor.get("speed_rpm"), motor.get("optimum_speed_rpm")
     vlines = [(chosen, f"chosen {chosen:g} rpm")] if chosen is not None else []
+    if isinstance(best, int | float):
+        vlines.append((best, f"loss optimum {best:.4g} rpm"))
+    limit = motor.get("loss_limit_W")
+    hlines = [(limit, f"frame's limit {limit:.4g} W")] if isinstance(limit, int | float) else []
     return Plot(
-        "motor-losses", "Motor losses against speed", "motor speed, rpm", "loss, W", lines, vlines
+        "motor-losses",
+        "Motor losses at the candidate speeds",
+        "motor speed, rpm",
+        "loss, W",
+        lines,
+        vlines,
+        hlines,
     )
 
 
@@ -285,7 +305,120 @@ def duty_thermal(doc: dict) -> Plot | None:
     )
 
 
+def duty_speed(doc: dict) -> Plot | None:
+    """Motor speed against time over the duty cycle: each phase from its start speed to its
+    end speed (a ramp is a straight line: constant acceleration within a phase)."""
+    from advisor.datasheet.review import phases_of
+
+    phases = phases_of(doc)
+    if not phases or not all("speed_start_rpm" in p and "speed_end_rpm" in p for p in phases):
+        return None
+    t, xs, ys = 0.0, [], []
+    for p in phases:
+        xs += [t, t + p.get("time_s", p.get("duration_s", 0.0))]
+        ys += [p["speed_start_rpm"], p["speed_end_rpm"]]
+        t = xs[-1]
+    return Plot(
+        "duty-speed",
+        "Duty cycle: motor speed against time",
+        "time, s",
+        "speed, rpm",
+        [Line("motor speed", xs, ys)],
+    )
+
+
+def _motor_limits(doc: dict) -> tuple[list[Line], list[Line]] | None:
+    """The continuous and peak torque–speed limits of the design's motor, from whichever
+    data the report holds: a catalog motor's M(n) with its rated point, a frame's rated
+    torque at its speed with the cycle's peak limit, or the listed motor the design chose."""
+    motor = _get(doc, "design", "motor") or {}
+    model = motor.get("model")
+    curve = next(
+        (
+            c["curve"]
+            for c in motor.get("candidates") or []
+            if c.get("model") == model and isinstance(_get(c, "curve", "speed_rpm"), list)
+        ),
+        None,
+    )
+    peak_limit = _get(doc, "design", "duty", "peak_torque_limit_Nm")
+    if curve is not None and "rated_torque_Nm" in motor:
+        n_r, m_r = motor.get("rated_speed_rpm", max(curve["speed_rpm"])), motor["rated_torque_Nm"]
+        return (
+            [Line(f"continuous: rated {m_r:.4g} N·m", [0.0, n_r, n_r], [m_r, m_r, 0.0])],
+            [Line(f"peak: M(n) of {model}", curve["speed_rpm"], curve["torque_Nm"])],
+        )
+    if "torque_Nm" in motor and "speed_rpm" in motor and "candidates" in motor:
+        n_r, m_r = motor["speed_rpm"], motor["torque_Nm"]
+        cont = [
+            Line(f"continuous: {m_r:.4g} N·m to {n_r:.4g} rpm", [0.0, n_r, n_r], [m_r, m_r, 0.0])
+        ]
+        peak = []
+        if isinstance(peak_limit, int | float):
+            peak = [
+                Line(f"peak: {peak_limit:.4g} N·m", [0.0, n_r, n_r], [peak_limit, peak_limit, 0.0])
+            ]
+        return cont, peak
+    from advisor.datasheet.review import _listed
+
+    chosen = _get(doc, "design", "motion", "motor")
+    row = _listed(doc.get("requirements", {}), chosen) if isinstance(chosen, str) else None
+    if row and "speed_rad_s" in row:
+        n0 = row["speed_rad_s"] * 30.0 / math.pi
+        cont = []
+        if "rated_torque_Nm" in row:
+            m_r = row["rated_torque_Nm"]
+            cont = [Line(f"continuous: rated {m_r:.4g} N·m", [0.0, n0, n0], [m_r, m_r, 0.0])]
+        peak = []
+        if "accel_torque_Nm" in row:
+            m_a = row["accel_torque_Nm"]
+            peak = [Line(f"peak: M_λ {m_a:.4g} N·m", [0.0, n0, n0], [m_a, m_a, 0.0])]
+        return (cont, peak) if cont or peak else None
+    return None
+
+
+def envelope(doc: dict) -> Plot | None:
+    """The motor's continuous and peak torque–speed envelope with the operating points the
+    report states: each phase of the cycle (at its speed, the magnitude of its torque), the
+    RMS torque at the mean speed and the peak torque; without a cycle, the working point."""
+    from advisor.datasheet.review import phases_of, speed_rpm
+
+    limits = _motor_limits(doc)
+    if limits is None:
+        return None
+    cont, peak = limits
+    lines = [*cont, *peak]
+    phases = phases_of(doc) or []
+    pts = [(speed_rpm(p), abs(p["torque_Nm"])) for p in phases if speed_rpm(p) is not None]
+    if pts:
+        lines.append(
+            Line("phases of the cycle", [x for x, _ in pts], [y for _, y in pts], "points")
+        )
+    d = _get(doc, "design", "duty") or {}
+    rms, n_mean = d.get("rms_torque_Nm"), d.get("mean_speed_rpm")
+    if isinstance(rms, int | float) and isinstance(n_mean, int | float):
+        lines.append(Line(f"RMS {rms:.4g} N·m at the mean speed", [n_mean], [rms], "marker"))
+    m_pk = d.get("peak_torque_Nm")
+    if isinstance(m_pk, int | float) and pts:
+        n_pk = max(pts, key=lambda p: p[1])[0]
+        lines.append(Line(f"peak {m_pk:.4g} N·m", [n_pk], [m_pk], "marker"))
+    if not phases:
+        motor = _get(doc, "design", "motor") or {}
+        n = motor.get("working_speed_rpm", motor.get("speed_rpm"))
+        m = _get(doc, "design", "screw", "torque_Nm") or motor.get("torque_Nm")
+        if isinstance(n, int | float) and isinstance(m, int | float):
+            lines.append(Line(f"working point {n:.4g} rpm, {m:.4g} N·m", [n], [m], "marker"))
+    return Plot(
+        "motor-envelope",
+        "Motor torque–speed envelope and operating points",
+        "motor speed, rpm",
+        "torque, N·m",
+        lines,
+    )
+
+
 PLOTS = (
+    envelope,
     motor_characteristics,
     motor_losses,
     reducer_space,
@@ -294,6 +427,7 @@ PLOTS = (
     run_up,
     slew,
     duty,
+    duty_speed,
     duty_thermal,
 )
 
@@ -321,15 +455,25 @@ def svg(plot: Plot, salt: str) -> str:
     with matplotlib.rc_context(style):
         fig = Figure(figsize=(6.4, 3.8))
         ax = fig.add_subplot()
+        # in grey, lines are told apart by their dash and points by their shape
+        dashes, shapes = itertools.cycle(DASHES), itertools.cycle(MARKERS)
         for line in plot.lines:
             if line.style == "marker":
-                ax.plot(line.x, line.y, "o", markersize=8, label=line.label, zorder=5)
-            elif line.style == "points":
-                ax.plot(line.x, line.y, ".", markersize=7, label=line.label)  # no curve between
+                ax.plot(
+                    line.x,
+                    line.y,
+                    next(shapes),
+                    markersize=8,
+                    label=line.label,
+                    zorder=5,
+                    markeredgecolor="black",
+                )
+            elif line.style == "points":  # no curve between
+                ax.plot(line.x, line.y, next(shapes), markersize=6, label=line.label, ls="none")
             elif line.style == "steps":
-                ax.step(line.x, line.y, where="post", label=line.label)
+                ax.step(line.x, line.y, where="post", label=line.label, ls=next(dashes))
             else:
-                ax.plot(line.x, line.y, label=line.label)
+                ax.plot(line.x, line.y, label=line.label, ls=next(dashes))
         for x, label in plot.vlines:
             ax.axvline(x, linestyle="--", color="grey", linewidth=1, label=label)
         for y, label in plot.hlines:

@@ -1,0 +1,148 @@
+"""Human labels and units for the keys a datasheet shows.
+
+A requirement field is labelled from its pydantic model, where it is declared once
+(``x-label`` or its description, and ``x-unit`` or the unit its key's suffix names: see
+:mod:`advisor.core.questions`). A report key is labelled from :data:`REPORT_LABELS` where its
+name is a symbol of a standard or a seed (``d2_mm``, ``p15_50_W_kg``, ``C0_kN``), otherwise
+from its words and the unit its suffix names (``outer_diameter_mm`` → "outer diameter", mm).
+"""
+
+import re
+from typing import Any
+
+from advisor.core.questions import UNIT_SUFFIXES
+
+#: Units named by the suffixes of report keys: the requirement suffixes and the report's own.
+UNITS = {
+    **UNIT_SUFFIXES,
+    "kW": "kW",
+    "kN": "kN",
+    "J": "J",
+    "K": "K",
+    "K_W": "K/W",
+    "pct": "%",
+    "cm3": "cm³",
+    "MPa": "MPa",
+    "m_s": "m/s",
+    "W_kg": "W/kg",
+    "cm3_per_Nm": "cm³/(N·m)",
+    "per_hour": "1/h",
+}
+
+#: Report keys whose name is a symbol: what it means and its unit (GOST 24737-81 for the
+#: trapezoidal thread, ISO 281 for the bearing, GOST 21427.2-83 for the electrical steel).
+REPORT_LABELS: dict[str, tuple[str, str]] = {
+    "p15_50_W_kg": ("specific loss at 1.5 T, 50 Hz", "W/kg"),
+    "p10_50_W_kg": ("specific loss at 1.0 T, 50 Hz", "W/kg"),
+    "d2_mm": ("pitch diameter of the screw d2", "mm"),
+    "d3_mm": ("minor diameter of the screw d3", "mm"),
+    "D1_mm": ("minor diameter of the nut D1", "mm"),
+    "D2_mm": ("pitch diameter of the nut D2", "mm"),
+    "D4_mm": ("major diameter of the nut D4", "mm"),
+    "ac_mm": ("crest clearance ac", "mm"),
+    "H1_mm": ("thread overlap H1", "mm"),
+    "h3_mm": ("thread depth of the screw h3", "mm"),
+    "d_mm": ("bore d", "mm"),
+    "D_mm": ("outside diameter D", "mm"),
+    "B_mm": ("width B", "mm"),
+    "C_kN": ("basic dynamic load rating C", "kN"),
+    "C0_kN": ("basic static load rating C0", "kN"),
+    "factor_X": ("radial load factor X", ""),
+    "factor_Y": ("axial load factor Y", ""),
+    "cos_phi": ("power factor cos φ", ""),
+    "efficiency_pct": ("efficiency", "%"),
+    "kloss_epsilon": ("Kloss formula ε", ""),
+    "k_factor": ("factor k (seed 003)", ""),
+    "coefficient_A": ("coefficient A (seed 003)", ""),
+    "ratio_i0": ("ratio i0 (seed 003)", ""),
+    "skf_friction_Nm": ("friction torque, SKF model", "N·m"),
+    "resistance_K_W": ("thermal resistance", "K/W"),
+    "cycles_per_hour": ("cycles per hour", "1/h"),
+    "starts_per_hour": ("starts per hour", "1/h"),
+    "allowed_starts_per_hour": ("starts per hour allowed", "1/h"),
+    "no_load_starts_per_hour": ("no-load starts per hour allowed", "1/h"),
+}
+
+
+def split_key(key: str) -> tuple[str, str]:
+    """A report key as a label and a unit: a symbol from :data:`REPORT_LABELS`, else its
+    words with the longest unit suffix as the unit.
+
+    >>> split_key("outer_diameter_mm"), split_key("p15_50_W_kg"), split_key("rows")
+    (('outer diameter', 'mm'), ('specific loss at 1.5 T, 50 Hz', 'W/kg'), ('rows', ''))
+    """
+    if key in REPORT_LABELS:
+        return REPORT_LABELS[key]
+    parts = key.split("_")
+    for k in (3, 2, 1):
+        suffix = "_".join(parts[-k:])
+        if len(parts) > k and suffix in UNITS:
+            return " ".join(parts[:-k]), UNITS[suffix]
+    return key.replace("_", " "), ""
+
+
+#: A description's tail that is its range or its unit: ", 1 … 50 pole pairs", ", N".
+_UNIT_TAIL = re.compile(r",\s*(?:[^,;]*[\d…][^,;]*|[^,;\s]{1,6})$")
+
+
+def short_description(desc: str) -> str:
+    """A field's description as a label: the words before its range and unit.
+
+    >>> short_description("rated axial force, N; 1 N … 5 MN")
+    'rated axial force'
+    >>> short_description("electrical reduction p, 1 … 50 pole pairs")
+    'electrical reduction p'
+    """
+    head = desc.split(";", 1)[0].strip()
+    return _UNIT_TAIL.sub("", head)
+
+
+def requirement_labels(model: Any) -> dict[tuple[str, ...], tuple[str, str]]:
+    """(label, unit) of every leaf field of a requirement model by its path; a list of
+    tables is keyed by its own path and its items' fields by ``(…, "name[]", field)``."""
+    from advisor.core.questions import _extra, _is_model, _strip_optional, unit_of
+
+    out: dict[tuple[str, ...], tuple[str, str]] = {}
+
+    def walk(m: Any, prefix: tuple[str, ...]) -> None:
+        for name, info in m.model_fields.items():
+            ann = _strip_optional(info.annotation)
+            path = (*prefix, name)
+            extra = _extra(info)
+            label = extra.get("x-label") or short_description(info.description or "") or name
+            unit = extra.get("x-unit", unit_of(name))
+            args = getattr(ann, "__args__", ())
+            if _is_model(ann):
+                walk(ann, path)
+            elif args and _is_model(args[0]):  # a list of tables
+                out[path] = (extra.get("x-row-label") or label, "")
+                walk(args[0], (*prefix, f"{name}[]"))
+            else:
+                out[path] = (label, unit)
+
+    walk(model, ())
+    return out
+
+
+def requirement_defaults(model: Any) -> dict[tuple[str, ...], Any]:
+    """The default of every leaf field of a requirement model that has one, by its path: a
+    value equal to it is one the file could have left out (a field with one allowed value,
+    the motor's ``kind`` of an application, counts as at its default)."""
+    from typing import Literal, get_args, get_origin
+
+    from advisor.core.questions import _is_model, _strip_optional
+
+    out: dict[tuple[str, ...], Any] = {}
+
+    def walk(m: Any, prefix: tuple[str, ...]) -> None:
+        for name, info in m.model_fields.items():
+            ann = _strip_optional(info.annotation)
+            if _is_model(ann):
+                walk(ann, (*prefix, name))
+            elif get_origin(ann) is Literal and len(get_args(ann)) == 1:
+                out[(*prefix, name)] = get_args(ann)[0]
+            elif not info.is_required():
+                out[(*prefix, name)] = info.get_default(call_default_factory=True)
+
+    walk(model, ())
+    return out
