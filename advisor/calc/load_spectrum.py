@@ -63,7 +63,7 @@ def cube_mean_torque(phases: list[Load]) -> float:
     held at standstill is loaded statically, not in fatigue).
 
     Hand check ([1]): (10·0.2·150³ + 20·3·82³ + 10·0.3·130³)/(10·0.2 + 20·3 + 10·0.3)
-    = (6 750 000 + 33 081 120 + 6 591 000)/65 = 714 140.3, ∛ = 89.39 N·m.
+    = (6 750 000 + 33 082 080 + 6 591 000)/65 = 714 201.2, ∛ = 89.39 N·m.
 
     >>> round(cube_mean_torque([Load(150, 10, 0.2), Load(82, 20, 3), Load(130, 10, 0.3),
     ...                         Load(0, 0, 0.2)]), 2)
