@@ -270,28 +270,44 @@ def quiet_dask_logging() -> None:
 
 def make_client(scheduler: str | None, workers: int | None) -> tuple[Any, Any]:
     """A Dask client on the given scheduler, or on a new local cluster (returned too)."""
-    import logging
     import warnings
 
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")  # import-time deprecation notes of Dask's own
-        from dask.distributed import Client, LocalCluster
+        from dask.distributed import Client
     quiet_dask_logging()
     if scheduler:
         return Client(scheduler, timeout="20s"), None
-    with sigint_blocked_in_new_threads():
-        cluster = LocalCluster(
-            n_workers=workers or os.cpu_count() or 1,
-            threads_per_worker=1,
-            processes=True,
-            dashboard_address=None,  # no dashboard
-            # nor the scheduler's HTTP routes on the default port 8787 (another cluster's:
-            # "Port 8787 is already in use"): a free port on this machine only
-            scheduler_kwargs={"dashboard_address": "127.0.0.1:0"},
-            silence_logs=logging.CRITICAL,
-        )
-        client = Client(cluster)
+    cluster = client = None
+    try:
+        with sigint_blocked_in_new_threads():
+            cluster = local_cluster(workers)
+            client = Client(cluster)
+    except BaseException:  # a ctrl+c held back while the cluster started lands here
+        if client is not None:
+            client.close()
+        if cluster is not None:
+            cluster.close()
+        raise
     return client, cluster
+
+
+def local_cluster(workers: int | None) -> Any:
+    """A cluster of worker processes on this machine, one thread each, saying nothing."""
+    import logging
+
+    from dask.distributed import LocalCluster
+
+    return LocalCluster(
+        n_workers=workers or os.cpu_count() or 1,
+        threads_per_worker=1,
+        processes=True,
+        dashboard_address=None,  # no dashboard
+        # nor the scheduler's HTTP routes on the default port 8787 (another cluster's:
+        # "Port 8787 is already in use"): a free port on this machine only
+        scheduler_kwargs={"dashboard_address": "127.0.0.1:0"},
+        silence_logs=logging.CRITICAL,
+    )
 
 
 def main(argv: list[str]) -> int:
