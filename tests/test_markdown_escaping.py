@@ -8,6 +8,7 @@ import pytest
 
 from advisor.cli import main
 from advisor.datasheet.content import Block, Check, Decision, Sheet, Table
+from advisor.datasheet.review import Bar, Cycle, Required
 from advisor.datasheet.markdown import lead, render, text
 
 TITLE = "Drive\n# heading [link](javascript:alert(1)) ![img](http://x/y.png) <iframe src=x> | a & b"
@@ -45,7 +46,12 @@ accel_torque_Nm = 45
 #: The sections the datasheet writes (level 2) and what a block heading may be (level 3+):
 #: every line that begins with ``#`` is one of the datasheet's own headings.
 SECTIONS = {
+    "## Document",
     "## Summary",
+    "## Required and achieved",
+    "## Utilisation",
+    "## Load cycle",
+    "## Parts",
     "## Warnings",
     "## Components",
     "## Checks",
@@ -123,6 +129,15 @@ def _sheet(hostile: str) -> Sheet:
         checks=[Check(hostile, hostile, hostile, hostile, hostile, "1.000", "passes", hostile)],
         warnings=[hostile],
         references=[hostile],
+        project=[(hostile, hostile)],
+        required=[
+            Required(
+                hostile, hostile, hostile, hostile, hostile, hostile, hostile, "1.000", "passes", 1
+            )
+        ],
+        cycle=Cycle([hostile], [[hostile]], hostile),
+        bars=[Bar(hostile, hostile, 0.5, "tight")],
+        parts=[[hostile] * 6],
     )
 
 
@@ -144,7 +159,7 @@ def test_every_field_of_the_sheet_is_escaped(hostile):
     lines = md.splitlines()
     ours = {"# ", "## ", "### ", "#### ", "| ", "|---", "- ", "**", "*Source:*", "*Inputs:*"}
     for line in lines:
-        if not line or line.startswith(("Drive Advisor ", "Plots: see")):
+        if not line or line.startswith(("Drive Advisor ", "Plots: see", "Demand over capacity")):
             continue
         # every line opens with the datasheet's own mark, or is the rationale paragraph
         assert line.startswith(tuple(ours)) or line == lead(hostile), line

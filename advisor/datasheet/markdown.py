@@ -23,7 +23,10 @@ import re
 
 from advisor.datasheet.content import Block, Sheet, Table
 
-MARK = {"fails": "✗ FAILS", "tight": "⚠ tight", "passes": "✓"}
+MARK = {"fails": "✗ FAILS", "tight": "⚠ tight", "passes": "✓", "none": "no check"}
+
+#: Characters of a utilisation bar: ten cells, each a tenth of the capacity.
+BAR_CELLS = 10
 
 #: Headings stop at level 6 (CommonMark §4.2: ``#######`` is a paragraph), as in the HTML.
 DEEPEST = 6
@@ -106,11 +109,70 @@ def _items(lines: list[str]) -> list[str]:
     return [f"- {lead(w)}" for w in lines] or ["None."]
 
 
+def bar(utilisation: float) -> str:
+    """A utilisation as ten cells, full ones for each tenth of the capacity used.
+
+    >>> bar(0.54), bar(1.3)
+    ('█████░░░░░', '██████████')
+    """
+    full = round(min(max(utilisation, 0.0), 1.0) * BAR_CELLS)
+    return "█" * full + "░" * (BAR_CELLS - full)
+
+
+def _review(s: Sheet) -> list[str]:
+    """The first page: what a review reads and signs."""
+    out = ["## Required and achieved", ""]
+    out += _table(
+        ["requirement", "required", "covered by", "achieved (value against limit)", "margin", ""],
+        [
+            [
+                r.label,
+                f"{r.value} {r.unit}".strip(),
+                r.check + (f" (and {r.more} more)" if r.more else ""),
+                r.achieved,
+                r.margin,
+                MARK[r.status],
+            ]
+            for r in s.required
+        ],
+    )
+    if s.at_default:
+        out += [
+            f"{s.at_default} further requirements are at their defaults; the Requirements "
+            "section lists every value.",
+            "",
+        ]
+    out += ["## Utilisation", "", "Demand over capacity of each check (1 / margin).", ""]
+    out += _table(
+        ["check", "utilisation", "", ""],
+        [
+            [b.name, bar(b.utilisation), f"{b.utilisation * 100:.0f} %", MARK[b.status]]
+            for b in s.bars
+        ],
+    )
+    out += ["## Load cycle", ""]
+    if s.cycle is None:
+        out += [r"This design has no duty cycle: its requirement has no \[duty\] table.", ""]
+    else:
+        out += _table(s.cycle.columns, s.cycle.rows)
+        out += [lead(s.cycle.note), ""]
+    out += ["## Parts", ""]
+    out += (
+        _table(["component", "designation", "rating", "dimensions", "mass", "source"], s.parts)
+        if s.parts
+        else ["No parts: this design names no component.", ""]
+    )
+    return out
+
+
 def render(s: Sheet) -> str:
     out = [_heading(1, s.title), ""]
     out += [f"Drive Advisor {text(s.version)} — {text(s.application)}, {text(s.status)}", ""]
+    out += ["## Document", ""]
+    out += _table(["", ""], [[k, v] for k, v in s.project])
     out += ["## Summary", "", strong(s.headline), ""]
     out += _table(["", ""], [[k, v] for k, v in s.summary])
+    out += _review(s)
     out += ["## Warnings", "", *_items(s.warnings)]
     out += ["", "## Components", ""]
     for b in s.components:

@@ -229,7 +229,7 @@ def speed_rpm(phase: dict) -> float | None:
 
 def load_cycle(doc: dict) -> Cycle | None:
     """The phases as a table: name, time, speed, torque and the shaft power P = M·ω at the
-    phase's speed (for a ramp, its speed at the end)."""
+    phase's speed (the report states a ramp's top speed)."""
     phases = phases_of(doc)
     if phases is None:
         return None
@@ -249,8 +249,8 @@ def load_cycle(doc: dict) -> Cycle | None:
     return Cycle(
         ["phase", "time, s", "speed, rpm", "torque, N·m", "power, W"],
         rows,
-        "Motor shaft; power is torque × speed at the phase's speed (for a ramp, at its end); "
-        "a negative power is the load driving the motor.",
+        "At the motor shaft. Power is torque × the phase's speed (a ramp's top speed: the "
+        "phase's peak power); a negative power is the load driving the motor.",
     )
 
 
