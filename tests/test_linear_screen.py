@@ -62,7 +62,7 @@ def _reference_options(evaluations, cat):
             for m in cat.motors_with_poles(2 * pp):
                 fit = fit_motor(m)
                 n = drive_working_speed(fit, ev.torque_Nm, ev.speed_rpm)
-                if n is None:
+                if n is None or n > ev.max_speed_rpm:  # whirling (issue 26)
                     continue
                 out.append(
                     screw_rules.DriveOption(

@@ -10,7 +10,9 @@ if TYPE_CHECKING:  # the citation type; calc imports nothing of the core at run 
 
 
 class Check(NamedTuple):
-    """One strength or function check: ``margin`` ≥ 1 passes."""
+    """One strength or function check: ``margin`` ≥ 1 passes. ``value`` is the demand as
+    computed, ``limit`` the capacity; a strength check under a service factor states it in
+    ``factor`` and its margin is limit / (factor·value)."""
 
     id: str
     name: str
@@ -19,6 +21,9 @@ class Check(NamedTuple):
     unit: str
     margin: float
     source: "Cite"  # the bibliography ids and the place cited
+    #: the service factor the demand was multiplied by (a strength check under
+    #: ``[design] service_factor``): margin = limit / (factor·value); None: none applies
+    factor: float | None = None
 
     @property
     def passed(self) -> bool:

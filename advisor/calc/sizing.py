@@ -3,7 +3,7 @@ evaluated on its load. Pure functions of numbers and catalog rows; no decisions 
 
 import math
 from functools import lru_cache
-from typing import NamedTuple, Protocol
+from typing import Any, NamedTuple, Protocol
 
 from advisor.calc import induction as im
 from advisor.calc import screw as sc
@@ -13,16 +13,28 @@ from catalogs.threads import ThreadProfile
 
 MM = 1e-3
 MPA = 1e6
+#: Density of the screw steel, for its whirling speed  [kg/m³].
+STEEL_DENSITY_KG_M3 = 7850.0
 
 
-def _margin(value: float, limit: float) -> float:
-    """The margin of a check of the form value ≤ limit: limit / value."""
-    return math.inf if value <= 0 else limit / value
+def _margin(value: float, limit: float, factor: float = 1.0) -> float:
+    """The margin of a check of the form factor·value ≤ limit: limit / (factor·value)
+    (``factor``: the service factor of a strength check, issue 26)."""
+    return math.inf if value <= 0 else limit / (factor * value)
 
 
-def _upper(id: str, name: str, value: float, limit: float, unit: str, source: Cite) -> Check:
-    """A check of the form value ≤ limit; margin = limit / value."""
-    return Check(id, name, value, limit, unit, _margin(value, limit), source)
+def _upper(
+    id: str,
+    name: str,
+    value: float,
+    limit: float,
+    unit: str,
+    source: Cite,
+    factor: float | None = None,
+) -> Check:
+    """A check of the form factor·value ≤ limit; margin = limit / (factor·value). ``factor``
+    None: no service factor applies (a geometric or thermal check, or none given)."""
+    return Check(id, name, value, limit, unit, _margin(value, limit, factor or 1.0), source, factor)
 
 
 def _lower(id: str, name: str, value: float, limit: float, unit: str, source: Cite) -> Check:
@@ -52,6 +64,42 @@ def nut_whole_turns(turns_for_pressure: float, turns_for_height: float) -> int:
     """
     by_height = math.ceil(turns_for_height * (1.0 - WHOLE_TURN_TOLERANCE))
     return max(math.ceil(turns_for_pressure), by_height, 1)
+
+
+class ThrustFace(NamedTuple):
+    """The face that takes the screw's axial force (issue 26): a plain collar (Shigley,
+    eq. (8-6)) or a rolling bearing of the SKF catalog (its friction moment by the SKF model
+    of :func:`advisor.calc.bearing_life.skf_friction`, the axial force its only load)."""
+
+    kind: str  # "collar" or "bearing"
+    friction_coefficient: float = 0.0  # collar
+    mean_diameter_m: float = 0.0  # collar
+    bearing: Any = None  # catalogs.rows.Bearing
+    constants: Any = None  # catalogs.rows.FrictionConstants
+    viscosity_mm2_s: float = 0.0
+
+    def torque_Nm(self, force_N: float, speed_rpm: float) -> float:
+        """The friction torque of the face under an axial force at a screw speed  [N·m]:
+        friction always resists the motion, whichever way the force acts."""
+        force = abs(force_N)
+        if self.kind == "collar":
+            return sc.collar_torque(force, self.friction_coefficient, self.mean_diameter_m)
+        from advisor.calc.bearing_life import skf_friction
+
+        return skf_friction(
+            self.bearing, self.constants, 0.0, force, speed_rpm, self.viscosity_mm2_s
+        ).total_Nm
+
+    def describe(self) -> str:
+        if self.kind == "collar":
+            return (
+                f"collar, d_c = {self.mean_diameter_m * 1e3:g} mm, f_c = "
+                f"{self.friction_coefficient:g}: T = F·f_c·d_c/2 (Shigley, eq. (8-6))"
+            )
+        return (
+            f"rolling bearing {self.bearing.designation}, SKF friction model, lubricant "
+            f"{self.viscosity_mm2_s:g} mm²/s"
+        )
 
 
 class ScrewMaterial(NamedTuple):
@@ -89,6 +137,19 @@ class ThreadEvaluation(NamedTuple):
     buckling_formula: str
     core_stress_Pa: float
     checks: tuple[Check, ...] = ()
+    #: the friction torque of the thrust face at the rated force and the screw speed, and the
+    #: face itself (None: not given, its friction left out)
+    thrust_torque_Nm: float = 0.0
+    thrust: ThrustFace | None = None
+    #: the service factor the strength checks multiplied their demand by
+    service_factor: float = 1.0
+    #: the fastest the screw may turn: a share of its whirling speed (issue 26)
+    max_speed_rpm: float = math.inf
+
+    @property
+    def drive_torque_Nm(self) -> float:
+        """The torque that moves the load: the thread's and the thrust face's."""
+        return self.torque_Nm + self.thrust_torque_Nm
 
     @property
     def passed(self) -> bool:
@@ -145,6 +206,8 @@ class _ThreadNumbers(NamedTuple):
     formula: str
     #: (value, limit) of each check, in the order of ThreadEvaluation.checks
     limits: tuple[tuple[float, float], ...]
+    thrust_torque: float = 0.0
+    max_speed: float = math.inf
 
 
 def _thread_numbers(
@@ -158,6 +221,8 @@ def _thread_numbers(
     starts: int,
     friction_model: sc.FrictionModel,
     material: ScrewMaterial,
+    thrust: ThrustFace | None = None,
+    service_factor: float = 1.0,
 ) -> _ThreadNumbers:
     """Torque, speed, nut, core stress and buckling of one thread (see
     :func:`evaluate_thread`), with the value and the limit of each check."""
@@ -175,9 +240,10 @@ def _thread_numbers(
     revs = sc.revolutions(stroke_m, p, starts)
     speed = sc.screw_speed_rpm(revs, travel_time_s)
 
-    # Nut: whole engaged turns, enough for the flank pressure and the minimum height ratio.
+    # Nut: whole engaged turns, enough for the flank pressure under the service factor and
+    # for the minimum height ratio.
     h1 = thread.H1_mm * MM
-    z_req = sc.nut_turns_required(force_N, d2, h1, material.allowable_pressure_Pa)
+    z_req = sc.nut_turns_required(service_factor * force_N, d2, h1, material.allowable_pressure_Pa)
     turns = float(nut_whole_turns(z_req, material.nut_height_ratio_min * d2 / p))
     height = turns * p
     pressure = sc.nut_bearing_pressure(force_N, d2, h1, turns)
@@ -210,6 +276,11 @@ def _thread_numbers(
         slenderness,
         formula,
         limits,
+        thrust.torque_Nm(force_N, speed) if thrust is not None else 0.0,
+        sc.WHIRL_ALLOWED_SHARE
+        * sc.critical_speed_rpm(
+            d3, span_m, end_fixity, material.elastic_modulus_Pa, STEEL_DENSITY_KG_M3
+        ),
     )
 
 
@@ -225,13 +296,20 @@ def evaluate_thread(
     starts: int,
     friction_model: sc.FrictionModel,
     material: ScrewMaterial,
+    thrust: ThrustFace | None = None,
+    service_factor: float = 1.0,
 ) -> ThreadEvaluation:
     """Torque, efficiency, self-locking and the strength checks of one thread.
 
     Checks (all with margin = allowed / actual):
     core von Mises stress ≤ σ_y / S; axial force ≤ P_cr / S_b (Euler or Johnson);
     flank pressure ≤ [p] with the nut of :func:`nut_whole_turns` turns, H = z·P;
-    nut height ratio H/d2 ≤ ψ_max; engaged turns ≤ z_max.
+    nut height ratio H/d2 ≤ ψ_max; engaged turns ≤ z_max. The first three are strength
+    checks: under a service factor f_B (issue 26) each demand is multiplied by it (the
+    core stress is linear in the force and the torque, so f_B·σ is the stress under f_B·F),
+    and the nut is sized for f_B·F. ``thrust``: the thrust face, whose friction torque at
+    the rated force and the screw speed adds to the thread's in :attr:`drive_torque_Nm`
+    (the core between the nut and the thrust face carries the thread torque alone).
     """
     n = _thread_numbers(
         thread,
@@ -244,6 +322,8 @@ def evaluate_thread(
         starts,
         friction_model,
         material,
+        thrust,
+        service_factor,
     )
     psi, phi, torque = n.psi, n.phi, n.torque
     d2 = thread.d2_mm * MM
@@ -261,11 +341,18 @@ def evaluate_thread(
             turns_max,
         ),
     ) = n.limits
+    sf = service_factor if service_factor != 1.0 else None
     checks = (
-        _upper("core_stress", src.core_name, core, core_max, "MPa", src.core),
-        _upper("buckling", src.buckling_name, force, force_max, "N", src.buckling),
+        _upper("core_stress", src.core_name, core, core_max, "MPa", src.core, sf),
+        _upper("buckling", src.buckling_name, force, force_max, "N", src.buckling, sf),
         _upper(
-            "nut_pressure", "nut flank bearing pressure", pressure, pressure_max, "MPa", src.ivanov
+            "nut_pressure",
+            "nut flank bearing pressure",
+            pressure,
+            pressure_max,
+            "MPa",
+            src.ivanov,
+            sf,
         ),
         _upper("nut_height", "nut height ratio H/d2", ratio, ratio_max, "", src.ivanov),
         _upper("nut_turns", "engaged nut turns", turns, turns_max, "", src.ivanov),
@@ -299,6 +386,10 @@ def evaluate_thread(
         buckling_formula=n.formula,
         core_stress_Pa=n.core,
         checks=checks,
+        thrust_torque_Nm=n.thrust_torque,
+        thrust=thrust,
+        service_factor=service_factor,
+        max_speed_rpm=n.max_speed,
     )
 
 
@@ -345,10 +436,15 @@ class ThreadScreen(NamedTuple):
     #: the driving efficiency of a holding device between the motor and this screw (seed
     #: 004): the motor gives the screw torque divided by it
     device_efficiency: float = 1.0
+    #: the friction torque of the thrust face (issue 26); 0 where none is given
+    thrust_torque_Nm: float = 0.0
+    #: the fastest the screw may turn: a share of its whirling speed (issue 26)
+    max_speed_rpm: float = math.inf
 
     @property
     def motor_torque_Nm(self) -> float:
-        return self.torque_Nm / self.device_efficiency
+        """The motor's torque: the thread's and the thrust face's, through the device."""
+        return (self.torque_Nm + self.thrust_torque_Nm) / self.device_efficiency
 
 
 def screen_threads(
@@ -363,6 +459,8 @@ def screen_threads(
     buckling_safety_factor: float,
     friction_model: sc.FrictionModel,
     material: ScrewMaterial,
+    thrust: ThrustFace | None = None,
+    service_factor: float = 1.0,
 ) -> list[ThreadScreen]:
     """The screen of every thread with every number of starts, in the order thread by
     thread, starts within (see :class:`ThreadScreen`).
@@ -380,18 +478,22 @@ def screen_threads(
     stress_limit = allowed_stress / MPA
     pressure_limit = m.allowable_pressure_Pa / MPA
     turns_limit = float(m.nut_max_turns)
+    sf = service_factor
     out = []
     for g in geometries:
         p, d2, d3, h1 = g.pitch_m, g.d2_m, g.d3_m, g.h1_m
-        z_req = sc.nut_turns_required(force_N, d2, h1, m.allowable_pressure_Pa)
+        max_speed = sc.WHIRL_ALLOWED_SHARE * sc.critical_speed_rpm(
+            d3, span_m, end_fixity, m.elastic_modulus_Pa, STEEL_DENSITY_KG_M3
+        )
+        z_req = sc.nut_turns_required(service_factor * force_N, d2, h1, m.allowable_pressure_Pa)
         turns = float(nut_whole_turns(z_req, m.nut_height_ratio_min * d2 / p))
         pressure = sc.nut_bearing_pressure(force_N, d2, h1, turns)
         p_cr = sc.critical_buckling_load(
             d3, span_m, end_fixity, m.elastic_modulus_Pa, m.yield_strength_Pa
         )[0]
         if not (
-            _margin(force_N, p_cr / buckling_safety_factor) >= 1.0
-            and _margin(pressure / MPA, pressure_limit) >= 1.0
+            _margin(force_N, p_cr / buckling_safety_factor, sf) >= 1.0
+            and _margin(pressure / MPA, pressure_limit, sf) >= 1.0
             and _margin(turns * p / d2, m.nut_height_ratio_max) >= 1.0
             and _margin(turns, turns_limit) >= 1.0
         ):
@@ -407,8 +509,9 @@ def screen_threads(
                 force_N, d2, psi, sc.friction_angle(f, friction_model, psi)
             )
             core = sc.core_equivalent_stress(force_N, torque, d3)
-            passed = _margin(core / MPA, stress_limit) >= 1.0
+            passed = _margin(core / MPA, stress_limit, sf) >= 1.0
             revs = sc.revolutions(stroke_m, p, z)
+            speed = sc.screw_speed_rpm(revs, travel_time_s)
             out.append(
                 ThreadScreen(
                     g.thread,
@@ -417,9 +520,13 @@ def screen_threads(
                     passed,
                     torque if passed else math.nan,
                     revs if passed else math.nan,
-                    sc.screw_speed_rpm(revs, travel_time_s) if passed else math.nan,
+                    speed if passed else math.nan,
                     passed
                     and sc.is_self_locking(psi, sc.friction_angle(m.friction_low, "standard", psi)),
+                    thrust_torque_Nm=thrust.torque_Nm(force_N, speed)
+                    if passed and thrust is not None
+                    else 0.0,
+                    max_speed_rpm=max_speed,
                 )
             )
     return out

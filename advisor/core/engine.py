@@ -32,7 +32,9 @@ def advise(req: Requirements, catalog_dir: Path | None = None) -> Report:
         raise InfeasibleError(
             "no feasible design: the chosen parts fail checks",
             [
-                f"{c.name}: {c.value:.4g} against {c.limit:.4g} {c.unit} (margin {c.margin:.3f})"
+                f"{c.name}: {c.value:.4g}"
+                + (f" × service factor {c.factor:g}" if getattr(c, "factor", None) else "")
+                + f" against {c.limit:.4g} {c.unit} (margin {c.margin:.3f})"
                 for c in failed
             ],
         )
@@ -66,6 +68,7 @@ def advise(req: Requirements, catalog_dir: Path | None = None) -> Report:
                 passed=c.passed,
                 source=text(c.source, short),
                 sources=c.source.ids,
+                factor=getattr(c, "factor", None),
             )
             for c in checks
         ],

@@ -105,6 +105,9 @@ class CheckOut(_Out):
     passed: bool
     source: str
     sources: list[str] = []
+    #: the service factor a strength check multiplied its demand by (margin =
+    #: limit / (factor·value)); absent where none applies (issue 26)
+    factor: float | None = None
 
 
 class DecisionOut(_Out):

@@ -36,14 +36,18 @@ STEEL_DENSITY_KG_M3 = 7850.0
 ELECTRIC_BRAKING_HEAT = 1.0
 
 
-def screw_torque(ev, force_N: float, direction: str) -> float:
+def screw_torque(ev, force_N: float, direction: str, thrust: bool = True) -> float:
     """Seed 001's thread torque at the motor: against the load F·d2/2·tan(ψ + φ'); with the
-    load F·d2/2·tan(φ' − ψ), negative when the load drives the screw back."""
+    load F·d2/2·tan(φ' − ψ), negative when the load drives the screw back. With ``thrust``,
+    the friction torque of the thrust face (issue 26) is added: it resists the motion
+    whichever way the force acts."""
     half_d2 = ev.thread.d2_mm * 1e-3 / 2.0
     psi, phi = ev.lead_angle_rad, ev.friction_angle_rad
+    face = getattr(ev, "thrust", None)
+    extra = face.torque_Nm(force_N, ev.speed_rpm) if thrust and face is not None else 0.0
     if direction == "against":
-        return force_N * half_d2 * math.tan(psi + phi)
-    return force_N * half_d2 * math.tan(phi - psi)
+        return force_N * half_d2 * math.tan(psi + phi) + extra
+    return force_N * half_d2 * math.tan(phi - psi) + extra
 
 
 def load_inertia(ev, moving_mass_kg: float, span_m: float) -> tuple[float, str]:

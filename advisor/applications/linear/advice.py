@@ -16,13 +16,16 @@ from advisor.applications.linear.report import (
     MotorCandidateOut,
     NutOut,
     ScrewOut,
+    ThrustOut,
     back_driving_words,
 )
 from advisor.calc import induction as im
 from advisor.calc import one_way as ow_calc
 from advisor.calc import screw as sc
 from advisor.calc.one_way import NO_DEVICE
+from advisor.calc.service_factor import ServiceFactor, service_factor
 from advisor.calc.sizing import (
+    STEEL_DENSITY_KG_M3,
     Check,
     MotorEvaluation,
     MotorFit,
@@ -30,6 +33,7 @@ from advisor.calc.sizing import (
     ThreadEvaluation,
     ThreadGeometry,
     ThreadScreen,
+    ThrustFace,
     drive_working_speed,
     evaluate_motor,
     evaluate_thread,
@@ -127,7 +131,7 @@ def line_option(
         if fit.motor.rated_power_kW > max_power_kW:
             return None
         n = drive_working_speed(fit, torque, ev.speed_rpm)
-        if n is None:
+        if n is None or n > ev.max_speed_rpm:  # too slow, or whirling (issue 26)
             continue
         m, thread = fit.motor, ev.thread
         return screw_rules.DriveOption(  # positional, in the order of its fields (faster)
@@ -289,6 +293,25 @@ def _material(
     )
 
 
+def _thrust_face(req: Requirements, cat: Catalogs) -> ThrustFace | None:
+    """The thrust face of ``[screw.thrust]`` (issue 26); None where it is unknown."""
+    t = req.screw.thrust
+    if t.kind == "collar":
+        return ThrustFace("collar", t.friction_coefficient, t.mean_diameter_mm * 1e-3)
+    if t.kind == "bearing":
+        b = cat.bearing(t.bearing)
+        if b is None:
+            known = ", ".join(sorted(x.designation for x in cat.bearings))
+            raise InputError(
+                f"screw.thrust.bearing = {t.bearing!r}: not a bearing of the catalog ({known})"
+            )
+        k = cat.bearing_friction[b.friction]
+        return ThrustFace(
+            "bearing", bearing=b, constants=k, viscosity_mm2_s=t.lubricant_viscosity_mm2_s
+        )
+    return None
+
+
 def _device_efficiency(req: Requirements) -> float:
     """The driving efficiency of the one-way device the requirement asks for, known before
     the thread and the motor are chosen: the motor's choice must see it. 'auto' chooses
@@ -343,6 +366,8 @@ def advise_linear(
     trace.apply(screw_rules.transmission_type, lin.force_N)
     material, f_range = _material(req, cat, trace)
     model = trace.apply(screw_rules.friction_model, s.friction_model)
+    thrust = _thrust_face(req, cat)
+    sf = service_factor(getattr(req, "design", None))
 
     if s.thread is not None and cat.thread(s.thread) is None:
         d = float(s.thread[2:].split("x")[0])
@@ -362,6 +387,8 @@ def advise_linear(
         "buckling_safety_factor": lin.buckling_safety_factor,
         "friction_model": model,
         "material": material,
+        "thrust": thrust,
+        "service_factor": sf.value,
     }
 
     def evaluate(t, starts: int) -> ThreadEvaluation:
@@ -376,6 +403,8 @@ def advise_linear(
             starts=starts,
             friction_model=model,
             material=material,
+            thrust=thrust,
+            service_factor=sf.value,
         )
 
     freq = req.motor.supply_frequency_Hz
@@ -439,8 +468,12 @@ def advise_linear(
         from advisor.one_way.advice import device_passage
 
         passage = device_passage(req.one_way, ev.torque_Nm, ev.torque_Nm)
-    # the motor drives the screw through the device: it gives the screw torque over its η
-    at_motor = ev if passage is None else ev._replace(torque_Nm=ev.torque_Nm / passage.efficiency)
+    # the torque that moves the load: the thread's and the thrust face's (issue 26); the
+    # motor drives the screw through the device: it gives that torque over the device's η
+    drive = ev._replace(torque_Nm=ev.drive_torque_Nm, thrust_torque_Nm=0.0)
+    at_motor = (
+        drive if passage is None else drive._replace(torque_Nm=drive.torque_Nm / passage.efficiency)
+    )
     plan = plan_motor(at_motor, motor, cat, freq, trace)
     chosen_name = chosen.label
 
@@ -452,7 +485,7 @@ def advise_linear(
         holder = "screw" if ev.self_locking_at_low_friction else None
         holder = holder or ("one_way" if req.application.hold_without_power else None)
         duty, motor, duty_checks, duty_warnings = advise_duty(
-            req, ev, plan.selected, cat, holder, trace, passage or NO_DEVICE
+            req, drive, plan.selected, cat, holder, trace, passage or NO_DEVICE
         )
         warnings += duty_warnings
         if motor is not plan.selected:
@@ -471,18 +504,19 @@ def advise_linear(
             f"gives {ev.torque_standard_Nm:.4g} N·m instead of {ev.torque_paper_Nm:.4g} N·m."
         )
     advisor_choice = trace.find("SCR-04").inputs.get("advisor_choice")
+    sel = plan.evaluations[plan.selected.rated_power_kW]
+    assert sel is not None
     design = LinearDesignOut.make(
-        screw=_screw_out(ev, req, material, f_range, advisor_choice),
+        screw=_screw_out(ev, req, material, f_range, advisor_choice, sel, cat),
         motor=_motor_out(plan, at_motor, cat, freq),
         one_way=one_way,
         duty=duty,
     )
-    sel = plan.evaluations[plan.selected.rated_power_kW]
-    assert sel is not None
+    screw_load = "the screw torque" if thrust is None else "the screw and thrust-face torque"
     demand = (
-        "the screw torque"
+        screw_load
         if passage is None or passage.efficiency == 1.0
-        else f"the screw torque through the {passage.type.replace('_', ' ')} "
+        else f"{screw_load} through the {passage.type.replace('_', ' ')} "
         f"(η {passage.efficiency:.3g})"
     )
     checks = [
@@ -519,9 +553,171 @@ def advise_linear(
     ]
     if sel.travel_time_s and sel.travel_time_s < FAST_SHARE * lin.travel_time_s:
         warnings.append(_too_fast(at_motor, sel, plan, screens, cat, lin.travel_time_s))
+    screw_checks, screw_warnings = _screw_checks(req, ev, sel, thrust, sf, cat)
+    checks += screw_checks
+    warnings += screw_warnings
     if duty is not None:
         checks += duty_checks
     return design, checks, warnings
+
+
+class NutHeat(NamedTuple):
+    """The nut's wear and heat (issue 26): flank sliding speed, Shigley's safe pressure at
+    it, p·v, and the steady temperature rise from the mean friction power."""
+
+    sliding_speed_m_s: float
+    safe_pressure_Pa: float
+    safe_pressure_row: str
+    pv_MPa_m_s: float
+    friction_power_W: float
+    mean_friction_power_W: float
+    mean_basis: str
+    surface_m2: float
+    temperature_rise_K: float
+
+
+def _mean_friction_power(req: Requirements, ev: ThreadEvaluation, power_W: float):
+    """The thread's friction power averaged over the cycle: the friction work of the duty's
+    moves (input work of the screw torque less the work done on the load) times the cycles
+    per hour; an IEC duty type by its cyclic duration factor; no duty: continuous running
+    (the worst case), said so."""
+    duty = req.duty
+    if duty is None:
+        return power_W, "no [duty]: continuous running assumed (give a duty for the mean)"
+    if getattr(duty, "segments", None):
+        from advisor.duty.linear import screw_torque
+
+        lead = ev.thread.pitch_mm * 1e-3 * ev.starts
+        work = 0.0
+        for seg in duty.segments:
+            if seg.kind != "move":
+                continue
+            force = req.linear.force_N if seg.force_N is None else seg.force_N
+            angle = 2.0 * math.pi * seg.distance_m / lead
+            done = force * seg.distance_m * (1.0 if seg.direction == "against" else -1.0)
+            work += max(screw_torque(ev, force, seg.direction, thrust=False) * angle - done, 0.0)
+        return (
+            work * duty.cycles_per_hour / 3600.0,
+            f"duty segments: {work:.4g} J of thread friction a cycle × "
+            f"{duty.cycles_per_hour:g} cycles/h",
+        )
+    share = 1.0 if duty.duty_type in ("S1",) else (duty.cyclic_duration_factor or 1.0)
+    return power_W * share, f"duty {duty.duty_type}, running share {share:g}"
+
+
+def nut_heat(req: Requirements, ev: ThreadEvaluation, speed_rpm: float) -> NutHeat:
+    """Sliding speed, safe pressure, p·v and temperature rise of the chosen nut at the
+    motor's working speed."""
+    t = ev.thread
+    v = sc.flank_sliding_speed(t.d2_mm * 1e-3, speed_rpm, ev.lead_angle_rad)
+    nut = "bronze" if "bronze" in req.screw.material_pair else "cast_iron"
+    if req.screw.material_pair == "steel_steel":
+        safe, row = 0.0, "steel–steel: not in Shigley's Table 8-4 (no safe value for a moving nut)"
+    else:
+        safe, row = sc.shigley_bearing_pressure(nut, v)
+    power = sc.friction_power(ev.torque_Nm, speed_rpm, ev.efficiency)
+    mean, basis = _mean_friction_power(req, ev, power)
+    area = sc.nut_surface(t.d_mm * 1e-3, ev.nut_height_mm * 1e-3)
+    return NutHeat(
+        v,
+        safe,
+        row,
+        ev.nut_pressure_Pa / 1e6 * v,
+        power,
+        mean,
+        basis,
+        area,
+        sc.nut_temperature_rise(mean, area),
+    )
+
+
+def _screw_checks(
+    req: Requirements,
+    ev: ThreadEvaluation,
+    sel: MotorEvaluation,
+    thrust: ThrustFace | None,
+    sf: ServiceFactor,
+    cat: Catalogs,
+) -> tuple[list[Check], list[str]]:
+    """The whirling speed and the thrust bearing's static load as checks; the thrust face
+    left out, and the nut's wear and heat, as warnings where they need a word (issue 26)."""
+    lin = req.linear
+    checks, warnings = [], []
+    n_work = sel.working_speed_rpm or ev.speed_rpm
+    steel = cat.steel(req.screw.screw_steel)
+    n_cr = sc.critical_speed_rpm(
+        ev.thread.d3_mm * 1e-3,
+        lin.support_span_m,
+        lin.end_fixity,
+        steel.elastic_modulus_MPa * 1e6,
+        STEEL_DENSITY_KG_M3,
+    )
+    allowed = sc.WHIRL_ALLOWED_SHARE * n_cr
+    checks.append(
+        Check(
+            "critical_speed",
+            f"screw speed against {sc.WHIRL_ALLOWED_SHARE:g} of its whirling speed "
+            f"({lin.end_fixity}, βL = {sc.WHIRL_EIGENVALUE[lin.end_fixity]:.5g}, core d3)",
+            n_work,
+            allowed,
+            "rpm",
+            allowed / n_work,
+            cite("blevins", "table 8-1").with_note(
+                f"n_cr = {n_cr:.5g} rpm; {sc.WHIRL_ALLOWED_SHARE:g}·n_cr, screw makers' rule"
+            ),
+        )
+    )
+    if thrust is None:
+        warnings.append(
+            "the motor margin excludes thrust friction: no [screw.thrust] face is given, so "
+            "the torque is the thread's alone; a collar adds F·f_c·d_c/2 (Shigley, eq. (8-6))"
+        )
+    elif thrust.kind == "bearing":
+        from advisor.calc.bearing_life import static_safety
+
+        b = thrust.bearing
+        c0 = b.C0_kN * 1e3
+        p0 = c0 / static_safety(b, 0.0, lin.force_N)
+        factor = sf.value if sf.value != 1.0 else None
+        checks.append(
+            Check(
+                "thrust_bearing_static",
+                f"thrust bearing {b.designation}: static equivalent load against C0",
+                p0,
+                c0,
+                "N",
+                c0 / ((factor or 1.0) * p0),
+                cite("iso-76").with_note("P0 = max(F_r, X0·F_r + Y0·F_a)"),
+                factor,
+            )
+        )
+        if b.d_mm > ev.thread.d3_mm:
+            warnings.append(
+                f"the thrust bearing {b.designation} (bore {b.d_mm:g} mm) needs a journal "
+                f"wider than the core of {ev.thread.name} (d3 = {ev.thread.d3_mm:g} mm): "
+                "the screw end must be upset or the bearing smaller"
+            )
+    heat = nut_heat(req, ev, n_work)
+    pressure_MPa = ev.nut_pressure_Pa / 1e6
+    if pressure_MPa > heat.safe_pressure_Pa / 1e6:
+        warnings.append(
+            f"the nut wears fast: its flank pressure {pressure_MPa:.3g} MPa at a sliding "
+            f"speed of {heat.sliding_speed_m_s:.3g} m/s ({heat.sliding_speed_m_s * 60:.3g} "
+            f"m/min; p·v = {heat.pv_MPa_m_s:.3g} MPa·m/s) is above the safe "
+            f"{heat.safe_pressure_Pa / 1e6:.3g} MPa of Shigley's Table 8-4 "
+            f"({heat.safe_pressure_row}); a slower screw (a reduction stage), a longer nut "
+            "or a ball screw"
+        )
+    if heat.temperature_rise_K > sc.NUT_ALLOWED_RISE_K:
+        warnings.append(
+            f"the nut overheats: {heat.mean_friction_power_W:.3g} W of thread friction on "
+            f"average ({heat.mean_basis}) through its {heat.surface_m2 * 1e4:.3g} cm² surface "
+            f"gives a steady rise of {heat.temperature_rise_K:.3g} K, above the "
+            f"{sc.NUT_ALLOWED_RISE_K:g} K allowed (natural convection, "
+            f"h = {sc.NUT_FILM_COEFFICIENT:g} W/(m²·K), nut body "
+            f"{sc.NUT_OUTER_DIAMETER_RATIO:g}·d; the screw's own cooling neglected)"
+        )
+    return checks, warnings
 
 
 def _eval_motor(motor: InductionMotor, ev: ThreadEvaluation) -> MotorEvaluation:
@@ -624,6 +820,12 @@ def _no_drive(
         f"{len(names)} threads pass the strength checks; they need {speeds[0]:.4g} … "
         f"{speeds[-1]:.4g} rpm at the screw"
     ]
+    whirl = [ev for ev in passing if ev.speed_rpm > ev.max_speed_rpm]
+    if whirl:
+        reasons.append(
+            f"{len(whirl)} of them would turn above {100 * sc.WHIRL_ALLOWED_SHARE:g} % of their "
+            "whirling speed: a shorter span, a stiffer end fixity or a coarser lead"
+        )
     if speeds[0] > fastest:
         reasons.append(
             f"the fastest 50 Hz motor of the catalog runs at {fastest:g} rpm: allow a longer "
@@ -648,8 +850,36 @@ def _screw_out(
     material: ScrewMaterial,
     f_range: tuple[float, float],
     advisor_choice: str | None,
+    sel: MotorEvaluation,
+    cat: Catalogs,
 ) -> ScrewOut:
     t = ev.thread
+    n_work = sel.working_speed_rpm or ev.speed_rpm
+    heat = nut_heat(req, ev, n_work)
+    steel = cat.steel(req.screw.screw_steel)
+    transition = math.pi * math.sqrt(2.0 * steel.elastic_modulus_MPa / steel.yield_strength_MPa)
+    why = (
+        f"slenderness μL/i = {ev.slenderness:.4g} "
+        f"{'≥' if ev.buckling_formula == 'Euler' else '<'} the transition "
+        f"π·√(2E/σ_y) = {transition:.4g}: "
+        + (
+            "a slender column fails elastically (Euler)"
+            if ev.buckling_formula == "Euler"
+            else "an intermediate column yields before it buckles elastically (Johnson's parabola)"
+        )
+    )
+    thrust = None
+    if ev.thrust is not None:
+        lead = t.pitch_mm * 1e-3 * ev.starts
+        thrust = ThrustOut.make(
+            kind=ev.thrust.kind,
+            model=ev.thrust.describe(),
+            torque_Nm=ev.thrust_torque_Nm,
+            drive_torque_Nm=ev.drive_torque_Nm,
+            efficiency=sc.thread_efficiency_with_thrust(
+                req.linear.force_N, lead, ev.torque_Nm, ev.thrust_torque_Nm
+            ),
+        )
     lin = req.linear
     assert lin is not None
     v = sc.linear_speed(lin.stroke_m, lin.travel_time_s)
@@ -698,15 +928,38 @@ def _screw_out(
             height_ratio=ev.nut_height_mm / t.d2_mm,
             bearing_pressure_MPa=ev.nut_pressure_Pa / 1e6,
             allowable_pressure_MPa=material.allowable_pressure_Pa / 1e6,
+            sliding_speed_m_s=heat.sliding_speed_m_s,
+            safe_pressure_MPa=heat.safe_pressure_Pa / 1e6,
+            safe_pressure_basis=f"Shigley, Table 8-4 (as recalled, not verified online): "
+            f"{heat.safe_pressure_row}",
+            pv_MPa_m_s=heat.pv_MPa_m_s,
+            friction_power_W=heat.friction_power_W,
+            mean_friction_power_W=heat.mean_friction_power_W,
+            mean_friction_basis=heat.mean_basis,
+            temperature_rise_K=heat.temperature_rise_K,
+            allowed_temperature_rise_K=sc.NUT_ALLOWED_RISE_K,
+            heat_model=f"ΔT = P̄_f/(h·A), h = {sc.NUT_FILM_COEFFICIENT:g} W/(m²·K) natural "
+            f"convection, A = nut body of {sc.NUT_OUTER_DIAMETER_RATIO:g}·d over its length "
+            "and end faces; the screw's cooling neglected",
         ),
         buckling=BucklingOut.make(
             formula=ev.buckling_formula,
+            why=why,
             end_fixity=lin.end_fixity,
             effective_length_factor=sc.END_FIXITY_FACTOR[lin.end_fixity],
             slenderness=ev.slenderness,
             critical_load_N=ev.critical_load_N,
             safety_factor_required=lin.buckling_safety_factor,
         ),
+        thrust=thrust,
+        critical_speed_rpm=sc.critical_speed_rpm(
+            t.d3_mm * 1e-3,
+            lin.support_span_m,
+            lin.end_fixity,
+            steel.elastic_modulus_MPa * 1e6,
+            STEEL_DENSITY_KG_M3,
+        ),
+        service_factor=ev.service_factor if ev.service_factor != 1.0 else None,
     )
 
 

@@ -11,10 +11,32 @@ class NutOut(_Out):
     height_ratio: float
     bearing_pressure_MPa: float
     allowable_pressure_MPa: float
+    # wear and heat at the motor's working speed (issue 26)
+    sliding_speed_m_s: float | None = None
+    safe_pressure_MPa: float | None = None  # Shigley, Table 8-4, at the sliding speed
+    safe_pressure_basis: str | None = None
+    pv_MPa_m_s: float | None = None
+    friction_power_W: float | None = None
+    mean_friction_power_W: float | None = None
+    mean_friction_basis: str | None = None
+    temperature_rise_K: float | None = None
+    allowed_temperature_rise_K: float | None = None
+    heat_model: str | None = None
+
+
+class ThrustOut(_Out):
+    """The face that takes the axial force and its friction torque (issue 26)."""
+
+    kind: str
+    model: str
+    torque_Nm: float
+    drive_torque_Nm: float  # thread + thrust face: what the motor moves
+    efficiency: float  # F·L / (2π·(T_thread + T_thrust))
 
 
 class BucklingOut(_Out):
     formula: str
+    why: str | None = None  # why Euler or Johnson: the slenderness against the transition
     end_fixity: str
     effective_length_factor: float
     slenderness: float
@@ -61,6 +83,9 @@ class ScrewOut(_Out):
     output_power_W: float
     nut: NutOut
     buckling: BucklingOut
+    thrust: ThrustOut | None = None
+    critical_speed_rpm: float | None = None
+    service_factor: float | None = None
 
 
 class CurveOut(_Out):

@@ -35,3 +35,24 @@ def thread_form(v: str | None) -> str | None:
             "halves (Tr16x2, Tr10x1.5)"
         )
     return f"Tr{d:g}x{pitch:g}"
+
+
+def thrust_complete(thrust: Any) -> None:
+    """A collar needs its diameter and friction, a bearing its designation; neither may carry
+    the other's keys (a typo of kind must not be silently ignored)."""
+    need = {"collar": ("mean_diameter_mm", "friction_coefficient"), "bearing": ("bearing",)}
+    given = [
+        k
+        for k in ("mean_diameter_mm", "friction_coefficient", "bearing")
+        if getattr(thrust, k) is not None
+    ]
+    wanted = need.get(thrust.kind, ())
+    missing = [k for k in wanted if getattr(thrust, k) is None]
+    if missing:
+        raise ValueError(f"screw.thrust.kind = {thrust.kind!r} needs screw.thrust.{missing[0]}")
+    extra = [k for k in given if k not in wanted]
+    if extra:
+        raise ValueError(
+            f"screw.thrust.{extra[0]} is given but screw.thrust.kind = {thrust.kind!r} does "
+            f"not use it (kind = {'collar' if extra[0] != 'bearing' else 'bearing'}?)"
+        )

@@ -7,6 +7,7 @@ from pydantic import Field
 from advisor.applications.linear import requirement_checks as checks
 from advisor.core.requirements import (
     ApplicationReq,
+    DesignReq,
     OneWayReq,
     ProjectField,
     _num,
@@ -51,7 +52,11 @@ class LinearReq(_Strict):
     ]
     end_fixity: Annotated[
         Literal["pinned-pinned", "fixed-pinned", "fixed-fixed", "fixed-free"],
-        Field(description="how the screw ends are held, for buckling"),
+        ask(
+            "how the screw ends are held, for buckling and the whirling speed",
+            label="End fixity of the screw",
+            step=2,
+        ),
     ] = "pinned-pinned"
     buckling_safety_factor: Annotated[
         float, _num(ge=1, le=20, desc="required margin against buckling; 1 … 20")
@@ -67,6 +72,65 @@ class InductionMotorReq(_Strict):
     ] = 50.0
 
     _fifty = field_check("supply_frequency_Hz", checks.fifty)
+
+
+class ScrewThrustReq(_Strict):
+    """The face that takes the screw's axial force ([screw.thrust]): a plain collar (its mean
+    diameter and friction) or a rolling bearing of the SKF catalog. Its friction torque adds
+    to the thread's (Shigley, eq. (8-6)); left as "unknown", the report warns that the motor
+    margin leaves it out."""
+
+    kind: Annotated[
+        Literal["unknown", "collar", "bearing"],
+        ask(
+            "what takes the axial force at the driven end: a plain collar, a rolling bearing, "
+            "or unknown (its friction left out, with a warning)",
+            label="Thrust face",
+            step=2,
+        ),
+    ] = "unknown"
+    mean_diameter_mm: Annotated[
+        float | None,
+        _num(
+            gt=0,
+            le=2000,
+            desc="mean diameter of the thrust collar, mm (outer + inner)/2; > 0 … 2000 mm",
+            label="Collar mean diameter (collar only)",
+            step=2,
+        ),
+    ] = None
+    friction_coefficient: Annotated[
+        float | None,
+        _num(
+            ge=0.01,
+            le=0.6,
+            desc="collar friction coefficient f_c; 0.01 … 0.6 (Shigley Table 8-6: 0.06 … 0.12 "
+            "running)",
+            label="Collar friction coefficient (collar only)",
+            step=2,
+        ),
+    ] = None
+    bearing: Annotated[
+        str | None,
+        ask(
+            "SKF designation of the thrust bearing (bearing only), e.g. 7205 BECBP",
+            label="Thrust bearing (bearing only)",
+            step=2,
+            example="7205 BECBP",
+            max_length=40,
+        ),
+    ] = None
+    lubricant_viscosity_mm2_s: Annotated[
+        float,
+        _num(
+            ge=0.5,
+            le=5000,
+            desc="kinematic viscosity of the bearing's lubricant at its temperature, mm²/s; "
+            "0.5 … 5000",
+        ),
+    ] = 68.0
+
+    _complete = after_check(checks.thrust_complete)
 
 
 class ScrewReq(_Strict):
@@ -104,6 +168,7 @@ class ScrewReq(_Strict):
     ] = "steel_bronze"
     lubrication: Annotated[Literal["oil", "dry"], Field(description="thread lubrication")] = "oil"
     screw_steel: Annotated[Literal["45", "40X"], Field(description="screw steel grade")] = "45"
+    thrust: ScrewThrustReq = ScrewThrustReq.model_construct()
 
     _thread_form = field_check("thread", checks.thread_form)
 
@@ -122,6 +187,7 @@ class LinearRequirements(_Strict):
     # of its own (defer_build), and validating one here would build it at import (issue 16)
     screw: ScrewReq = ScrewReq.model_construct()
     one_way: OneWayReq = OneWayReq.model_construct()
+    design: DesignReq = DesignReq.model_construct()
     duty: Annotated[
         LinearDutyReq | None,
         Field(description="the [duty] table: segments with cycles_per_hour, or duty_type"),
