@@ -205,6 +205,24 @@ def test_a_worker_killed_mid_study_costs_nothing(client, family, reference, tmp_
     client.wait_for_workers(2, timeout=60)
 
 
+def test_a_window_of_three_tasks_gives_the_same_study(client, family, reference, tmp_path):
+    """The client keeps at most ``window`` chunks on the cluster (never the whole study):
+    the scheduler holds no more tasks than that whenever a chunk is written."""
+    out = tmp_path / "window"
+    out.mkdir()
+    held = []
+
+    def count_tasks(n):
+        held.append(client.run_on_scheduler(lambda dask_scheduler: len(dask_scheduler.tasks)))
+
+    res = run_study(family, out, client, CHUNK, on_chunk=count_tasks, window=3)
+    assert res.computed == res.chunks == len(held) == -(-N_VARIANTS // CHUNK)
+    # 3 in flight, and at most the one just released that the scheduler has yet to forget
+    assert max(held) <= 4 < res.chunks
+    join_chunks(family, out, CHUNK)
+    assert (out / "designs.csv").read_bytes() == (reference / "designs.csv").read_bytes()
+
+
 # ------------------------------------------------------------------ axes and summary
 
 

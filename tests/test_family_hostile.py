@@ -521,6 +521,23 @@ logging.getLogger("asyncio").error("Task was destroyed but it is pending: after"
     assert "after" not in r.stderr, r.stderr
 
 
+def test_an_interrupted_bar_on_a_terminal_ends_its_line():
+    from advisor.family.study import Progress
+
+    class Tty(io.StringIO):
+        def isatty(self):
+            return True
+
+    stream = Tty()
+    bar = Progress(10, 100, stream=stream, every_s=0.0)
+    bar.update(3, 30)
+    assert not stream.getvalue().endswith("\n")  # the bar is redrawn in place
+    bar.end_line()  # before "advisor: interrupted; …"
+    assert stream.getvalue().endswith("\n") and stream.getvalue().count("\n") == 1
+    bar.end_line()  # once only
+    assert stream.getvalue().count("\n") == 1
+
+
 # ------------------------------------------------------------------ unique temporary names
 
 
