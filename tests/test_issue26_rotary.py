@@ -229,7 +229,8 @@ def test_service_factor_sizes_the_stages_not_the_motor():
     )
     assert r.design.motor.torque_Nm == pytest.approx(base.design.motor.torque_Nm)
     c = _check(r, "stage_repeated_peak")
-    assert (c.value, c.limit) == pytest.approx((1.5 * 1620, 98 / 39 * 2430))
+    assert (c.value, c.limit, c.factor) == pytest.approx((1620, 98 / 39 * 2430, 1.5))
+    assert c.margin == pytest.approx(98 / 39 * 2430 / (1.5 * 1620))
 
 
 # ------------------------------------------------------------------ item 6: regeneration

@@ -508,7 +508,7 @@ def _device_holds_stop(req, q: float, eta: float, at_output: bool, capacity: flo
 
     sf = service_factor(req.design)
     peak, basis = momentary_torque(req)
-    demand = sf.value * (peak if at_output else peak / (q * eta))
+    demand = peak if at_output else peak / (q * eta)
     where = "output" if at_output else f"motor side, M/(q·η) with q·η = {q * eta:.4g}"
     return Check(
         "one_way_holds_emergency_stop",
@@ -516,8 +516,9 @@ def _device_holds_stop(req, q: float, eta: float, at_output: bool, capacity: flo
         demand,
         capacity,
         "N·m",
-        capacity / demand,
+        capacity / (sf.value * demand),
         ow_rules.SEED_004.with_note(basis),
+        sf.value,
     )
 
 

@@ -91,31 +91,34 @@ def reducer_load(
             Check(
                 "stage_average_torque",
                 f"cube-mean torque T_av × f_B within the rated torque ({where})",
-                f * t_av,
+                t_av,
                 avg_limit,
                 "N·m",
                 avg_limit / (f * t_av) if t_av > 0 else math.inf,
                 HONPINE + SEED_16,
+                f,
             )
         )
     checks += [
         Check(
             "stage_repeated_peak",
             f"repeated peak torque × f_B within 98/39 × T_N ({where})",
-            f * t_rep,
+            t_rep,
             rep_limit,
             "N·m",
             rep_limit / (f * t_rep) if t_rep > 0 else math.inf,
             HD_RATIOS + SEED_16,
+            f,
         ),
         Check(
             "stage_momentary_peak",
             f"emergency-stop torque × f_B within 186/39 × T_N ({where})",
-            f * t_mom,
+            t_mom,
             mom_limit,
             "N·m",
             mom_limit / (f * t_mom),
             (HD_RATIOS + SEED_16).with_note(mom_basis),
+            f,
         ),
     ]
     life_h = req.design.life_h

@@ -59,8 +59,10 @@ def loss_curve(report, points: int = 40) -> list[dict]:
         ref.stator_steel_area_mm2, ref.stack_length_mm, ref.stacking_factor, ref.steel_density_kg_m3
     )
     terms = bldc.fit_eq5(steel.p10_50_W_kg, steel.p15_50_W_kg, steel.p10_400_W_kg)
-    params = rd.ReducerParams(
-        torque_Nm=req.rotary.torque_Nm,
+    from advisor.calc.service_factor import service_factor
+
+    params = rd.ReducerParams(  # sized as the advice sizes it (issue 26: × f_B)
+        torque_Nm=req.rotary.torque_Nm * service_factor(req.design).value,
         k_rb=wg.ROLLING_BODY_FACTOR[gb.rolling_body],
         stage_efficiency=gb.stage_efficiency,
         density_kg_m3=gb.density_kg_m3,
