@@ -147,7 +147,16 @@ def run_batch(
             )
         check_target(output)
     req = read_requirements(req_path)
-    report = advise(req, catalog_dir)
+    try:
+        report = advise(req, catalog_dir)
+    except InfeasibleError as exc:
+        if output is None and fmt == "toml":  # nothing asked for but the exit code and why
+            raise
+        from advisor.infeasible import infeasible_report
+
+        report, infeasible = infeasible_report(req, exc), exc  # a report says why (exit 3)
+    else:
+        infeasible = None
     _warn_ignored(report.warnings)
     if fmt == "toml":
         from advisor.core.report import to_toml
@@ -161,6 +170,9 @@ def run_batch(
         except MissingExtra as exc:
             _err(str(exc))
             return ExitCode.INVALID_INPUT
+    done = ExitCode.OK if infeasible is None else ExitCode.INFEASIBLE
+    if infeasible is not None:
+        _err(str(infeasible))
     if output is None:
         try:
             sys.stdout.write(text)
@@ -169,7 +181,7 @@ def run_batch(
             raise
         except OSError as exc:  # /dev/full, a full disk: never exit 0 with half a report
             return _stdout_failed(exc, "the report")
-        return ExitCode.OK
+        return done
     try:
         write_atomic(output, text)
     except OutputError:
@@ -184,10 +196,10 @@ def run_batch(
         sys.stdout.flush()
     except BrokenPipeError:  # the reader left
         _silence_stdout()
-        return ExitCode.OK
+        return done
     except OSError as exc:
         return _stdout_failed(exc, "the summary", f"the report was written to {show(output, 200)}")
-    return ExitCode.OK
+    return done
 
 
 def run_many(inputs: list[Path], out_dir: Path, catalog_dir: Path | None, jobs: int) -> int:

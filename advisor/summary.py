@@ -20,9 +20,14 @@ def summary_lines(report: Report, path: Path) -> list[str]:
 
     head = printable(str(report.report.title or report.report.application), newlines=False)
     where = printable(str(path), newlines=False)
+    if report.report.status == "infeasible":  # no design: why, and what it would take
+        from advisor.infeasible import summary_rows as infeasible_rows
+
+        given = infeasible_rows(report)
+    else:
+        given = summary_rows(report)
     rows = [
-        (printable(name, newlines=False), printable(text, newlines=False))
-        for name, text in summary_rows(report)
+        (printable(name, newlines=False), printable(text, newlines=False)) for name, text in given
     ]
     if report.checks:
         worst = min(report.checks, key=lambda c: c.margin)

@@ -18,7 +18,7 @@ from advisor.datasheet.review import covering
 
 pytest.importorskip("matplotlib")
 
-NAMES = sorted(p.name for p in EXAMPLES.glob("*.toml") if not p.name.startswith("infeasible"))
+NAMES = sorted(p.name for p in EXAMPLES.glob("*.toml"))
 GOLDEN = Path(__file__).parent / "golden" / "datasheet_gyro_compensator.md"
 
 

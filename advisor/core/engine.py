@@ -37,6 +37,8 @@ def advise(req: Requirements, catalog_dir: Path | None = None) -> Report:
                 + f" against {c.limit:.4g} {c.unit} (margin {c.margin:.3f})"
                 for c in failed
             ],
+            checks=finite_checks(checks),
+            nearest=_nearest(design),
         )
     checks = finite_checks(checks)
     short = cat.short_names()
@@ -87,6 +89,25 @@ def advise(req: Requirements, catalog_dir: Path | None = None) -> Report:
         ],
         sources=[SourceOut.make(**cat.bibliography[i]) for i in ids],
     )
+
+
+def _nearest(design) -> str | None:
+    """The design that failed its checks, in the words of its parts (for the report of an
+    infeasible run); None where it has none to give."""
+    try:
+        from advisor.core.report import _plain
+
+        parts = _plain(design)
+    except (TypeError, ValueError):
+        return None
+    if not isinstance(parts, dict):
+        return None
+    names = [
+        f"{k} {v.get('model') or v.get('designation') or v.get('thread') or ''}".strip()
+        for k, v in parts.items()
+        if isinstance(v, dict)
+    ]
+    return ", ".join(names) or None
 
 
 def _tomlable(inputs: dict) -> dict:

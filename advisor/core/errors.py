@@ -35,11 +35,23 @@ class CatalogError(InputError):
 
 
 class InfeasibleError(AdvisorError):
-    """No design satisfies the requirement; ``reasons`` says what limited it."""
+    """No design satisfies the requirement; ``reasons`` says what limited it. Where the
+    advice got as far as a design, ``checks`` holds all its checks (the failing ones with
+    margin < 1) and ``nearest`` the design in a few words: the report of an infeasible run
+    states them (:mod:`advisor.infeasible`)."""
 
     exit_code = ExitCode.INFEASIBLE
 
-    def __init__(self, summary: str, reasons: list[str]) -> None:
+    def __init__(
+        self,
+        summary: str,
+        reasons: list[str],
+        *,
+        checks: list | None = None,
+        nearest: str | None = None,
+    ) -> None:
         self.summary = summary
         self.reasons = reasons
+        self.checks = list(checks or [])
+        self.nearest = nearest
         super().__init__(summary + "".join(f"\n  - {r}" for r in reasons))

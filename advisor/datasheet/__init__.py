@@ -24,7 +24,14 @@ def _sheet(report: Any) -> tuple[Any, dict]:
     kind = report.report.application
     model = requirements_model(kind)
     labels, defaults = requirement_labels(model), requirement_defaults(model)
-    s = sheet(doc, headline(report), summary_rows(report), labels, covers(kind), defaults)
+    if getattr(report.report, "status", "") == "infeasible":  # no design: say why instead
+        from advisor.infeasible import summary_rows as why
+
+        said = report.design.summary
+        head, rows = said[:1].upper() + said[1:], why(report)
+    else:
+        head, rows = headline(report), summary_rows(report)
+    s = sheet(doc, head, rows, labels, covers(kind), defaults)
     return s, doc
 
 

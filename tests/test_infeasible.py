@@ -1,0 +1,92 @@
+"""An infeasible run reports (issue 28, item 2): exit 3 still, and with -o or a datasheet
+format a report with status = "infeasible" that says why, the failing checks with their
+numbers, the nearest design and what would make it feasible."""
+
+import tomllib
+from html.parser import HTMLParser
+
+import pytest
+from helpers import EXAMPLES
+
+from advisor.calc.checks import Check
+from advisor.cli import main
+from advisor.core.cite import cite
+from advisor.core.errors import ExitCode, InfeasibleError
+from advisor.core.report import to_toml
+from advisor.core.requirements import read_requirements
+from advisor.infeasible import infeasible_report, shortfall
+from advisor.summary import summary_lines
+
+# not among the examples every test runs (those are feasible): in a folder of its own
+EXAMPLE = EXAMPLES / "infeasible" / "screw_buckles.toml"
+
+
+def test_the_example_exits_3_and_writes_its_report(tmp_path, capsys):
+    out = tmp_path / "r.toml"
+    assert main(["--batch", str(EXAMPLE), "-o", str(out)]) == ExitCode.INFEASIBLE
+    io = capsys.readouterr()
+    assert "(infeasible)" in io.out and "no feasible design" in io.err
+    doc = tomllib.loads(out.read_text(encoding="utf-8"))
+    assert doc["report"]["status"] == "infeasible"
+    assert doc["requirements"]["linear"]["force_N"] == 5e6
+    d = doc["design"]
+    assert d["summary"].startswith("no feasible design")
+    # the nearest candidate, the largest thread, and the check it misses by most: buckling
+    assert any(r.startswith("Tr100x20: buckling between supports") for r in d["reasons"])
+
+
+def test_without_output_nothing_is_written_on_stdout(capsys):
+    assert main(["--batch", str(EXAMPLE)]) == ExitCode.INFEASIBLE
+    io = capsys.readouterr()
+    assert io.out == "" and "no feasible design" in io.err
+
+
+@pytest.mark.parametrize("fmt", ["md", "html"])
+def test_its_datasheet_renders(tmp_path, capsys, fmt):
+    pytest.importorskip("matplotlib")
+    out = tmp_path / f"r.{fmt}"
+    assert main(["--batch", str(EXAMPLE), "-o", str(out)]) == ExitCode.INFEASIBLE
+    capsys.readouterr()
+    text = out.read_text(encoding="utf-8")
+    assert "infeasible" in text and "Tr100x20" in text
+    if fmt == "html":
+        ids: list[str] = []
+
+        class P(HTMLParser):
+            def handle_starttag(self, tag, attrs):
+                if tag == "section":
+                    ids.append(dict(attrs)["id"])
+
+        P().feed(text)
+        assert ids[:3] == ["header", "summary", "required"]
+
+
+def test_a_design_that_fails_its_checks_says_what_it_would_take():
+    req = read_requirements(EXAMPLES / "linear_screw_actuator.toml")
+    ok = Check("travel_time", "travel time", 4.3, 5.0, "s", 5.0 / 4.3, cite("GOST-12139-84"))
+    # 15 turns where 10 are allowed: margin 10/15; 50 % more capacity or a third less demand
+    bad = Check("nut_turns", "engaged nut turns", 15.0, 10.0, "", 10.0 / 15.0, cite("GOST"))
+    exc = InfeasibleError(
+        "no feasible design: the chosen parts fail checks",
+        ["engaged nut turns: 15 against 10"],
+        checks=[ok, bad],
+        nearest="screw Tr16x2, motor 4A71B4",
+    )
+    report = infeasible_report(req, exc)
+    assert report.report.status == "infeasible"
+    assert [c.passed for c in report.checks] == [True, False]
+    assert report.design.to_be_feasible == [
+        "engaged nut turns: 15 against the limit 10 (margin 0.667): 50 % more capacity, "
+        "or 33 % less demand"
+    ]
+    assert 'status = "infeasible"' in to_toml(report)
+    lines = summary_lines(report, EXAMPLE)
+    assert "nearest         screw Tr16x2, motor 4A71B4" in lines  # aligned to "to be feasible"
+    assert any(line.startswith("to be feasible") for line in lines)
+
+
+def test_shortfall_by_hand():
+    # buckling: 5 MN against 3138 N: margin 6.276e-4; 5e6 / 3138 = 1593.37 times the capacity
+    text = shortfall("buckling", 5e6, 3138.0, "N", 3138.0 / 5e6)
+    assert text.startswith("buckling: 5e+06 N against the limit 3138 N (margin 0.001): ")
+    assert "159237 % more capacity" in text and "100 % less demand" in text
