@@ -28,6 +28,7 @@ def build_parser() -> argparse.ArgumentParser:
         description="Rules-based design advisor for electromechanical drives.",
         epilog="Exit codes: 0 design found, 2 invalid input, 3 no feasible design. "
         "`advisor schema` prints the JSON Schema of requirement files. "
+        "`advisor diff A.toml B.toml` says what changed between two reports. "
         "Product-family studies: advisor family FAMILY.toml --out DIR (see advisor family -h).",
     )
     p.add_argument(
@@ -293,6 +294,10 @@ def main(argv: list[str] | None = None) -> int:
     pydantic_plugins.disable()  # every path: the advisor uses no pydantic plugin
     if argv[:1] == ["schema"]:
         return run_schema(argv[1:])
+    if argv[:1] == ["diff"]:  # what changed between two reports (exit 0 same, 1 differ, 2)
+        from advisor.diff import main as diff_main
+
+        return diff_main(argv[1:])
     if argv[:1] == ["family"]:  # product-family studies (Dask): imported only on this path
         from advisor.family.cli import main as family_main
 

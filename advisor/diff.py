@@ -1,0 +1,254 @@
+"""``advisor diff A.toml B.toml``: what changed between two reports, in words and a table —
+the requirement values, the components chosen, the decisions whose outcome changed, the
+checks whose margin moved (both values), the warnings that came or went.
+
+Exit codes as ``diff``'s: 0 the reports say the same, 1 they differ, 2 bad input (one line).
+Pure functions of the reports' plain data (as read from their TOML), so the wizard's "what
+changed since the previous result" can use the same code: :func:`changes_between`.
+"""
+
+import argparse
+import sys
+from dataclasses import dataclass
+from typing import Any
+
+from advisor.core.errors import AdvisorError, ExitCode, InputError
+
+#: A number that moved by less than this share of its size has not moved (the archive keeps
+#: six significant digits; a margin at the fifth digit is noise).
+REL_TOL = 5e-4
+
+
+@dataclass(frozen=True)
+class Change:
+    what: str  # requirement | application | component | decision | check | warning | status
+    item: str
+    before: str
+    after: str
+
+    def words(self) -> str:
+        head = f"{self.what} {self.item}" if self.item else self.what
+        if not self.before:
+            return f"{head}: new, {self.after}"
+        if not self.after:
+            return f"{head}: dropped (was {self.before})"
+        return f"{head}: {self.before} → {self.after}"
+
+
+def _flat(doc: Any, prefix: str = "") -> dict[str, Any]:
+    if isinstance(doc, dict):
+        out: dict[str, Any] = {}
+        for k, v in doc.items():
+            out.update(_flat(v, f"{prefix}.{k}" if prefix else str(k)))
+        return out
+    if isinstance(doc, list) and any(isinstance(v, dict) for v in doc):
+        out = {}
+        for i, v in enumerate(doc):
+            out.update(_flat(v, f"{prefix}[{i + 1}]"))
+        return out
+    return {prefix: doc}
+
+
+def _text(v: Any) -> str:
+    from advisor.datasheet.content import number
+
+    return "" if v is None else number(v)
+
+
+def _moved(a: Any, b: Any) -> bool:
+    if isinstance(a, int | float) and isinstance(b, int | float):
+        if isinstance(a, bool) or isinstance(b, bool):
+            return a != b
+        return abs(a - b) > REL_TOL * max(abs(a), abs(b), 1e-12)
+    return a != b
+
+
+def _requirements(a: dict, b: dict) -> list[Change]:
+    fa, fb = _flat(a.get("requirements", {})), _flat(b.get("requirements", {}))
+    keys = [*fa, *(k for k in fb if k not in fa)]
+    from advisor.datasheet.labels import split_key
+
+    def said(v: Any, k: str) -> str:
+        unit = split_key(k.rsplit(".", 1)[-1])[1]
+        return "" if v is None else f"{_text(v)} {unit}".strip()
+
+    return [
+        Change("requirement", k, said(fa.get(k), k), said(fb.get(k), k))
+        for k in keys
+        if _moved(fa.get(k), fb.get(k))
+    ]
+
+
+def _components(a: dict, b: dict) -> list[Change]:
+    from advisor.datasheet.review import parts
+
+    def chosen(doc: dict) -> dict[str, str]:
+        return {r[0]: ", ".join(x for x in (r[1], r[4]) if x) for r in parts(doc) if r[1] or r[4]}
+
+    ca, cb = chosen(a), chosen(b)
+    keys = [*ca, *(k for k in cb if k not in ca)]
+    return [
+        Change("component", k, ca.get(k, ""), cb.get(k, "")) for k in keys if ca.get(k) != cb.get(k)
+    ]
+
+
+def _decisions(a: dict, b: dict) -> list[Change]:
+    da = {d["id"]: d["decision"] for d in a.get("decisions", [])}
+    db = {d["id"]: d["decision"] for d in b.get("decisions", [])}
+    keys = [*da, *(k for k in db if k not in da)]
+    return [
+        Change("decision", k, da.get(k, ""), db.get(k, "")) for k in keys if da.get(k) != db.get(k)
+    ]
+
+
+def _checks(a: dict, b: dict) -> list[Change]:
+    def of(doc: dict) -> dict[str, dict]:
+        return {c["id"]: c for c in doc.get("checks", [])}
+
+    ca, cb = of(a), of(b)
+
+    def said(c: dict | None) -> str:
+        if c is None:
+            return ""
+        shown = f"{_text(c['value'])} against {_text(c['limit'])} {c['unit']}".strip()
+        return f"margin {c['margin']:.3f} ({shown})"
+
+    out = []
+    for k in [*ca, *(k for k in cb if k not in ca)]:
+        x, y = ca.get(k), cb.get(k)
+        if x is None or y is None or _moved(x["margin"], y["margin"]):
+            out.append(Change("check", k, said(x), said(y)))
+    return out
+
+
+def _warnings(a: dict, b: dict) -> list[Change]:
+    wa, wb = a.get("warnings", []), b.get("warnings", [])
+    return [Change("warning", "", w, "") for w in wa if w not in wb] + [
+        Change("warning", "", "", w) for w in wb if w not in wa
+    ]
+
+
+def differences(a: dict, b: dict) -> list[Change]:
+    """Every change from report ``a`` to report ``b`` (plain data, as read from TOML)."""
+    out: list[Change] = []
+    ha, hb = a.get("report", {}), b.get("report", {})
+    if ha.get("application") != hb.get("application"):
+        out.append(
+            Change("application", "", str(ha.get("application")), str(hb.get("application")))
+        )
+    if ha.get("status") != hb.get("status"):
+        out.append(Change("status", "", str(ha.get("status")), str(hb.get("status"))))
+    for part in (_requirements, _components, _decisions, _checks, _warnings):
+        out += part(a, b)
+    return out
+
+
+def words(changes: list[Change]) -> list[str]:
+    """The changes in words, one a line; a warning names itself."""
+    out = []
+    for c in changes:
+        if c.what == "warning":
+            out.append(f"new warning: {c.after}" if c.after else f"warning gone: {c.before}")
+        else:
+            out.append(c.words())
+    return out
+
+
+def changes_between(before: Any, after: Any) -> list[str]:
+    """What changed between two results (Report objects), in words: what the wizard shows as
+    "changed since the previous result" (the same lines as ``advisor diff``)."""
+    from advisor.core.report import plain
+
+    return words(differences(plain(before), plain(after)))
+
+
+# ------------------------------------------------------------------------------ faces
+COLUMNS = ("what", "item", "before", "after")
+
+
+def as_text(changes: list[Change], a: str, b: str) -> str:
+    if not changes:
+        return f"{a} and {b}: the same\n"
+    lines = [f"{a} → {b}: {len(changes)} changes", *(f"  {w}" for w in words(changes))]
+    return "\n".join(lines) + "\n"
+
+
+def as_markdown(changes: list[Change], a: str, b: str) -> str:
+    from advisor.datasheet.markdown import text
+
+    out = [f"# Changes: {text(a)} → {text(b)}", ""]
+    if not changes:
+        return "\n".join([*out, "The reports say the same.", ""])
+    out += [f"{len(changes)} changes.", ""]
+    out += [f"- {text(w)}" for w in words(changes)] + [""]
+    out += ["| " + " | ".join(COLUMNS) + " |", "|" + "---|" * len(COLUMNS)]
+    out += [
+        "| " + " | ".join(text(x).strip() for x in (c.what, c.item, c.before, c.after)) + " |"
+        for c in changes
+    ]
+    return "\n".join([*out, ""])
+
+
+def as_html(changes: list[Change], a: str, b: str) -> str:
+    from html import escape
+
+    rows = "".join(
+        "<tr>"
+        + "".join(f"<td>{escape(x)}</td>" for x in (c.what, c.item, c.before, c.after))
+        + "</tr>"
+        for c in changes
+    )
+    items = "".join(f"<li>{escape(w)}</li>" for w in words(changes))
+    head = "".join(f"<th>{x}</th>" for x in COLUMNS)
+    body = (
+        f"<p>{len(changes)} changes.</p><ul>{items}</ul><table><tr>{head}</tr>{rows}</table>"
+        if changes
+        else "<p>The reports say the same.</p>"
+    )
+    title = escape(f"Changes: {a} → {b}")
+    return (
+        '<!DOCTYPE html>\n<html lang="en"><head><meta charset="utf-8">'
+        f"<title>{title}</title><style>body {{ font-family: sans-serif; max-width: 60rem; "
+        "margin: 2rem auto; }} td, th {{ border-bottom: 1px solid #ddd; padding: 0.2rem "
+        "0.5rem; text-align: left; vertical-align: top; }} table {{ border-collapse: "
+        f"collapse; }}</style></head><body><h1>{title}</h1>{body}</body></html>\n"
+    )
+
+
+def read_report(path: Any) -> dict:
+    """A report file as plain data; an InputError (exit 2) for a file that is none."""
+    from advisor.io_safety import read_toml, show
+
+    doc = read_toml(path)
+    head = doc.get("report")
+    if not isinstance(head, dict) or "application" not in head:
+        raise InputError(
+            f"{show(str(path), 200)}: not a Drive Advisor report (no [report] table with "
+            "application); give two reports written by advisor --batch -o"
+        )
+    return doc
+
+
+def main(argv: list[str]) -> int:
+    p = argparse.ArgumentParser(
+        prog="advisor diff",
+        description="What changed between two reports. Exit 0 the same, 1 different, 2 bad input.",
+    )
+    p.add_argument("a", metavar="A.toml")
+    p.add_argument("b", metavar="B.toml")
+    p.add_argument("--format", choices=("text", "md", "html"), default="text")
+    try:
+        args = p.parse_args(argv)
+    except SystemExit as exc:
+        return int(exc.code or 0)
+    try:
+        a, b = read_report(args.a), read_report(args.b)
+    except AdvisorError as exc:
+        from advisor.cli import _err
+
+        _err(str(exc).splitlines()[0] if str(exc) else "bad input")
+        return ExitCode.INVALID_INPUT
+    changes = differences(a, b)
+    face = {"text": as_text, "md": as_markdown, "html": as_html}[args.format]
+    sys.stdout.write(face(changes, args.a, args.b))
+    return 1 if changes else ExitCode.OK
