@@ -377,11 +377,23 @@ def _motor_limits(doc: dict) -> tuple[list[Line], list[Line]] | None:
     return None
 
 
+def _mean_speed(phase: dict) -> float | None:
+    """Where a phase sits on the speed axis: a ramp (its start and end speeds given) at its
+    mean speed, where its torque acts on average; a steady phase at its speed. At its top
+    speed a starting torque would stand outside the motor's M(n), which it never meets."""
+    from advisor.datasheet.review import speed_rpm
+
+    if "speed_start_rpm" in phase and "speed_end_rpm" in phase:
+        return (abs(phase["speed_start_rpm"]) + abs(phase["speed_end_rpm"])) / 2.0
+    n = speed_rpm(phase)
+    return None if n is None else abs(n)
+
+
 def envelope(doc: dict) -> Plot | None:
     """The motor's continuous and peak torque–speed envelope with the operating points the
     report states: each phase of the cycle (at its speed, the magnitude of its torque), the
     RMS torque at the mean speed and the peak torque; without a cycle, the working point."""
-    from advisor.datasheet.review import phases_of, speed_rpm
+    from advisor.datasheet.review import phases_of
 
     limits = _motor_limits(doc)
     if limits is None:
@@ -389,11 +401,10 @@ def envelope(doc: dict) -> Plot | None:
     cont, peak = limits
     lines = [*cont, *peak]
     phases = phases_of(doc) or []
-    pts = [(speed_rpm(p), abs(p["torque_Nm"])) for p in phases if speed_rpm(p) is not None]
+    pts = [(_mean_speed(p), abs(p["torque_Nm"])) for p in phases if _mean_speed(p) is not None]
     if pts:
-        lines.append(
-            Line("phases of the cycle", [x for x, _ in pts], [y for _, y in pts], "points")
-        )
+        label = "phases of the cycle (a ramp at its mean speed)"
+        lines.append(Line(label, [x for x, _ in pts], [y for _, y in pts], "points"))
     d = _get(doc, "design", "duty") or {}
     rms, n_mean = d.get("rms_torque_Nm"), d.get("mean_speed_rpm")
     if isinstance(rms, int | float) and isinstance(n_mean, int | float):
