@@ -12,11 +12,13 @@ from textual import events
 from textual.widgets import Input
 
 from advisor.tui import draft as drafts
+from advisor.tui import fields as F
 from advisor.tui.app import DriveAdvisorApp
 
 SIZE = (120, 40)
 LINEAR = {"application": {"kind": "linear"}}
 FORCE, STROKE, TIME = "f-linear-force-N", "f-linear-stroke-m", "f-linear-travel-time-s"
+SPAN = "f-linear-support-span-m"
 
 
 @pytest.fixture(autouse=True)
@@ -25,7 +27,15 @@ def _state_dir(tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
 
 
-_CHARS = {"enter": "\r", "tab": "\t", "shift+tab": None, "ctrl+n": "\x0e", "backspace": "\x7f"}
+#: what a terminal sends for the keys that are not characters (a Key's ``character``)
+_CHARS = {
+    "enter": "\r",
+    "tab": "\t",
+    "shift+tab": None,
+    "backspace": "\x7f",
+    "ctrl+n": "\x0e",
+    "ctrl+q": "\x11",
+}
 
 
 def _burst(app, *keys: str) -> None:
@@ -74,35 +84,36 @@ async def test_keys_pressed_without_pauses_fill_two_fields():
     assert drafts.load_draft(None).doc["linear"] == {"force_N": 600.0, "stroke_m": 25.0}
 
 
+def _first_of_step_2() -> str:
+    """The id of the screw step's first field (the model decides which it is)."""
+    return F.fields_for("linear", 2)[0].id
+
+
 async def test_a_burst_runs_on_into_the_next_step():
-    """enter on a step's last field is ctrl+n: the keys after it go to the next step's first
-    field (the screw's number of starts, then its thread)."""
+    """enter on a step's last field is ctrl+n: the keys after it act on the next step's
+    first field. Every field of the load step gets a value or, optional, enter alone."""
+    values = {FORCE: "3500", STROKE: "0.2", TIME: "5", SPAN: "0.4"}
+    fields = F.fields_for("linear", 1)
+    assert all(f.optional for f in fields if f.id not in values)
     app = DriveAdvisorApp(dict(LINEAR), offer_draft=False)
     async with app.run_test(size=SIZE) as pilot:
         await _on_the_linear_step(app, pilot)
-        keys = [*"3500", "enter", *"0.2", "enter", "5", "enter", *"0.4", "enter"]
-        _burst(app, *keys, "1", "enter", *"Tr16x2", "enter")
-        await _until(pilot, lambda: app.focused.id == "f-screw-material-pair", "the 3rd field")
-        assert app.step == 2
-        assert (_value(app, "f-screw-starts"), _value(app, "f-screw-thread")) == ("1", "Tr16x2")
-        assert [_value(app, w) for w in (FORCE, STROKE, TIME, "f-linear-support-span-m")] == [
-            "3500",
-            "0.2",
-            "5",
-            "0.4",
-        ]
+        _burst(app, *(k for f in fields for k in (*values.get(f.id, ""), "enter")))
+        await _until(pilot, lambda: app.step == 2, "the screw step")
+        await _until(pilot, lambda: app.focused.id == _first_of_step_2(), "its first field")
+        assert {w: _value(app, w) for w in values} == values
 
 
 async def test_ctrl_n_in_a_burst_sees_the_text_typed_before_it():
-    """Every field of the step is required: ctrl+n right after the last one's "0.4" finds it
-    typed (before, it checked the step first and said "Not yet")."""
+    """The support span is required: ctrl+n right after its "0.4" finds it typed (before,
+    it checked the step first and said "Not yet")."""
     app = DriveAdvisorApp(dict(LINEAR), offer_draft=False)
     async with app.run_test(size=SIZE) as pilot:
         await _on_the_linear_step(app, pilot)
         _burst(app, *"3500", "enter", *"0.2", "enter", "5", "enter", *"0.4", "ctrl+n")
         await _until(pilot, lambda: app.step == 2, "the screw step")
-        assert _value(app, "f-linear-support-span-m") == "0.4"
-        assert app.focused.id == "f-screw-starts"
+        assert _value(app, SPAN) == "0.4"
+        assert app.focused.id == _first_of_step_2()
 
 
 async def test_tab_and_shift_tab_in_a_burst_move_before_the_next_key():
@@ -137,3 +148,14 @@ async def test_a_paste_without_a_line_end_stays_in_its_field():
         _burst(app, "enter")
         await _until(pilot, lambda: app.focused.id == STROKE, "the stroke focused")
         assert _value(app, STROKE) == ""
+
+
+async def test_quitting_right_after_typing_keeps_the_text_in_the_draft():
+    """ctrl+q right after "25" in a burst: the 25 was still on its way to the document when
+    the wizard quit, and the draft lacked it."""
+    app = DriveAdvisorApp(dict(LINEAR), offer_draft=False)
+    async with app.run_test(size=SIZE) as pilot:
+        await _on_the_linear_step(app, pilot)
+        _burst(app, "6", "0", "0", "enter", "2", "5", "ctrl+q")
+        await _until(pilot, lambda: app._exit, "the wizard quit")
+    assert drafts.load_draft(None).doc["linear"] == {"force_N": 600.0, "stroke_m": 25.0}

@@ -115,13 +115,17 @@ def test_a_burst_of_keys_in_tmux_fills_field_after_field(tmp_path, monkeypatch):
                     break
             time.sleep(0.1)
         assert saved.get("linear") == want
-        lines = _tmux("capture-pane", "-p", "-t", session).splitlines()
-        shown = {
-            name: lines[i].split("▊")[-1].strip(" ▎")
-            for i, line in enumerate(lines)
-            for name in ("Axial force [N]", "Stroke [m]")
-            if name in line
-        }
+        shown: dict[str, str] = {}
+        for _ in range(300):  # the screen is painted after the draft is written
+            shown = {
+                name: line.split("▊")[-1].strip(" ▎")
+                for line in _tmux("capture-pane", "-p", "-t", session).splitlines()
+                for name in ("Axial force [N]", "Stroke [m]")
+                if name in line
+            }
+            if shown == {"Axial force [N]": "600", "Stroke [m]": "25"}:
+                break
+            time.sleep(0.1)
         assert shown == {"Axial force [N]": "600", "Stroke [m]": "25"}
         _tmux("send-keys", "-t", session, "C-q")
     finally:

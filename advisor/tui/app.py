@@ -555,6 +555,7 @@ class DriveAdvisorApp(App[None]):
         await self._settle(box)
         if box is not self.focused:  # (the focus moved meanwhile, as by a click: textual's)
             return False
+        self._sync_box(box)
         if event.key == "enter" and self._wizard_box() is box:
             await self._enter_in(box)
             return True
@@ -565,6 +566,15 @@ class DriveAdvisorApp(App[None]):
                 self.screen.focus_previous()
             return True
         return False
+
+    def _sync_box(self, box: Input) -> None:
+        """The text of a wizard's field into the document (and the draft) now. Its change
+        message is still on its way up, behind the key being handled here: ctrl+q right
+        after "25" quit before it arrived, and the draft lacked the 25."""
+        f = self._field_by_id(box.id)
+        if f is not None and self._synced.get(f.id) != box.value:
+            self._sync_input(f, box.value)
+            self._changed()
 
     @staticmethod
     def _bindings_for(box: Input, key: str) -> bool:
@@ -592,6 +602,7 @@ class DriveAdvisorApp(App[None]):
             if line:
                 box._forward_event(events.Paste(line))
                 await self._settle(box)
+                self._sync_box(box)
             if i < len(lines) - 1:
                 await self._enter_in(box)
         return True
