@@ -14,10 +14,12 @@ from advisor.core.cite import Cite
 from advisor.core.errors import CatalogError
 from catalogs.rows import (
     Bearing,
+    BldcFrame,
     ElectricalSteel,
     FrictionConstants,
     FrictionPair,
     InductionMotor,
+    MagnetPoint,
     Materials,
     ScrewSteel,
 )
@@ -32,6 +34,8 @@ MATERIALS_FILE = "screw_materials.toml"
 STEELS_FILE = "electrical_steels.toml"
 BEARINGS_FILE = "skf_bearings.toml"
 BIBLIOGRAPHY_FILE = "bibliography.toml"
+FRAMES_FILE = "bldc_frames.toml"
+BLDC_MOTORS_FILE = "bldc_motors.toml"  # a user catalog's PM brushless motors (none shipped)
 
 #: A catalog's [sources] entry, resolved: (bibliography id, what the file takes from it).
 SourceMap = dict[str, tuple[str, str]]
@@ -53,6 +57,14 @@ class Catalogs(NamedTuple):
     bearing_sources: SourceMap = {}  # noqa: RUF012
     #: catalogs/bibliography.toml (plus a user directory's): id → entry (fields as written)
     bibliography: dict[str, dict[str, Any]] = {}  # noqa: RUF012
+    #: PM brushless motors the rotary advice chooses from: seed 000's scaled frames (the
+    #: reference among them) and a user directory's bldc_motors.toml (issue 25)
+    bldc_frames: tuple[BldcFrame, ...] = ()
+    bldc_sources: SourceMap = {}  # noqa: RUF012
+
+    def bldc_frame(self, name: str) -> BldcFrame | None:
+        key = name.strip().lower()
+        return next((f for f in self.bldc_frames if f.name.lower() == key), None)
 
     def cite_rows(self, sources: SourceMap, keys: "str | list[str] | tuple[str, ...]") -> Cite:
         """The citation of a catalog row whose ``source`` names ``keys`` of ``sources``."""
@@ -339,6 +351,7 @@ def load_catalogs(user_dir: Path | None = None) -> Catalogs:
             STEELS_FILE,
             BEARINGS_FILE,
             BIBLIOGRAPHY_FILE,
+            FRAMES_FILE,
         )
     ]
     if user_dir is not None:
@@ -351,6 +364,7 @@ def load_catalogs(user_dir: Path | None = None) -> Catalogs:
                 STEELS_FILE,
                 BEARINGS_FILE,
                 BIBLIOGRAPHY_FILE,
+                BLDC_MOTORS_FILE,
             )
         ]
     cache_file = _cache_file(files)
@@ -374,6 +388,7 @@ def _load_and_validate(user_dir: Path | None) -> Catalogs:
     materials = _load_materials(HERE / MATERIALS_FILE, bib)
     steels, steel_sources = _load_steels(HERE / STEELS_FILE, bib)
     bearings, friction, bearing_sources = _load_bearings(HERE / BEARINGS_FILE, bib)
+    frames, bldc_sources = _load_frames(HERE / FRAMES_FILE, bib)
     if user_dir is not None:
         if not user_dir.is_dir():
             raise CatalogError(f"catalog directory {user_dir}: not a directory")
@@ -401,6 +416,11 @@ def _load_and_validate(user_dir: Path | None) -> Catalogs:
             _check_unique(
                 user_dir / BEARINGS_FILE, [b.designation.upper() for b in bearings], "bearing"
             )
+        if (user_dir / BLDC_MOTORS_FILE).exists():
+            extra_f, extra_src = _load_bldc_motors(user_dir / BLDC_MOTORS_FILE, bib)
+            frames = frames + extra_f
+            bldc_sources = {**bldc_sources, **extra_src}
+            _check_unique(user_dir / BLDC_MOTORS_FILE, [f.name.lower() for f in frames], "motor")
     return Catalogs(
         threads=tuple(sorted(threads, key=lambda t: (t.d_mm, -t.pitch_mm))),
         threads_source=threads_source,
@@ -415,7 +435,118 @@ def _load_and_validate(user_dir: Path | None) -> Catalogs:
         bearing_friction=friction,
         bearing_sources=bearing_sources,
         bibliography=bib,
+        bldc_frames=tuple(frames),
+        bldc_sources=bldc_sources,
     )
+
+
+def _load_frames(path: Path, bib: dict[str, dict[str, Any]]) -> tuple[list[BldcFrame], SourceMap]:
+    """Seed 000's reference frame and the frames scaled from it, each checked against the
+    law from the reference (:func:`catalogs.frames.check_row`)."""
+    from pydantic import ValidationError
+
+    from catalogs.frames import ORIGIN, check_row
+    from catalogs.schema import BldcFrameRow, BldcReferenceRow
+
+    data = _read(path)
+    sources = _resolve_sources(path, data.get("sources", {}), bib)
+    try:
+        ref = BldcReferenceRow.model_validate(data.get("reference")).model_dump()
+    except ValidationError as exc:
+        raise _fail(path, "[reference]", exc) from None
+    law = str(data.get("law", ""))
+    out = []
+    for i, row in enumerate(_rows(path, data, "frame"), start=1):
+        where = f"row {i} (name = {row.get('name')!r})"
+        try:
+            f = BldcFrameRow.model_validate(row).model_dump()
+        except ValidationError as exc:
+            raise _fail(path, where, exc) from None
+        why = check_row(f, ref)
+        if why is not None:
+            raise CatalogError(f"catalog {path}, {where}: {why}")
+        missing = set(f["source"]) - set(sources)
+        if missing:
+            raise CatalogError(
+                f"catalog {path}, {where}: source names {sorted(missing)} not in [sources]"
+            )
+        is_ref = f["name"] == ref["name"]
+        out.append(
+            BldcFrame(
+                name=f["name"],
+                kind="scaled",
+                speed_rpm=f["speed_rpm"],
+                torque_Nm=f["torque_Nm"],
+                current_A=f["current_A"],
+                phase_resistance_ohm=f["phase_resistance_ohm"],
+                conducting_phases=2,
+                stator_steel_area_mm2=f["stator_steel_area_mm2"],
+                stack_length_mm=f["stack_length_mm"],
+                magnet_losses=tuple(MagnetPoint(n, w) for n, w in f["magnet_losses"]),
+                rotor_inertia_kgm2=f["rotor_inertia_kgm2"],
+                thermal_time_constant_s=f["thermal_time_constant_s"],
+                mass_kg=f["mass_kg"],
+                outer_diameter_mm=f["stator_outer_diameter_mm"],
+                length_mm=f["stack_length_mm"],
+                source=tuple(f["source"]),
+                law=("seed 000's reference frame" if is_ref else ORIGIN) + f" ({law})",
+                length_scale=f["length_scale"],
+                estimated=tuple(ref["estimated"]),
+            )
+        )
+    _check_unique(path, [f.name for f in out], "frame")
+    if not any(f.name == ref["name"] for f in out):
+        raise CatalogError(f"catalog {path}: the reference {ref['name']!r} is not a [[frame]]")
+    return out, dict(sources)
+
+
+def _load_bldc_motors(
+    path: Path, bib: dict[str, dict[str, Any]]
+) -> tuple[list[BldcFrame], SourceMap]:
+    """A user's PM brushless motors (bldc_motors.toml): datasheet rows as frames whose limit
+    is their copper loss at the continuous torque (no core losses are published)."""
+    from pydantic import ValidationError
+
+    from catalogs.schema import BldcMotorRow
+
+    data = _read(path)
+    sources = _resolve_sources(path, data.get("sources", {}), bib)
+    out = []
+    for i, row in enumerate(_rows(path, data, "motor"), start=1):
+        where = f"row {i} (name = {row.get('name')!r})"
+        try:
+            m = BldcMotorRow.model_validate(row)
+        except ValidationError as exc:
+            raise _fail(path, where, exc) from None
+        if m.source not in sources:
+            raise CatalogError(f"catalog {path}, {where}: source = {m.source!r} not in [sources]")
+        out.append(
+            BldcFrame(
+                name=m.name,
+                kind="catalog",
+                speed_rpm=m.rated_speed_rpm,
+                torque_Nm=m.continuous_torque_Nm,
+                current_A=m.continuous_torque_Nm / m.torque_constant_Nm_A,
+                phase_resistance_ohm=m.phase_resistance_ohm,
+                conducting_phases=3,  # sinusoidal currents: P = 3·R·I_rms²
+                stator_steel_area_mm2=0.0,
+                stack_length_mm=m.length_mm,
+                magnet_losses=(MagnetPoint(m.rated_speed_rpm, 0.0),),
+                rotor_inertia_kgm2=m.rotor_inertia_kgm2,
+                thermal_time_constant_s=m.thermal_time_constant_s,
+                mass_kg=m.mass_kg,
+                outer_diameter_mm=m.outer_diameter_mm,
+                length_mm=m.length_mm,
+                source=(m.source,),
+                law=f"datasheet ({path.name})",
+                peak_torque_Nm=m.peak_torque_Nm,
+                torque_constant_Nm_A=m.torque_constant_Nm_A,
+                estimated=tuple(m.estimated),
+                pole_pairs=m.pole_pairs,
+            )
+        )
+    _check_unique(path, [f.name.lower() for f in out], "motor")
+    return out, dict(sources)
 
 
 #: Estimates of ball geometry where a catalog row does not publish it (see skf_bearings.toml).
@@ -520,7 +651,7 @@ def _check_unique(path: Path, names: list[str], what: str) -> None:
 
 
 # ---------------------------------------------------------------- cache of validated catalogs
-CACHE_VERSION = 5  # 5: rows checked for physical consistency (issue 24)
+CACHE_VERSION = 6  # 6: PM brushless frames and user motors (issue 25)
 
 
 def _cache_file(files: list[Path]) -> Path | None:
@@ -559,6 +690,8 @@ def _read_cache(path: Path) -> Catalogs | None:
             },
             bearing_sources=_source_map(data["bearing_sources"]),
             bibliography=data["bibliography"],
+            bldc_frames=tuple(BldcFrame.from_dict(f) for f in data["bldc_frames"]),
+            bldc_sources=_source_map(data["bldc_sources"]),
         )
     except (OSError, ValueError, EOFError, KeyError, TypeError):
         return None  # absent, truncated or stale format: validate the files again
@@ -583,6 +716,8 @@ def _write_cache(path: Path, cat: Catalogs) -> None:
         "bearing_friction": {k: v._asdict() for k, v in cat.bearing_friction.items()},
         "bearing_sources": cat.bearing_sources,
         "bibliography": cat.bibliography,
+        "bldc_frames": [f.as_dict() for f in cat.bldc_frames],
+        "bldc_sources": cat.bldc_sources,
     }
     try:
         path.parent.mkdir(parents=True, exist_ok=True)

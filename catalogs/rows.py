@@ -161,3 +161,67 @@ class Bearing(NamedTuple):
     def inner_raceway_radius_mm(self) -> float:
         """r_B of seed 002, eq. (4): pitch radius less the ball radius."""
         return (self.pitch_diameter_mm - self.ball_diameter_mm) / 2.0
+
+
+class MagnetPoint(NamedTuple):
+    """Magnet eddy losses of a frame at a motor speed (seed 000: 60 W at 5000 rpm)."""
+
+    speed_rpm: float
+    loss_W: float
+
+
+class BldcFrame(NamedTuple):
+    """A PM brushless motor the rotary advice can choose: a frame of the series scaled from
+    seed 000's reference (``kind = "scaled"``) or a user's catalog motor (``"catalog"``).
+
+    It carries the attributes of seed 000's loss model (those of the requirement's
+    ``[motor.reference]``), so the advice computes its losses, its limit (its own losses at
+    its own rated point) and its duty exactly as for the reference. A catalog motor has no
+    steel area and no magnet losses: its datasheet states no core losses, its copper loss at
+    the continuous torque is its limit, and no speed above its rated speed is offered."""
+
+    name: str
+    kind: str  # "scaled" | "catalog"
+    speed_rpm: float  # rated speed: the point the limit is taken at
+    torque_Nm: float  # continuous torque at that speed
+    current_A: float
+    phase_resistance_ohm: float
+    conducting_phases: int
+    stator_steel_area_mm2: float
+    stack_length_mm: float
+    magnet_losses: tuple[MagnetPoint, ...]
+    rotor_inertia_kgm2: float
+    thermal_time_constant_s: float
+    mass_kg: float
+    outer_diameter_mm: float
+    length_mm: float
+    source: tuple[str, ...]
+    law: str
+    length_scale: float = 1.0
+    peak_torque_Nm: float | None = None
+    torque_constant_Nm_A: float | None = None
+    estimated: tuple[str, ...] = ()
+    pole_pairs: int = 6
+    stacking_factor: float = 0.85
+    steel_density_kg_m3: float = 7800.0
+    steel_grade: str = "2413"
+    steel_thickness_mm: float = 0.35
+    induction_T: float = 1.5
+    iron_loss_model: str = "quadratic"
+
+    def as_dict(self) -> dict:
+        d = self._asdict()
+        d["magnet_losses"] = [list(p) for p in self.magnet_losses]
+        return d
+
+    @classmethod
+    def from_dict(cls, d: dict) -> "BldcFrame":
+        pts = tuple(MagnetPoint(*p) for p in d["magnet_losses"])
+        return cls(
+            **{
+                **d,
+                "magnet_losses": pts,
+                "source": tuple(d["source"]),
+                "estimated": tuple(d["estimated"]),
+            }
+        )

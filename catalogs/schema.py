@@ -400,3 +400,154 @@ class SourceRef(_Row):
 
     id: str
     note: str = ""
+
+
+# ---------------------------------------------------------------- PM brushless motors
+class BldcReferenceRow(_Row):
+    """[reference] of catalogs/bldc_frames.toml: seed 000's frame and its estimates."""
+
+    name: str
+    stator_outer_diameter_mm: Positive
+    stack_length_mm: Positive
+    torque_Nm: Positive
+    speed_rpm: Positive
+    stator_steel_area_mm2: Positive
+    phase_resistance_ohm: Positive
+    current_A: Positive
+    magnet_losses: list[
+        Annotated[
+            list[Annotated[float, Field(ge=0, allow_inf_nan=False)]],
+            Field(min_length=2, max_length=2),
+        ]
+    ]
+    rotor_inertia_kgm2: Positive
+    mass_kg: Positive
+    thermal_time_constant_s: Positive
+    estimated: list[str] = []
+    source: list[str]
+
+    @model_validator(mode="after")
+    def _steel_fits(self) -> "BldcReferenceRow":
+        _check_steel_fits(self.stator_steel_area_mm2, self.stator_outer_diameter_mm)
+        return self
+
+
+def _check_steel_fits(area_mm2: float, diameter_mm: float) -> None:
+    """The stator steel's cross-section within the stator's outer circle."""
+    import math
+
+    disc = math.pi / 4 * diameter_mm**2
+    if area_mm2 >= disc:
+        raise _field(
+            "stator_steel_area_mm2",
+            area_mm2,
+            f"must be below the stator's outer disc π/4·D² = {disc:.5g} mm² (D = {diameter_mm:g})",
+        )
+
+
+class BldcFrameRow(_Row):
+    """A [[frame]] of catalogs/bldc_frames.toml (checked against the law by the loader)."""
+
+    name: Annotated[str, Field(pattern=r"^BL\d{3}x\d{3}$")]
+    length_scale: Positive
+    stator_outer_diameter_mm: Positive
+    torque_Nm: Positive
+    speed_rpm: Positive
+    stack_length_mm: Positive
+    stator_steel_area_mm2: Positive
+    phase_resistance_ohm: Positive
+    current_A: Positive
+    rotor_inertia_kgm2: Positive
+    mass_kg: Positive
+    thermal_time_constant_s: Positive
+    magnet_losses: list[
+        Annotated[
+            list[Annotated[float, Field(ge=0, allow_inf_nan=False)]],
+            Field(min_length=2, max_length=2),
+        ]
+    ]
+    origin: Literal["scaled from seed 000's reference frame by the file's law"]
+    source: list[str]
+
+    @model_validator(mode="after")
+    def _steel_fits(self) -> "BldcFrameRow":
+        _check_steel_fits(self.stator_steel_area_mm2, self.stator_outer_diameter_mm)
+        return self
+
+
+#: Density bound of a motor: nothing in it is denser than copper (8960 kg/m³), so a motor is
+#: never heavier than a solid copper cylinder of its envelope.
+COPPER_DENSITY_KG_M3 = 8960.0
+#: The largest air-gap tangential stress of any cooled machine, Pa: direct liquid cooling
+#: (Pyrhönen, Jokinen, Hrabovcová, «Design of Rotating Electrical Machines», 2008, table 6.3,
+#: up to about 130 kPa). A torque T over a rotor inside the envelope asks σ = T/(2·V_rotor) >
+#: T/(2·V_envelope); a row whose continuous torque needs more than this over its whole
+#: envelope is not a motor.
+MAX_SHEAR_STRESS_PA = 130e3
+BLDC_ESTIMABLE = {
+    "peak_torque_Nm",
+    "phase_resistance_ohm",
+    "torque_constant_Nm_A",
+    "rotor_inertia_kgm2",
+    "mass_kg",
+    "thermal_time_constant_s",
+}
+
+
+class BldcMotorRow(_Row):
+    """A [[motor]] of a user's bldc_motors.toml: a datasheet's PM brushless motor."""
+
+    name: Annotated[str, Field(min_length=1, max_length=60)]
+    continuous_torque_Nm: Positive
+    peak_torque_Nm: Positive
+    rated_speed_rpm: Annotated[float, Field(gt=0, le=2e5, allow_inf_nan=False)]
+    phase_resistance_ohm: Positive
+    torque_constant_Nm_A: Positive
+    rotor_inertia_kgm2: Positive
+    mass_kg: Positive
+    outer_diameter_mm: Positive
+    length_mm: Positive
+    thermal_time_constant_s: Positive
+    pole_pairs: Annotated[int, Field(ge=1, le=100)] = 4
+    source: str
+    estimated: list[str] = []
+
+    @model_validator(mode="after")
+    def _consistent(self) -> "BldcMotorRow":
+        import math
+
+        if self.peak_torque_Nm < self.continuous_torque_Nm:
+            raise _field(
+                "peak_torque_Nm",
+                self.peak_torque_Nm,
+                f"below the continuous torque continuous_torque_Nm = {self.continuous_torque_Nm:g}",
+            )
+        d, length = self.outer_diameter_mm * 1e-3, self.length_mm * 1e-3
+        volume = math.pi / 4 * d * d * length
+        if self.mass_kg > COPPER_DENSITY_KG_M3 * volume:
+            raise _field(
+                "mass_kg",
+                self.mass_kg,
+                f"heavier than solid copper in the envelope Ø{self.outer_diameter_mm:g} × "
+                f"{self.length_mm:g} mm ({COPPER_DENSITY_KG_M3 * volume:.4g} kg)",
+            )
+        ring = self.mass_kg * (d / 2) ** 2
+        if self.rotor_inertia_kgm2 >= ring:
+            raise _field(
+                "rotor_inertia_kgm2",
+                self.rotor_inertia_kgm2,
+                f"not below the whole mass on the outer radius, m·(D/2)² = {ring:.4g} kg·m²",
+            )
+        stress = self.continuous_torque_Nm / (2 * volume)
+        if stress > MAX_SHEAR_STRESS_PA:
+            raise _field(
+                "continuous_torque_Nm",
+                self.continuous_torque_Nm,
+                f"asks an air-gap shear stress T/(2·V) = {stress / 1e3:.4g} kPa over the whole "
+                f"envelope, above the {MAX_SHEAR_STRESS_PA / 1e3:g} kPa of direct liquid "
+                "cooling (Pyrhönen et al. 2008, table 6.3)",
+            )
+        unknown = set(self.estimated) - BLDC_ESTIMABLE
+        if unknown:
+            raise ValueError(f"estimated names unknown fields {sorted(unknown)}")
+        return self

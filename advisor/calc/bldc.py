@@ -240,3 +240,87 @@ def optimum_frequency_Hz(ohmic_W: float, core_W: float, frequency_Hz: float) -> 
     k_om = ohmic_W * frequency_Hz**2
     k_mag = core_W / frequency_Hz**2
     return (k_om / k_mag) ** 0.25
+
+
+# ---------------------------------------------------------------- a frame series by similarity
+#: Exponents of the scaling laws under geometric similarity (every length × l*, the same
+#: materials, the same flux density B* = 1 and the same winding temperature rise θ* = 1),
+#: for the preliminary design of electromechanical actuators [3], [4], [5]:
+#:
+#: - continuous torque T* = J*·l*⁴ with the current density J* = l*^-0.5 (Joule losses carried
+#:   by convection over a surface ∝ l*², θ* = 1): T* = l*^3.5 [3] (§ brushless motor), [5];
+#: - rated (maximum) speed Ω* = l*^-1 (the same peripheral speed, i.e. the same centrifugal
+#:   stress in the rotor) [3]; SizingLab's VEGA notebook writes W* = T*^(-1/3.5) [6];
+#: - stator steel area ∝ l*², stack length ∝ l*, steel mass ∝ l*³ (seed 000's m = ρ·S·l·k);
+#: - phase resistance R* = T*^(-5/3.5)·K_T*² [6] with the winding for the same bus voltage at
+#:   the rated speed (K_T·Ω = const, K_T* = l*): R* = l*^-3, current I* = T*/K_T* = l*^2.5, so
+#:   the Joule loss at the rated torque R*·I*² = l*² (the θ* = 1 premise of the torque law);
+#: - magnet eddy losses ∝ the magnet volume l*³ at the same frequency: the classical loss
+#:   density σ·(π·f·B·w)²/6 of a conducting plate of width w is kept by segmenting the magnets
+#:   into pieces of the reference's width (whole magnets, w ∝ l*, would give l*⁵);
+#: - rotor inertia J* = l*⁵ = T*^(5/3.5), mass M* = l*³ = T*^(3/3.5) [3], [5], [6];
+#: - thermal time constant τ* = R_th*·C_th* = l*^-2·l*³ = l* (convection) [5];
+#: - outer dimensions (stator diameter, stack length) ∝ l*.
+#:
+#: [3] M. Budinger, J. Liscouët, F. Hospital, J.-C. Maré, «Estimation models for the
+#:     preliminary design of electromechanical actuators», Proc. IMechE Part G 226 (3),
+#:     243–259, 2012. [4] M. Budinger, J.-C. Passieux, C. Gogu, A. Fraj, «Scaling-law-based
+#:     metamodels for the sizing of mechatronic systems», Mechatronics 24 (7), 775–787, 2014.
+#:     [5] M. Budinger, S. Delbecq, «Sizing and optimization of mechatronic systems», course,
+#:     lecture 2 «Scaling laws» (INSA/ISAE Toulouse, SizingLab/sizing_course). [6] SizingLab,
+#:     VEGA TVC EMA notebook «Sizing procedure and optimization with OpenMDAO» (motor:
+#:     M ∝ T^(3/3.5), J ∝ T^(5/3.5), W ∝ T^(-1/3.5)); FAST-UAV motor estimation models
+#:     (R ∝ T^(-5/3.5)·K_T²).
+SCALING_EXPONENTS: dict[str, float] = {
+    "torque_Nm": 3.5,
+    "speed_rpm": -1.0,
+    "stator_outer_diameter_mm": 1.0,
+    "stack_length_mm": 1.0,
+    "stator_steel_area_mm2": 2.0,
+    "phase_resistance_ohm": -3.0,
+    "current_A": 2.5,
+    "magnet_loss_W": 3.0,
+    "rotor_inertia_kgm2": 5.0,
+    "mass_kg": 3.0,
+    "thermal_time_constant_s": 1.0,
+}
+
+#: The law a scaled row states, in words.
+SCALING_LAW = (
+    "geometric similarity from seed 000's reference frame (Budinger et al. 2012, 2014): "
+    "T ∝ l^3.5, n ∝ l^-1, steel area ∝ l², stack ∝ l, R ∝ l^-3, I ∝ l^2.5, magnet losses "
+    "∝ l³, J ∝ l⁵, mass ∝ l³, τ_th ∝ l"
+)
+
+
+def length_scale_for_torque(torque_Nm: float, reference_torque_Nm: float) -> float:
+    """l* of the frame that gives ``torque_Nm`` continuously, T* = l*^3.5 [3].
+
+    >>> round(length_scale_for_torque(2 * 2**3.5, 2.0), 9)
+    2.0
+    """
+    return (torque_Nm / reference_torque_Nm) ** (1.0 / SCALING_EXPONENTS["torque_Nm"])
+
+
+def scaled(quantity: str, reference_value: float, length_scale: float) -> float:
+    """A quantity of the frame l* times the reference's, by its law (:data:`SCALING_EXPONENTS`).
+
+    The 2.0 N·m reference at twice its size: 2·2^3.5 = 22.6 N·m, its rotor 2⁵ = 32 times the
+    inertia, its rated speed halved.
+
+    >>> round(scaled("torque_Nm", 2.0, 2.0), 3), scaled("rotor_inertia_kgm2", 1.0, 2.0)
+    (22.627, 32.0)
+    >>> scaled("speed_rpm", 5000.0, 2.0)
+    2500.0
+    """
+    return reference_value * length_scale ** SCALING_EXPONENTS[quantity]
+
+
+def thermal_time_constant_s(limit_W: float, rise_K: float, heat_capacity_J_K: float) -> float:
+    """τ = R_th·C_th of a first-order body whose limit losses give the allowed rise:
+    R_th = Δθ/P. 228.4 W for 105 K and 1191 J/K: 547.6 s.
+
+    >>> round(thermal_time_constant_s(228.42, 105.0, 2.5949 * 459.0), 1)
+    547.5
+    """
+    return rise_K / limit_W * heat_capacity_J_K
