@@ -298,6 +298,10 @@ def main(argv: list[str] | None = None) -> int:
         from advisor.diff import main as diff_main
 
         return diff_main(argv[1:])
+    if argv[:1] == ["verify"]:  # published worked examples, computed again (exit 0 / 1)
+        from advisor.verify import main as verify_main
+
+        return verify_main(argv[1:])
     if argv[:1] == ["family"]:  # product-family studies (Dask): imported only on this path
         from advisor.family.cli import main as family_main
 

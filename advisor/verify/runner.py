@@ -1,0 +1,277 @@
+"""Run the verification set: each case's published values against what the advisor computes.
+
+The set is data (``advisor/verify/cases.toml``, read by :func:`load_cases`); a case either runs
+the whole advisor on a requirement and reads its report, or calls a direct calculation of
+:mod:`advisor.verify.models`. Each quantity gets a verdict:
+
+- ``pass``: within its tolerance of the published value (or inside the published bound);
+- ``departure``: outside it, but equal within its own tolerance to the value the advisor is
+  stated to compute instead, for the reason the data gives (a departure on purpose);
+- ``FAIL``: neither — the advisor does not reproduce the source, and does not say why;
+- ``ERROR``: the case could not be run (the advisor raised, or the path is not in the report).
+"""
+
+import math
+import re
+import tomllib
+from dataclasses import dataclass, field
+from importlib import resources
+from pathlib import Path
+from typing import Any
+
+#: Verdicts that count as verified.
+GOOD = ("pass", "departure")
+
+
+@dataclass(frozen=True)
+class Departure:
+    expected: Any
+    tolerance: float | None
+    abs_tolerance: float | None
+    reason: str
+    readme: str = ""
+
+
+@dataclass(frozen=True)
+class Quantity:
+    name: str
+    published: Any
+    unit: str
+    locator: str  # the report path or the model's key
+    tolerance: float | None = None
+    abs_tolerance: float | None = None
+    tolerance_basis: str = ""
+    relation: str = "="
+    departure: Departure | None = None
+    note: str = ""
+
+
+@dataclass(frozen=True)
+class Case:
+    id: str
+    title: str
+    source: str
+    where: str
+    checked: str
+    kind: str
+    quantities: tuple[Quantity, ...]
+    requirement: dict[str, Any] = field(default_factory=dict)
+    function: str = ""
+    inputs: dict[str, Any] = field(default_factory=dict)
+    golden: str = ""
+
+
+@dataclass(frozen=True)
+class Outcome:
+    """One quantity's result."""
+
+    case: Case
+    quantity: Quantity
+    computed: Any
+    verdict: str
+    deviation: float | None  # (computed − published)/|published|, None for text
+    error: str = ""
+
+    @property
+    def ok(self) -> bool:
+        return self.verdict in GOOD
+
+
+class DataError(ValueError):
+    """The verification data itself is malformed (a bug of the data, said in one line)."""
+
+
+def data_path() -> Path:
+    """The shipped verification set."""
+    return Path(str(resources.files("advisor.verify").joinpath("cases.toml")))
+
+
+def _departure(d: dict[str, Any] | None) -> Departure | None:
+    if d is None:
+        return None
+    return Departure(
+        d["expected"], d.get("tolerance"), d.get("abs_tolerance"), d["reason"], d.get("readme", "")
+    )
+
+
+def _quantity(case_id: str, q: dict[str, Any]) -> Quantity:
+    locator = q.get("path", q.get("key"))
+    if locator is None or "published" not in q:
+        raise DataError(f"case {case_id}: quantity {q.get('name')!r} needs published and path/key")
+    relation = q.get("relation", "=")
+    if relation not in ("=", "<=", ">="):
+        raise DataError(f"case {case_id}: relation {relation!r} is not =, <= or >=")
+    numeric = not isinstance(q["published"], str)
+    if numeric and q.get("tolerance") is None and q.get("abs_tolerance") is None:
+        raise DataError(f"case {case_id}: quantity {q['name']!r} states no tolerance")
+    return Quantity(
+        name=q["name"],
+        published=q["published"],
+        unit=q.get("unit", ""),
+        locator=locator,
+        tolerance=q.get("tolerance"),
+        abs_tolerance=q.get("abs_tolerance"),
+        tolerance_basis=q.get("tolerance_basis", ""),
+        relation=relation,
+        departure=_departure(q.get("departure")),
+        note=q.get("note", ""),
+    )
+
+
+def load_cases(path: Path | None = None) -> list[Case]:
+    """The cases of the verification set (the shipped one unless ``path`` is given)."""
+    data = tomllib.loads((path or data_path()).read_text(encoding="utf-8"))
+    cases = []
+    for c in data.get("case", []):
+        kind = c.get("kind")
+        if kind not in ("requirement", "calc"):
+            raise DataError(f"case {c.get('id')}: kind {kind!r} is not requirement or calc")
+        cases.append(
+            Case(
+                id=c["id"],
+                title=c["title"],
+                source=c["source"],
+                where=c["where"],
+                checked=c["checked"],
+                kind=kind,
+                quantities=tuple(_quantity(c["id"], q) for q in c["quantity"]),
+                requirement=c.get("requirement", {}),
+                function=c.get("function", ""),
+                inputs=c.get("inputs", {}),
+                golden=c.get("golden", ""),
+            )
+        )
+    ids = [c.id for c in cases]
+    if len(set(ids)) != len(ids):
+        raise DataError("case ids are not unique")
+    return cases
+
+
+# ------------------------------------------------------------------ reading a report
+_ITEM = re.compile(r"^(?P<name>[A-Za-z_0-9]+)\[(?P<key>[A-Za-z_0-9]+)=(?P<value>[^\]]+)\]$")
+
+
+def _same(a: Any, text: str) -> bool:
+    if isinstance(a, bool) or not isinstance(a, int | float):
+        return str(a) == text
+    try:
+        return float(a) == float(text)
+    except ValueError:
+        return False
+
+
+def lookup(tree: Any, path: str) -> Any:
+    """The value at ``path`` in a report read as TOML (``a.b``, ``list[key=value]``)."""
+    node = tree
+    for part in path.split("."):
+        m = _ITEM.match(part)
+        name = m.group("name") if m else part
+        if not isinstance(node, dict) or name not in node:
+            raise KeyError(f"{path}: no {name!r} in the report")
+        node = node[name]
+        if m:
+            key, value = m.group("key"), m.group("value")
+            hits = [x for x in node if isinstance(x, dict) and _same(x.get(key), value)]
+            if len(hits) != 1:
+                raise KeyError(f"{path}: {len(hits)} items with {key} = {value}")
+            node = hits[0]
+    return node
+
+
+def _requirement_values(case: Case, catalog_dir: Path | None) -> dict[str, Any]:
+    from advisor.core.engine import advise
+    from advisor.core.report import to_toml
+    from advisor.core.requirements import parse_requirements
+
+    report = tomllib.loads(to_toml(advise(parse_requirements(case.requirement), catalog_dir)))
+    out: dict[str, Any] = {}
+    for q in case.quantities:
+        try:
+            out[q.locator] = lookup(report, q.locator)
+        except KeyError as exc:
+            out[q.locator] = exc
+    return out
+
+
+def _calc_values(case: Case) -> dict[str, Any]:
+    from advisor.verify.models import MODELS
+
+    fn = MODELS.get(case.function)
+    if fn is None:
+        raise DataError(f"case {case.id}: no model function {case.function!r}")
+    return fn(dict(case.inputs))
+
+
+# ------------------------------------------------------------------ verdicts
+def within(
+    computed: Any, target: Any, tol: float | None, abs_tol: float | None, relation: str = "="
+) -> bool:
+    """Whether ``computed`` meets ``target``: equal text; for numbers, within the larger of
+    the relative and the absolute tolerance, or on the allowed side of a bound."""
+    if isinstance(target, str) or isinstance(computed, str):
+        return str(computed) == str(target)
+    if isinstance(computed, bool) or not isinstance(computed, int | float):
+        return False
+    if not math.isfinite(computed):
+        return False
+    room = max((tol or 0.0) * abs(target), abs_tol or 0.0)
+    if relation == "<=":
+        return computed <= target + room
+    if relation == ">=":
+        return computed >= target - room
+    return abs(computed - target) <= room
+
+
+def deviation(computed: Any, published: Any) -> float | None:
+    """Relative deviation from the published value (None for text or a zero target)."""
+    if isinstance(published, str) or not isinstance(computed, int | float):
+        return None
+    if isinstance(computed, bool) or published == 0:
+        return None
+    return (computed - published) / abs(published)
+
+
+def judge(case: Case, q: Quantity, computed: Any) -> Outcome:
+    if isinstance(computed, Exception):
+        return Outcome(case, q, None, "ERROR", None, str(computed))
+    dev = deviation(computed, q.published)
+    if within(computed, q.published, q.tolerance, q.abs_tolerance, q.relation):
+        return Outcome(case, q, computed, "pass", dev)
+    d = q.departure
+    if d is not None and within(computed, d.expected, d.tolerance, d.abs_tolerance):
+        return Outcome(case, q, computed, "departure", dev)
+    return Outcome(case, q, computed, "FAIL", dev)
+
+
+def run_case(case: Case, catalog_dir: Path | None = None) -> list[Outcome]:
+    """Every quantity of one case; a case that cannot run gives ERROR for each."""
+    try:
+        values = (
+            _requirement_values(case, catalog_dir)
+            if case.kind == "requirement"
+            else _calc_values(case)
+        )
+    except DataError:
+        raise
+    except Exception as exc:  # the advisor failed on a published example: a finding
+        msg = f"{type(exc).__name__}: {exc}"
+        return [Outcome(case, q, None, "ERROR", None, msg) for q in case.quantities]
+    out = []
+    for q in case.quantities:
+        if q.locator not in values:
+            out.append(Outcome(case, q, None, "ERROR", None, f"no {q.locator!r} computed"))
+        else:
+            out.append(judge(case, q, values[q.locator]))
+    return out
+
+
+def run(
+    cases: list[Case], only: str | None = None, catalog_dir: Path | None = None
+) -> list[Outcome]:
+    """All cases (or the one named ``only``), in the order of the data."""
+    chosen = [c for c in cases if only is None or c.id == only]
+    return [o for c in chosen for o in run_case(c, catalog_dir)]
+
+
+def all_verified(outcomes: list[Outcome]) -> bool:
+    return bool(outcomes) and all(o.ok for o in outcomes)
