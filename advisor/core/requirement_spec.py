@@ -193,6 +193,7 @@ MODELS = {
     'advisor.applications.rotary.requirements:BldcMotorReq': {
         'fields': (
             ('kind', ('literal', ('bldc',)), True, None),
+            ('frame', ('str', {'min_length': 1, 'max_length': 60}), False, 'auto'),
             ('candidate_speeds_rpm', ('list', ('float', {'ge': 100, 'le': 200000.0}), {'min_length': 1, 'max_length': 20}), False, [5000.0, 10000.0]),
             ('phases', ('int', {'ge': 3, 'le': 3}), False, 3),
             ('max_losses_W', ('optional', ('float', {'ge': 0.1, 'le': 1000000.0})), False, None),
@@ -299,8 +300,8 @@ MODELS = {
             ('loads', ('list', ('model', 'advisor.duty.requirements:LoadShareReq'), {'max_length': 20}), False, []),
             ('segments', ('list', ('model', 'advisor.duty.requirements:RotarySegmentReq'), {'max_length': 100}), False, []),
             ('load_inertia_kgm2', ('float', {'ge': 0, 'le': 10000000.0}), False, 0.0),
-            ('motor_inertia_kgm2', ('float', {'ge': 1e-11, 'le': 1000.0}), True, None),
-            ('thermal_time_constant_s', ('float', {'gt': 0, 'le': 100000.0}), True, None),
+            ('motor_inertia_kgm2', ('optional', ('float', {'ge': 1e-11, 'le': 1000.0})), False, None),
+            ('thermal_time_constant_s', ('optional', ('float', {'gt': 0, 'le': 100000.0})), False, None),
             ('peak_torque_factor', ('float', {'ge': 1, 'le': 10}), False, 3.0),
         ),
         'field_checks': {},
@@ -471,6 +472,7 @@ QUESTIONS = {
         (('rotary', 'emergency_stop_torque_Nm'), 'Emergency-stop torque (optional)', 'N·m', 'float', (), True, None, 'momentary peak torque at the output in an emergency stop or a collision, 1 … 10⁶ N·m; left out: the output torque (the stages and the holding device are checked against it)', 1, '≥ 1, ≤ 1e+06', None, None, None),
         (('envelope', 'max_outer_diameter_mm'), 'Largest reducer diameter', 'mm', 'float', (), True, None, 'largest outer diameter of the reducer, 1 … 10⁴ mm', 2, '≥ 1, ≤ 10000', None, None, None),
         (('envelope', 'max_length_mm'), 'Largest reducer length', 'mm', 'float', (), True, None, 'largest length of the reducer, 1 … 10⁴ mm', 2, '≥ 1, ≤ 10000', None, None, None),
+        (('motor', 'frame'), 'Motor frame', '', 'str', (), True, 'auto', "the motor frame: auto (the smallest of seed 000's scaled series, or of a catalog's bldc_motors.toml, whose losses and duty pass), reference (the [motor.reference] frame, seed 000's by default; given [motor.reference] imposes it), or a frame's name (BL098x066) or a catalog motor's", 3, 'at least 1, at most 60', None, None, None),
         (('motor', 'candidate_speeds_rpm'), 'Motor speeds to compare', 'rpm', 'floats', (), True, [5000.0, 10000.0], 'motor speeds to compare, 100 … 2·10⁵ rpm each, each once, at most 20', 3, 'at least 1, at most 20', None, None, None),
         (('gearbox', 'rolling_body'), 'Rolling bodies', '', 'choice', ('ball', 'roller'), True, 'ball', 'rolling bodies', 3, '', None, None, None),
         (('gearbox', 'stage_efficiency'), 'Efficiency of one stage', '', 'float', (), True, 0.9, 'efficiency of one stage, 0.3 … 1', 3, '≥ 0.3, ≤ 1', None, None, None),
@@ -519,8 +521,8 @@ QUESTIONS = {
         (('duty', 'segments', '2', 'direction'), 'Segment 3: direction', '', 'choice', ('against', 'with'), True, 'against', 'a move against the load torque (the motor drives) or with it (the load drives)', 4, '', None, ('duty', 'segments', '2'), None),
         (('duty', 'segments', '2', 'torque_Nm'), 'Segment 3: load torque', 'N·m', 'float', (), True, None, 'output load torque of the segment, N·m; default rotary.torque_Nm', 4, '≥ 0, ≤ 1e+06', None, ('duty', 'segments', '2'), None),
         (('duty', 'load_inertia_kgm2'), 'Load inertia', 'kg·m²', 'float', (), True, 0.0, 'inertia of the load at the output, kg·m²', 4, '≥ 0, ≤ 1e+07', None, None, None),
-        (('duty', 'motor_inertia_kgm2'), 'Motor inertia', 'kg·m²', 'float', (), False, None, 'rotor inertia of the motor, kg·m²', 4, '≥ 1e-11, ≤ 1000', None, None, None),
-        (('duty', 'thermal_time_constant_s'), 'Thermal time constant', 's', 'float', (), False, None, 'thermal time constant of the motor, s', 4, '> 0, ≤ 100000', None, None, None),
+        (('duty', 'motor_inertia_kgm2'), 'Motor inertia (optional)', 'kg·m²', 'float', (), True, None, "rotor inertia of the motor, kg·m²; left out: the chosen frame's or catalog motor's (issue 25)", 4, '≥ 1e-11, ≤ 1000', None, None, None),
+        (('duty', 'thermal_time_constant_s'), 'Thermal time constant (optional)', 's', 'float', (), True, None, "thermal time constant of the motor, s; left out: the chosen frame's or catalog motor's (issue 25)", 4, '> 0, ≤ 100000', None, None, None),
         (('duty', 'peak_torque_factor'), 'Peak/continuous torque', '', 'float', (), True, 3.0, "peak torque the motor and drive give, as a multiple of the torque at the frame's loss limit (servo catalogs: about 3)", 4, '≥ 1, ≤ 10', None, None, None),
     ),
     'positioning': (

@@ -257,25 +257,27 @@ class RotaryDutyReq(_CycleDuty):
         ),
     ] = 0.0
     motor_inertia_kgm2: Annotated[
-        float,
+        float | None,
         _num(
             ge=1e-11,
             le=1e3,
-            desc="rotor inertia of the motor, kg·m²",
-            label="Motor inertia",
+            desc="rotor inertia of the motor, kg·m²; left out: the chosen frame's or catalog "
+            "motor's (issue 25)",
+            label="Motor inertia (optional)",
             step=STEP,
         ),
-    ]
+    ] = None
     thermal_time_constant_s: Annotated[
-        float,
+        float | None,
         _num(
             gt=0,
             le=1e5,
-            desc="thermal time constant of the motor, s",
-            label="Thermal time constant",
+            desc="thermal time constant of the motor, s; left out: the chosen frame's or "
+            "catalog motor's (issue 25)",
+            label="Thermal time constant (optional)",
             step=STEP,
         ),
-    ]
+    ] = None
     peak_torque_factor: Annotated[
         float,
         _num(

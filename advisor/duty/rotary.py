@@ -34,13 +34,47 @@ RPM = 30.0 / math.pi
 CLASS_F_RISE_K = 105.0
 
 
+class MotorData(NamedTuple):
+    """The rotor inertia and thermal time constant the cycle uses, and where each came from
+    (issue 25: the chosen frame's or catalog motor's unless the requirement overrides)."""
+
+    inertia_kgm2: float
+    inertia_basis: str
+    time_constant_s: float
+    time_constant_basis: str
+
+
+def motor_data(duty, frame_inertia, frame_tau, frame_words: str) -> MotorData:
+    """duty.motor_inertia_kgm2 and duty.thermal_time_constant_s where given, else the
+    frame's (None where the frame has none: an imposed [motor.reference] of the user's)."""
+    from advisor.core.errors import InputError
+
+    out = []
+    for key, own in (("motor_inertia_kgm2", frame_inertia), ("thermal_time_constant_s", frame_tau)):
+        given = getattr(duty, key)
+        if given is not None:
+            out += [given, f"duty.{key} (the requirement)"]
+        elif own is not None:
+            out += [own, frame_words]
+        else:
+            raise InputError(
+                f"duty.{key}: missing; required with a [motor.reference] of your own (the "
+                "frame's rotor inertia and thermal time constant are not known), or set "
+                "motor.frame = auto or a frame of the series"
+            )
+    return MotorData(*out)
+
+
 class Frame:
     """The frame wound for one speed: its losses at a torque and a speed."""
 
-    def __init__(self, ref, iron_at, speed_rpm: float, limit_W: float) -> None:
+    def __init__(
+        self, ref, iron_at, speed_rpm: float, limit_W: float, data: MotorData | None = None
+    ) -> None:
         from advisor.applications.rotary import motor as bm
 
         self.ref, self.iron_at, self.speed_rpm, self.limit_W = ref, iron_at, speed_rpm, limit_W
+        self.data = data
         self._losses_at = bm.losses_at
         self.ohmic_ref = ref.conducting_phases * ref.phase_resistance_ohm * ref.current_A**2
 
@@ -158,7 +192,7 @@ def cycle(req, q: float, eta: float, speed_rpm: float, frame: Frame, holder: Hol
     holds no load); at rest it is held by the holding device, or else by the motor with power
     on through the back-drivable wave gear (M_L·η/q): the cycle's closing rest too."""
     duty, rot = req.duty, req.rotary
-    jl, jm = duty.load_inertia_kgm2, duty.motor_inertia_kgm2
+    jl, jm = duty.load_inertia_kgm2, frame.data.inertia_kgm2
     phases: list[du.Phase] = []
     problems: list[str] = []
     w_max = speed_rpm / RPM
@@ -200,7 +234,7 @@ def _held(load_Nm: float, q: float, eta: float, holder: Holder) -> float:
 def _iec_cycle(req, q: float, eta: float, w: float, frame: Frame, holder: Holder):
     """An IEC duty type at the rated point: the output torque at the output speed."""
     duty, rot = req.duty, req.rotary
-    jl, jm = duty.load_inertia_kgm2, duty.motor_inertia_kgm2
+    jl, jm = duty.load_inertia_kgm2, frame.data.inertia_kgm2
     problems: list[str] = []
     t = duty.duty_type
     run_torque = _at_motor(rot.torque_Nm, q, eta, holder)
@@ -352,7 +386,7 @@ def advise_duty(
         f"continuous torque of the frame at {speed_rpm:g} rpm, "
         f"{frame.continuous_torque():.4g} N·m (duty.peak_torque_factor).",
     )
-    ir = duty.load_inertia_kgm2 / (q * q * eta) / duty.motor_inertia_kgm2
+    ir = duty.load_inertia_kgm2 / (q * q * eta) / frame.data.inertia_kgm2
     within = trace.apply(du_rules.inertia_ratio, ir)
     warnings = []
     if not within:
@@ -361,7 +395,7 @@ def advise_duty(
             f"{du_rules.INERTIA_RATIO_GUIDELINE:g})"
         )
     # first-order thermal model over repeated cycles, R from the limit and class F
-    tau = duty.thermal_time_constant_s
+    tau = frame.data.time_constant_s
     r_th = CLASS_F_RISE_K / frame.limit_W
     n = max(1, min(2000, math.ceil(5.0 * tau / t_cycle)))
     hist = du.thermal_rise(e["losses"], r_th, tau, n)
@@ -408,6 +442,8 @@ def advise_duty(
         thermal_utilisation=util,
         thermal_basis="cycle-averaged losses over the frame's limit",
         inertia_ratio=ir,
+        motor_inertia_kgm2=frame.data.inertia_kgm2,
+        motor_inertia_basis=frame.data.inertia_basis,
         inertia_ratio_guideline=du_rules.INERTIA_RATIO_GUIDELINE,
         energy_per_cycle_J=out_J,
         regenerated_per_cycle_J=back_J,
@@ -419,7 +455,7 @@ def advise_duty(
         loss_limit_W=frame.limit_W,
         thermal=ThermalOut.make(
             time_constant_s=tau,
-            time_constant_basis="duty.thermal_time_constant_s (the requirement)",
+            time_constant_basis=frame.data.time_constant_basis,
             resistance_K_W=r_th,
             steady_rise_K=e["total"] * r_th,
             peak_rise_K=peak_rise,
@@ -432,8 +468,9 @@ def advise_duty(
     return out, checks, warnings
 
 
-def frames(ref, steel, steel_mass: float, terms, limit_W: float):
-    """rpm -> the Frame wound for that speed, with the iron loss model of the point check."""
+def frames(ref, steel, steel_mass: float, terms, limit_W: float, data: MotorData | None = None):
+    """rpm -> the Frame wound for that speed, with the iron loss model of the point check,
+    and the rotor inertia and time constant of the cycle (``data``)."""
     from advisor.applications.rotary import motor as bm
     from advisor.calc import bldc
 
@@ -441,7 +478,7 @@ def frames(ref, steel, steel_mass: float, terms, limit_W: float):
         f = bldc.flux_frequency_Hz(rpm, ref.pole_pairs)
         return steel_mass * bm.specific_iron_loss(ref, steel, terms, f)[0]
 
-    return lambda rpm: Frame(ref, iron_at, rpm, limit_W)
+    return lambda rpm: Frame(ref, iron_at, rpm, limit_W, data)
 
 
 def output_loads(req, q: float, eta: float, speed_rpm: float, frame: Frame, holder: Holder):

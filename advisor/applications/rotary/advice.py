@@ -59,8 +59,8 @@ def _ratio_hint(output_rpm: float, speeds_rpm: list[float]) -> str:
     )
 
 
-def _steel(req: Requirements, cat: Catalogs):
-    ref = req.motor.reference  # type: ignore[union-attr]
+def _steel(req: Requirements, cat: Catalogs, ref=None):
+    ref = ref if ref is not None else req.motor.reference  # type: ignore[union-attr]
     steel = cat.electrical_steel(ref.steel_grade, ref.steel_thickness_mm)
     if steel is None:
         known = ", ".join(s.name for s in cat.electrical_steels)
@@ -72,14 +72,16 @@ def _steel(req: Requirements, cat: Catalogs):
     return steel
 
 
-def _candidate(n: float, req: Requirements, steel, steel_mass: float, terms, params) -> dict:
+def _candidate(
+    n: float, req: Requirements, steel, steel_mass: float, terms, params, ref=None
+) -> dict:
     """Losses and drive figures of the reference motor rewound for speed ``n``, behind the
     reducer the design would adopt at its ratio (:func:`_stage_count`): the efficiency the
     speed choice (BL-02) weighs is the one the design then has."""
     rot = req.rotary
     mot = req.motor
     assert rot is not None and mot.kind == "bldc"
-    ref = mot.reference
+    ref = ref if ref is not None else mot.reference
     q_total = n / rot.speed_rpm
     split = wg_rules.split_ratio(q_total, rd.STAGE_RATIO_MIN, rd.STAGE_RATIO_MAX).value
     stages = _stage_count(q_total, split, req, params) if split else 0
@@ -179,7 +181,7 @@ def _too_lossy(
     )
 
 
-def _loss_optimum_Hz(at_ref: dict, req: Requirements, params) -> float:
+def _loss_optimum_Hz(at_ref: dict, req: Requirements, params, pole_pairs: int) -> float:
     """Seed 000, eq. (10), with K_om read at ``at_ref`` behind the efficiency of the reducer
     the design adopts near the optimum: eq. (10) holds one η for every speed, while the
     adopted stage count (hence η) steps with the ratio. From the reference point's η, the
@@ -189,7 +191,7 @@ def _loss_optimum_Hz(at_ref: dict, req: Requirements, params) -> float:
     ohmic, eta, f_ref = at_ref["losses"]["ohmic"], at_ref["eta"], at_ref["frequency_Hz"]
     f_opt = bldc.optimum_frequency_Hz(ohmic, core, f_ref)
     for _ in range(4):
-        n = f_opt * 60.0 / req.motor.reference.pole_pairs
+        n = f_opt * 60.0 / pole_pairs
         q = n / req.rotary.speed_rpm
         split = wg_rules.split_ratio(q, rd.STAGE_RATIO_MIN, rd.STAGE_RATIO_MAX).value
         if not split:
@@ -202,21 +204,181 @@ def _loss_optimum_Hz(at_ref: dict, req: Requirements, params) -> float:
     return f_opt
 
 
+class _Fit(NamedTuple):
+    """A frame tried for the requirement: its candidates, limit and what passes."""
+
+    ref: object
+    steel: object
+    steel_mass: float
+    terms: object
+    reducible: list[dict]
+    passing: list[dict]
+    limit: float
+    basis: str
+    f_opt: float
+    n_opt: float
+    frame_for: object
+    error: InfeasibleError | None
+
+
+def _fit(req: Requirements, cat: Catalogs, ref, params, data, speeds: list[float]) -> _Fit:
+    """Seed 000's model with the frame ``ref``'s numbers: its candidates, its limit (its own
+    losses at its own rated point), and the speeds that pass the point check and the duty."""
+    mot, gb = req.motor, req.gearbox
+    steel = _steel(req, cat, ref)
+    steel_mass = bldc.stator_steel_mass(
+        ref.stator_steel_area_mm2, ref.stack_length_mm, ref.stacking_factor, ref.steel_density_kg_m3
+    )
+    terms = bldc.fit_eq5(steel.p10_50_W_kg, steel.p15_50_W_kg, steel.p10_400_W_kg)
+    cands = [_candidate(n, req, steel, steel_mass, terms, params, ref) for n in speeds]
+    reducible = [c for c in cands if c["split"]]
+    if not reducible:
+        raise InfeasibleError(
+            "no feasible design: no candidate speed gives a ratio a wave-gear reducer can make",
+            [
+                *(f"{c['speed_rpm']:g} rpm → q_Σ = {c['q_total']:.4g}" for c in cands),
+                _ratio_hint(req.rotary.speed_rpm, [c["speed_rpm"] for c in cands]),
+            ],
+        )
+    # eq. (10) at the reference speed, with the losses of the model in use; where no reducer
+    # makes the reference speed's ratio, at the candidate nearest to it (K_om and K_mag are
+    # the constants of eqs. (9) and (5), read at any operating point), never nan
+    at_ref = _candidate(ref.speed_rpm, req, steel, steel_mass, terms, params, ref)
+    if not at_ref["split"]:
+        at_ref = min(reducible, key=lambda c: abs(math.log(c["speed_rpm"] / ref.speed_rpm)))
+    f_opt = _loss_optimum_Hz(at_ref, req, params, ref.pole_pairs)
+    n_opt = f_opt * 60.0 / ref.pole_pairs
+    # the frame's limit is thermal: a speed is a candidate only if its losses are carried
+    limit, basis = bm.loss_limit(mot, steel, steel_mass, terms, ref)
+    frame_for = None
+    within = [c for c in reducible if bl_rules.within_limit(c["losses"]["total"], limit)]
+    if getattr(ref, "kind", "") == "catalog":  # no core-loss data above the rated speed
+        within = [c for c in within if c["speed_rpm"] <= ref.speed_rpm * (1 + 1e-9)]
+        if not within and reducible:
+            return _Fit(
+                ref,
+                steel,
+                steel_mass,
+                terms,
+                reducible,
+                [],
+                limit,
+                basis,
+                f_opt,
+                n_opt,
+                None,
+                bm.above_rated(reducible, ref),
+            )
+    if not within:
+        err = _too_lossy(reducible, limit, basis, n_opt, gb.choice)
+        return _Fit(
+            ref, steel, steel_mass, terms, reducible, [], limit, basis, f_opt, n_opt, None, err
+        )
+    passing = within
+    if req.duty is not None:  # issue 15: only the speeds whose motor passes the cycle
+        from advisor.duty import rotary as dr
+
+        frame_for = dr.frames(ref, steel, steel_mass, terms, limit, data)
+        try:
+            passing = dr.passing_speeds(
+                req, within, frame_for, lambda c: _holder(req, c["q_total"], c["eta"]), limit
+            )
+        except InfeasibleError as exc:
+            return _Fit(
+                ref,
+                steel,
+                steel_mass,
+                terms,
+                reducible,
+                [],
+                limit,
+                basis,
+                f_opt,
+                n_opt,
+                frame_for,
+                exc,
+            )
+    return _Fit(
+        ref,
+        steel,
+        steel_mass,
+        terms,
+        reducible,
+        passing,
+        limit,
+        basis,
+        f_opt,
+        n_opt,
+        frame_for,
+        None,
+    )
+
+
+def _best_words(fit: _Fit) -> str:
+    """The numbers of a tried frame's least lossy candidate, for BL-03."""
+    best = min(fit.reducible, key=lambda c: c["losses"]["total"])
+    if (
+        fit.error is not None
+        and fit.passing == []
+        and bl_rules.within_limit(best["losses"]["total"], fit.limit)
+    ):
+        return fit.error.reasons[0] if fit.error.reasons else fit.error.summary
+    return (
+        f"at {best['speed_rpm']:g} rpm ({best['torque_Nm']:.4g} N·m of the motor) losses "
+        f"{best['losses']['total']:.4g} W against its limit {fit.limit:.4g} W"
+    )
+
+
+def _choose_frame(req: Requirements, cat: Catalogs, params, speeds, trace: Trace):
+    """The frame the design takes (BL-03 over the series and a catalog's motors, or the one
+    the requirement imposes) and its fit; exit 3 naming the largest's reason when none fits."""
+    from advisor.applications.rotary import frames as fr
+
+    choice = fr.frame_choice(req.motor, cat)
+    if choice.imposed is not None:
+        ref = choice.imposed[0]
+        data = fr.imposed_data(req, choice, cat)
+        fit = _fit(req, cat, ref, params, data, speeds)
+        if fit.error is not None:
+            raise fit.error
+        return fit, data, choice
+    tried: list[dict] = []
+    for frame in choice.series:
+        data = fr.frame_data(req, frame)
+        fit = _fit(req, cat, frame, params, data, speeds)
+        tried.append(fr.tried_row(frame, fit.error is None, ""))
+        if fit.error is None:
+            best = min(fit.passing, key=lambda c: c["losses"]["total"])
+            tried[-1]["why"] = (
+                f"at {best['speed_rpm']:g} rpm it loses {best['losses']['total']:.4g} W of its "
+                f"{fit.limit:.4g} W"
+            )
+            trace.apply(bl_rules.choose_frame, tried[-2:] if len(tried) > 1 else tried)
+            return fit, data, choice._replace(tried=tuple(tried))
+        tried[-1]["why"] = _best_words(fit)
+    last = tried[-1]
+    raise InfeasibleError(
+        "no feasible design: no motor frame of the series carries the load",
+        [
+            f"the largest, {last['name']} ({last['torque_Nm']:.4g} N·m continuous, "
+            f"{last['mass_kg']:.3g} kg): {last['why']}",
+            fit.error.summary if fit.error is not None else "",
+            "give a catalog motor (bldc_motors.toml in --catalog-dir), motor.max_losses_W "
+            "with motor.frame for a better cooling, more candidate speeds, or a lower "
+            "rotary.torque_Nm",
+        ],
+    )
+
+
 def advise_rotary(req: Requirements, cat: Catalogs, trace: Trace):
     rot, mot, env, gb = req.rotary, req.motor, req.envelope, req.gearbox
     assert rot is not None and mot.kind == "bldc"
-    ref = mot.reference
     # shared within one advice (a candidate at the reference speed), not across advices: a
     # repeated advice (the warm benchmark) computes everything again
     _adopted_stages.cache_clear()
     trace.apply(bl_rules.motor_type)
     trace.apply(wg_rules.reducer_type, rot.torque_Nm)
 
-    steel = _steel(req, cat)
-    steel_mass = bldc.stator_steel_mass(
-        ref.stator_steel_area_mm2, ref.stack_length_mm, ref.stacking_factor, ref.steel_density_kg_m3
-    )
-    terms = bldc.fit_eq5(steel.p10_50_W_kg, steel.p15_50_W_kg, steel.p10_400_W_kg)
     # the stages are sized (eq. (16)) for the output torque times the service factor: every
     # strength check of the reducer then holds f_B·demand within its capacity (issue 26)
     sf = service_factor(req.design)
@@ -227,49 +389,26 @@ def advise_rotary(req: Requirements, cat: Catalogs, trace: Trace):
         density_kg_m3=gb.density_kg_m3,
         fill_factor=gb.fill_factor,
     )
-
-    cands = [
-        _candidate(n, req, steel, steel_mass, terms, params)
-        for n in sorted(set(mot.candidate_speeds_rpm))
-    ]
-    reducible = [c for c in cands if c["split"]]
-    if not reducible:
-        raise InfeasibleError(
-            "no feasible design: no candidate speed gives a ratio a wave-gear reducer can make",
-            [
-                *(f"{c['speed_rpm']:g} rpm → q_Σ = {c['q_total']:.4g}" for c in cands),
-                _ratio_hint(rot.speed_rpm, [c["speed_rpm"] for c in cands]),
-            ],
-        )
-    # eq. (10) at the reference speed, with the losses of the model in use; where no reducer
-    # makes the reference speed's ratio, at the candidate nearest to it (K_om and K_mag are
-    # the constants of eqs. (9) and (5), read at any operating point), never nan
-    at_ref = _candidate(ref.speed_rpm, req, steel, steel_mass, terms, params)
-    if not at_ref["split"]:
-        at_ref = min(reducible, key=lambda c: abs(math.log(c["speed_rpm"] / ref.speed_rpm)))
-    f_opt = _loss_optimum_Hz(at_ref, req, params)
-    n_opt = f_opt * 60.0 / ref.pole_pairs
-    # the frame's limit is thermal: a speed is a candidate only if its losses are carried
-    limit, basis = bm.loss_limit(mot, steel, steel_mass, terms)
-    if not any(bl_rules.within_limit(c["losses"]["total"], limit) for c in reducible):
-        raise _too_lossy(reducible, limit, basis, n_opt, gb.choice)
-    if req.duty is not None:  # issue 15: only the speeds whose motor passes the cycle
-        from advisor.duty import rotary as dr
-
-        frame_for = dr.frames(ref, steel, steel_mass, terms, limit)
-        reducible = dr.passing_speeds(
-            req, reducible, frame_for, lambda c: _holder(req, c["q_total"], c["eta"]), limit
-        )
+    speeds = sorted(set(mot.candidate_speeds_rpm))
+    fit, data, choice = _choose_frame(req, cat, params, speeds, trace)
+    ref, steel, steel_mass = fit.ref, fit.steel, fit.steel_mass
+    reducible, limit, basis = fit.passing, fit.limit, fit.basis
+    f_opt, n_opt, frame_for = fit.f_opt, fit.n_opt, fit.frame_for
+    # BL-02 weighs every reducible speed (those over the limit shown, not chosen), or, with a
+    # cycle or a catalog motor, only those that pass it (or lie within its rated speed)
+    catalog = getattr(ref, "kind", "") == "catalog"
+    offered = fit.passing if req.duty is not None or catalog else fit.reducible
     speed = trace.apply(
         bl_rules.choose_speed,
-        {c["speed_rpm"]: c["losses"]["total"] for c in reducible},
+        {c["speed_rpm"]: c["losses"]["total"] for c in offered},
         n_opt,
         ref.pole_pairs,
         limit,
         basis,
-        {c["speed_rpm"]: c["current_A"] for c in reducible},
+        {c["speed_rpm"]: c["current_A"] for c in offered},
     )
-    chosen = next(c for c in reducible if c["speed_rpm"] == speed)
+    chosen = next(c for c in offered if c["speed_rpm"] == speed)
+    reducible = fit.reducible if req.duty is None else fit.passing
 
     # ---- reducer
     q_total = chosen["q_total"]
@@ -343,6 +482,9 @@ def advise_rotary(req: Requirements, cat: Catalogs, trace: Trace):
     steel_cite = cat.cite_rows(cat.steel_sources, steel.source)
     checks = _checks(design, env, working["losses"]["total"], limit, basis, steel_cite)
     motor = _motor_out(working, reducible, ref, steel, steel_mass, f_opt, n_opt, limit, basis)
+    from advisor.applications.rotary import frames as fr
+
+    motor = motor.replace(frame=fr.frame_out(choice, ref, data))
     gearbox = GearboxOut.make(
         kind="wave gear with rolling bodies",
         layout="equal-diameter",
@@ -363,12 +505,14 @@ def advise_rotary(req: Requirements, cat: Catalogs, trace: Trace):
     one_way = None
     if req.application.hold_without_power:
         one_way, dev_checks, dev_warnings = _one_way(
-            req, trace, design, working, limit, basis, steel_cite
+            req, trace, design, working, limit, basis, steel_cite, ref
         )
         checks += dev_checks
         warnings += dev_warnings
     duty = None
     if req.duty is not None:
+        from advisor.duty import rotary as dr
+
         holder = _holder(req, design.total_ratio, design.efficiency)
         duty, duty_checks, duty_warnings = dr.advise_duty(
             req, design.total_ratio, design.efficiency, speed, frame_for(speed), holder, trace
@@ -454,7 +598,7 @@ def _device_torques(req: Requirements, q: float, eta: float) -> tuple[float, flo
 
 
 def _one_way(
-    req, trace, design: rd.Reducer, working: dict, limit: float, basis: str, steel_cite: Cite
+    req, trace, design: rd.Reducer, working: dict, limit: float, basis: str, steel_cite: Cite, ref
 ):
     """Seed 004: the holding device at the motor side (or at the output, where the requirement
     puts it), and what it asks of the motor: its driving loss raises the motor torque, hence
@@ -483,7 +627,6 @@ def _one_way(
     if req.rotary.emergency_stop_torque_Nm is not None:  # else it holds what it is sized for
         checks.append(_device_holds_stop(req, q, eta, at_output, device.torque_Nm))
     if device.efficiency < 1.0:
-        ref = req.motor.reference
         with_device = bm.losses_at(
             ref, working["losses"]["iron"], speed, motor_torque / device.efficiency
         )["total"]

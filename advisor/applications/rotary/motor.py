@@ -41,19 +41,45 @@ def losses_at(ref, iron_W: float, n: float, torque: float) -> dict[str, float]:
     return losses
 
 
-def loss_limit(mot: Any, steel, steel_mass: float, terms) -> tuple[float, str]:
-    """What the frame's cooling carries: the requirement's own figure, or the reference
-    motor's total losses at its rated point (same frame, same cooling)."""
+def loss_limit(mot: Any, steel, steel_mass: float, terms, ref: Any = None) -> tuple[float, str]:
+    """What the frame's cooling carries: the requirement's own figure, or the frame's own
+    total losses at its rated point (same frame, same cooling): the reference motor's, or a
+    scaled frame's or a catalog motor's (issue 25)."""
     if mot.max_losses_W is not None:
         return mot.max_losses_W, f"the requirement's motor.max_losses_W = {mot.max_losses_W:g} W"
-    ref = mot.reference
+    ref = ref if ref is not None else mot.reference
     spec, _ = specific_iron_loss(
         ref, steel, terms, bldc.flux_frequency_Hz(ref.speed_rpm, ref.pole_pairs)
     )
     total = losses_at(ref, steel_mass * spec, ref.speed_rpm, ref.torque_Nm)["total"]
+    kind = getattr(ref, "kind", None)
+    if kind == "catalog":
+        return total, (
+            f"{ref.name}'s copper loss at its continuous {ref.torque_Nm:g} N·m "
+            f"({ref.current_A:.4g} A, datasheet): {total:.4g} W; its datasheet rates it up to "
+            f"{ref.speed_rpm:g} rpm and states no core losses"
+        )
+    if kind == "scaled":
+        return total, (
+            f"frame {ref.name}'s own total losses at its rated point ({ref.speed_rpm:.5g} rpm, "
+            f"{ref.torque_Nm:.5g} N·m at {ref.current_A:.4g} A): {total:.4g} W, same frame, "
+            "same cooling"
+        )
     return total, (
         f"the reference motor's total losses at its rated point ({ref.speed_rpm:g} rpm, "
         f"{ref.torque_Nm:g} N·m at {ref.current_A:g} A): {total:.4g} W, same frame, same cooling"
+    )
+
+
+def above_rated(cands: list[dict], ref: Any) -> InfeasibleError:
+    """A catalog motor none of whose candidate speeds lies within its rated speed."""
+    speeds = ", ".join(f"{c['speed_rpm']:g}" for c in cands)
+    return InfeasibleError(
+        f"no feasible design: {ref.name} is rated up to {ref.speed_rpm:g} rpm",
+        [
+            f"the candidate speeds within its loss limit ({speeds} rpm) lie above its rated "
+            f"{ref.speed_rpm:g} rpm; its datasheet gives no losses there"
+        ],
     )
 
 

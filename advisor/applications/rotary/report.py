@@ -59,6 +59,7 @@ class BldcMotorOut(_Out):
     steel: SteelOut
     candidates: list[SpeedCandidateOut]
     pole_slot_options: list[PoleSlotOut]
+    frame: "FrameOut | None" = None
 
 
 class StageOut(_Out):
@@ -230,3 +231,35 @@ def headline(report) -> str:
         f"{m.speed_rpm:g} rpm, {m.losses_W.total:.0f} W; {len(g.stages)} stages q = "
         f"{g.total_ratio:.4g}, Ø{g.outer_diameter_mm:.0f} mm, {g.mass_kg:.2f} kg"
     )
+
+
+class FrameTriedOut(_Out):
+    name: str
+    kind: str  # "scaled" | "catalog"
+    torque_Nm: float  # continuous, at the rated speed
+    speed_rpm: float  # rated
+    mass_kg: float
+    outer_diameter_mm: float
+    fits: bool
+    why: str
+
+
+class FrameOut(_Out):
+    """The motor frame the design takes (issue 25) and which kind of data decided."""
+
+    name: str
+    kind: str  # "scaled" | "catalog" | "reference"
+    choice: str  # "auto" | "imposed"
+    data: str  # which kind of data decided: the law, a datasheet, the requirement
+    torque_Nm: float  # continuous torque at the rated speed (the limit's point)
+    speed_rpm: float
+    outer_diameter_mm: float | None = None
+    length_mm: float | None = None
+    mass_kg: float | None = None
+    rotor_inertia_kgm2: float | None = None
+    thermal_time_constant_s: float | None = None
+    length_scale: float | None = None
+    law: str
+    estimated: list[str]
+    tried: list[FrameTriedOut]
+    neighbours: list[FrameTriedOut]  # the next smaller and larger of the series (Compare)

@@ -256,6 +256,19 @@ class ReferenceMotor(_Strict):
 
 class BldcMotorReq(_Strict):
     kind: Annotated[Literal["bldc"], Field(description="motor type")]
+    frame: Annotated[
+        str,
+        ask(
+            "the motor frame: auto (the smallest of seed 000's scaled series, or of a "
+            "catalog's bldc_motors.toml, whose losses and duty pass), reference (the "
+            "[motor.reference] frame, seed 000's by default; given [motor.reference] imposes "
+            "it), or a frame's name (BL098x066) or a catalog motor's",
+            label="Motor frame",
+            step=3,
+            min_length=1,
+            max_length=60,
+        ),
+    ] = "auto"
     candidate_speeds_rpm: Annotated[
         list[Annotated[float, _num(ge=100, le=2e5, desc="a motor speed, 100 … 2·10⁵ rpm")]],
         ask(
