@@ -21,9 +21,23 @@ def advise(req: Requirements, catalog_dir: Path | None = None) -> Report:
 
     Raises :class:`advisor.core.errors.InputError` for an input the catalogs cannot serve (an
     unknown thread, a broken user catalog) and :class:`advisor.core.errors.InfeasibleError` when
-    no design satisfies the requirement.
+    no design satisfies the requirement. With an ``[uncertainty]`` table the report carries
+    the design's probability of passing (:mod:`advisor.uncertainty`, imported only then).
     """
     cat = load_catalogs(catalog_dir)
+    if getattr(req, "uncertainty", None) is None:
+        return advise_with(req, cat)
+    from advisor.uncertainty import apply, replaced
+
+    nominal = advise_with(replaced(req, uncertainty=None), cat)
+    return apply(
+        req, cat, nominal.replace(requirements=req.model_dump(exclude_none=True)), advise_with
+    )
+
+
+def advise_with(req: Requirements, cat) -> Report:
+    """:func:`advise` with the catalogs given (the robust choice runs the rules on a catalog
+    narrowed to one candidate)."""
     trace = Trace()
     # the registry imports only this application's pipeline: the linear path stays numpy-free
     design, checks, warnings = registry.pipeline(req.application.kind)(req, cat, trace)

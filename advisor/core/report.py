@@ -170,6 +170,8 @@ class Report(_Out):
     warnings: list[str] = []
     decisions: list[DecisionOut]
     sources: list[SourceOut] = []
+    #: issue 30: P(pass) under [uncertainty] (advisor.uncertainty.report.UncertaintyOut)
+    uncertainty: Any = None
 
 
 def round_sig(x: float, digits: int = 6) -> float:

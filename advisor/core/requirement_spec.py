@@ -27,6 +27,7 @@ MODELS = {
             ('one_way', ('model', 'advisor.core.requirements:OneWayReq'), False, ('record', 'advisor.core.requirements:OneWayReq', (), {'type': 'auto', 'rollers': 6, 'priority': 'mass'})),
             ('design', ('model', 'advisor.core.requirements:DesignReq'), False, ('record', 'advisor.core.requirements:DesignReq', (), {'service_factor': None})),
             ('duty', ('optional', ('model', 'advisor.duty.requirements:LinearDutyReq')), False, None),
+            ('uncertainty', ('optional', ('model', 'advisor.uncertainty.requirements:UncertaintyReq')), False, None),
         ),
         'field_checks': {},
         'after': (),
@@ -151,6 +152,31 @@ MODELS = {
         'after': ('advisor.duty.requirement_checks:move_has_distance',),
         'mixins': (),
     },
+    'advisor.uncertainty.requirements:UncertaintyReq': {
+        'fields': (
+            ('samples', ('int', {'ge': 100, 'le': 1000000}), False, 10000),
+            ('seed', ('int', {'ge': 0, 'le': 4294967295}), False, 1),
+            ('target', ('optional', ('float', {'gt': 0, 'lt': 1})), False, None),
+            ('inputs', ('list', ('model', 'advisor.uncertainty.requirements:InputDistribution'), {'max_length': 20}), False, []),
+        ),
+        'field_checks': {},
+        'after': ('advisor.uncertainty.checks:unique_inputs',),
+        'mixins': (),
+    },
+    'advisor.uncertainty.requirements:InputDistribution': {
+        'fields': (
+            ('name', ('literal', ('linear.force_N', 'linear.support_span_m', 'screw.friction_coefficient', 'screw.thrust.friction_coefficient')), True, None),
+            ('distribution', ('literal', ('uniform', 'normal', 'triangular')), True, None),
+            ('low', ('optional', ('float', {})), False, None),
+            ('high', ('optional', ('float', {})), False, None),
+            ('sd', ('optional', ('float', {'gt': 0})), False, None),
+            ('mean', ('optional', ('float', {})), False, None),
+            ('mode', ('optional', ('float', {})), False, None),
+        ),
+        'field_checks': {},
+        'after': ('advisor.uncertainty.checks:distribution_complete',),
+        'mixins': (),
+    },
     'advisor.applications.rotary.requirements:RotaryRequirements': {
         'fields': (
             ('application', ('model', 'advisor.core.requirements:ApplicationReq'), True, None),
@@ -193,7 +219,7 @@ MODELS = {
     'advisor.applications.rotary.requirements:BldcMotorReq': {
         'fields': (
             ('kind', ('literal', ('bldc',)), True, None),
-            ('frame', ('str', {'min_length': 1, 'max_length': 60}), False, 'auto'),
+            ('frame', ('str', {'min_length': 1, 'max_length': 60}), False, 'reference'),
             ('candidate_speeds_rpm', ('list', ('float', {'ge': 100, 'le': 200000.0}), {'min_length': 1, 'max_length': 20}), False, [5000.0, 10000.0]),
             ('phases', ('int', {'ge': 3, 'le': 3}), False, 3),
             ('max_losses_W', ('optional', ('float', {'ge': 0.1, 'le': 1000000.0})), False, None),
@@ -472,7 +498,7 @@ QUESTIONS = {
         (('rotary', 'emergency_stop_torque_Nm'), 'Emergency-stop torque (optional)', 'N·m', 'float', (), True, None, 'momentary peak torque at the output in an emergency stop or a collision, 1 … 10⁶ N·m; left out: the output torque (the stages and the holding device are checked against it)', 1, '≥ 1, ≤ 1e+06', None, None, None),
         (('envelope', 'max_outer_diameter_mm'), 'Largest reducer diameter', 'mm', 'float', (), True, None, 'largest outer diameter of the reducer, 1 … 10⁴ mm', 2, '≥ 1, ≤ 10000', None, None, None),
         (('envelope', 'max_length_mm'), 'Largest reducer length', 'mm', 'float', (), True, None, 'largest length of the reducer, 1 … 10⁴ mm', 2, '≥ 1, ≤ 10000', None, None, None),
-        (('motor', 'frame'), 'Motor frame', '', 'str', (), True, 'auto', "the motor frame: auto (the smallest of seed 000's scaled series, or of a catalog's bldc_motors.toml, whose losses and duty pass), reference (the [motor.reference] frame, seed 000's by default; given [motor.reference] imposes it), or a frame's name (BL098x066) or a catalog motor's", 3, 'at least 1, at most 60', None, None, None),
+        (('motor', 'frame'), 'Motor frame', '', 'str', (), True, 'reference', "the motor frame: reference (the [motor.reference] frame, seed 000's unless given), auto (the smallest of seed 000's scaled series BL037x025 … BL280x189, or of a catalog's bldc_motors.toml, whose losses and duty pass), or a frame's name (BL098x066) or a catalog motor's", 3, 'at least 1, at most 60', None, None, None),
         (('motor', 'candidate_speeds_rpm'), 'Motor speeds to compare', 'rpm', 'floats', (), True, [5000.0, 10000.0], 'motor speeds to compare, 100 … 2·10⁵ rpm each, each once, at most 20', 3, 'at least 1, at most 20', None, None, None),
         (('gearbox', 'rolling_body'), 'Rolling bodies', '', 'choice', ('ball', 'roller'), True, 'ball', 'rolling bodies', 3, '', None, None, None),
         (('gearbox', 'stage_efficiency'), 'Efficiency of one stage', '', 'float', (), True, 0.9, 'efficiency of one stage, 0.3 … 1', 3, '≥ 0.3, ≤ 1', None, None, None),

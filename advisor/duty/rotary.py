@@ -125,6 +125,12 @@ class Holder(NamedTuple):
 NO_HOLDER = Holder(None)
 
 
+def _rotor_inertia(duty, frame) -> float:
+    """The requirement's duty.motor_inertia_kgm2, or the frame's (issue 25)."""
+    given = getattr(duty, "motor_inertia_kgm2", None)
+    return given if given is not None else frame.data.inertia_kgm2
+
+
 def _through_reducer(m_in: float, q: float, eta: float) -> float:
     return (
         du.reflected_torque(m_in, q, eta, driving=True)
@@ -192,7 +198,7 @@ def cycle(req, q: float, eta: float, speed_rpm: float, frame: Frame, holder: Hol
     holds no load); at rest it is held by the holding device, or else by the motor with power
     on through the back-drivable wave gear (M_L·η/q): the cycle's closing rest too."""
     duty, rot = req.duty, req.rotary
-    jl, jm = duty.load_inertia_kgm2, frame.data.inertia_kgm2
+    jl, jm = duty.load_inertia_kgm2, _rotor_inertia(duty, frame)
     phases: list[du.Phase] = []
     problems: list[str] = []
     w_max = speed_rpm / RPM
@@ -234,7 +240,7 @@ def _held(load_Nm: float, q: float, eta: float, holder: Holder) -> float:
 def _iec_cycle(req, q: float, eta: float, w: float, frame: Frame, holder: Holder):
     """An IEC duty type at the rated point: the output torque at the output speed."""
     duty, rot = req.duty, req.rotary
-    jl, jm = duty.load_inertia_kgm2, frame.data.inertia_kgm2
+    jl, jm = duty.load_inertia_kgm2, _rotor_inertia(duty, frame)
     problems: list[str] = []
     t = duty.duty_type
     run_torque = _at_motor(rot.torque_Nm, q, eta, holder)

@@ -16,6 +16,7 @@ Row = dict[str, Any]
 #: Columns of designs.csv after the axis values, in order.
 COLUMNS = (
     "motor",
+    "frame",
     "pole_pairs",
     "motor_speed_rpm",
     "ratio",
@@ -29,13 +30,14 @@ COLUMNS = (
     "lowest_margin_check",
 )
 #: Discrete choices: where they change along an axis is a finding of the summary.
-DISCRETE = ("motor", "pole_pairs", "stages", "screw_thread", "one_way")
+DISCRETE = ("motor", "frame", "pole_pairs", "stages", "screw_thread", "one_way")
 #: Numbers plotted against the axes in family.html.
 NUMERIC = ("motor_speed_rpm", "ratio", "mass_kg", "outer_diameter_mm", "losses_W", "lowest_margin")
 
 MEANING = {
     "rotary": {
-        "motor": "'bldc N rpm': the candidate speed chosen (the seed 000 motor scaled to it)",
+        "motor": "'bldc N rpm': the candidate speed chosen (the frame rewound for it)",
+        "frame": "the motor frame chosen (issue 25): a scaled frame BLDDDxLLL or a catalog motor",
         "mass_kg": "wave-gear reducer + one-way device (the motor is not sized by mass)",
         "outer_diameter_mm": "reducer outer diameter",
         "losses_W": "motor losses (ohmic + iron + magnets)",
@@ -74,6 +76,7 @@ def rotary_outputs(report: dict[str, Any]) -> Row:
     m, g = d["motor"], d["gearbox"]
     return {
         "motor": f"bldc {m['speed_rpm']:g} rpm",  # the choice among the candidate speeds
+        "frame": (m.get("frame") or {}).get("name"),  # the frame chosen (issue 25)
         "pole_pairs": m["pole_pairs"],
         "motor_speed_rpm": m["speed_rpm"],
         "ratio": g["total_ratio"],

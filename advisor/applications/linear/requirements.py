@@ -17,6 +17,7 @@ from advisor.core.requirements import (
     field_check,
 )
 from advisor.duty.requirements import LinearDutyReq
+from advisor.uncertainty.requirements import UncertaintyField
 
 
 class LinearReq(_Strict):
@@ -192,3 +193,4 @@ class LinearRequirements(_Strict):
         LinearDutyReq | None,
         Field(description="the [duty] table: segments with cycles_per_hour, or duty_type"),
     ] = None
+    uncertainty: UncertaintyField = None  # issue 30: P(pass) (advisor.uncertainty)

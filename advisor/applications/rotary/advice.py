@@ -279,9 +279,10 @@ def _fit(req: Requirements, cat: Catalogs, ref, params, data, speeds: list[float
         from advisor.duty import rotary as dr
 
         frame_for = dr.frames(ref, steel, steel_mass, terms, limit, data)
+        offered = reducible if getattr(ref, "kind", "") != "catalog" else within
         try:
             passing = dr.passing_speeds(
-                req, within, frame_for, lambda c: _holder(req, c["q_total"], c["eta"]), limit
+                req, offered, frame_for, lambda c: _holder(req, c["q_total"], c["eta"]), limit
             )
         except InfeasibleError as exc:
             return _Fit(

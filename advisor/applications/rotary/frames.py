@@ -1,7 +1,8 @@
-"""Which motor frames the rotary advice tries (issue 25): seed 000's scaled series and a
-catalog's PM brushless motors in order of mass (then diameter), or the one frame the
-requirement imposes (``motor.frame = "reference"`` or a name, or a ``[motor.reference]`` /
-``motor.max_losses_W`` given without ``motor.frame``); and what the report says of it."""
+"""Which motor frames the rotary advice tries (issue 25): with ``motor.frame = "auto"`` seed
+000's scaled series and a catalog's PM brushless motors in order of mass (then diameter);
+otherwise the one frame the requirement imposes: ``"reference"`` (the default: the
+``[motor.reference]`` frame, seed 000's unless given, as before issue 25) or a frame's or a
+catalog motor's name. And what the report says of it."""
 
 from typing import Any, NamedTuple
 
@@ -40,15 +41,14 @@ def frame_data(req, frame):
 def frame_choice(mot, cat) -> Choice:
     """How the requirement chooses its frame, and the frames to try."""
     ordered = tuple(sorted(cat.bldc_frames, key=lambda f: (f.mass_kg, f.outer_diameter_mm)))
-    given = mot.model_fields_set
     name = mot.frame.strip()
-    if name.lower() == "auto" and not ({"reference", "max_losses_W"} & given):
+    if name.lower() == "auto":
         return Choice("auto", None, ordered, "motor.frame = auto", all_frames=ordered)
-    if name.lower() in ("auto", "reference"):
+    if name.lower() == "reference":
         why = (
             "motor.frame = reference"
-            if name.lower() == "reference"
-            else "[motor.reference] or motor.max_losses_W given (one frame)"
+            if "frame" in mot.model_fields_set
+            else "motor.frame left out: the reference frame"
         )
         return Choice("imposed", (mot.reference, "reference"), (), why, all_frames=ordered)
     frame = cat.bldc_frame(name)

@@ -259,16 +259,16 @@ class BldcMotorReq(_Strict):
     frame: Annotated[
         str,
         ask(
-            "the motor frame: auto (the smallest of seed 000's scaled series, or of a "
-            "catalog's bldc_motors.toml, whose losses and duty pass), reference (the "
-            "[motor.reference] frame, seed 000's by default; given [motor.reference] imposes "
-            "it), or a frame's name (BL098x066) or a catalog motor's",
+            "the motor frame: reference (the [motor.reference] frame, seed 000's unless "
+            "given), auto (the smallest of seed 000's scaled series BL037x025 … BL280x189, "
+            "or of a catalog's bldc_motors.toml, whose losses and duty pass), or a frame's "
+            "name (BL098x066) or a catalog motor's",
             label="Motor frame",
             step=3,
             min_length=1,
             max_length=60,
         ),
-    ] = "auto"
+    ] = "reference"
     candidate_speeds_rpm: Annotated[
         list[Annotated[float, _num(ge=100, le=2e5, desc="a motor speed, 100 … 2·10⁵ rpm")]],
         ask(
