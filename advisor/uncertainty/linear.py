@@ -1,0 +1,222 @@
+"""The linear actuator's checks over samples of its uncertain inputs, the design held fixed
+(thread, starts, nut, motor).
+
+Each check's margin is the reported one scaled by how its demand and its limit move with the
+inputs: margin(x) = margin(x₀) · [limit(x)/limit(x₀)] · [demand(x₀)/demand(x)]. At the nominal
+inputs this is the report's margin exactly; the demand and limit functions are the advisor's
+own equations in numpy form (tests hold them equal to the scalar calc functions):
+
+- core stress: σ_eq = √(σ² + 3τ²), σ = 4F/(π·d3²), τ = 16·M/(π·d3³) with the thread torque
+  M = F·d2/2·tan(ψ + φ') (seed 001, eq. (1); the core carries the thread's torque alone);
+- buckling: P_cr(L)/(S·F), Euler ∝ 1/L², Johnson's parabola below the transition;
+- nut flank pressure ∝ F (the nut's turns are fixed); the thrust bearing's static load ∝ F;
+- motor rated and starting torque against the drive torque (thread + thrust face);
+- travel time and whirling: the motor's working speed on its fitted Kloss curve at that
+  torque (the stable slip in closed form), the whirling speed ∝ 1/L².
+A check not listed (the duty cycle's, a rule's) is reported as not modelled: its nominal
+verdict only.
+"""
+
+import math
+from collections.abc import Callable
+from typing import Any
+
+import numpy as np
+
+#: Inputs this model takes, with the unit their key implies.
+INPUTS = {
+    "linear.force_N": "N",
+    "linear.support_span_m": "m",
+    "screw.friction_coefficient": "",
+    "screw.thrust.friction_coefficient": "",
+}
+
+Margins = Callable[[dict[str, np.ndarray]], dict[str, np.ndarray]]
+
+
+def thread_torque(force, d2_m: float, psi: float, f, model: str):
+    """M = F·d2/2·tan(ψ + φ') with the reduced friction angle of
+    :func:`advisor.calc.screw.friction_angle` (numpy)."""
+    half = math.radians(15.0) if model == "standard" else psi / 2.0
+    phi = np.arctan(np.asarray(f) / math.cos(half))
+    return np.asarray(force) * d2_m / 2.0 * np.tan(psi + phi)
+
+
+def core_stress(force, torque, d3_m: float):
+    """von Mises stress of the screw core (:func:`advisor.calc.screw.core_equivalent_stress`)."""
+    sigma = 4.0 * np.asarray(force) / (math.pi * d3_m**2)
+    tau = 16.0 * np.asarray(torque) / (math.pi * d3_m**3)
+    return np.sqrt(sigma**2 + 3.0 * tau**2)
+
+
+def critical_load(d3_m: float, span, mu: float, e_pa: float, sy_pa: float):
+    """P_cr of the core by Euler or Johnson (:func:`advisor.calc.screw.critical_buckling_load`)."""
+    span = np.asarray(span, dtype=float)
+    area, inertia = math.pi * d3_m**2 / 4.0, math.pi * d3_m**4 / 64.0
+    lam = mu * span / (d3_m / 4.0)
+    euler = math.pi**2 * e_pa * inertia / (mu * span) ** 2
+    johnson = area * (sy_pa - (sy_pa * lam / (2.0 * math.pi)) ** 2 / e_pa)
+    return np.where(lam >= math.pi * math.sqrt(2.0 * e_pa / sy_pa), euler, johnson)
+
+
+def working_slip(curve: Any, torque):
+    """The stable slip of a fitted Kloss curve under a load torque
+    (:meth:`advisor.calc.induction.KlossCurve.stable_slip`, numpy; NaN where it stalls)."""
+    m = np.asarray(torque, dtype=float)
+    mk, eps = curve.max_torque_Nm, curve.epsilon
+    with np.errstate(divide="ignore", invalid="ignore"):
+        c = 2.0 * mk * (1.0 + eps) / m - 2.0 * eps
+        x = (c - np.sqrt(np.maximum(c * c - 4.0, 0.0))) / 2.0
+    s = x * curve.critical_slip
+    s = np.where(m <= 0, 0.0, s)
+    return np.where(m > mk, np.nan, s)
+
+
+def _check(report: Any, cid: str) -> Any:
+    return next((c for c in report.checks if c.id == cid), None)
+
+
+def margin_model(req: Any, report: Any, cat: Any) -> tuple[Margins, dict[str, float]]:
+    """The margins of the design in ``report`` as functions of the uncertain inputs, and the
+    nominal value of every input."""
+    from advisor.applications.linear.advice import _thrust_face
+    from advisor.calc import screw as sc
+    from advisor.calc.sizing import fit_motor
+
+    s = report.design.screw
+    thread = cat.thread(s.thread)
+    d2, d3 = thread.d2_mm * 1e-3, thread.d3_mm * 1e-3
+    psi = sc.lead_angle(thread.pitch_mm * 1e-3, d2, s.starts)
+    model = s.friction_model
+    lin = req.linear
+    thrust = _thrust_face(req, cat)
+    nominal = {
+        "linear.force_N": lin.force_N,
+        "linear.support_span_m": lin.support_span_m,
+        "screw.friction_coefficient": s.friction_coefficient,
+    }
+    if thrust is not None and thrust.kind == "collar":
+        nominal["screw.thrust.friction_coefficient"] = thrust.friction_coefficient
+    steel = cat.steel(req.screw.screw_steel)
+    e_pa, sy_pa = steel.elastic_modulus_MPa * 1e6, steel.yield_strength_MPa * 1e6
+    mu = sc.END_FIXITY_FACTOR[lin.end_fixity]
+    motor = next(m for m in cat.motors if m.model == report.design.motor.model)
+    curve = fit_motor(motor).curve
+    n0 = motor.synchronous_speed_rpm
+    speed = s.speed_rpm
+
+    def thrust_torque(force, fc):
+        if thrust is None:
+            return np.zeros_like(force)
+        if thrust.kind == "collar":
+            return np.abs(force) * fc * thrust.mean_diameter_m / 2.0
+        # a rolling bearing: its SKF moment on a grid of forces, interpolated
+        grid = np.linspace(float(force.min()), float(force.max()), 33)
+        torques = [thrust.torque_Nm(float(f), speed) for f in grid]
+        return np.interp(force, grid, torques)
+
+    def demands(x: dict[str, np.ndarray]) -> dict[str, np.ndarray]:
+        f_n = x["linear.force_N"]
+        m_thread = thread_torque(f_n, d2, psi, x["screw.friction_coefficient"], model)
+        drive = m_thread + thrust_torque(f_n, x.get("screw.thrust.friction_coefficient", 0.0))
+        slip = working_slip(curve, drive * at_motor_ratio)
+        return {
+            "force": f_n,
+            "core": core_stress(f_n, m_thread, d3),
+            "pcr": critical_load(d3, x["linear.support_span_m"], mu, e_pa, sy_pa),
+            "drive": drive,
+            "n_work": n0 * (1.0 - slip),  # NaN: the motor stalls
+            "whirl": 1.0 / x["linear.support_span_m"] ** 2,
+        }
+
+    # the motor sees the drive torque over the one-way device's efficiency (if any)
+    rated = _check(report, "motor_rated_torque")
+    at_nominal = {k: np.array([v], dtype=float) for k, v in nominal.items()}
+    at_motor_ratio = 1.0
+    d0_drive = demands(at_nominal)["drive"][0]
+    at_motor_ratio = rated.value / d0_drive if rated is not None and d0_drive > 0 else 1.0
+    d0 = demands(at_nominal)
+
+    scale: dict[str, Callable[[dict[str, np.ndarray]], np.ndarray]] = {
+        "core_stress": lambda d: d0["core"] / d["core"],
+        "buckling": lambda d: (d["pcr"] / d0["pcr"]) * (d0["force"] / d["force"]),
+        "nut_pressure": lambda d: d0["force"] / d["force"],
+        "thrust_bearing_static": lambda d: d0["force"] / d["force"],
+        "motor_rated_torque": lambda d: d0["drive"] / d["drive"],
+        "motor_starting_torque": lambda d: d0["drive"] / d["drive"],
+        "travel_time": lambda d: np.nan_to_num(d["n_work"] / d0["n_work"], nan=0.0),
+        "critical_speed": lambda d: np.nan_to_num(
+            (d["whirl"] / d0["whirl"]) * (d0["n_work"] / d["n_work"]), nan=np.inf
+        ),
+    }
+    constant = {"nut_height", "nut_turns"}  # the nut is built: its proportions are fixed
+
+    def margins(x: dict[str, np.ndarray]) -> dict[str, np.ndarray]:
+        n = len(next(iter(x.values())))
+        full = {
+            k: np.broadcast_to(np.asarray(x.get(k, v), dtype=float), (n,))
+            for k, v in nominal.items()
+        }
+        d = demands(full)
+        out = {}
+        for c in report.checks:
+            if c.id in scale:
+                out[c.id] = c.margin * scale[c.id](d)
+            elif c.id in constant:
+                out[c.id] = np.full(n, c.margin)
+        return out
+
+    return margins, nominal
+
+
+def candidates(req: Any, cat: Any) -> list[tuple[str, int, int]]:
+    """The drive options the advisor's joint choice (rule SCR-04) ranks, in its order of
+    preference (:func:`rules.screw.drive_order`): (thread, starts, pole pairs) of each, with
+    the smallest motor of that pole count that drives it. Built by the linear advice's own
+    functions, so the robust choice looks at exactly the advisor's candidates."""
+    from advisor.applications.linear import advice as la
+    from advisor.calc.service_factor import service_factor
+    from advisor.calc.sizing import screen_threads
+    from advisor.core.rulebook import Trace
+    from rules import screw as screw_rules
+
+    lin, s, trace = req.linear, req.screw, Trace()
+    material, _ = la._material(req, cat, trace)
+    hold = req.application.hold_without_power
+    parts = la._catalog_parts(cat)
+    screens = screen_threads(
+        parts.threads,
+        (s.starts,) if s.starts is not None else la.STARTS_FREE,
+        force_N=lin.force_N,
+        stroke_m=lin.stroke_m,
+        travel_time_s=lin.travel_time_s,
+        span_m=lin.support_span_m,
+        end_fixity=lin.end_fixity,
+        buckling_safety_factor=lin.buckling_safety_factor,
+        friction_model=s.friction_model,
+        material=material,
+        thrust=la._thrust_face(req, cat),
+        service_factor=service_factor(getattr(req, "design", None)).value,
+    )
+    screens = la._through_device(screens, la._device_efficiency(req) if hold else 1.0)
+    options = [
+        o
+        for o in la.drive_options(screens, parts.lines)
+        if s.thread is None or o.thread == s.thread
+    ]
+    options.sort(key=lambda o: screw_rules.drive_order(o, hold))
+    return [(o.thread, o.starts, o.pole_pairs) for o in options]
+
+
+def restricted(req: Any, cat: Any, option: tuple[str, int, int]) -> tuple[Any, Any]:
+    """The requirement and catalog under which the advisor's own rules choose ``option``: the
+    catalog holds its thread and the motors of its pole count, the requirement its starts."""
+    thread, starts, pole_pairs = option
+    from advisor.uncertainty import replaced
+
+    req2 = replaced(req, screw=replaced(req.screw, starts=starts), uncertainty=None)
+    cat2 = cat._replace(
+        threads=tuple(t for t in cat.threads if t.name == thread),
+        motors=tuple(m for m in cat.motors if m.poles == 2 * pole_pairs),
+    )
+    return req2, cat2
