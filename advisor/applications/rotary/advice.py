@@ -189,6 +189,8 @@ def _loss_optimum_Hz(at_ref: dict, req: Requirements, params, pole_pairs: int) -
     (P_om ∝ (M/(q·η))², eq. (9)) until the stage count stays (at most four rounds)."""
     core = at_ref["losses"]["iron"] + at_ref["losses"]["magnets"]
     ohmic, eta, f_ref = at_ref["losses"]["ohmic"], at_ref["eta"], at_ref["frequency_Hz"]
+    if core <= 0.0:  # a catalog motor states no core losses: no optimum, loss falls with n
+        return math.inf
     f_opt = bldc.optimum_frequency_Hz(ohmic, core, f_ref)
     for _ in range(4):
         n = f_opt * 60.0 / pole_pairs
