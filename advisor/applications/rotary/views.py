@@ -18,6 +18,7 @@ def components(report) -> list[Any]:
                 ("speed", f"{m.speed_rpm:g} rpm"),
                 ("torque", f"{m.torque_Nm:.4g} N·m at {m.current_A:.3g} A"),
                 ("losses", f"{m.losses_W.total:.0f} W"),
+                *_frame_lines(m),
             ],
         )
     )
@@ -38,6 +39,20 @@ def components(report) -> list[Any]:
     return parts
 
 
+def _frame_lines(m) -> list[tuple[str, str]]:
+    """The frame the design took (issue 25), as the components show it."""
+    f = getattr(m, "frame", None)
+    if f is None:
+        return []
+    kind = {"scaled": "scaled frame", "catalog": "catalog motor"}.get(f.kind, "reference frame")
+    size = f" Ø{f.outer_diameter_mm:.4g} mm" if f.outer_diameter_mm else ""
+    mass = f", {f.mass_kg:.3g} kg" if f.mass_kg else ""
+    return [
+        ("frame", f"{f.name} ({kind}, {f.choice}){size}{mass}"),
+        ("continuous", f"{f.torque_Nm:.4g} N·m at {f.speed_rpm:.5g} rpm"),
+    ]
+
+
 def loss_curve(report, points: int = 40) -> list[dict]:
     """The losses of the reference motor rewound for each speed from a quarter of the lowest
     candidate to twice the highest, computed exactly as the candidates are (seed 000, eqs.
@@ -52,7 +67,12 @@ def loss_curve(report, points: int = 40) -> list[dict]:
 
     req = parse_requirements(report.requirements)
     ref, gb = req.motor.reference, req.gearbox
-    steel = ra._steel(req, load_catalogs())
+    frame = getattr(report.design.motor, "frame", None)
+    if frame is not None and frame.kind != "reference":  # issue 25: the frame taken
+        ref = load_catalogs().bldc_frame(frame.name)
+        if ref is None:  # a catalog motor of a directory the view does not know
+            return []
+    steel = ra._steel(req, load_catalogs(), ref)
     if abs(steel.p15_50_W_kg - report.design.motor.steel.p15_50_W_kg) > 1e-9:
         return []
     steel_mass = bldc.stator_steel_mass(
@@ -73,7 +93,7 @@ def loss_curve(report, points: int = 40) -> list[dict]:
     grid = sorted({*speeds, *(lo * (hi / lo) ** (k / (points - 1)) for k in range(points))})
     out = []
     for n in grid:
-        c = ra._candidate(n, req, steel, steel_mass, terms, params)
+        c = ra._candidate(n, req, steel, steel_mass, terms, params, ref)
         if c["split"]:  # a speed no reducer of the rules realises has no torque, no losses
             out.append({"speed_rpm": n, **c["losses"]})
     return out
@@ -194,4 +214,54 @@ def compare(report) -> list[Any]:
         "“Use” sets gearbox.choice: the rules' design, or the lightest or the slimmest of "
         "the design space within the envelope.",
     )
-    return [motors, reducer, *one_way(report)]
+    return [*_frames_section(report), motors, reducer, *one_way(report)]
+
+
+def _frames_section(report) -> list[Any]:
+    """The frames tried (BL-03) and the neighbours of the one taken, each with “Use …”."""
+    from advisor.tui.compare import Option, Section, decision, mark, table
+
+    f = getattr(report.design.motor, "frame", None)
+    if f is None:
+        return []
+    t = table("frame", "kind", "continuous N·m", "at rpm", "Ø mm", "mass kg", "result")
+    rows = [(r, r.why if r.why != "neighbour" else "neighbour") for r in (*f.tried, *f.neighbours)]
+    shown, options = set(), []
+    if f.name not in {r.name for r, _ in rows}:
+        t.add_row(
+            mark(True, f.name),
+            f.kind,
+            f"{f.torque_Nm:.4g}",
+            f"{f.speed_rpm:.5g}",
+            f"{f.outer_diameter_mm or 0:.4g}",
+            f"{f.mass_kg or 0:.3g}",
+            "taken",
+        )
+        shown.add(f.name)
+    for r, why in rows:
+        if r.name in shown:
+            continue
+        shown.add(r.name)
+        taken = r.name == f.name
+        t.add_row(
+            mark(taken, r.name),
+            r.kind,
+            f"{r.torque_Nm:.4g}",
+            f"{r.speed_rpm:.5g}",
+            f"{r.outer_diameter_mm:.4g}",
+            f"{r.mass_kg:.3g}",
+            "taken" if taken else why,
+        )
+        if not taken:
+            options.append(Option(f"Use {r.name}", ((("motor", "frame"), r.name),)))
+    if f.choice != "auto":
+        options.append(Option("Use auto", ((("motor", "frame"), "auto"),)))
+    return [
+        Section(
+            "Motor frame (seed 000's scaled series)",
+            t,
+            decision(report, "BL-03") or f.data,
+            tuple(options),
+            "“Use” sets motor.frame: a frame of the series, or auto (the smallest that passes).",
+        )
+    ]
