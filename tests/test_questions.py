@@ -99,10 +99,16 @@ async def test_the_three_mismatches_of_issue_11_are_gone():
     assert f.optional and f.shown_default == "default 0.9"
     assert F.parse_text(f, "") == (None, None)
     # positioning: M_λ is required in a motor row that is started; no row at all is fine
+    # where a move time is required (the catalog's smallest motor that meets it is chosen)
     app = DriveAdvisorApp(
         {
             "application": {"kind": "positioning"},
-            "positioning": {"travel_rad": 3.0, "load_inertia_kgm2": 0.5, "load_torque_Nm": 1.0},
+            "positioning": {
+                "travel_rad": 3.0,
+                "load_inertia_kgm2": 0.5,
+                "load_torque_Nm": 1.0,
+                "move_time_s": 1.0,
+            },
         },
         save_drafts=False,
         offer_draft=False,
