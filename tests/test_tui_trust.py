@@ -273,6 +273,13 @@ async def test_focus_starts_on_the_first_field_of_each_step_and_no_key_is_lost()
         await pilot.press("ctrl+n", *"750", "enter", *"60")  # typed at once, no click
         assert app.query_one("#f-rotary-torque-Nm", Input).value == "750"
         assert app.query_one("#f-rotary-speed-rpm", Input).value == "60"
+        from advisor.tui import fields as F
+
+        after = [f.dotted for f in F.fields_for("rotary", 1)]
+        after = after[after.index("rotary.speed_rpm") + 1 :]  # optional ones, left empty
+        for _ in after:
+            await pilot.press("enter")
+            assert app.step == 1
         await pilot.press("enter")  # enter on the last field: the next step
         assert app.step == 2
         assert app.focused is app.query_one("#f-envelope-max-outer-diameter-mm")
