@@ -448,3 +448,38 @@ def test_every_device_with_the_rotary_drive(device, with_duty):
         run = next(ph for ph in d["phases"] if ph["name"] == "1 move: run")
         q, eta = d["ratio"], rep["design"]["gearbox"]["efficiency"]
         assert run["torque_Nm"] == pytest.approx(250.0 / (q * eta) / p.efficiency, rel=1e-4)
+
+
+# ------------------------------------------------------------------ the emergency stop
+def test_linear_holding_device_is_sized_for_and_holds_the_emergency_stop():
+    """Tr20x4 (4 starts) with a roller clutch, 1500 N rated, 4500 N in an emergency stop:
+    the thread torque grows with the force, 5.375·4500/1500 = 16.12 N·m; the clutch is sized
+    for it and the check states it (margin 1, the device sized for the larger force). With
+    a stop below the rated force the device keeps the rated 5.375 N·m and the margin is
+    1500/1000 = 1.5."""
+    doc = linear_doc("roller_clutch")
+    doc["linear"]["emergency_stop_force_N"] = 4500.0
+    rep = report(doc)
+    m = screw_torque_by_hand(1500.0)
+    assert rep["design"]["one_way"]["torque_Nm"] == pytest.approx(m * 3.0, rel=1e-5)
+    check = next(c for c in rep["checks"] if c["id"] == "one_way_holds_emergency_stop")
+    assert check["value"] == pytest.approx(m * 3.0, rel=1e-5)
+    assert check["margin"] == pytest.approx(1.0, rel=1e-5)
+    doc["linear"]["emergency_stop_force_N"] = 1000.0
+    rep = report(doc)
+    check = next(c for c in rep["checks"] if c["id"] == "one_way_holds_emergency_stop")
+    assert rep["design"]["one_way"]["torque_Nm"] == pytest.approx(m, rel=1e-5)
+    assert check["margin"] == pytest.approx(1.5, rel=1e-5)
+
+
+def test_linear_regenerated_energy_goes_to_the_supply():
+    """An em clutch (energised, back-drivable) lets the load drive the motor down: the energy
+    comes back and, on the line, goes to the mains — nothing to size on a DC bus."""
+    duty = _linear_duty("with")
+    duty["segments"].insert(
+        0, {"kind": "move", "distance_m": 0.2, "time_s": 10.0, "direction": "against"}
+    )
+    rep = report(linear_doc("em_clutch", duty))
+    d = rep["design"]["duty"]
+    assert d["regenerated_per_cycle_J"] > 0.0
+    assert d["regenerated_to"].startswith("the supply")

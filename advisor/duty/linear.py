@@ -527,6 +527,13 @@ def advise_duty(req, ev, selected, cat, holder: str | None, trace: Trace, passag
         cycles_per_hour=None if duty.duty_type == "S2" else 3600.0 / t_cycle if t_cycle else 0.0,
         duty_type=duty.duty_type or "cycle",
         held_by=_held_by(ev, holder, passage),
+        regenerated_to=(
+            "the supply: a motor on the line generates above its synchronous speed straight "
+            "into the mains, so there is no DC bus and no braking resistor to size (on an "
+            "inverter the bus would take it: see the rotary drive's [drive] table)"
+            if back_J > 0
+            else None
+        ),
         standstill_cooling_factor=beta0,
         starts_per_hour=e["starts"],
         # the starts allowed mean something only where starts are counted (S4, S5, S7, moves)

@@ -49,6 +49,7 @@ class DutyOut(_Out):
     cycles_per_hour: float | None = None
     duty_type: str
     held_by: str | None = None  # what holds the load at rest and against back-driving
+    regenerated_to: str | None = None  # where the energy given back goes
     mean_starting_torque_Nm: float | None = None  # an induction motor's mean start torque
     rated_torque_Nm: float | None = None
     min_rms_ratio: float | None = None

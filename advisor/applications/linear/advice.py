@@ -334,27 +334,53 @@ def _through_device(screens: list[ThreadScreen], efficiency: float) -> list[Thre
 
 def _one_way(req, trace: Trace, ev, thread: str, friction_low: float, motor_torque: float):
     """Seed 004 for a screw drive: no device when the screw holds with margin, otherwise one
-    at the motor side carrying the screw torque."""
+    at the motor side carrying the screw torque — at the rated force or, if larger, at the
+    emergency stop's momentary force, times the service factor — and the check that it holds
+    the emergency stop. Returns (device, checks, warnings)."""
     from advisor.one_way.advice import choose_device
     from advisor.one_way.report import OneWayOut
     from rules import one_way as ow_rules
 
     holds = trace.apply(ow_rules.screw_holds, ev.self_locking_at_low_friction, thread, friction_low)
     if holds:
-        return OneWayOut.make(
-            type="none",
-            location="none",
-            torque_Nm=ev.torque_Nm,
-            basis=f"{thread} is self-locking over the whole friction range of the pair",
-        ), []
+        return (
+            OneWayOut.make(
+                type="none",
+                location="none",
+                torque_Nm=ev.torque_Nm,
+                basis=f"{thread} is self-locking over the whole friction range of the pair",
+            ),
+            [],
+            [],
+        )
+    lin, sf = req.linear, service_factor(getattr(req, "design", None))
+    stop = lin.emergency_stop_force_N
+    per_newton = ev.torque_Nm / lin.force_N  # the thread torque grows with the force
+    sized = per_newton * max(lin.force_N, stop or 0.0) * sf.value
     power = motor_torque * ev.speed_rpm * math.pi / 30.0
-    device, warnings = choose_device(req.one_way, ev.torque_Nm, ev.torque_Nm, power, trace)
+    device, warnings = choose_device(req.one_way, sized, sized, power, trace)
     warnings.insert(
         0,
         f"{thread} is not self-locking at the low end of the friction range (f = "
         f"{friction_low:g}): a {device.type.replace('_', ' ')} at the motor side holds the load",
     )
-    return device.replace(output_side=None), warnings
+    checks = []
+    if stop is not None:
+        checks.append(
+            Check(
+                "one_way_holds_emergency_stop",
+                f"holding device carries the screw torque at the emergency-stop force "
+                f"{stop:g} N × f_B = {sf.value:g} (sized for the larger of it and the rated "
+                "force)",
+                per_newton * stop,
+                device.torque_Nm,
+                "N·m",
+                device.torque_Nm / (sf.value * per_newton * stop),
+                ow_rules.SEED_004.with_note("linear.emergency_stop_force_N (given)"),
+                sf.value,
+            )
+        )
+    return device.replace(output_side=None), checks, warnings
 
 
 def advise_linear(
@@ -492,9 +518,9 @@ def advise_linear(
             power = motor.rated_power_kW
             evaluations = {**plan.evaluations, power: _eval_motor(motor, at_motor)}
             plan = plan._replace(selected=motor, evaluations=evaluations)
-    one_way = None
+    one_way, dev_checks = None, []
     if req.application.hold_without_power:
-        one_way, dev_warnings = _one_way(
+        one_way, dev_checks, dev_warnings = _one_way(
             req, trace, ev, chosen_name, material.friction_low, at_motor.torque_Nm
         )
         warnings += dev_warnings
@@ -556,6 +582,7 @@ def advise_linear(
     screw_checks, screw_warnings = _screw_checks(req, ev, sel, thrust, sf, cat)
     checks += screw_checks
     warnings += screw_warnings
+    checks += dev_checks
     if duty is not None:
         checks += duty_checks
     return design, checks, warnings

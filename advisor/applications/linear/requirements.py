@@ -62,6 +62,17 @@ class LinearReq(_Strict):
     buckling_safety_factor: Annotated[
         float, _num(ge=1, le=20, desc="required margin against buckling; 1 … 20")
     ] = 3.0
+    emergency_stop_force_N: Annotated[
+        float | None,
+        _num(
+            ge=1,
+            le=5e6,
+            desc="momentary peak axial force in an emergency stop or a collision, 1 N … 5 MN; "
+            "left out: the rated force (the holding device is sized for the larger)",
+            label="Emergency-stop force (optional)",
+            step=1,
+        ),
+    ] = None
 
     _stroke_fits = after_check(checks.stroke_fits)
 
