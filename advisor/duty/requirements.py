@@ -263,7 +263,7 @@ class RotaryDutyReq(_CycleDuty):
             le=1e3,
             desc="rotor inertia of the motor, kg·m²; left out: the chosen frame's or catalog "
             "motor's (issue 25)",
-            label="Motor inertia (optional)",
+            label="Motor inertia",
             step=STEP,
         ),
     ] = None
@@ -274,7 +274,7 @@ class RotaryDutyReq(_CycleDuty):
             le=1e5,
             desc="thermal time constant of the motor, s; left out: the chosen frame's or "
             "catalog motor's (issue 25)",
-            label="Thermal time constant (optional)",
+            label="Thermal time constant",
             step=STEP,
         ),
     ] = None

@@ -69,7 +69,7 @@ class LinearReq(_Strict):
             le=5e6,
             desc="momentary peak axial force in an emergency stop or a collision, 1 N … 5 MN; "
             "left out: the rated force (the holding device is sized for the larger)",
-            label="Emergency-stop force (optional)",
+            label="Emergency-stop force",
             step=1,
         ),
     ] = None

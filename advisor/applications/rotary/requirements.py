@@ -58,16 +58,16 @@ class RotaryReq(_Strict):
             desc="momentary peak torque at the output in an emergency stop or a collision, "
             "1 … 10⁶ N·m; left out: the output torque (the stages and the holding device are "
             "checked against it)",
-            label="Emergency-stop torque (optional)",
+            label="Emergency-stop torque",
             step=1,
         ),
     ] = None
     emergency_stop_time_s: Annotated[
         float,
         _num(
-            gt=0,
+            ge=1e-3,
             le=10,
-            desc="how long one emergency-stop peak lasts, > 0 … 10 s",
+            desc="how long one emergency-stop peak lasts, 1 ms … 10 s",
         ),
     ] = 0.15
     emergency_stops: Annotated[
@@ -175,7 +175,7 @@ class RotaryDesignReq(DesignReq):
             le=1e7,
             desc="required L10 life of the reducer's rolling elements and of the output "
             "bearing, 1 … 10⁷ h; left out: the lives are reported, not checked",
-            label="Required life L10 (optional)",
+            label="Required life L10",
             step=1,
         ),
     ] = None
