@@ -116,7 +116,17 @@ def advise_one(source: Path, target: Path, catalog_dir: Path | None) -> Advised:
     try:
         if same_file(source, target):
             raise InputError(f"{show(target, 200)}: is the input itself; it is not replaced")
-        report = advise(read_requirements(source), catalog_dir)
+        req = read_requirements(source)
+        try:
+            report = advise(req, catalog_dir)
+        except InfeasibleError as exc:  # its report says why, as with -o (exit 3)
+            from advisor.infeasible import infeasible_report
+
+            text = to_toml(infeasible_report(req, exc))
+            return Advised(
+                Outcome(str(source), exc.exit_code, str(target), exc.summary, tuple(exc.reasons)),
+                text,
+            )
         text = to_toml(report)
         from advisor.ignored import IGNORED_PREFIX
 

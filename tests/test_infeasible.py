@@ -90,3 +90,36 @@ def test_shortfall_by_hand():
     text = shortfall("buckling", 5e6, 3138.0, "N", 3138.0 / 5e6)
     assert text.startswith("buckling: 5e+06 N against the limit 3138 N (margin 0.001): ")
     assert "159237 % more capacity" in text and "100 % less demand" in text
+
+
+def test_many_files_write_the_infeasible_report_beside_the_designs(tmp_path, capsys):
+    """--out-dir: the infeasible file gets its report with its status, as -o gives it; the
+    feasible one its design; the run's exit code is the worst, 3."""
+    out = tmp_path / "out"
+    ok = EXAMPLES / "linear_screw_actuator.toml"
+    assert main(["--batch", str(EXAMPLE), str(ok), "--out-dir", str(out)]) == 3
+    bad = tomllib.loads((out / "screw_buckles.report.toml").read_text(encoding="utf-8"))
+    assert bad["report"]["status"] == "infeasible"
+    assert bad["design"]["summary"].startswith("no feasible design")
+    good = tomllib.loads((out / "linear_screw_actuator.report.toml").read_text(encoding="utf-8"))
+    assert good["report"].get("status", "feasible") != "infeasible"
+    assert "screw_buckles.toml" in capsys.readouterr().out
+
+
+def test_the_wizard_says_what_the_report_says():
+    """The wizard's summary of an infeasible requirement names the nearest design and how
+    far each failing check misses, in the report's own words: 15 turns against 10 needs
+    10/15 → 50 % more capacity or 33 % less demand."""
+    from advisor.tui.views import infeasible
+
+    check = Check("nut_turns", "engaged nut turns", 15.0, 10.0, "", 10.0 / 15.0, cite("seed-001"))
+    exc = InfeasibleError(
+        "no feasible design: the chosen parts fail checks",
+        ["nut turns: 15 against 10"],
+        checks=[check],
+        nearest="Tr16x2 + 4A71B4",
+    )
+    text = infeasible(exc).plain
+    assert "Nearest: Tr16x2 + 4A71B4" in text
+    assert shortfall(check.name, 15.0, 10.0, "", check.margin) in text
+    assert "50 % more capacity, or 33 % less demand" in text

@@ -134,6 +134,18 @@ def infeasible(exc) -> Text:
         text.append_text(plain(f": {head}"))
     for r in exc.reasons:
         text.append_text(plain(f"\n • {r}"))
+    # the same as the infeasible report and the batch summary: the nearest design, and for
+    # each failing check how far it misses
+    from advisor.infeasible import shortfall
+
+    nearest = getattr(exc, "nearest", None)
+    if nearest:
+        text.append_text(plain(f"\nNearest: {nearest}"))
+    for c in getattr(exc, "checks", []):
+        if not c.passed:
+            text.append_text(
+                plain("\nTo be feasible: " + shortfall(c.name, c.value, c.limit, c.unit, c.margin))
+            )
     return text
 
 
