@@ -269,7 +269,7 @@ def run_wizard(path: Path | None, catalog_dir: Path | None) -> int:
 
 def run_schema(argv: list[str]) -> int:
     """``advisor schema``: the JSON Schema of requirement files (for editors with TOML schema
-    support); ``--markdown``: the README's tables of requirement keys."""
+    support); ``--markdown``: the tables of requirement keys (docs/reference/keys.md)."""
     p = argparse.ArgumentParser(
         prog=f"{PROG} schema",
         description="Print the JSON Schema of requirement files, from the requirement models.",

@@ -1,6 +1,6 @@
 """The published description of requirement files is generated from the models and current:
-the JSON Schema (`advisor schema`) and its copy beside the examples, the README's tables of
-keys, and every example names the schema and fits it."""
+the JSON Schema (`advisor schema`) and its copy beside the examples, the tables of keys in
+docs/reference/keys.md, and every example names the schema and fits it."""
 
 import json
 import tomllib
@@ -10,7 +10,7 @@ from helpers import EXAMPLES
 
 from advisor.cli import main
 from advisor.core import registry
-from advisor.core.schema import key_tables, with_key_tables
+from advisor.core.schema import KEYS_DOC, key_tables, with_key_tables
 
 ROOT = Path(__file__).parent.parent
 SHIPPED = EXAMPLES / "requirements.schema.json"
@@ -28,9 +28,13 @@ def test_advisor_schema_prints_the_shipped_schema(capsys):
     ]
 
 
-def test_the_readme_key_tables_are_current():
-    readme = (ROOT / "README.md").read_text(encoding="utf-8")
-    assert with_key_tables(readme) == readme, "regenerate: advisor schema --markdown"
+def test_the_key_tables_in_the_docs_are_current(capsys):
+    assert KEYS_DOC == ROOT / "docs" / "reference" / "keys.md"
+    doc = KEYS_DOC.read_text(encoding="utf-8")
+    assert with_key_tables(doc) == doc, "regenerate: python -m advisor.core.schema"
+    assert main(["schema", "--markdown"]) == 0
+    assert capsys.readouterr().out in doc
+    assert "requirement-keys:begin" not in (ROOT / "README.md").read_text(encoding="utf-8")
     # one line per key, e.g. the rotary stage efficiency with its default and range
     assert "| `gearbox.stage_efficiency` | number |  | 0.9 | ≥ 0.3, ≤ 1 |" in key_tables()
     assert "| `linear.support_span_m` | number | m | required | ≥ 0.001, ≤ 20 |" in key_tables()

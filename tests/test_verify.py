@@ -1,6 +1,6 @@
 """``advisor verify`` (issue 30, part 1): the verification set runs in CI through these tests,
 a broken published value is caught (exit 1), a departure is verified too, the data agrees with
-the golden tests and the README, and the HTML report escapes what it prints."""
+the golden tests and the docs, and the HTML report escapes what it prints."""
 
 import re
 import tomllib
@@ -120,7 +120,7 @@ def test_published_values_agree_with_the_golden_tests():
         src = (ROOT / c.golden).read_text(encoding="utf-8")
         for q in c.quantities:
             if q.departure is not None:
-                continue  # the departures are checked against the README below
+                continue  # the departures are checked against the docs below
             pattern = "|".join(
                 r"(?<![\d.])" + re.escape(f) + r"(?![\d])" for f in _forms(q.published)
             )
@@ -129,15 +129,20 @@ def test_published_values_agree_with_the_golden_tests():
     assert missing == []
 
 
-def test_every_departure_is_stated_in_the_readme():
-    readme = (ROOT / "README.md").read_text(encoding="utf-8")
+def test_every_departure_is_stated_in_the_docs():
+    """Each departure names a file of the docs and the bold heading of its item there."""
+    named = set()
     for c in CASES:
         for q in c.quantities:
             if q.departure is None:
                 continue
-            assert q.departure.reason and q.departure.readme, (c.id, q.name)
-            heading = q.departure.readme.split(": ")[-1]
-            assert f"**{heading}" in readme, (c.id, heading)
+            assert q.departure.reason and q.departure.doc, (c.id, q.name)
+            path, heading = q.departure.doc.split(": ", 1)
+            doc = ROOT / path
+            assert doc.is_file(), (c.id, path)
+            assert f"**{heading}" in doc.read_text(encoding="utf-8"), (c.id, heading)
+            named.add(path)
+    assert named == {"docs/reference/departures.md"}
 
 
 def test_every_case_cites_the_bibliography():

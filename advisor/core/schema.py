@@ -1,9 +1,11 @@
 """The requirement file described for editors and readers, from the requirement models: the
 JSON Schema that ``advisor schema`` prints (editors with TOML schema support complete and
 check requirement files with it; the examples name it with ``#:schema``), and the tables of
-requirement keys in the README (``advisor schema --markdown``)."""
+requirement keys in docs/reference/keys.md (``advisor schema --markdown`` prints them;
+``python -m advisor.core.schema`` rewrites them in that file)."""
 
 import json
+from pathlib import Path
 from typing import Any
 
 from advisor.core import registry
@@ -142,9 +144,26 @@ def key_tables() -> str:
 BEGIN, END = "<!-- requirement-keys:begin -->", "<!-- requirement-keys:end -->"
 
 
-def with_key_tables(readme: str) -> str:
-    """The README text with its tables of requirement keys regenerated (between the
-    ``requirement-keys`` markers)."""
-    head, rest = readme.split(BEGIN, 1)
+#: The document that holds the generated tables (a source checkout; not installed).
+KEYS_DOC = Path(__file__).resolve().parents[2] / "docs" / "reference" / "keys.md"
+
+
+def with_key_tables(text: str) -> str:
+    """The text of docs/reference/keys.md with its tables of requirement keys regenerated
+    (between the ``requirement-keys`` markers)."""
+    head, rest = text.split(BEGIN, 1)
     _, tail = rest.split(END, 1)
     return f"{head}{BEGIN}\n{key_tables()}{END}{tail}"
+
+
+def write_key_tables(path: Path = KEYS_DOC) -> bool:
+    """Regenerate the key tables in ``path``; True when the file changed."""
+    old = path.read_text(encoding="utf-8")
+    new = with_key_tables(old)
+    if new != old:
+        path.write_text(new, encoding="utf-8")
+    return new != old
+
+
+if __name__ == "__main__":
+    print(f"{KEYS_DOC}: {'updated' if write_key_tables() else 'current'}")

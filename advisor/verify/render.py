@@ -133,7 +133,7 @@ def text_report(outcomes: list[Outcome], short: dict[str, str]) -> str:
         for o in dep:
             d = o.quantity.departure
             assert d is not None
-            where = f" [README: {d.readme}]" if d.readme else ""
+            where = f" [see {d.doc}]" if d.doc else ""
             lines.append(
                 f"- {o.case.id} / {o.quantity.name}: published {_num(o.quantity.published)}, "
                 f"the advisor {_num(o.computed)} (stated {_num(d.expected)}): {d.reason}{where}"
@@ -191,11 +191,11 @@ def html_report(outcomes: list[Outcome], short: dict[str, str], cases: list[Case
         for o in dep:
             d = o.quantity.departure
             assert d is not None
-            readme = f" (README: {e(d.readme)})" if d.readme else ""
+            doc = f" (see {e(d.doc)})" if d.doc else ""
             out.append(
                 f"<li><strong>{e(o.case.id)}</strong>, {e(o.quantity.name)}: published "
                 f"{e(_num(o.quantity.published))}, the advisor {e(_num(o.computed))}: "
-                f"{e(d.reason)}{readme}</li>"
+                f"{e(d.reason)}{doc}</li>"
             )
         out.append("</ul>")
     n = notes(outcomes)

@@ -29,7 +29,7 @@ class Departure:
     tolerance: float | None
     abs_tolerance: float | None
     reason: str
-    readme: str = ""
+    doc: str = ""  # "docs/FILE.md: heading" of the section that states it
 
 
 @dataclass(frozen=True)
@@ -90,7 +90,7 @@ def _departure(d: dict[str, Any] | None) -> Departure | None:
     if d is None:
         return None
     return Departure(
-        d["expected"], d.get("tolerance"), d.get("abs_tolerance"), d["reason"], d.get("readme", "")
+        d["expected"], d.get("tolerance"), d.get("abs_tolerance"), d["reason"], d.get("doc", "")
     )
 
 
