@@ -74,51 +74,11 @@ def summary(report, previous=None) -> Group:
 
 
 def changes(before, after) -> list[str]:
-    """What differs between two results, in words: the design in a few words, then each
-    check whose value moved (by more than 0.05 %), appeared or went away."""
-    if before.report.application != after.report.application:
-        return [f"application {before.report.application} → {after.report.application}"]
-    out = [f"input {k}: {a} → {b}" for k, a, b in _input_changes(before, after)]
-    h0, h1 = headline(before), headline(after)
-    if h0 != h1:
-        out.append(f"design: {h0} → {h1}")
-    w0, w1 = holding(before), holding(after)
-    if w0 != w1:
-        out.append(f"{w1 or 'holding: none'} (was {(w0 or 'none').removeprefix('holding: ')})")
-    old = {c.name: c for c in before.checks}
-    new = {c.name: c for c in after.checks}
-    for name, c in new.items():
-        o = old.get(name)
-        if o is None:
-            out.append(f"{name}: new check, {c.value:.4g} {c.unit}".rstrip())
-        elif abs(c.value - o.value) > 5e-4 * max(abs(o.value), 1e-12):
-            out.append(f"{name}: {o.value:.4g} → {c.value:.4g} {c.unit}".rstrip())
-    out += [f"{name}: no longer checked" for name in old if name not in new]
-    return out
+    """What differs between two results, in words: the same lines as ``advisor diff``
+    (requirement values, components, decisions, checks whose margin moved, warnings)."""
+    from advisor.diff import changes_between
 
-
-def _flat(doc: Any, prefix: str = "") -> dict[str, Any]:
-    if isinstance(doc, dict):
-        out: dict[str, Any] = {}
-        for k, v in doc.items():
-            out.update(_flat(v, f"{prefix}.{k}" if prefix else str(k)))
-        return out
-    if isinstance(doc, list) and any(isinstance(v, dict) for v in doc):
-        out = {}
-        for i, v in enumerate(doc):
-            out.update(_flat(v, f"{prefix}[{i + 1}]"))
-        return out
-    return {prefix: doc}
-
-
-def _input_changes(before, after) -> list[tuple[str, str, str]]:
-    """The requirement values that differ between two reports: (key, before, after)."""
-    a, b = _flat(before.requirements or {}), _flat(after.requirements or {})
-    return [
-        (k, _fmt(a.get(k, "—")), _fmt(b.get(k, "—")))
-        for k in sorted(set(a) | set(b), key=lambda k: (k not in a, k))
-        if a.get(k) != b.get(k)
-    ]
+    return changes_between(before, after)
 
 
 def infeasible(exc) -> Text:
