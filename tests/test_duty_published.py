@@ -276,7 +276,7 @@ def test_s3_equivalent_torque_is_less_conservative_than_sew(cdf):
     equivalent-torque model, SEW's K means β0 = (K² − 1)·cdf/(1 − cdf) = 0.315 / 0.215 /
     0.230 / 0.169, well below the 0.5 the advisor assumes. So for S3 the advisor checks
     both, Klyuchev's equivalent torque and SEW's K on the running torque, and the stricter
-    decides (DU-09, the check duty_s3_factor; README "Departures")."""
+    decides (DU-09, the check duty_s3_factor; docs/reference/departures.md, "Duty cycles")."""
     beta0 = 0.5
     k = S3_K[cdf]
     on, off = cdf * 600.0, (1.0 - cdf) * 600.0

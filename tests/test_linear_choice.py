@@ -127,7 +127,8 @@ def test_more_force_never_gives_a_smaller_motor(data, forces):
     """A heavier load only removes options (every check and every motor test gets harder
     with the force), so the smallest motor cannot shrink; with the same motor the lightest
     screw it drives cannot get thinner. (When the motor steps up to a faster pole count the
-    thread may get thinner: see README, "Departures".) Holding without power is left out:
+    thread may get thinner: see docs/reference/departures.md,
+    "Thread and motor chosen together".) Holding without power is left out:
     there a self-locking screw comes first, and when the last one fails, a smaller motor
     with a one-way device may take over."""
     data["application"]["hold_without_power"] = False

@@ -1,9 +1,10 @@
 """The requirement fields as questions: label, unit, help, wizard step, default and valid
 range, read from the pydantic models where each field is declared once. The wizard's
-fields, the README's key table and the published JSON Schema all come from here, so they
-cannot disagree with the validation. Pure: no textual, no I/O. pydantic is imported by the
-functions that read a model, not with :class:`Question`: the wizard reads the questions of
-the shipped applications compiled (:mod:`advisor.core.requirement_spec`)."""
+fields, the key tables of docs/reference/keys.md and the published JSON Schema all come
+from here, so they cannot disagree with the validation. Pure: no textual, no I/O. pydantic
+is imported by the functions that read a model, not with :class:`Question`: the wizard
+reads the questions of the shipped applications compiled
+(:mod:`advisor.core.requirement_spec`)."""
 
 import types
 from typing import TYPE_CHECKING, Any, Literal, NamedTuple, Union, get_args, get_origin

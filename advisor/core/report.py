@@ -1,8 +1,8 @@
 """The design report: a pydantic model, dumped to TOML with tomli-w and written atomically.
 
-Stable keys (other tools read them) are documented in README.md. Floats are rounded to
-six significant digits so that two runs of the same input give byte-identical files and a
-changed input shows as a readable diff.
+Stable keys (other tools read them) are documented in docs/reference/report.md. Floats are
+rounded to six significant digits so that two runs of the same input give byte-identical
+files and a changed input shows as a readable diff.
 """
 
 import copy

@@ -3,7 +3,7 @@
 One small function per application, each reading only its own report's keys, so that each
 can move into its application's package. Every application fills the same columns (blank
 where the quantity does not exist for it); what each column means per application is in
-:data:`MEANING` and the README.
+:data:`MEANING` and docs/family.md.
 """
 
 from collections.abc import Callable
