@@ -8,8 +8,8 @@ import pytest
 
 from advisor.cli import main
 from advisor.datasheet.content import Block, Check, Decision, Sheet, Table
-from advisor.datasheet.review import Bar, Cycle, Required
 from advisor.datasheet.markdown import lead, render, text
+from advisor.datasheet.review import Bar, Cycle, Required
 
 TITLE = "Drive\n# heading [link](javascript:alert(1)) ![img](http://x/y.png) <iframe src=x> | a & b"
 SCRIPT = "<script>alert(1)</script>"
