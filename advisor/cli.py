@@ -298,6 +298,10 @@ def main(argv: list[str] | None = None) -> int:
         from advisor.diff import main as diff_main
 
         return diff_main(argv[1:])
+    if argv[:1] == ["rules"]:  # the rule table, from the registry of rules
+        from advisor.core.rules_table import main as rules_main
+
+        return rules_main(argv[1:])
     if argv[:1] == ["verify"]:  # published worked examples, computed again (exit 0 / 1)
         from advisor.verify import main as verify_main
 
