@@ -115,6 +115,98 @@ class Sheet:
     cycle: Cycle | None = None
     bars: list[Bar] = field(default_factory=list)
     parts: list[list[str]] = field(default_factory=list)
+    probability: "Probability | None" = None  # issue 30: with an [uncertainty] table
+
+
+@dataclass
+class Probability:
+    """The design's probability of passing (the report's ``[uncertainty]``): in words, the
+    inputs' laws, each check's P(pass) with its drivers, and the tornado charts to draw."""
+
+    statement: str
+    inputs: Table
+    checks: Table
+    tornadoes: list[Any]  # advisor.uncertainty.drivers.Tornado, the charted checks
+    notes: list[str] = field(default_factory=list)
+
+
+def _law(i: dict) -> str:
+    """An input's law in a few words: "normal, σ = 175", "uniform 0.1 … 0.16"."""
+    kind = i.get("distribution", "")
+    if kind == "normal":
+        return f"normal, mean {number(i.get('mean', i['nominal']))}, σ = {number(i['sd'])}"
+    if kind == "triangular":
+        mode = number(i.get("mode", i["nominal"]))
+        return f"triangular {number(i['low'])} … {mode} … {number(i['high'])}"
+    if kind == "uniform":
+        return f"uniform {number(i['low'])} … {number(i['high'])}"
+    return kind
+
+
+def probability(u: dict | None, labels: Labels) -> Probability | None:
+    """The ``[uncertainty]`` section of a report as the datasheet states it (None: none)."""
+    if not isinstance(u, dict) or "p_pass" not in u:
+        return None
+    from advisor.uncertainty.drivers import charted, input_label
+
+    conf = f"{u.get('confidence', 0.95) * 100:g} %"
+    statement = (
+        f"P(pass) of {u.get('design', 'the design')}: {u['p_pass']:.4f} ({conf} interval "
+        f"{u['p_pass_low']:.4f} … {u['p_pass_high']:.4f}), every check in the same sample, over "
+        f"{u.get('samples')} samples (seed {u.get('seed')})."
+    )
+    if u.get("method"):
+        statement += f" Method: {u['method']}."
+    names = [i["name"] for i in u.get("inputs", [])]
+    inputs = Table(
+        "Uncertain inputs",
+        ["input", "field", "nominal", "law", "basis"],
+        [
+            [input_label(i["name"], labels), i["name"], number(i["nominal"]), _law(i), i["basis"]]
+            for i in u.get("inputs", [])
+        ],
+    )
+    rows = []
+    for c in u.get("checks", []):
+        rho = {d["input"]: d["rank_correlation"] for d in c.get("drivers", [])}
+        modelled = c.get("modelled", True)
+        rows.append(
+            [
+                c["name"],
+                f"{c['nominal_margin']:.3f}",
+                f"{c['p_pass']:.4f}",
+                f"{c['p_pass_low']:.4f} … {c['p_pass_high']:.4f}",
+                f"{c['margin_p05']:.3f}",
+                *[f"{rho[n]:+.2f}" if modelled and n in rho else "—" for n in names],
+            ]
+        )
+    checks = Table(
+        "P(pass) and drivers of each check",
+        [
+            "check",
+            "nominal margin",
+            "P(pass)",
+            f"{conf} interval",
+            "margin, 5th percentile",
+            *[f"ρ {input_label(n, labels)}" for n in names],
+        ],
+        rows,
+    )
+    notes = [
+        "ρ is Spearman's rank correlation of the input with the check's margin: −1, the "
+        "margin falls whenever the input rises; 0, the input does not move it; — the model "
+        "does not vary the check with the inputs (its nominal verdict)."
+    ]
+    if u.get("not_modelled"):
+        notes.append("Not modelled (nominal verdict only): " + ", ".join(u["not_modelled"]) + ".")
+    r = u.get("robust")
+    if isinstance(r, dict):
+        notes.append(
+            f"Robust choice for P(pass) ≥ {r['target']:g}: {r['chosen']} "
+            f"(P = {r['chosen_p_pass']:.4f}); the nominal rule would have chosen "
+            f"{r['nominal_choice']} (P = {r['nominal_p_pass']:.4f})."
+        )
+    return Probability(statement, inputs, checks, charted(u, labels), notes)
 
 
 def _scalar(v: Any) -> bool:
@@ -263,6 +355,7 @@ def sheet(
         cycle=load_cycle(doc),
         bars=utilisation(doc),
         parts=parts(doc),
+        probability=probability(doc.get("uncertainty"), labels),
     )
 
 

@@ -3,8 +3,8 @@ script, no link to anything outside it (it can be mailed or attached to a review
 
 from html import escape
 
-from advisor.datasheet.content import Bar, Block, Required, Sheet, Table
-from advisor.datasheet.plots import Plot, svg
+from advisor.datasheet.content import Bar, Block, Probability, Required, Sheet, Table
+from advisor.datasheet.plots import Plot, svg, tornado_svg
 
 #: The sections, in order: their ids are what a reader (and the test) finds.
 SECTIONS = (
@@ -17,6 +17,7 @@ SECTIONS = (
     ("warnings", "Warnings"),
     ("components", "Components"),
     ("checks", "Checks"),
+    ("uncertainty", "Probability of passing"),
     ("plots", "Plots"),
     ("decisions", "Decisions"),
     ("requirements", "Requirements (SI)"),
@@ -99,6 +100,24 @@ def _figure(p: Plot, index: int) -> str:
         f'<figure id="plot-{p.id}">{svg(p, f"drive-advisor-{index}-{p.id}")}'
         f"<figcaption>{_e(p.title)}</figcaption></figure>"
     )
+
+
+def _probability(p: Probability | None) -> str:
+    """P(pass) of the design and of each check, and the tornado chart of the drivers of the
+    least probable checks (issue 30)."""
+    if p is None:
+        return "<p>No [uncertainty] table: every margin above is at the nominal inputs only.</p>"
+    out = [f"<p>{_e(p.statement)}</p>", _table(p.inputs, 3), _table(p.checks, 3)]
+    out += [f'<p class="note">{_e(n)}</p>' for n in p.notes]
+    for i, t in enumerate(p.tornadoes, 1):
+        out.append(
+            f'<h3 id="drivers-{_e(t.check_id)}">Tornado chart: drivers of {_e(t.check_name)}</h3>'
+            f'<figure id="tornado-{_e(t.check_id)}" data-check="{_e(t.check_id)}">'
+            f"{tornado_svg(t, f'drive-advisor-tornado-{i}-{t.check_id}')}"
+            f"<figcaption>{_e(t.check_name)}: {_e(t.probability)}; bars by |ρ|, largest "
+            "first</figcaption></figure>"
+        )
+    return "\n".join(out)
 
 
 def _header(s: Sheet) -> str:
@@ -197,6 +216,7 @@ def render(s: Sheet, plots: list[Plot]) -> str:
         "<table><tr><th></th><th>id</th><th>check</th><th>value</th><th>limit</th>"
         f"<th>unit</th><th>margin</th><th>source</th></tr>{rows}</table>"
     )
+    body["uncertainty"] = _probability(s.probability)
     body["plots"] = "\n".join(_figure(p, i) for i, p in enumerate(plots, 1)) or (
         "<p>This report has no curves to plot.</p>"
     )

@@ -21,7 +21,7 @@ rules are CommonMark's (https://spec.commonmark.org/0.31.2/) and GitHub's table 
 
 import re
 
-from advisor.datasheet.content import Block, Sheet, Table
+from advisor.datasheet.content import Block, Probability, Sheet, Table
 
 MARK = {"fails": "✗ FAILS", "tight": "⚠ tight", "passes": "✓", "none": "no check"}
 
@@ -165,6 +165,45 @@ def _review(s: Sheet) -> list[str]:
     return out
 
 
+def _probability(p: Probability | None) -> list[str]:
+    """P(pass) of the design and of each check, and the tornado charts' data as tables: each
+    input's ρ with a bar of ten cells either side of zero (issue 30)."""
+    out = ["## Probability of passing", ""]
+    if p is None:
+        return [
+            *out,
+            r"No \[uncertainty\] table: every margin above is at the nominal inputs only.",
+            "",
+        ]
+    out += [lead(p.statement), ""]
+    out += _tables(p.inputs, 3)
+    out += _tables(p.checks, 3)
+    for n in p.notes:
+        out += [lead(n), ""]
+    for t in p.tornadoes:
+        out += [_heading(3, f"Tornado chart: drivers of {t.check_name}"), ""]
+        out += [lead(t.probability), ""]
+        out += _table(
+            ["input", "ρ", "−1 … 0 … +1"],
+            [[b.label, f"{b.rho:+.2f}", tornado_bar(b.rho)] for b in t.bars],
+        )
+    return out
+
+
+def tornado_bar(rho: float) -> str:
+    """A rank correlation as a bar of ten cells either side of zero.
+
+    >>> tornado_bar(-0.87)
+    '░█████████│░░░░░░░░░░'
+    >>> tornado_bar(0.46)
+    '░░░░░░░░░░│█████░░░░░'
+    """
+    cells = round(min(abs(rho), 1.0) * BAR_CELLS)
+    left = "░" * (BAR_CELLS - cells) + "█" * cells if rho < 0 else "░" * BAR_CELLS
+    right = "█" * cells + "░" * (BAR_CELLS - cells) if rho > 0 else "░" * BAR_CELLS
+    return f"{left}│{right}"
+
+
 def render(s: Sheet) -> str:
     out = [_heading(1, s.title), ""]
     out += [f"Drive Advisor {text(s.version)} — {text(s.application)}, {text(s.status)}", ""]
@@ -185,6 +224,7 @@ def render(s: Sheet) -> str:
             for c in s.checks
         ],
     )
+    out += _probability(s.probability)
     out += ["## Decisions", ""]
     for d in s.decisions:
         out += [f"{_heading(3, d.id)} — {text(d.title).strip()}", ""]

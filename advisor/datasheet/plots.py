@@ -448,14 +448,9 @@ def plots(doc: dict) -> list[Plot]:
     return [p for p in (f(doc) for f in PLOTS) if p is not None]
 
 
-def svg(plot: Plot, salt: str) -> str:
-    """The plot as an inline ``<svg>`` element, byte for byte the same for the same data."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    from matplotlib.figure import Figure
-
-    style = {
+def _style(salt: str) -> dict[str, Any]:
+    """matplotlib's settings of every datasheet plot: ids salted per plot, text as text."""
+    return {
         "svg.hashsalt": salt,
         "svg.fonttype": "none",
         "font.family": "DejaVu Sans",
@@ -463,7 +458,24 @@ def svg(plot: Plot, salt: str) -> str:
         "axes.grid": True,
         "grid.alpha": 0.3,
     }
-    with matplotlib.rc_context(style):
+
+
+def _svg_text(fig: Any) -> str:
+    """A figure as an inline ``<svg>`` element: no date, no creator."""
+    buf = io.StringIO()
+    fig.savefig(buf, format="svg", metadata={"Date": None, "Creator": None})
+    text = buf.getvalue()
+    return text[text.index("<svg") :].strip()
+
+
+def svg(plot: Plot, salt: str) -> str:
+    """The plot as an inline ``<svg>`` element, byte for byte the same for the same data."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    from matplotlib.figure import Figure
+
+    with matplotlib.rc_context(_style(salt)):
         fig = Figure(figsize=(6.4, 3.8))
         ax = fig.add_subplot()
         # in grey, lines are told apart by their dash and points by their shape
@@ -500,7 +512,69 @@ def svg(plot: Plot, salt: str) -> str:
         ax.set_ylabel(plot.ylabel)
         ax.legend(fontsize=7)
         fig.tight_layout()
-        buf = io.StringIO()
-        fig.savefig(buf, format="svg", metadata={"Date": None, "Creator": None})
-    text = buf.getvalue()
-    return text[text.index("<svg") :].strip()
+        return _svg_text(fig)
+
+
+#: How the bars of a tornado chart are told apart in grey: an input whose rise lowers the
+#: margin dark and solid, one that raises it light and hatched.
+TORNADO_FILL = {
+    "lowers": {"facecolor": "#444444", "hatch": ""},
+    "raises": {"facecolor": "#dddddd", "hatch": "///"},
+}
+
+
+def tornado_svg(t: Any, salt: str) -> str:
+    """A tornado chart (:class:`advisor.uncertainty.drivers.Tornado`) as an inline
+    ``<svg>``: one horizontal bar per input, ρ from −1 to 1, the largest |ρ| on top, each bar
+    an element with the id ``driver-<input>`` and its ρ written at its end; the check's
+    P(pass) and interval in the title. Deterministic like :func:`svg`."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    from matplotlib.figure import Figure
+    from matplotlib.patches import Patch
+
+    n = len(t.bars)
+    with matplotlib.rc_context({**_style(salt), "hatch.linewidth": 0.8}):
+        # constrained: the legend goes below the axes, never over a bar
+        fig = Figure(figsize=(6.4, 1.9 + 0.42 * n), layout="constrained")
+        ax = fig.add_subplot()
+        ys = list(range(n))
+        for y, b in zip(ys, t.bars, strict=True):
+            fill = TORNADO_FILL["lowers" if b.rho < 0 else "raises"]
+            (rect,) = ax.barh([y], [b.rho], height=0.6, edgecolor="black", linewidth=0.8, **fill)
+            rect.set_gid(f"driver-{b.input}")
+            # the value at the bar's end, outside it: readable on any fill
+            ax.annotate(
+                f"{b.rho:+.2f}".replace("-", "−"),  # the axis's minus sign
+                (b.rho, y),
+                xytext=(4 if b.rho >= 0 else -4, 0),
+                textcoords="offset points",
+                ha="left" if b.rho >= 0 else "right",
+                va="center",
+                fontsize=8,
+            )
+        ax.axvline(0.0, color="black", linewidth=0.8)
+        ax.set_xlim(-1.35, 1.35)  # room for the value at the end of a full bar
+        ax.set_xticks([-1.0, -0.5, 0.0, 0.5, 1.0])
+        ax.set_ylim(n - 0.5, -0.5)  # the largest |ρ| on top
+        ax.set_yticks(ys, [b.label for b in t.bars])
+        ax.grid(axis="y", visible=False)
+        ax.set_axisbelow(True)  # the grid behind the bars
+        ax.set_xlabel("Spearman's rank correlation ρ of the input with the margin")
+        ax.set_title(f"{t.check_name}\n{t.probability}", fontsize=9)
+        fig.legend(
+            handles=[
+                Patch(
+                    edgecolor="black", label="a rise lowers the margin", **TORNADO_FILL["lowers"]
+                ),
+                Patch(
+                    edgecolor="black", label="a rise raises the margin", **TORNADO_FILL["raises"]
+                ),
+            ],
+            fontsize=7,
+            loc="outside lower center",
+            ncols=2,
+            frameon=False,
+        )
+        return _svg_text(fig)
