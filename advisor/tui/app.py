@@ -1484,6 +1484,10 @@ class DriveAdvisorApp(App[None]):
             plt = plot.plt
             plt.xlabel(data.xlabel)
             plt.ylabel(data.ylabel)
+            if data.bars:  # plotext draws the first bar at the bottom: the top one last
+                labels, values = zip(*reversed(data.bars), strict=True)
+                plt.bar(list(labels), list(values), orientation="horizontal", width=0.4)
+                plt.xlim(-1.0, 1.0)
             for marker, (_label, xs, ys) in zip(views.markers(data), data.series, strict=True):
                 if len(xs) == 1:
                     plt.scatter(xs, ys, marker=marker)

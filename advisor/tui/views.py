@@ -64,6 +64,7 @@ def summary(report, previous=None) -> Group:
         lines.append(plain(hold))
     if worst is not None:
         lines.append(plain(f"lowest margin: {worst.name} — {worst.margin:.3f}"))
+    lines.extend(plain(line) for line in probability_lines(report))
     for w in report.warnings:
         lines.append(plain(f"⚠ {w}", "yellow"))
     changed = changes(previous, report) if previous is not None else []
@@ -71,6 +72,36 @@ def summary(report, previous=None) -> Group:
         lines.append(Text("\nChanged since the previous result:", style="bold"))
         lines.extend(plain(f" • {c}") for c in changed)
     return Group(*lines)
+
+
+def _rho(x: float) -> str:
+    return f"{x:+.2f}".replace("-", "−")
+
+
+def probability_lines(report) -> list[str]:
+    """P(pass) of the design, its least probable check with what drives it, and the robust
+    choice, in words (issue 30); nothing without an ``[uncertainty]`` table."""
+    u = getattr(report, "uncertainty", None)
+    if u is None:
+        return []
+    from advisor.uncertainty.drivers import labels_of, least_probable
+
+    conf = f"{u.confidence * 100:g} %"
+    lines = [
+        f"P(pass): {u.p_pass:.4f} ({conf} interval {u.p_pass_low:.4f} … {u.p_pass_high:.4f}, "
+        f"{u.samples} samples, every check in the same sample)"
+    ]
+    t = least_probable(u, labels_of(report.report.application))
+    if t is not None:
+        drivers = ", ".join(f"{b.label} (ρ {_rho(b.rho)})" for b in t.bars)
+        lines.append(f"least probable: {t.check_name}, P(pass) {t.p_pass:.4f}; driven by {drivers}")
+    r = u.robust
+    if r is not None:
+        lines.append(
+            f"robust choice (P(pass) ≥ {r.target:g}): {r.chosen}, P {r.chosen_p_pass:.4f}; "
+            f"the nominal rule's {r.nominal_choice}, P {r.nominal_p_pass:.4f}"
+        )
+    return lines
 
 
 def changes(before, after) -> list[str]:
@@ -187,15 +218,21 @@ def decisions(report) -> Table:
 
 
 def checks(report) -> Table:
+    """The checks; with an ``[uncertainty]`` table, each one's P(pass) too."""
+    u = getattr(report, "uncertainty", None)
+    p_pass = {c.id: c.p_pass for c in u.checks} if u is not None else None
     t = Table(expand=True)
-    for col in ("check", "value", "limit", "margin", ""):
+    cols = ("check", "value", "limit", "margin", *(("P(pass)",) if p_pass is not None else ()))
+    for col in (*cols, ""):
         t.add_column(col, justify="left" if col == "check" else "right")
     for c in report.checks:
+        p = [] if p_pass is None else [f"{p_pass[c.id]:.4f}" if c.id in p_pass else "—"]
         t.add_row(
             Text.assemble(plain(c.name), "\n", plain(c.source, "dim")),
             f"{c.value:.4g} {c.unit}".strip(),
             f"{c.limit:.4g} {c.unit}".strip(),
             f"{c.margin:.3f}",
+            *p,
             "ok" if c.passed else "FAIL",
         )
     return t
@@ -221,7 +258,13 @@ def markers(data: "PlotData") -> list[str]:
 
 
 def legend(data: "PlotData") -> str:
-    """The legend under the plot, never over the curves: marker, then name."""
+    """The legend under the plot, never over the curves: marker, then name (a bar plot:
+    what its bars measure)."""
+    if data.bars:
+        return (
+            "bar: Spearman's ρ of the input with the margin, −1 … 1 "
+            "(< 0: a rise of the input lowers the margin)"
+        )
     return "   ".join(
         f"{m} {label}" for m, (label, _, _) in zip(markers(data), data.series, strict=True)
     )
@@ -232,13 +275,39 @@ class PlotData(NamedTuple):
     xlabel: str
     ylabel: str
     series: list[tuple[str, list[float], list[float]]]
+    #: a horizontal bar plot instead of curves: (label, value) from the top bar down
+    bars: tuple[tuple[str, float], ...] = ()
+
+
+def drivers_plot(report) -> PlotData | None:
+    """The tornado chart of the design's least probable check (issue 30): one bar per
+    input, its Spearman ρ with the margin, the largest |ρ| on top; None without an
+    ``[uncertainty]`` table or where no check has drivers."""
+    u = getattr(report, "uncertainty", None)
+    if u is None:
+        return None
+    from advisor.uncertainty.drivers import labels_of, least_probable
+
+    t = least_probable(u, labels_of(report.report.application))
+    if t is None:
+        return None
+    return PlotData(
+        f"Drivers of {t.check_name}: {t.probability}",
+        "rank correlation ρ with the margin",
+        "input",
+        [],
+        tuple((b.label, b.rho) for b in t.bars),
+    )
 
 
 def plots(report) -> list[PlotData]:
     """Every plot of an application, as its registered views draw them (the rotary
-    actuator adds the seed's fig. 1: reducer volume per unit torque against q)."""
+    actuator adds the seed's fig. 1: reducer volume per unit torque against q), then the
+    drivers of the least probable check where the report has an ``[uncertainty]`` table."""
     app_views = registry.views(report.report.application)
-    return list(app_views.plots(report)) if app_views is not None else []
+    out = list(app_views.plots(report)) if app_views is not None else []
+    drivers = drivers_plot(report)
+    return [*out, drivers] if drivers is not None else out
 
 
 def compare(report) -> list[Any]:
