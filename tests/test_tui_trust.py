@@ -389,7 +389,7 @@ async def test_compare_shows_the_alternatives_and_use_this_imposes_one():
         assert app.doc["one_way"]["type"] == "em_clutch"
         assert app.report.design.one_way.type == "em_clutch"  # the next compute is that design
         summary = _text(app.query_one("#view-summary", Static))
-        assert "input one_way.type: auto → em_clutch" in summary
+        assert "requirement one_way.type: auto → em_clutch" in summary  # advisor diff's words
 
 
 async def test_compare_use_takes_the_lightest_reducer_and_the_device_at_the_output():

@@ -233,8 +233,9 @@ def _frames_section(report) -> list[Any]:
             f.kind,
             f"{f.torque_Nm:.4g}",
             f"{f.speed_rpm:.5g}",
-            f"{f.outer_diameter_mm or 0:.4g}",
-            f"{f.mass_kg or 0:.3g}",
+            # the reference frame of a [motor.reference] states no outer size or mass
+            "—" if f.outer_diameter_mm is None else f"{f.outer_diameter_mm:.4g}",
+            "—" if f.mass_kg is None else f"{f.mass_kg:.3g}",
             "taken",
         )
         shown.add(f.name)
