@@ -72,6 +72,18 @@ def _steel(req: Requirements, cat: Catalogs, ref=None):
     return steel
 
 
+def device_efficiency(req: Requirements) -> float:
+    """The driving efficiency of the holding device the requirement asks for, known before the
+    frame, the speed and the reducer are chosen (seed 004): the motor gives 1/η_d times the
+    torque wherever the device sits, so every loss the choices weigh includes it. 'auto'
+    chooses between the two clutches (OW-02), both of η = 1."""
+    if not req.application.hold_without_power or req.one_way.type == "auto":
+        return 1.0
+    from advisor.calc import one_way as ow
+
+    return ow.passage(req.one_way.type).efficiency
+
+
 def _candidate(
     n: float, req: Requirements, steel, steel_mass: float, terms, params, ref=None
 ) -> dict:
@@ -86,7 +98,8 @@ def _candidate(
     split = wg_rules.split_ratio(q_total, rd.STAGE_RATIO_MIN, rd.STAGE_RATIO_MAX).value
     stages = _stage_count(q_total, split, req, params) if split else 0
     eta = params.stage_efficiency**stages if stages else math.nan
-    torque = rot.torque_Nm / (q_total * eta) if stages else math.nan
+    # the holding device's driving loss is the motor's too: it gives 1/η_d times the torque
+    torque = rot.torque_Nm / (q_total * eta * device_efficiency(req)) if stages else math.nan
     f = bldc.flux_frequency_Hz(n, ref.pole_pairs)
     spec, spec_three = bm.specific_iron_loss(ref, steel, terms, f)
     return {
@@ -161,12 +174,27 @@ class _Envelope(NamedTuple):
     max_length_mm: float | None
 
 
+def _device_note(req: Requirements) -> str:
+    """Why the motor torque above includes the holding device, in words (or '' without)."""
+    eta_d = device_efficiency(req)
+    if eta_d == 1.0:
+        return ""
+    kind = req.one_way.type.replace("_", " ")
+    return (
+        f"the torque includes the {kind}'s driving loss (η = {eta_d:.3g}: the motor gives "
+        f"{1 / eta_d:.3g}× the torque, seed 004); a clutch (one_way.type = 'roller_clutch' or "
+        "'em_clutch') drives with η = 1"
+    )
+
+
 def _too_lossy(
-    cands: list[dict], limit: float, basis: str, n_opt: float, choice: str
+    cands: list[dict], limit: float, basis: str, n_opt: float, choice: str, device_note: str = ""
 ) -> InfeasibleError:
     """No candidate within the frame's limit; where the requirement takes the space's
     reducer, its efficiency may be the cause, and the other choices are named."""
     exc = bm.too_lossy(cands, limit, basis, n_opt)
+    if device_note:  # the holding device's driving loss is part of the motor's torque
+        exc = InfeasibleError(exc.summary, [*exc.reasons, device_note])
     if choice == "rules":
         return exc
     other = "lightest" if choice == "slimmest" else "slimmest"
@@ -272,7 +300,7 @@ def _fit(req: Requirements, cat: Catalogs, ref, params, data, speeds: list[float
                 bm.above_rated(reducible, ref),
             )
     if not within:
-        err = _too_lossy(reducible, limit, basis, n_opt, gb.choice)
+        err = _too_lossy(reducible, limit, basis, n_opt, gb.choice, _device_note(req))
         return _Fit(
             ref, steel, steel_mass, terms, reducible, [], limit, basis, f_opt, n_opt, None, err
         )
@@ -468,8 +496,9 @@ def advise_rotary(req: Requirements, cat: Catalogs, trace: Trace):
         )
     pareto = _pareto(space, design, params, env, trace, taken, gb.choice)
 
-    # the motor torque follows the reducer actually adopted (its efficiency)
-    motor_torque = rot.torque_Nm / (design.total_ratio * design.efficiency)
+    # the motor torque follows the reducer actually adopted (its efficiency) and the holding
+    # device's driving efficiency
+    motor_torque = rot.torque_Nm / (design.total_ratio * design.efficiency * device_efficiency(req))
     working = {
         **chosen,
         "q_total": design.total_ratio,
@@ -481,7 +510,7 @@ def advise_rotary(req: Requirements, cat: Catalogs, trace: Trace):
         "losses": bm.losses_at(ref, chosen["losses"]["iron"], speed, motor_torque),
     }
     if not bl_rules.within_limit(working["losses"]["total"], limit):
-        raise _too_lossy([working], limit, basis, n_opt, gb.choice)
+        raise _too_lossy([working], limit, basis, n_opt, gb.choice, _device_note(req))
     steel_cite = cat.cite_rows(cat.steel_sources, steel.source)
     checks = _checks(design, env, working["losses"]["total"], limit, basis, steel_cite)
     motor = _motor_out(working, reducible, ref, steel, steel_mass, f_opt, n_opt, limit, basis)
@@ -630,9 +659,9 @@ def _one_way(
     if req.rotary.emergency_stop_torque_Nm is not None:  # else it holds what it is sized for
         checks.append(_device_holds_stop(req, q, eta, at_output, device.torque_Nm))
     if device.efficiency < 1.0:
-        with_device = bm.losses_at(
-            ref, working["losses"]["iron"], speed, motor_torque / device.efficiency
-        )["total"]
+        # the motor torque (and so the losses the speed choice weighed) already includes the
+        # device's 1/η_d: this check states that share of the losses by name
+        with_device = bm.losses_at(ref, working["losses"]["iron"], speed, motor_torque)["total"]
         checks.append(
             bm.losses_check(
                 "motor_losses_with_one_way",
