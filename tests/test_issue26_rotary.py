@@ -198,15 +198,18 @@ def test_a_moment_without_a_pair_is_an_input_error(tmp_path, capsys):
 # ------------------------------------------------------------------ item 4: holding device
 def test_the_device_holds_the_emergency_stop():
     """Seed 004's valve (1000 N·m, q = 600, η = 0.8 → 2.083 N·m at the motor side): an
-    emergency stop of 2500 N·m at the output sizes the device for 2500/480 = 5.208 N·m; the
-    check states it; the stages take 2500 against 186/39·1000 = 4769 N·m."""
+    emergency stop of 2500 N·m at the output sizes the device for 2500/480 = 5.208 N·m, and
+    its basis says so; the stages take 2500 against 186/39·1000 = 4769 N·m."""
     base = _advise(_req("valve_actuator_hold.toml"))
     q_eta = base.design.gearbox.total_ratio * base.design.gearbox.efficiency
     r = _advise(_req("valve_actuator_hold.toml", rotary={"emergency_stop_torque_Nm": 2500}))
-    c = _check(r, "one_way_holds_emergency_stop")
-    assert c.value == pytest.approx(2500 / q_eta)
     assert r.design.one_way.torque_Nm == pytest.approx(2500 / q_eta)
-    assert c.margin == pytest.approx(1.0)
+    assert "sized for the emergency stop's 2500 N·m" in r.design.one_way.basis
+    # the sizing is stated, not restated as a check (it could only say 1.000, a knife edge)
+    assert not any(c.id == "one_way_holds_emergency_stop" for c in r.checks)
+    # and the placement decision states the device's own torque
+    ow1 = next(d for d in r.decisions if d.id == "OW-01")
+    assert ow1.inputs["torque_Nm"] == pytest.approx(r.design.one_way.torque_Nm, rel=1e-5)
     assert _check(r, "stage_momentary_peak").margin == pytest.approx(186 / 39 * 1000 / 2500)
     # without an emergency stop the device is the seed's, and no check restates its sizing
     assert base.design.one_way.torque_Nm == pytest.approx(1000 / q_eta)

@@ -332,55 +332,41 @@ def _through_device(screens: list[ThreadScreen], efficiency: float) -> list[Thre
     ]
 
 
-def _one_way(req, trace: Trace, ev, thread: str, friction_low: float, motor_torque: float):
+def _one_way(req, trace: Trace, ev, thread: str, friction_low: float, drive_torque: float):
     """Seed 004 for a screw drive: no device when the screw holds with margin, otherwise one
-    at the motor side carrying the screw torque — at the rated force or, if larger, at the
-    emergency stop's momentary force, times the service factor — and the check that it holds
-    the emergency stop. Returns (device, checks, warnings)."""
+    at the motor side carrying the torque that drives the screw (thread and thrust face) — at
+    the rated force or, if larger, at the emergency stop's momentary force, times the service
+    factor: the device holds the stop by its sizing (a check of it against the same torque
+    could only state a margin of 1.000)."""
     from advisor.one_way.advice import choose_device
     from advisor.one_way.report import OneWayOut
     from rules import one_way as ow_rules
 
     holds = trace.apply(ow_rules.screw_holds, ev.self_locking_at_low_friction, thread, friction_low)
     if holds:
-        return (
-            OneWayOut.make(
-                type="none",
-                location="none",
-                torque_Nm=ev.torque_Nm,
-                basis=f"{thread} is self-locking over the whole friction range of the pair",
-            ),
-            [],
-            [],
-        )
-    lin, sf = req.linear, service_factor(getattr(req, "design", None))
+        return OneWayOut.make(
+            type="none",
+            location="none",
+            torque_Nm=ev.torque_Nm,
+            basis=f"{thread} is self-locking over the whole friction range of the pair",
+        ), []
+    lin, f_b = req.linear, service_factor(getattr(req, "design", None)).value
     stop = lin.emergency_stop_force_N
-    per_newton = ev.torque_Nm / lin.force_N  # the thread torque grows with the force
-    sized = per_newton * max(lin.force_N, stop or 0.0) * sf.value
-    power = motor_torque * ev.speed_rpm * math.pi / 30.0
+    force = max(lin.force_N, stop or 0.0)
+    sized = drive_torque * force / lin.force_N * f_b  # the screw's torques grow with the force
+    power = drive_torque * ev.speed_rpm * math.pi / 30.0
     device, warnings = choose_device(req.one_way, sized, sized, power, trace)
+    if force != lin.force_N or f_b != 1.0:
+        what = "the emergency stop's" if force != lin.force_N else "the rated"
+        device = device.replace(
+            basis=f"{device.basis}; sized for {what} {force:g} N × f_B = {f_b:g}"
+        )
     warnings.insert(
         0,
         f"{thread} is not self-locking at the low end of the friction range (f = "
         f"{friction_low:g}): a {device.type.replace('_', ' ')} at the motor side holds the load",
     )
-    checks = []
-    if stop is not None:
-        checks.append(
-            Check(
-                "one_way_holds_emergency_stop",
-                f"holding device carries the screw torque at the emergency-stop force "
-                f"{stop:g} N × f_B = {sf.value:g} (sized for the larger of it and the rated "
-                "force)",
-                per_newton * stop,
-                device.torque_Nm,
-                "N·m",
-                device.torque_Nm / (sf.value * per_newton * stop),
-                ow_rules.SEED_004.with_note("linear.emergency_stop_force_N (given)"),
-                sf.value,
-            )
-        )
-    return device.replace(output_side=None), checks, warnings
+    return device.replace(output_side=None), warnings
 
 
 def advise_linear(
@@ -518,10 +504,13 @@ def advise_linear(
             power = motor.rated_power_kW
             evaluations = {**plan.evaluations, power: _eval_motor(motor, at_motor)}
             plan = plan._replace(selected=motor, evaluations=evaluations)
-    one_way, dev_checks = None, []
+    one_way = None
     if req.application.hold_without_power:
-        one_way, dev_checks, dev_warnings = _one_way(
-            req, trace, ev, chosen_name, material.friction_low, at_motor.torque_Nm
+        # the torque that passes the device: the screw's (thread and thrust face), the motor's
+        # before the device's own loss
+        eta_d = passage.efficiency if passage is not None else 1.0
+        one_way, dev_warnings = _one_way(
+            req, trace, ev, chosen_name, material.friction_low, at_motor.torque_Nm * eta_d
         )
         warnings += dev_warnings
     if s.friction_model == "paper":
@@ -582,7 +571,6 @@ def advise_linear(
     screw_checks, screw_warnings = _screw_checks(req, ev, sel, thrust, sf, cat)
     checks += screw_checks
     warnings += screw_warnings
-    checks += dev_checks
     if duty is not None:
         checks += duty_checks
     return design, checks, warnings

@@ -20,7 +20,6 @@ COVERS: dict[str, tuple[str, ...]] = {
     "linear.support_span_m": ("buckling",),
     "linear.end_fixity": ("buckling",),
     "linear.buckling_safety_factor": ("buckling",),
-    "linear.emergency_stop_force_N": ("one_way_holds_emergency_stop",),
     "motor.supply_frequency_Hz": ("travel_time", "motor_*"),
     "screw.friction_coefficient": ("motor_rated_torque", "motor_starting_torque"),
     "screw.friction_model": ("motor_rated_torque", "motor_starting_torque"),

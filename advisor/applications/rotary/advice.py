@@ -639,25 +639,19 @@ def _one_way(
     from advisor.one_way.advice import choose_device
     from rules import one_way as ow_rules
 
-    # the torque where the device sits (OW-01); the motor-side torque is the motor's own
-    trace.apply(
-        ow_rules.placement,
-        req.rotary.torque_Nm,
-        design.total_ratio,
-        design.efficiency,
-        req.one_way.location,
-    )
+    q, eta = design.total_ratio, design.efficiency
+    sized_motor, sized_output = _device_torques(req, q, eta)
+    # the torque where the device sits (OW-01): the output torque or the emergency stop's,
+    # whichever is larger, times the service factor; the decision states the device's torque
+    trace.apply(ow_rules.placement, sized_output, q, eta, req.one_way.location)
     motor_torque, speed = working["torque_Nm"], working["speed_rpm"]
     power = motor_torque * speed * math.pi / 30.0
-    q, eta = design.total_ratio, design.efficiency
     at_output = req.one_way.location == "output_side"
-    sized_motor, sized_output = _device_torques(req, q, eta)
     device, warnings = choose_device(
         req.one_way, sized_motor, sized_output, power, trace, at_output=at_output
     )
+    device = device.replace(basis=device.basis + _sized_for(req))
     checks = []
-    if req.rotary.emergency_stop_torque_Nm is not None:  # else it holds what it is sized for
-        checks.append(_device_holds_stop(req, q, eta, at_output, device.torque_Nm))
     if device.efficiency < 1.0:
         # the motor torque (and so the losses the speed choice weighed) already includes the
         # device's 1/η_d: this check states that share of the losses by name
@@ -674,27 +668,20 @@ def _one_way(
     return device, checks, warnings
 
 
-def _device_holds_stop(req, q: float, eta: float, at_output: bool, capacity: float) -> Check:
-    """Issue 26, item 4: the device holds the momentary peak of an emergency stop where it
-    sits (M_peak at the output, M_peak/(q·η) at the motor side, conservatively the driving
-    share), times the service factor, within the torque it is sized for."""
-    from advisor.applications.rotary.loads import momentary_torque
-    from rules import one_way as ow_rules
-
-    sf = service_factor(req.design)
-    peak, basis = momentary_torque(req)
-    demand = peak if at_output else peak / (q * eta)
-    where = "output" if at_output else f"motor side, M/(q·η) with q·η = {q * eta:.4g}"
-    return Check(
-        "one_way_holds_emergency_stop",
-        f"holding device carries the emergency-stop torque × f_B = {sf.value:g} ({where})",
-        demand,
-        capacity,
-        "N·m",
-        capacity / (sf.value * demand),
-        ow_rules.SEED_004.with_note(basis),
-        sf.value,
+def _sized_for(req: Requirements) -> str:
+    """What the device is sized for, in words, where it is more than the output torque: it
+    holds the emergency stop's momentary peak by its sizing (a check of it against the same
+    torque could only state a margin of 1.000)."""
+    out, stop = req.rotary.torque_Nm, req.rotary.emergency_stop_torque_Nm
+    f_b = service_factor(req.design).value
+    if (stop is None or stop <= out) and f_b == 1.0:
+        return ""
+    what = (
+        f"the emergency stop's {stop:.4g} N·m at the output (above the working {out:.4g} N·m)"
+        if stop is not None and stop > out
+        else f"the working {out:.4g} N·m at the output"
     )
+    return f"; sized for {what} × f_B = {f_b:g}"
 
 
 def _fits(r: rd.Reducer, env) -> bool:
