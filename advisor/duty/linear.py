@@ -24,7 +24,7 @@ from advisor.calc import induction as im
 from advisor.calc import one_way as ow
 from advisor.calc.sizing import Check
 from advisor.core.cite import cite
-from advisor.core.errors import InfeasibleError
+from advisor.core.errors import InfeasibleError, InputError
 from advisor.core.rulebook import Trace
 from advisor.duty.report import DutyOut, phases_out
 from rules import duty as du_rules
@@ -343,9 +343,25 @@ def _mean_start(phases: list[du.Phase]) -> float | None:
     return next((p.torque_Nm for p in phases if p.name.endswith("start")), None)
 
 
+def segment_loads_within_rating(req) -> None:
+    """A segment's force above linear.force_N is refused: the screw, the nut and the holding
+    device are sized for the rated force, and a larger one in the cycle would pass unchecked."""
+    if not req.duty.segments:
+        return
+    rated = req.linear.force_N
+    for n, seg in enumerate(req.duty.segments, 1):
+        if seg.force_N is not None and seg.force_N > rated:
+            raise InputError(
+                f"duty.segments[{n}].force_N = {seg.force_N:g}: above linear.force_N = "
+                f"{rated:g}, the force the screw, nut and holding device are sized for; raise "
+                "linear.force_N to the largest force of the cycle"
+            )
+
+
 def advise_duty(req, ev, selected, cat, holder: str | None, trace: Trace, passage=ow.NO_DEVICE):
     """The motor for the cycle: the point's motor, or the next larger of its pole count that
     passes; the duty table, the checks and the warnings."""
+    segment_loads_within_rating(req)
     duty, lin = req.duty, req.linear
     j_load, j_basis = load_inertia(ev, duty.moving_mass_kg, lin.support_span_m)
     line = [

@@ -23,7 +23,7 @@ from advisor.calc import duty as du
 from advisor.calc import one_way as ow
 from advisor.calc.checks import Check
 from advisor.core.cite import cite, note
-from advisor.core.errors import InfeasibleError
+from advisor.core.errors import InfeasibleError, InputError
 from advisor.core.rulebook import Trace
 from advisor.duty.report import DutyOut, ThermalOut, phases_out
 from rules import bldc as bl_rules
@@ -321,10 +321,26 @@ def evaluate(req, q: float, eta: float, speed_rpm: float, frame: Frame, holder: 
     }
 
 
+def segment_loads_within_rating(req) -> None:
+    """A segment's torque above rotary.torque_Nm is refused: the reducer's stages and the
+    holding device are sized for the rated torque, and a larger one would pass unchecked."""
+    if not req.duty.segments:
+        return
+    rated = req.rotary.torque_Nm
+    for n, seg in enumerate(req.duty.segments, 1):
+        if seg.torque_Nm is not None and seg.torque_Nm > rated:
+            raise InputError(
+                f"duty.segments[{n}].torque_Nm = {seg.torque_Nm:g}: above rotary.torque_Nm = "
+                f"{rated:g}, the torque the reducer and the holding device are sized for; raise "
+                "rotary.torque_Nm to the largest torque of the cycle"
+            )
+
+
 def passing_speeds(req, cands: list[dict], frame_for, holder_for, limit_W: float) -> list[dict]:
     """The candidate speeds whose motor passes the cycle with its rule reducer (and the point
     check, with the same limit and allowance as the checks that report them); exit 3 naming
     each candidate's reason when none does. ``holder_for(candidate)``: what holds the load."""
+    segment_loads_within_rating(req)
     ok, reasons = [], []
     for c in cands:
         if not bl_rules.within_limit(c["losses"]["total"], limit_W):
@@ -357,6 +373,7 @@ def advise_duty(
     req, q: float, eta: float, speed_rpm: float, frame: Frame, holder: Holder, trace: Trace
 ):
     """The duty of the adopted design: the table, the checks and the warnings."""
+    segment_loads_within_rating(req)
     duty = req.duty
     e = evaluate(req, q, eta, speed_rpm, frame, holder)
     if e["problems"]:
