@@ -498,3 +498,43 @@ def test_linear_regenerated_energy_goes_to_the_supply():
     d = rep["design"]["duty"]
     assert d["regenerated_per_cycle_J"] > 0.0
     assert d["regenerated_to"].startswith("the supply")
+
+
+# ------------------------------------------------------------------ IEC duty types meet holding
+def test_linear_iec_duty_with_a_back_driving_screw_needs_a_holder():
+    """S3 run-then-rest of Tr20x4 (4 starts, back-driving efficiency 0.62) with nothing to
+    hold it: the same verdict as a cycle of segments — refused, naming why."""
+    duty = {"duty_type": "S3", "cyclic_duration_factor": 0.4, "moving_mass_kg": 30.0}
+    with pytest.raises(InfeasibleError) as e:
+        report(linear_doc(None, duty))
+    assert "back-drives the screw" in " ".join(e.value.reasons)
+    held = report(linear_doc("roller_clutch", duty))  # with the clutch it is a design
+    assert held["design"]["duty"]["held_by"] == "the roller clutch at the motor side"
+
+
+def test_an_electric_stop_returns_nothing_to_the_supply():
+    """S5 stops each run by DC injection below synchronous speed: the kinetic energy heats
+    the rotor, none reaches the mains (and none could through the worm)."""
+    duty = {
+        "duty_type": "S5",
+        "cyclic_duration_factor": 0.4,
+        "starts_per_hour": 60,
+        "moving_mass_kg": 30.0,
+    }
+    rep = report(linear_doc("worm", duty))
+    d = rep["design"]["duty"]
+    assert any(p["name"] == "electric brake" and p["torque_Nm"] < 0 for p in d["phases"])
+    assert d["regenerated_per_cycle_J"] == 0.0
+    assert "regenerated_to" not in d
+
+
+def test_a_check_under_a_service_factor_states_it():
+    from advisor.applications.linear.advice import _describe
+    from advisor.calc.checks import Check
+    from advisor.core.cite import cite
+
+    c = Check(
+        "buckling", "buckling", 3500.0, 3707.0, "N", 3707.0 / (1.5 * 3500.0), cite("seed-001"), 1.5
+    )
+    text = _describe(c)
+    assert "3500 N × service factor 1.5 against the limit 3707 N (margin 0.706)" in text

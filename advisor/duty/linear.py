@@ -266,6 +266,14 @@ def evaluate(req, ev, m, j_load: float, holder: str | None, passage=ow.NO_DEVICE
         phases, starts_h, k_l, peak_load, problems = _segments_cycle(req, ev, mot, holder, passage)
     else:
         phases, starts_h, k_l, peak_load, problems, braking = _iec_cycle(req, ev, mot, passage)
+        if holder is None and req.linear.force_N > 0:  # the same rule as for the segments
+            problems.append(
+                f"{duty.duty_type}: the load of {req.linear.force_N:g} N back-drives the screw "
+                f"{ev.thread.name} (not self-locking at the low end of its friction range) "
+                "whenever the motor stops, and an induction motor on the line cannot hold a "
+                "load at standstill; set application.hold_without_power = true for a one-way "
+                "device"
+            )
     # a start's heat, the load's share included (k_L), is counted by the starts per hour:
     # in the equivalent torque it counts as a ramp at zero torque
     thermal = [p._replace(torque_Nm=0.0) if p.name.endswith("start") else p for p in phases]
@@ -393,7 +401,10 @@ def advise_duty(req, ev, selected, cat, holder: str | None, trace: Trace, passag
     rows = {x["motor"].model: (x["motor"].rated_power_kW, x["problems"]) for x in tried}
     trace.apply(du_rules.motor_for_cycle_linear, rows, selected.model, j_basis)
     phases = e["phases"]
-    out_J, back_J = du.energies(phases)
+    out_J, _ = du.energies(phases)
+    # an electric (DC-injection) stop dissipates the kinetic energy in the rotor, below the
+    # synchronous speed: nothing of it reaches the supply
+    _, back_J = du.energies([p for p in phases if p.name != "electric brake"])
     beta0 = duty.standstill_cooling_factor
     util = e["rms"] / e["limit"]
     k_s2 = e["k_s2"]

@@ -790,9 +790,12 @@ def _too_fast(
 
 
 def _describe(c: Check) -> str:
+    """A check in words; under a service factor the demand is stated with it, so that the
+    margin reads as limit / (factor · value)."""
     unit = f" {c.unit}" if c.unit else ""
+    factor = f" × service factor {c.factor:g}" if c.factor else ""
     return (
-        f"{c.name}: {c.value:.4g}{unit} against the limit {c.limit:.4g}{unit} "
+        f"{c.name}: {c.value:.4g}{unit}{factor} against the limit {c.limit:.4g}{unit} "
         f"(margin {c.margin:.3f})"
     )
 
