@@ -538,3 +538,52 @@ def test_a_check_under_a_service_factor_states_it():
     )
     text = _describe(c)
     assert "3500 N × service factor 1.5 against the limit 3707 N (margin 0.706)" in text
+
+
+# ------------------------------------------------------------------ the reducer under a device
+def _valve_worm(location: str, duty: dict | None) -> dict:
+    doc = tomllib.loads((EXAMPLES / "valve_actuator_hold.toml").read_text(encoding="utf-8"))
+    doc["one_way"] = {"type": "worm", "location": location}
+    doc["motor"]["frame"] = "auto"
+    if duty is not None:
+        doc["duty"] = duty
+    return doc
+
+
+def test_a_worm_at_the_motor_side_leaves_the_reducer_its_own_load():
+    """S1 at the rated 1000 N·m: the worm sits before the reducer, so the output stage
+    carries T_av = 1000 N·m (not 1000/0.3311 = 3020), the torque it is sized for."""
+    rep = report(_valve_worm("motor_side", {"duty_type": "S1", "load_inertia_kgm2": 1.0}))
+    load = rep["design"]["reducer_load"]
+    assert load["mean_torque_Nm"] == pytest.approx(1000.0, rel=1e-9)
+    assert load["rated_torque_Nm"] == pytest.approx(1000.0, rel=1e-9)
+
+
+def test_a_worm_at_the_output_makes_the_reducer_deliver_its_input_torque():
+    """At the output the worm sits between the load and the reducer: the reducer delivers
+    1000/0.3311 = 3020 N·m into it at the rated point, and is sized for that; a run at 800 N·m
+    asks 800/0.3311 = 2416 N·m of it; in a hold the worm holds the load at the output and the
+    reducer carries nothing."""
+    duty = {
+        "cycles_per_hour": 60,
+        "load_inertia_kgm2": 1.0,
+        "segments": [
+            {
+                "kind": "move",
+                "angle_deg": 90,
+                "time_s": 20,
+                "accel_fraction": 0.1,
+                "torque_Nm": 800,
+            },
+            {"kind": "hold", "time_s": 20},
+            {"kind": "dwell", "time_s": 10},
+        ],
+    }
+    rep = report(_valve_worm("output_side", duty))
+    load = rep["design"]["reducer_load"]
+    assert load["rated_torque_Nm"] == pytest.approx(1000.0 / WORM_ETA, rel=1e-5)
+    phases = list(zip(load["phases_torque_Nm"], load["phases_time_s"], strict=True))
+    run = next(t for t, dt in phases if dt == pytest.approx(16.0))  # 20 s less two 2 s ramps
+    assert run == pytest.approx(800.0 / WORM_ETA, rel=1e-5)
+    hold = next(t for t, dt in phases if dt == pytest.approx(20.0) and t == 0.0)
+    assert hold == 0.0

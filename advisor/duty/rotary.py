@@ -512,20 +512,25 @@ def output_loads(req, q: float, eta: float, speed_rpm: float, frame: Frame, hold
     :func:`_move_phases` reflects to the motor); a hold or the closing rest carries the
     standing load at standstill. An IEC duty type is read back from its motor phases:
     M_out = M_m·q·η while the motor drives, M_m·q/η while it brakes; the rotor's own
-    acceleration torque is thereby counted in the output (errs high)."""
+    acceleration torque is thereby counted in the output (errs high). A holding device at the
+    output sits between the load and the reducer: the reducer carries what the device asks
+    (T/η_d driving, the lowering torque through a self-locking one) and nothing at rest."""
     from advisor.calc.load_spectrum import Load
 
     duty, rot = req.duty, req.rotary
+    p_dev = holder.passage
+    def carried(m_out: float) -> float:
+        """What the reducer's output carries for a load-side torque: the torque itself, or
+        through a device at the output its input torque (seed 004: T/η_d while driving, the
+        lowering torque of a self-locking one)."""
+        if p_dev is None or not holder.at_output:
+            return m_out
+        return ow.motor_torque_through(p_dev, m_out)
+
+    # at standstill a device at the output holds the load itself; elsewhere the reducer does
+    held = 0.0 if p_dev is not None and holder.at_output else 1.0
     if not duty.segments:
-        phases, _ = cycle(req, q, eta, speed_rpm, frame, holder)
-        return [
-            Load(
-                p.torque_Nm * q * eta if p.torque_Nm >= 0 else p.torque_Nm * q / eta,
-                abs(p.mean_speed_rad_s) * RPM / q,
-                p.time_s,
-            )
-            for p in phases
-        ]
+        return _iec_output_loads(req, q, eta, speed_rpm, frame, holder, carried)
     jl = duty.load_inertia_kgm2
     out = []
     standing = 0.0
@@ -542,17 +547,42 @@ def output_loads(req, q: float, eta: float, speed_rpm: float, frame: Frame, hold
             m_l = load if seg.direction == "against" else -load
             for t, w_mean, sign in ((ta, w_out / 2, 1.0), (tc, w_out, 0.0), (ta, w_out / 2, -1.0)):
                 if t > 0:
-                    out.append(Load(jl * w_out / ta * sign + m_l, w_mean * RPM, t))
+                    out.append(Load(carried(jl * w_out / ta * sign + m_l), w_mean * RPM, t))
             standing = load
         elif seg.kind == "hold":
-            out.append(Load(load, 0.0, seg.time_s))
+            out.append(Load(load * held, 0.0, seg.time_s))
             standing = load
         else:
             out.append(Load(0.0, 0.0, seg.time_s))
             standing = 0.0
     rest = 3600.0 / duty.cycles_per_hour - sum(s.time_s for s in duty.segments)
     if rest > 1e-9:
-        out.append(Load(standing, 0.0, rest))
+        out.append(Load(standing * held, 0.0, rest))
+    return out
+
+
+def _iec_output_loads(req, q, eta, speed_rpm, frame, holder, carried) -> list:
+    """An IEC duty type at the reducer's output: a run or a load share carries the rated
+    output torque (through a device at the output, what it asks), exactly as the stages are
+    sized for it; a start or a stop at the motor's peak torque is read back from the motor,
+    M_out = M_m·η_d·q·η while it drives (η_d of a device at the motor side, before the
+    reducer), M_m·q/η while it brakes."""
+    from advisor.calc.load_spectrum import Load
+
+    p_dev = holder.passage
+    eta_d = p_dev.efficiency if p_dev is not None and not holder.at_output else 1.0
+    rated = req.rotary.torque_Nm
+    shares = {f"load {k}": x.load_share for k, x in enumerate(req.duty.loads or (), 1)}
+    out = []
+    for p in cycle(req, q, eta, speed_rpm, frame, holder)[0]:
+        if p.name == "run" or p.name in shares:
+            torque = carried(rated * shares.get(p.name, 1.0))
+        elif p.name in ("rest", "no load"):
+            torque = 0.0
+        else:  # a start or a stop: the motor's own peak torque
+            m = p.torque_Nm
+            torque = m * eta_d * q * eta if m >= 0 else m * q / eta
+        out.append(Load(torque, abs(p.mean_speed_rad_s) * RPM / q, p.time_s))
     return out
 
 

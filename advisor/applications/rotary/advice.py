@@ -84,6 +84,16 @@ def device_efficiency(req: Requirements) -> float:
     return ow.passage(req.one_way.type).efficiency
 
 
+def reducer_output_torque(req: Requirements) -> float:
+    """The torque the reducer's output stage delivers at the rated point: the load's, or with
+    a holding device at the output (between the load and the reducer) the device's input
+    torque, M_out/η_d (seed 004): the stages are sized for it."""
+    torque = req.rotary.torque_Nm
+    if req.application.hold_without_power and req.one_way.location == "output_side":
+        return torque / device_efficiency(req)
+    return torque
+
+
 def _candidate(
     n: float, req: Requirements, steel, steel_mass: float, terms, params, ref=None
 ) -> dict:
@@ -414,7 +424,7 @@ def advise_rotary(req: Requirements, cat: Catalogs, trace: Trace):
     # strength check of the reducer then holds f_B·demand within its capacity (issue 26)
     sf = service_factor(req.design)
     params = rd.ReducerParams(
-        torque_Nm=rot.torque_Nm * sf.value,
+        torque_Nm=reducer_output_torque(req) * sf.value,
         k_rb=wg.ROLLING_BODY_FACTOR[gb.rolling_body],
         stage_efficiency=gb.stage_efficiency,
         density_kg_m3=gb.density_kg_m3,
