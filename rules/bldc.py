@@ -1,5 +1,7 @@
 """Rules of the brushless motor choice (seed 000)."""
 
+import math
+
 from advisor.core.cite import cite
 from advisor.core.rulebook import Finding, rule
 
@@ -58,10 +60,15 @@ def choose_speed(
         f"Total losses at the candidate speeds: {table}. The limit is thermal: {limit_basis}. "
         "The current is that of the winding rewound for each speed (turns and torque constant "
         "∝ 1/n, so at a given torque the current grows as n while the copper loss stays); "
-        "it sizes the drive electronics and is not a limit of the motor. The minimum of "
-        f"eq. (10) lies at ≈ {optimum_speed_rpm:.0f} rpm "
-        f"({optimum_speed_rpm * pole_pairs / 60:.0f} Hz), where the ohmic and the core losses "
-        "are equal; of the candidates the least lossy is taken."
+        "it sizes the drive electronics and is not a limit of the motor. "
+        + (
+            f"The minimum of eq. (10) lies at ≈ {optimum_speed_rpm:.0f} rpm "
+            f"({optimum_speed_rpm * pole_pairs / 60:.0f} Hz), where the ohmic and the core "
+            "losses are equal; of the candidates the least lossy is taken."
+            if math.isfinite(optimum_speed_rpm)
+            else "Eq. (10) has no minimum here: the motor states no core losses, so its losses "
+            "fall with speed; of the candidates the least lossy is taken."
+        )
         + tail
         + (" Speeds over the loss limit are shown but not chosen." if over else ""),
         {

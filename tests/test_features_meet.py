@@ -587,3 +587,34 @@ def test_a_worm_at_the_output_makes_the_reducer_deliver_its_input_torque():
     assert run == pytest.approx(800.0 / WORM_ETA, rel=1e-5)
     hold = next(t for t, dt in phases if dt == pytest.approx(20.0) and t == 0.0)
     assert hold == 0.0
+
+
+# ------------------------------------------------------------------ a catalog motor, end to end
+def test_a_catalog_bldc_motor_gives_a_written_report(tmp_path, capsys):
+    """A motor of the user's bldc_motors.toml states no core losses: eq. (10) has no optimum,
+    and the report says so (no infinite number in the file), through the real command."""
+    from advisor.cli import main
+
+    cat = tmp_path / "cat"
+    cat.mkdir()
+    (cat / "bldc_motors.toml").write_text(
+        '[sources]\nacme-2024 = "ACME frameless kit datasheet, 2024"\n\n[[motor]]\n'
+        'name = "ACME-K40"\ncontinuous_torque_Nm = 1.0\npeak_torque_Nm = 3.0\n'
+        "rated_speed_rpm = 6000\nphase_resistance_ohm = 0.5\ntorque_constant_Nm_A = 0.1\n"
+        "rotor_inertia_kgm2 = 2e-5\nmass_kg = 0.3\nouter_diameter_mm = 40\nlength_mm = 60\n"
+        'thermal_time_constant_s = 400\nsource = "acme-2024"\n',
+        encoding="utf-8",
+    )
+    req = tmp_path / "r.toml"
+    req.write_text(
+        '[application]\nkind = "rotary"\n[rotary]\ntorque_Nm = 400\nspeed_rpm = 5\n'
+        '[motor]\nkind = "bldc"\nframe = "ACME-K40"\ncandidate_speeds_rpm = [6000]\n',
+        encoding="utf-8",
+    )
+    out = tmp_path / "o.toml"
+    assert main(["--batch", str(req), "--catalog-dir", str(cat), "-o", str(out)]) == 0
+    rep = tomllib.loads(out.read_text(encoding="utf-8"))
+    assert "optimum_speed_rpm" not in rep["design"]["motor"]
+    bl02 = next(d for d in rep["decisions"] if d["id"] == "BL-02")
+    assert "no minimum" in bl02["rationale"] and "inf" not in bl02["rationale"]
+    capsys.readouterr()

@@ -930,8 +930,8 @@ def _motor_out(
         losses_W=_losses(chosen["losses"]),
         loss_limit_W=limit,
         loss_limit_basis=basis,
-        optimum_frequency_Hz=f_opt,
-        optimum_speed_rpm=n_opt,
+        optimum_frequency_Hz=f_opt if math.isfinite(f_opt) else None,
+        optimum_speed_rpm=n_opt if math.isfinite(n_opt) else None,
         steel=SteelOut.make(
             grade=steel.grade,
             thickness_mm=steel.thickness_mm,

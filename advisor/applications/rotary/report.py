@@ -54,8 +54,9 @@ class BldcMotorOut(_Out):
     losses_W: LossesOut
     loss_limit_W: float
     loss_limit_basis: str
-    optimum_frequency_Hz: float
-    optimum_speed_rpm: float
+    # seed 000's eq. (10); none for a catalog motor that states no core losses
+    optimum_frequency_Hz: float | None = None
+    optimum_speed_rpm: float | None = None
     steel: SteelOut
     candidates: list[SpeedCandidateOut]
     pole_slot_options: list[PoleSlotOut]
