@@ -327,6 +327,27 @@ async def test_export_dialog_path_has_focus_enter_saves_and_keep_keeps_the_path(
         assert "[design" in (tmp_path / "fresh.report.toml").read_text()
 
 
+async def test_export_never_replaces_the_opened_requirement_with_its_report(tmp_path):
+    """The report typed over the requirement file the wizard opened is refused in the dialog
+    (as advisor --batch -o refuses it), before any "Replace?" question; so is a directory."""
+    src = tmp_path / "valve.toml"
+    src.write_text(VALVE.read_text(encoding="utf-8"), encoding="utf-8")
+    before = src.read_text(encoding="utf-8")
+    (tmp_path / "adir.toml").mkdir()
+    app = DriveAdvisorApp(_doc(src), src, save_drafts=False)
+    async with app.run_test(size=SIZE) as pilot:
+        await _computed(app, pilot)
+        await pilot.press("ctrl+s", "ctrl+u", *str(src), "enter")
+        await pilot.pause()
+        assert isinstance(app.screen, ExportScreen)  # no confirmation asked
+        assert "is the requirement file itself" in _text(app.screen.query_one("#export-error"))
+        await pilot.press("ctrl+u", *str(tmp_path / "adir.toml"), "enter")
+        await pilot.pause()
+        assert isinstance(app.screen, ExportScreen)
+        assert "not a regular file" in _text(app.screen.query_one("#export-error"))
+    assert src.read_text(encoding="utf-8") == before
+
+
 async def test_it_shows_that_it_is_computing(monkeypatch):
     import threading
 

@@ -324,6 +324,11 @@ class ExportScreen(ModalScreen[None]):
         path = Path(text).expanduser()
         if what == "requirements" and path.name.endswith(".report.toml"):
             path = path.with_name(path.name.replace(".report.toml", ".toml"))
+        problem = self._refusal(path, what)
+        if problem:  # said in the dialog, before any question: the path stays to be changed
+            self.query_one("#export-error", Static).update(problem)
+            self.set_focus(box)
+            return
         if path.exists():
             self.app.push_screen(
                 ConfirmScreen(f"{show(path, 200)} exists. Replace it?", "Replace", "Keep it"),
@@ -331,6 +336,19 @@ class ExportScreen(ModalScreen[None]):
             )
         else:
             self._write(path, what)
+
+    def _refusal(self, path: Path, what: str) -> str:
+        """Why a target is refused, as advisor --batch -o refuses it: the requirement file the
+        wizard opened (a report must not replace its input), or an existing target that is
+        not a regular file (a directory, a FIFO, a device)."""
+        from advisor.io_safety import same_file
+
+        source = getattr(self.app, "source", None)
+        if what == "report" and source is not None and same_file(source, path):
+            return f"{show(path, 200)} is the requirement file itself: choose another name"
+        if path.exists() and not path.is_file():
+            return f"{show(path, 200)} is not a regular file: choose another name"
+        return ""
 
     def _kept(self) -> None:
         """The existing file stays; the path typed stays too, in the box, to be changed."""
