@@ -542,3 +542,16 @@ async def test_a_message_the_engine_no_longer_gives_leaves_its_field(tmp_path):
         await _computed(app, pilot)
         assert app.report is not None
         assert _text(label).strip() == ""
+
+
+async def test_a_title_with_terminal_escapes_is_shown_escaped():
+    """A title carrying ESC sequences (clear screen, set the window title), BEL and a bidi
+    override is shown with them escaped in its box: nothing reaches the terminal raw."""
+    doc = _doc()
+    doc["application"]["title"] = "A\x1b[2J\x1b]0;pwned\x07B\u202eC"
+    app = DriveAdvisorApp(doc, VALVE, save_drafts=False)
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.pause()
+        value = app.query_one("#f-application-title", Input).value
+        assert value.isprintable()
+        assert "\\x1b[2J" in value and "\\u202e" in value

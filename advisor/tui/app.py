@@ -47,7 +47,7 @@ from textual.widgets import (
 
 from advisor.core import registry
 from advisor.core.errors import InfeasibleError, InputError
-from advisor.io_safety import plain, show
+from advisor.io_safety import plain, printable, show
 
 
 class _OnFirstUse:
@@ -468,7 +468,9 @@ class DriveAdvisorApp(App[None]):
         title = app.get("title", "")
         return (
             kind if isinstance(kind, str) and kind in registry.kinds() else None,
-            title if isinstance(title, str) else "",
+            # control and bidi characters escaped: a box that printed them raw would let the
+            # title clear or retitle the terminal
+            printable(title, newlines=False) if isinstance(title, str) else "",
         )
 
     # ------------------------------------------------------------------ layout
@@ -706,7 +708,7 @@ class DriveAdvisorApp(App[None]):
                 self._offered = loaded
         self.query_one("#title-label", Label).update(F.title_field().label)
         title = self.query_one("#f-application-title", Input)
-        shaped_title = self.doc.get("application", {}).get("title", "")
+        shaped_title = printable(str(self.doc.get("application", {}).get("title", "")), False)
         if title.value != shaped_title:
             title.value = shaped_title
         await self._build_steps()

@@ -186,7 +186,11 @@ def to_text(field: Field, value: Any) -> str:
         return ", ".join(f"{v:g}" for v in value)
     if isinstance(value, float):
         return f"{value:g}"
-    return str(value)
+    # text from a file is shown with its control and bidi characters escaped (\x1b): a box
+    # that printed them raw would let a title clear or retitle the terminal
+    from advisor.io_safety import printable
+
+    return printable(str(value), newlines=False)
 
 
 def _number(field: Field, text: str) -> float:
