@@ -15,6 +15,7 @@ import io
 import os
 import sys
 from pathlib import Path
+from typing import Any
 
 from advisor import __version__
 from advisor.core.errors import AdvisorError, ExitCode, InfeasibleError
@@ -292,24 +293,9 @@ def main(argv: list[str] | None = None) -> int:
     from advisor.core import pydantic_plugins
 
     pydantic_plugins.disable()  # every path: the advisor uses no pydantic plugin
-    if argv[:1] == ["schema"]:
-        return run_schema(argv[1:])
-    if argv[:1] == ["diff"]:  # what changed between two reports (exit 0 same, 1 differ, 2)
-        from advisor.diff import main as diff_main
-
-        return diff_main(argv[1:])
-    if argv[:1] == ["rules"]:  # the rule table, from the registry of rules
-        from advisor.core.rules_table import main as rules_main
-
-        return rules_main(argv[1:])
-    if argv[:1] == ["verify"]:  # published worked examples, computed again (exit 0 / 1)
-        from advisor.verify import main as verify_main
-
-        return verify_main(argv[1:])
-    if argv[:1] == ["family"]:  # product-family studies (Dask): imported only on this path
-        from advisor.family.cli import main as family_main
-
-        return family_main(argv[1:])
+    sub = _subcommand(argv[0]) if argv else None
+    if sub is not None:
+        return _run_subcommand(sub, argv[1:])
     parser = build_parser()
     try:
         args = parser.parse_args(argv)
@@ -331,6 +317,58 @@ def main(argv: list[str] | None = None) -> int:
         return 130
     except RecursionError:  # a guard missed some deep structure: still one line, exit 2
         _err("the input is nested too deeply to be read")
+        return ExitCode.INVALID_INPUT
+    except Exception as exc:  # a bug: say so in one line, never a traceback
+        _err(f"internal error ({type(exc).__name__}: {exc}); please report it with the input file")
+        return ExitCode.INTERNAL_ERROR
+
+
+def _subcommand(name: str) -> Any:
+    """The ``main(argv)`` of a subcommand, each imported only on its own path (family needs
+    Dask, verify the whole advisor); None if ``name`` is none."""
+    if name == "schema":
+        return run_schema
+    if name == "diff":  # what changed between two reports (exit 0 same, 1 differ, 2)
+        from advisor.diff import main as diff_main
+
+        return diff_main
+    if name == "rules":  # the rule table, from the registry of rules
+        from advisor.core.rules_table import main as rules_main
+
+        return rules_main
+    if name == "verify":  # published worked examples, computed again (exit 0 / 1)
+        from advisor.verify import main as verify_main
+
+        return verify_main
+    if name == "family":  # product-family studies (Dask): imported only on this path
+        from advisor.family.cli import main as family_main
+
+        return family_main
+    return None
+
+
+def _run_subcommand(sub: Any, argv: list[str]) -> int:
+    """Run a subcommand under the batch's contract: a reader that leaves (``| head -1``) ends
+    it quietly, a full or failing stdout is one line and exit 2, never a traceback."""
+    try:
+        code = sub(argv)
+        sys.stdout.flush()  # a buffered tail fails here, not at the interpreter's exit
+        return code
+    except BrokenPipeError:  # the reader left: not an error
+        _silence_stdout()
+        return ExitCode.OK
+    except AdvisorError as exc:
+        _err(str(exc))
+        return exc.exit_code
+    except KeyboardInterrupt:
+        _err("interrupted")
+        return 130
+    except OSError as exc:
+        if exc.filename is None:  # a write to stdout (/dev/full, an I/O error)
+            return _stdout_failed(exc, "the output")
+        from advisor.io_safety import show
+
+        _err(f"{show(exc.filename, 200)}: {exc.strerror or exc}")
         return ExitCode.INVALID_INPUT
     except Exception as exc:  # a bug: say so in one line, never a traceback
         _err(f"internal error ({type(exc).__name__}: {exc}); please report it with the input file")

@@ -168,9 +168,14 @@ COLUMNS = ("what", "item", "before", "after")
 
 def as_text(changes: list[Change], a: str, b: str) -> str:
     if not changes:
-        return f"{a} and {b}: the same\n"
+        from advisor.io_safety import printable
+
+        return printable(f"{a} and {b}: the same", newlines=False) + "\n"
+    from advisor.io_safety import printable
+
     lines = [f"{a} → {b}: {len(changes)} changes", *(f"  {w}" for w in words(changes))]
-    return "\n".join(lines) + "\n"
+    # report strings are data: an ESC or a bidi override is shown escaped, never obeyed
+    return "\n".join(printable(x, newlines=False) for x in lines) + "\n"
 
 
 def as_markdown(changes: list[Change], a: str, b: str) -> str:
@@ -189,30 +194,120 @@ def as_markdown(changes: list[Change], a: str, b: str) -> str:
     return "\n".join([*out, ""])
 
 
-def as_html(changes: list[Change], a: str, b: str) -> str:
+def _html(x: str) -> str:
+    """User text in HTML: control characters shown escaped (``\\x1b``; NUL is not allowed
+    in HTML at all), then the markup characters escaped."""
     from html import escape
 
+    from advisor.io_safety import printable
+
+    return escape(printable(x, newlines=False))
+
+
+#: The page's style sheet (a plain string: braces are CSS, not format fields).
+CSS = (
+    "body { font-family: sans-serif; max-width: 60rem; margin: 2rem auto; } "
+    "td, th { border-bottom: 1px solid #ddd; padding: 0.2rem 0.5rem; text-align: left; "
+    "vertical-align: top; } table { border-collapse: collapse; }"
+)
+
+
+def as_html(changes: list[Change], a: str, b: str) -> str:
     rows = "".join(
         "<tr>"
-        + "".join(f"<td>{escape(x)}</td>" for x in (c.what, c.item, c.before, c.after))
+        + "".join(f"<td>{_html(x)}</td>" for x in (c.what, c.item, c.before, c.after))
         + "</tr>"
         for c in changes
     )
-    items = "".join(f"<li>{escape(w)}</li>" for w in words(changes))
+    items = "".join(f"<li>{_html(w)}</li>" for w in words(changes))
     head = "".join(f"<th>{x}</th>" for x in COLUMNS)
     body = (
         f"<p>{len(changes)} changes.</p><ul>{items}</ul><table><tr>{head}</tr>{rows}</table>"
         if changes
         else "<p>The reports say the same.</p>"
     )
-    title = escape(f"Changes: {a} → {b}")
+    title = _html(f"Changes: {a} → {b}")
     return (
         '<!DOCTYPE html>\n<html lang="en"><head><meta charset="utf-8">'
-        f"<title>{title}</title><style>body {{ font-family: sans-serif; max-width: 60rem; "
-        "margin: 2rem auto; }} td, th {{ border-bottom: 1px solid #ddd; padding: 0.2rem "
-        "0.5rem; text-align: left; vertical-align: top; }} table {{ border-collapse: "
-        f"collapse; }}</style></head><body><h1>{title}</h1>{body}</body></html>\n"
+        f"<title>{title}</title><style>{CSS}</style></head><body><h1>{title}</h1>{body}"
+        "</body></html>\n"
     )
+
+
+def _kind(v: Any) -> str:
+    if isinstance(v, bool):
+        return "a boolean"
+    if isinstance(v, int | float):
+        return "a number"
+    if isinstance(v, str):
+        return "text"
+    if isinstance(v, dict):
+        return "a table"
+    if isinstance(v, list):
+        return "an array"
+    return type(v).__name__  # a TOML date or time
+
+
+def _is_number(v: Any) -> bool:
+    return isinstance(v, int | float) and not isinstance(v, bool)
+
+
+def _is_value(v: Any) -> bool:
+    """A check's value or limit: a number, a flag or a word (what :func:`_text` shows)."""
+    return isinstance(v, int | float | str)
+
+
+#: What each array of tables diff reads must hold: key → (test, what it must be, required).
+_ITEMS: dict[str, dict[str, tuple[Any, str, bool]]] = {
+    "decisions": {
+        "id": (lambda v: isinstance(v, str), "text", True),
+        "decision": (lambda v: isinstance(v, str), "text", True),
+    },
+    "checks": {
+        "id": (lambda v: isinstance(v, str), "text", True),
+        "margin": (_is_number, "a number", True),
+        "value": (_is_value, "a number or text", True),
+        "limit": (_is_value, "a number or text", True),
+        "unit": (lambda v: isinstance(v, str), "text", True),
+    },
+}
+
+
+def shape_problem(doc: dict[str, Any]) -> str | None:
+    """What makes ``doc`` not a report diff can read (None if nothing): the tables and arrays
+    it reads, with their types, so a hand-edited or foreign file is refused in one line
+    instead of failing half-way through the comparison."""
+    head = doc.get("report")
+    if not isinstance(head, dict):
+        return "[report] must be a table" if "report" in doc else "no [report] table"
+    for key in ("application", "status"):
+        if key not in head:
+            return f"report.{key} is missing"
+        if not isinstance(head[key], str):
+            return f"report.{key} must be text, not {_kind(head[key])}"
+    for key in ("requirements", "design"):
+        if key in doc and not isinstance(doc[key], dict):
+            return f"{key} must be a table, not {_kind(doc[key])}"
+    for key, fields in _ITEMS.items():
+        items = doc.get(key, [])
+        if not isinstance(items, list):
+            return f"{key} must be an array of tables, not {_kind(items)}"
+        for i, item in enumerate(items):
+            if not isinstance(item, dict):
+                return f"{key}[{i}] must be a table, not {_kind(item)}"
+            for name, (test, what, required) in fields.items():
+                if name not in item:
+                    if required:
+                        return f"{key}[{i}].{name} is missing"
+                elif not test(item[name]):
+                    return f"{key}[{i}].{name} must be {what}, not {_kind(item[name])}"
+    warnings = doc.get("warnings", [])
+    if not isinstance(warnings, list):
+        return f"warnings must be an array of text, not {_kind(warnings)}"
+    for i, w in enumerate(warnings):
+        if not isinstance(w, str):
+            return f"warnings[{i}] must be text, not {_kind(w)}"
+    return None
 
 
 def read_report(path: Any) -> dict:
@@ -226,6 +321,9 @@ def read_report(path: Any) -> dict:
             f"{show(str(path), 200)}: not a Drive Advisor report (no [report] table with "
             "application); give two reports written by advisor --batch -o"
         )
+    problem = shape_problem(doc)
+    if problem is not None:
+        raise InputError(f"{show(str(path), 200)}: not a report of the advisor: {problem}")
     return doc
 
 

@@ -51,9 +51,11 @@ def main(argv: list[str]) -> int:
     except SystemExit as exc:
         return int(exc.code or 0)
     try:
+        if args.output is not None:  # refuse a target that would destroy something, first
+            _check_output(args.output, args.data)
         cases = load_cases(args.data)
-    except (OSError, DataError, KeyError, ValueError) as exc:
-        _err(f"verification data: {exc}")
+    except (AdvisorError, DataError) as exc:
+        _err(str(exc))
         return 2
     if args.list:
         for c in cases:
@@ -75,6 +77,22 @@ def main(argv: list[str]) -> int:
         return 130
 
 
+def _check_output(output: Path, data: Path | None) -> None:
+    """Refuse ``-o`` where writing would destroy something: the verification data itself, a
+    device, a FIFO or a directory, or a folder that does not exist."""
+    from advisor.io_safety import OutputError, check_target, same_file, show
+    from advisor.verify.runner import data_path
+
+    if same_file(output, data or data_path()):
+        raise OutputError(
+            f"{show(output, 200)}: is the verification data itself; the report would replace "
+            "it (choose another -o)"
+        )
+    target = check_target(output)
+    if not target.parent.is_dir():
+        raise OutputError(f"{show(output, 200)}: no such directory {show(target.parent, 200)}")
+
+
 def _report(args: argparse.Namespace, cases: list) -> int:
     from advisor.verify.render import html_report, text_report
     from advisor.verify.runner import all_verified, run
@@ -87,11 +105,18 @@ def _report(args: argparse.Namespace, cases: list) -> int:
         else text_report(outcomes, short)
     )
     if args.output is not None:
-        from advisor.io_safety import check_target, write_atomic
+        from advisor.io_safety import show, write_atomic
 
-        check_target(args.output)
-        write_atomic(args.output, text)
-        print(text_report(outcomes, short).splitlines()[-1] + f" (report: {args.output})")
+        try:
+            write_atomic(args.output, text)
+        except OSError as exc:
+            from advisor.io_safety import OutputError
+
+            raise OutputError(
+                f"{show(args.output, 200)}: cannot write the report ({exc.strerror}); "
+                "nothing was written"
+            ) from None
+        print(text_report(outcomes, short).splitlines()[-1] + f" (report: {show(args.output)})")
     else:
         sys.stdout.write(text)
     return 0 if all_verified(outcomes) else 1

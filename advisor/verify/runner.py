@@ -86,24 +86,104 @@ def data_path() -> Path:
     return Path(str(resources.files("advisor.verify").joinpath("cases.toml")))
 
 
-def _departure(d: dict[str, Any] | None) -> Departure | None:
+def _kind(v: Any) -> str:
+    if isinstance(v, bool):
+        return "a boolean"
+    if isinstance(v, int | float):
+        return "a number"
+    return {str: "text", dict: "a table", list: "an array"}.get(type(v), type(v).__name__)
+
+
+def _text(v: Any) -> bool:
+    return isinstance(v, str)
+
+
+def _number(v: Any) -> bool:
+    return isinstance(v, int | float) and not isinstance(v, bool)
+
+
+def _tolerance(v: Any) -> bool:
+    return _number(v) and math.isfinite(v) and v >= 0
+
+
+def _table(v: Any) -> bool:
+    return isinstance(v, dict)
+
+
+def _published(v: Any) -> bool:
+    return isinstance(v, str) or (_number(v) and math.isfinite(v))
+
+
+#: Each key a case, a quantity and a departure may hold: (test, what it must be, required).
+_CASE_KEYS: dict[str, tuple[Any, str, bool]] = {
+    "id": (_text, "text", True),
+    "title": (_text, "text", True),
+    "source": (_text, "text", True),
+    "where": (_text, "text", True),
+    "checked": (_text, "text", True),
+    "kind": (_text, "text", True),
+    "requirement": (_table, "a table", False),
+    "function": (_text, "text", False),
+    "inputs": (_table, "a table", False),
+    "golden": (_text, "text", False),
+}
+_QUANTITY_KEYS: dict[str, tuple[Any, str, bool]] = {
+    "name": (_text, "text", True),
+    "published": (_published, "a finite number or text", True),
+    "unit": (_text, "text", False),
+    "path": (_text, "text", False),
+    "key": (_text, "text", False),
+    "tolerance": (_tolerance, "a finite number ≥ 0", False),
+    "abs_tolerance": (_tolerance, "a finite number ≥ 0", False),
+    "tolerance_basis": (_text, "text", False),
+    "relation": (_text, "text", False),
+    "departure": (_table, "a table", False),
+    "note": (_text, "text", False),
+}
+_DEPARTURE_KEYS: dict[str, tuple[Any, str, bool]] = {
+    "expected": (_published, "a finite number or text", True),
+    "tolerance": (_tolerance, "a finite number ≥ 0", False),
+    "abs_tolerance": (_tolerance, "a finite number ≥ 0", False),
+    "reason": (_text, "text", True),
+    "doc": (_text, "text", False),
+}
+
+
+def _check_keys(table: dict[str, Any], keys: dict[str, tuple[Any, str, bool]], where: str) -> None:
+    for name, (test, what, required) in keys.items():
+        if name not in table:
+            if required:
+                raise DataError(f"{where}: {name} is missing")
+        elif not test(table[name]):
+            raise DataError(f"{where}: {name} must be {what}, not {_kind(table[name])}")
+
+
+def _departure(d: dict[str, Any] | None, where: str) -> Departure | None:
     if d is None:
         return None
+    _check_keys(d, _DEPARTURE_KEYS, f"{where}: departure")
     return Departure(
         d["expected"], d.get("tolerance"), d.get("abs_tolerance"), d["reason"], d.get("doc", "")
     )
 
 
-def _quantity(case_id: str, q: dict[str, Any]) -> Quantity:
+def _quantity(case_id: str, i: int, q: Any) -> Quantity:
+    where = f"case {case_id}: quantity[{i}]"
+    if not isinstance(q, dict):
+        raise DataError(f"{where} must be a table, not {_kind(q)}")
+    _check_keys(q, _QUANTITY_KEYS, where)
+    where = f"case {case_id}: quantity {q['name']!r}"
     locator = q.get("path", q.get("key"))
-    if locator is None or "published" not in q:
-        raise DataError(f"case {case_id}: quantity {q.get('name')!r} needs published and path/key")
+    if locator is None:
+        raise DataError(f"{where}: path (or key) is missing")
     relation = q.get("relation", "=")
     if relation not in ("=", "<=", ">="):
-        raise DataError(f"case {case_id}: relation {relation!r} is not =, <= or >=")
+        raise DataError(f"{where}: relation {relation!r} is not =, <= or >=")
     numeric = not isinstance(q["published"], str)
+    if not numeric and relation != "=":
+        raise DataError(f"{where}: published must be a number with relation {relation!r}")
     if numeric and q.get("tolerance") is None and q.get("abs_tolerance") is None:
-        raise DataError(f"case {case_id}: quantity {q['name']!r} states no tolerance")
+        raise DataError(f"{where}: tolerance (or abs_tolerance) is missing")
     return Quantity(
         name=q["name"],
         published=q["published"],
@@ -113,37 +193,79 @@ def _quantity(case_id: str, q: dict[str, Any]) -> Quantity:
         abs_tolerance=q.get("abs_tolerance"),
         tolerance_basis=q.get("tolerance_basis", ""),
         relation=relation,
-        departure=_departure(q.get("departure")),
+        departure=_departure(q.get("departure"), where),
         note=q.get("note", ""),
     )
 
 
-def load_cases(path: Path | None = None) -> list[Case]:
-    """The cases of the verification set (the shipped one unless ``path`` is given)."""
-    data = tomllib.loads((path or data_path()).read_text(encoding="utf-8"))
-    cases = []
-    for c in data.get("case", []):
-        kind = c.get("kind")
-        if kind not in ("requirement", "calc"):
-            raise DataError(f"case {c.get('id')}: kind {kind!r} is not requirement or calc")
-        cases.append(
-            Case(
-                id=c["id"],
-                title=c["title"],
-                source=c["source"],
-                where=c["where"],
-                checked=c["checked"],
-                kind=kind,
-                quantities=tuple(_quantity(c["id"], q) for q in c["quantity"]),
-                requirement=c.get("requirement", {}),
-                function=c.get("function", ""),
-                inputs=c.get("inputs", {}),
-                golden=c.get("golden", ""),
+def _case(i: int, c: Any) -> Case:
+    """One case, every key checked for its type (a hand-edited set fails in one line)."""
+    if not isinstance(c, dict):
+        raise DataError(f"case[{i}] must be a table, not {_kind(c)}")
+    cid = c.get("id")
+    where = f"case {cid}" if isinstance(cid, str) else f"case[{i}]"
+    _check_keys(c, _CASE_KEYS, where)
+    kind = c["kind"]
+    if kind not in ("requirement", "calc"):
+        raise DataError(f"{where}: kind {kind!r} is not requirement or calc")
+    if kind == "requirement" and "requirement" not in c:
+        raise DataError(f'{where}: requirement is missing (kind = "requirement")')
+    if kind == "calc":
+        from advisor.verify.models import MODELS
+
+        fn = c.get("function")
+        if fn not in MODELS:
+            raise DataError(
+                f"{where}: function {fn!r} is not a model of advisor/verify/models.py"
+                if fn is not None
+                else f'{where}: function is missing (kind = "calc")'
             )
+    quantities = c.get("quantity")
+    if not isinstance(quantities, list) or not quantities:
+        raise DataError(
+            f"{where}: quantity is missing"
+            if quantities is None
+            else f"{where}: quantity must be a non-empty array of tables, not {_kind(quantities)}"
         )
+    return Case(
+        id=c["id"],
+        title=c["title"],
+        source=c["source"],
+        where=c["where"],
+        checked=c["checked"],
+        kind=kind,
+        quantities=tuple(_quantity(c["id"], j, q) for j, q in enumerate(quantities)),
+        requirement=c.get("requirement", {}),
+        function=c.get("function", ""),
+        inputs=c.get("inputs", {}),
+        golden=c.get("golden", ""),
+    )
+
+
+def load_cases(path: Path | None = None) -> list[Case]:
+    """The cases of the verification set (the shipped one unless ``path`` is given).
+
+    Read as the batch reads a requirement file (:func:`advisor.io_safety.read_input`: a
+    regular file of at most 1 MiB, never blocking on a FIFO); an :class:`InputError` or a
+    :class:`DataError` names the file, the case and the key that is wrong."""
+    from advisor.io_safety import parse_toml, read_input, show
+
+    source = path or data_path()
+    name = show(source, 200)
+    data = parse_toml(read_input(source, what="verification data "), name)
+    raw = data.get("case")
+    if raw is None or raw == []:
+        raise DataError(f"no verification cases in {name} (no [[case]] tables)")
+    if not isinstance(raw, list):
+        raise DataError(f"{name}: case must be an array of tables, not {_kind(raw)}")
+    try:
+        cases = [_case(i, c) for i, c in enumerate(raw)]
+    except DataError as exc:
+        raise DataError(f"{name}: {exc}") from None
     ids = [c.id for c in cases]
     if len(set(ids)) != len(ids):
-        raise DataError("case ids are not unique")
+        dup = next(i for i in ids if ids.count(i) > 1)
+        raise DataError(f"{name}: case id {dup!r} is not unique")
     return cases
 
 
