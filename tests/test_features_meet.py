@@ -618,3 +618,16 @@ def test_a_catalog_bldc_motor_gives_a_written_report(tmp_path, capsys):
     bl02 = next(d for d in rep["decisions"] if d["id"] == "BL-02")
     assert "no minimum" in bl02["rationale"] and "inf" not in bl02["rationale"]
     capsys.readouterr()
+
+
+def test_the_html_datasheet_shows_control_characters_escaped():
+    """ESC, NUL and a right-to-left override in a title and a [project] field reach the page
+    escaped (\\x1b, \\x00, \\u202e), never raw."""
+    from advisor.datasheet import render
+
+    doc = tomllib.loads((EXAMPLES / "linear_screw_actuator.toml").read_text(encoding="utf-8"))
+    doc["application"]["title"] = "A\x1b[2J\x00B\u202eC"
+    doc["project"] = {"author": "X\u202eY\x07"}
+    page = render(advise(parse_requirements(doc)), "html")
+    assert not any(ch in page for ch in "\x1b\x00\u202e\x07")
+    assert "A\\x1b[2J\\x00B\\u202eC" in page

@@ -5,6 +5,7 @@ from html import escape
 
 from advisor.datasheet.content import Bar, Block, Probability, Required, Sheet, Table
 from advisor.datasheet.plots import Plot, svg, tornado_svg
+from advisor.io_safety import printable
 
 #: The sections, in order: their ids are what a reader (and the test) finds.
 SECTIONS = (
@@ -64,7 +65,9 @@ MARK = {"fails": "✗ fails", "tight": "⚠ tight", "passes": "✓", "none": "no
 
 
 def _e(text: object) -> str:
-    return escape(str(text))
+    """Text for the page: HTML-escaped, and control and bidi characters shown escaped (a NUL
+    is invalid in HTML; a right-to-left override would reorder a header's fields)."""
+    return escape(printable(str(text), newlines=False))
 
 
 def _num_cell(text: str) -> str:
