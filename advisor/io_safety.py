@@ -106,23 +106,23 @@ def read_input(path: Path, limit: int = MAX_INPUT_BYTES, what: str = "") -> byte
     it is a regular file; at most ``limit`` bytes are read (``/dev/zero`` never ends).
     """
     where = what + show(path, 200)
+    wanted = f"a {what.strip() or 'requirement'} file (.toml)"  # a catalog is named as such
     flags = os.O_RDONLY | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_NOCTTY", 0)
     try:
         fd = os.open(path, flags | getattr(os, "O_CLOEXEC", 0))
     except FileNotFoundError:
         raise InputError(f"{where}: no such file") from None
     except IsADirectoryError:
-        raise InputError(f"{where}: is a directory, expected a requirement file (.toml)") from None
+        raise InputError(f"{where}: is a directory, expected {wanted}") from None
     except OSError as exc:
         raise InputError(f"{where}: cannot be read ({exc.strerror})") from None
     try:
         st = os.fstat(fd)
         if stat.S_ISDIR(st.st_mode):
-            raise InputError(f"{where}: is a directory, expected a requirement file (.toml)")
+            raise InputError(f"{where}: is a directory, expected {wanted}")
         if not stat.S_ISREG(st.st_mode):
             raise InputError(
-                f"{where}: is {_kind_of(st.st_mode)}, not a regular file; "
-                "give a requirement file (.toml)"
+                f"{where}: is {_kind_of(st.st_mode)}, not a regular file; give {wanted}"
             )
         too_big = InputError(
             f"{where}: larger than {limit // 1024} KiB"

@@ -130,13 +130,30 @@ def _read(path: Path) -> dict[str, Any]:
         raise CatalogError(str(exc)) from None
 
 
+#: pydantic's bound errors, worded as the requirement's are (a bound in %g, not 0.0000000001)
+_BOUNDS = {
+    "greater_than_equal": ("ge", "≥"),
+    "greater_than": ("gt", ">"),
+    "less_than_equal": ("le", "≤"),
+    "less_than": ("lt", "<"),
+}
+
+
+def _bound_text(err: Any) -> str | None:
+    kind = _BOUNDS.get(err.get("type", ""))
+    bound = (err.get("ctx") or {}).get(kind[0]) if kind else None
+    if kind is None or not isinstance(bound, int | float):
+        return None
+    return f"must be {kind[1]} {bound:g}"
+
+
 def _fail(path: Path, where: str, exc) -> CatalogError:
     err = exc.errors()[0]
     loc = ".".join(str(p) for p in err["loc"])
     from advisor.io_safety import show
 
     field = f"field {loc} = {show(repr(err['input']))}: " if loc else ""
-    msg = err["msg"].removeprefix("Value error, ")
+    msg = _bound_text(err) or err["msg"].removeprefix("Value error, ")
     return CatalogError(f"catalog {path}, {where}: {field}{msg}")
 
 
@@ -145,6 +162,40 @@ def _rows(path: Path, data: dict[str, Any], key: str) -> list[dict[str, Any]]:
     if not isinstance(rows, list) or not all(isinstance(r, dict) for r in rows):
         raise CatalogError(f"catalog {path}: expected an array of tables [[{key}]]")
     return rows
+
+
+def _key(row: dict[str, Any], key: str) -> str:
+    """A row's naming key as a refusal echoes it: short, controls escaped."""
+    from advisor.io_safety import show
+
+    return show(repr(row.get(key)))
+
+
+def _text(path: Path, data: dict[str, Any], key: str, default: str) -> str:
+    """A file-level text key (``source = "..."``, ``law = "..."``): a string, or refused."""
+    v = data.get(key, default)
+    if not isinstance(v, str):
+        from advisor.io_safety import show
+
+        raise CatalogError(f"catalog {path}: {key} = {show(repr(v))}: must be a string")
+    return v
+
+
+def _supply_frequency(path: Path, data: dict[str, Any]) -> float:
+    """The file-level ``supply_frequency_Hz`` of an induction motor catalog: a number within
+    the range :data:`catalogs.schema.SUPPLY_FREQUENCY_RANGE_HZ` (a unit string is not read
+    here: a catalog states its numbers in the units its keys name)."""
+    from advisor.io_safety import show
+    from catalogs.schema import SUPPLY_FREQUENCY_RANGE_HZ
+
+    lo, hi = SUPPLY_FREQUENCY_RANGE_HZ
+    v = data.get("supply_frequency_Hz", 50)
+    if isinstance(v, bool) or not isinstance(v, int | float) or not lo <= v <= hi:
+        raise CatalogError(
+            f"catalog {path}: supply_frequency_Hz = {show(repr(v))}: must be a number "
+            f"{lo:g} … {hi:g} Hz"
+        )
+    return float(v)
 
 
 def _load_threads(path: Path) -> tuple[list[ThreadProfile], str]:
@@ -158,27 +209,36 @@ def _load_threads(path: Path) -> tuple[list[ThreadProfile], str]:
         try:
             plan = ThreadPlanRow.model_validate(row)
         except ValidationError as exc:
-            raise _fail(path, f"row {i} (d_mm = {row.get('d_mm')!r})", exc) from None
+            raise _fail(path, f"row {i} (d_mm = {_key(row, 'd_mm')})", exc) from None
         for p in plan.pitches_mm:
             out.append(
                 trapezoidal_profile(
                     plan.d_mm, p, preferred=(p == plan.preferred_mm), series=plan.series
                 )
             )
-    return out, str(data.get("source", path.name))
+    return out, _text(path, data, "source", path.name)
 
 
 def _load_powers(path: Path) -> tuple[list[float], str]:
+    from catalogs.schema import MAX_RATED_POWER_KW
+
     data = _read(path)
     powers = data.get("rated_powers_kW")
     if not isinstance(powers, list) or not powers:
         raise CatalogError(f"catalog {path}: rated_powers_kW must be a non-empty array")
     for i, p in enumerate(powers, start=1):
-        if isinstance(p, bool) or not isinstance(p, int | float) or not (0 < p < math.inf):
-            raise CatalogError(f"catalog {path}, rated_powers_kW item {i} = {p!r}: must be > 0")
+        if (
+            isinstance(p, bool)
+            or not isinstance(p, int | float)
+            or not (0 < p <= MAX_RATED_POWER_KW)
+        ):
+            raise CatalogError(
+                f"catalog {path}, rated_powers_kW item {i} = {p!r}: must be > 0 and at most "
+                f"{MAX_RATED_POWER_KW:g} kW"
+            )
     if sorted(powers) != powers or len(set(powers)) != len(powers):
         raise CatalogError(f"catalog {path}: rated_powers_kW must be strictly increasing")
-    return [float(p) for p in powers], str(data.get("source", path.name))
+    return [float(p) for p in powers], _text(path, data, "source", path.name)
 
 
 def _load_bibliography(path: Path, known: dict[str, dict[str, Any]]) -> dict[str, dict[str, Any]]:
@@ -190,7 +250,7 @@ def _load_bibliography(path: Path, known: dict[str, dict[str, Any]]) -> dict[str
     data = _read(path)
     out = dict(known)
     for i, row in enumerate(_rows(path, data, "source"), start=1):
-        where = f"row {i} (id = {row.get('id')!r})"
+        where = f"row {i} (id = {_key(row, 'id')})"
         try:
             e = BibEntry.model_validate(row)
         except ValidationError as exc:
@@ -248,15 +308,15 @@ def _load_motors(
 
     data = _read(path)
     sources = _resolve_sources(path, data.get("sources", {}), bib)
-    freq = data.get("supply_frequency_Hz", 50)
+    freq = _supply_frequency(path, data)
     out: list[InductionMotor] = []
     for i, row in enumerate(_rows(path, data, "motor"), start=1):
-        where = f"row {i} (model = {row.get('model')!r})"
+        where = f"row {i} (model = {_key(row, 'model')})"
         try:
             m = InductionMotor(
-                **MotorSchema.model_validate(
-                    {**row, "supply_frequency_Hz": float(freq)}
-                ).model_dump(exclude={"rated_torque_Nm"})  # checked, not kept: M_n = P/ω
+                **MotorSchema.model_validate({**row, "supply_frequency_Hz": freq}).model_dump(
+                    exclude={"rated_torque_Nm"}
+                )  # checked, not kept: M_n = P/ω
             )
         except ValidationError as exc:
             raise _fail(path, where, exc) from None
@@ -454,10 +514,10 @@ def _load_frames(path: Path, bib: dict[str, dict[str, Any]]) -> tuple[list[BldcF
         ref = BldcReferenceRow.model_validate(data.get("reference")).model_dump()
     except ValidationError as exc:
         raise _fail(path, "[reference]", exc) from None
-    law = str(data.get("law", ""))
+    law = _text(path, data, "law", "")
     out = []
     for i, row in enumerate(_rows(path, data, "frame"), start=1):
-        where = f"row {i} (name = {row.get('name')!r})"
+        where = f"row {i} (name = {_key(row, 'name')})"
         try:
             f = BldcFrameRow.model_validate(row).model_dump()
         except ValidationError as exc:
@@ -513,7 +573,7 @@ def _load_bldc_motors(
     sources = _resolve_sources(path, data.get("sources", {}), bib)
     out = []
     for i, row in enumerate(_rows(path, data, "motor"), start=1):
-        where = f"row {i} (name = {row.get('name')!r})"
+        where = f"row {i} (name = {_key(row, 'name')})"
         try:
             m = BldcMotorRow.model_validate(row)
         except ValidationError as exc:
@@ -597,7 +657,7 @@ def _load_bearings(
     usable = {**(known_friction or {}), **friction}
     out = []
     for i, row in enumerate(_rows(path, data, "bearing"), start=1):
-        where = f"row {i} (designation = {row.get('designation')!r})"
+        where = f"row {i} (designation = {_key(row, 'designation')})"
         try:
             b = BearingRow.model_validate(row)
         except ValidationError as exc:
@@ -628,7 +688,7 @@ def _load_steels(
     sources = _resolve_sources(path, data.get("sources", {}), bib)
     out = []
     for i, row in enumerate(_rows(path, data, "steel"), start=1):
-        where = f"row {i} (grade = {row.get('grade')!r})"
+        where = f"row {i} (grade = {_key(row, 'grade')})"
         try:
             s = ElectricalSteelRow.model_validate(row)
         except ValidationError as exc:

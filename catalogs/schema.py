@@ -7,6 +7,13 @@ from pydantic import BaseModel, ConfigDict, Field, model_validator
 Positive = Annotated[float, Field(gt=0, allow_inf_nan=False)]
 
 
+def Between(lo: float, hi: float) -> Any:
+    """A finite number within the physical range ``lo … hi`` of a catalog field: a datasheet
+    value outside it is a copying slip (a unit off by 10³, a missing exponent), and the
+    advice computed from it would overflow or divide by a denormal (issue 13)."""
+    return Annotated[float, Field(ge=lo, le=hi, allow_inf_nan=False)]
+
+
 class _Row(BaseModel):
     # defer_build: a run that finds the validated catalogs in the cache never pays for
     # building the validators.
@@ -26,15 +33,23 @@ PITCH_RANGE_MM = (1.5, 44.0)
 THREAD_DIAMETER_TOLERANCE_MM = 0.01
 
 
+#: Nominal diameters of a trapezoidal thread, mm: GOST 24738-81 runs from Tr8 to Tr640; a
+#: smaller diameter than 2 mm cannot carry the smallest pitch (1.5 mm) of GOST 24737-81.
+THREAD_D_RANGE_MM = (2.0, 640.0)
+
+
 class ThreadPlanRow(_Row):
-    d_mm: Positive
+    d_mm: Between(*THREAD_D_RANGE_MM)
     series: Annotated[int, Field(ge=1, le=2)]
-    pitches_mm: list[Positive]
-    preferred_mm: Positive
+    # a pitch outside PITCH_RANGE_MM is refused by _check_profile, citing the standard
+    pitches_mm: Annotated[
+        list[Between(1e-3, THREAD_D_RANGE_MM[1])], Field(min_length=1, max_length=20)
+    ]
+    preferred_mm: Between(1e-3, THREAD_D_RANGE_MM[1])
     #: optional, one per pitch: the diameters as a table prints them, checked against the
     #: profile computed by GOST 24737-81 (never used in its place)
-    d2_mm: list[Positive] | None = None
-    d3_mm: list[Positive] | None = None
+    d2_mm: list[Between(0.0, THREAD_D_RANGE_MM[1])] | None = None
+    d3_mm: list[Between(0.0, THREAD_D_RANGE_MM[1])] | None = None
 
     @model_validator(mode="after")
     def _preferred_is_listed(self) -> "ThreadPlanRow":
@@ -115,25 +130,31 @@ TORQUE_TOLERANCE = 0.03
 MAX_RATED_POWER_KW = 1e5
 
 
+#: Supply frequencies of an induction motor's catalog, Hz: mains 50/60 Hz, aircraft 400 Hz,
+#: high-speed spindles up to about 1 kHz.
+SUPPLY_FREQUENCY_RANGE_HZ = (1.0, 1000.0)
+
+
 class InductionMotor(_Row):
-    model: Annotated[str, Field(min_length=1)]
+    model: Annotated[str, Field(min_length=1, max_length=60)]
     poles: int
-    rated_power_kW: Positive
-    rated_speed_rpm: Positive
+    #: 10 W … 100 MW (above: see MAX_RATED_POWER_KW, refused with its own reason)
+    rated_power_kW: Annotated[float, Field(ge=0.01, allow_inf_nan=False)]
+    rated_speed_rpm: Between(1.0, 6e4)
     slip_pct: Annotated[float, Field(gt=0, lt=50, allow_inf_nan=False)]
     breakdown_torque_ratio: Annotated[float, Field(gt=1, le=5, allow_inf_nan=False)]
     starting_torque_ratio: Annotated[float, Field(gt=0, le=5, allow_inf_nan=False)]
     efficiency_pct: Annotated[float, Field(gt=0, lt=100, allow_inf_nan=False)]
     cos_phi: Annotated[float, Field(gt=0, le=1, allow_inf_nan=False)]
     starting_current_ratio: Annotated[float, Field(ge=1, le=15, allow_inf_nan=False)]
-    inertia_kgm2: Positive
-    mass_kg: Positive
+    inertia_kgm2: Between(1e-7, 1e5)
+    mass_kg: Between(0.1, 1e6)
     source: str
     estimated: list[str] = []
-    supply_frequency_Hz: float = 50.0
+    supply_frequency_Hz: Between(*SUPPLY_FREQUENCY_RANGE_HZ) = 50.0
     #: optional: the rated torque as the datasheet states it, checked against P/ω_n (the
     #: advisor computes M_n from the power and the speed, never takes it from here)
-    rated_torque_Nm: Positive | None = None
+    rated_torque_Nm: Between(1e-3, 1e7) | None = None
 
     @model_validator(mode="after")
     def _consistent(self) -> "InductionMotor":
@@ -206,7 +227,7 @@ class FrictionPair(_Row):
     description: str
     f_oil: Annotated[list[Annotated[float, Field(gt=0, lt=1)]], Field(min_length=2, max_length=2)]
     f_dry: Annotated[list[Annotated[float, Field(gt=0, lt=1)]], Field(min_length=2, max_length=2)]
-    allowable_pressure_MPa: Positive
+    allowable_pressure_MPa: Between(0.1, 1e3)
     source: list[str]
     estimated: list[str] = []
 
@@ -221,20 +242,20 @@ class FrictionPair(_Row):
 
 class ScrewSteel(_Row):
     name: str
-    yield_strength_MPa: Positive
-    elastic_modulus_MPa: Positive
+    yield_strength_MPa: Between(10.0, 1e4)
+    elastic_modulus_MPa: Between(1e3, 1e6)
     source: list[str]
 
 
 class NutRules(_Row):
-    height_ratio_min: Positive
-    height_ratio_max: Positive
-    max_turns: Annotated[int, Field(ge=1)]
+    height_ratio_min: Between(0.1, 10.0)
+    height_ratio_max: Between(0.1, 10.0)
+    max_turns: Annotated[int, Field(ge=1, le=100)]
     source: list[str]
 
 
 class StrengthRules(_Row):
-    yield_safety_factor: Annotated[float, Field(ge=1)]
+    yield_safety_factor: Between(1.0, 20.0)
     source: list[str]
 
 
@@ -257,11 +278,11 @@ class MaterialsFile(_Row):
 
 class ElectricalSteelRow(_Row):
     grade: Annotated[str, Field(pattern=r"^\d{4}$")]
-    thickness_mm: Positive
+    thickness_mm: Between(0.01, 5.0)
     equivalent: str
-    p10_50_W_kg: Positive
-    p15_50_W_kg: Positive
-    p10_400_W_kg: Positive
+    p10_50_W_kg: Between(1e-3, 1e3)
+    p15_50_W_kg: Between(1e-3, 1e3)
+    p10_400_W_kg: Between(1e-3, 1e4)
     source: list[str]
     estimated: list[str] = []
 
@@ -285,12 +306,13 @@ class ElectricalSteelRow(_Row):
 
 # ---------------------------------------------------------------- rolling bearings
 class FrictionRow(_Row):
-    R1: Positive
-    R2: Positive
-    S1: Positive
-    S2: Positive
-    R3: Annotated[float, Field(ge=0, allow_inf_nan=False)] = 0.0
-    S3: Annotated[float, Field(ge=0, allow_inf_nan=False)] = 0.0
+    # SKF's constants of the frictional moment run from about 10⁻⁸ (R1) to about 10² (S2)
+    R1: Between(1e-12, 1e4)
+    R2: Between(1e-12, 1e4)
+    S1: Between(1e-12, 1e4)
+    S2: Between(1e-12, 1e4)
+    R3: Between(0.0, 1e4) = 0.0
+    S3: Between(0.0, 1e4) = 0.0
     source: str
 
 
@@ -299,6 +321,10 @@ class FrictionRow(_Row):
 #: solid steel ring of that envelope (the shipped rows weigh 0.65–0.72 of it).
 STEEL_DENSITY_KG_M3 = 7850.0
 
+#: The largest outer diameter of a rolling bearing a catalog row may give, mm (SKF's
+#: catalog ends near 2 m; slewing rings are not bearings of this table).
+BEARING_D_MAX_MM = 2000.0
+
 BEARING_ESTIMABLE = {"C_kN", "C0_kN", "f0", "ball_count", "ball_diameter_mm", "pitch_diameter_mm"}
 
 
@@ -306,20 +332,21 @@ class BearingRow(_Row):
     designation: Annotated[str, Field(min_length=1, max_length=40)]
     type: Literal["angular_contact", "deep_groove"]
     friction: str
-    d_mm: Positive
-    D_mm: Positive
-    B_mm: Positive
+    # from miniature bearings (bore 0.6 mm) to the largest of a catalog (D about 2 m)
+    d_mm: Between(0.5, BEARING_D_MAX_MM)
+    D_mm: Between(1.0, BEARING_D_MAX_MM)
+    B_mm: Between(0.1, 1e3)
     contact_angle_deg: Annotated[float, Field(ge=0, lt=90, allow_inf_nan=False)]
-    C_kN: Positive
-    C0_kN: Positive
-    Pu_kN: Positive | None = None
-    reference_speed_rpm: Positive | None = None
-    limiting_speed_rpm: Positive
-    mass_kg: Positive | None = None
-    f0: Positive | None = None
+    C_kN: Between(1e-3, 1e5)
+    C0_kN: Between(1e-3, 1e5)
+    Pu_kN: Between(1e-5, 1e5) | None = None
+    reference_speed_rpm: Between(1.0, 1e6) | None = None
+    limiting_speed_rpm: Between(1.0, 1e6)
+    mass_kg: Between(1e-5, 1e4) | None = None
+    f0: Between(1.0, 100.0) | None = None
     ball_count: Annotated[int, Field(ge=3, le=200)] | None = None
-    ball_diameter_mm: Positive | None = None
-    pitch_diameter_mm: Positive | None = None
+    ball_diameter_mm: Between(0.1, BEARING_D_MAX_MM) | None = None
+    pitch_diameter_mm: Between(0.5, BEARING_D_MAX_MM) | None = None
     source: list[str]
     estimated: list[str] = []
 
@@ -407,22 +434,22 @@ class BldcReferenceRow(_Row):
     """[reference] of catalogs/bldc_frames.toml: seed 000's frame and its estimates."""
 
     name: str
-    stator_outer_diameter_mm: Positive
-    stack_length_mm: Positive
-    torque_Nm: Positive
-    speed_rpm: Positive
-    stator_steel_area_mm2: Positive
-    phase_resistance_ohm: Positive
-    current_A: Positive
+    stator_outer_diameter_mm: Between(1.0, 1e4)
+    stack_length_mm: Between(1.0, 1e4)
+    torque_Nm: Between(1e-4, 1e5)
+    speed_rpm: Between(1.0, 2e5)
+    stator_steel_area_mm2: Between(1.0, 1e8)
+    phase_resistance_ohm: Between(1e-5, 1e4)
+    current_A: Between(1e-3, 1e5)
     magnet_losses: list[
         Annotated[
-            list[Annotated[float, Field(ge=0, allow_inf_nan=False)]],
+            list[Between(0.0, 2e5)],  # [speed rpm, loss W]
             Field(min_length=2, max_length=2),
         ]
     ]
-    rotor_inertia_kgm2: Positive
-    mass_kg: Positive
-    thermal_time_constant_s: Positive
+    rotor_inertia_kgm2: Between(1e-10, 1e4)
+    mass_kg: Between(1e-3, 1e5)
+    thermal_time_constant_s: Between(1.0, 1e6)
     estimated: list[str] = []
     source: list[str]
 
@@ -449,20 +476,20 @@ class BldcFrameRow(_Row):
     """A [[frame]] of catalogs/bldc_frames.toml (checked against the law by the loader)."""
 
     name: Annotated[str, Field(pattern=r"^BL\d{3}x\d{3}$")]
-    length_scale: Positive
-    stator_outer_diameter_mm: Positive
-    torque_Nm: Positive
-    speed_rpm: Positive
-    stack_length_mm: Positive
-    stator_steel_area_mm2: Positive
-    phase_resistance_ohm: Positive
-    current_A: Positive
-    rotor_inertia_kgm2: Positive
-    mass_kg: Positive
-    thermal_time_constant_s: Positive
+    length_scale: Between(1e-3, 1e3)
+    stator_outer_diameter_mm: Between(1.0, 1e4)
+    torque_Nm: Between(1e-4, 1e5)
+    speed_rpm: Between(1.0, 2e5)
+    stack_length_mm: Between(1.0, 1e4)
+    stator_steel_area_mm2: Between(1.0, 1e8)
+    phase_resistance_ohm: Between(1e-5, 1e4)
+    current_A: Between(1e-3, 1e5)
+    rotor_inertia_kgm2: Between(1e-10, 1e4)
+    mass_kg: Between(1e-3, 1e5)
+    thermal_time_constant_s: Between(1.0, 1e6)
     magnet_losses: list[
         Annotated[
-            list[Annotated[float, Field(ge=0, allow_inf_nan=False)]],
+            list[Between(0.0, 2e5)],  # [speed rpm, loss W]
             Field(min_length=2, max_length=2),
         ]
     ]
@@ -498,16 +525,16 @@ class BldcMotorRow(_Row):
     """A [[motor]] of a user's bldc_motors.toml: a datasheet's PM brushless motor."""
 
     name: Annotated[str, Field(min_length=1, max_length=60)]
-    continuous_torque_Nm: Positive
-    peak_torque_Nm: Positive
-    rated_speed_rpm: Annotated[float, Field(gt=0, le=2e5, allow_inf_nan=False)]
-    phase_resistance_ohm: Positive
-    torque_constant_Nm_A: Positive
-    rotor_inertia_kgm2: Positive
-    mass_kg: Positive
-    outer_diameter_mm: Positive
-    length_mm: Positive
-    thermal_time_constant_s: Positive
+    continuous_torque_Nm: Between(1e-4, 1e5)
+    peak_torque_Nm: Between(1e-4, 1e6)
+    rated_speed_rpm: Between(1.0, 2e5)
+    phase_resistance_ohm: Between(1e-5, 1e4)
+    torque_constant_Nm_A: Between(1e-4, 1e3)
+    rotor_inertia_kgm2: Between(1e-10, 1e4)
+    mass_kg: Between(1e-3, 1e5)
+    outer_diameter_mm: Between(1.0, 1e4)
+    length_mm: Between(1.0, 1e4)
+    thermal_time_constant_s: Between(1.0, 1e6)
     pole_pairs: Annotated[int, Field(ge=1, le=100)] = 4
     source: str
     estimated: list[str] = []

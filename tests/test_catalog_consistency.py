@@ -288,3 +288,110 @@ def test_an_impossible_bearing_is_refused(tmp_path, change, field):
 def test_the_bearing_row_without_a_flaw_loads(tmp_path):
     cat = _load_and_validate(_dir(tmp_path, BEARINGS_FILE, BEARING.replace("6211-test", "X1")))
     assert cat.bearing("X1").C_kN == 46.2
+
+
+# ------------------------------------------------------------------ physical bounds of a row
+BLDC = """[sources]
+acme = "ACME frameless kit datasheet"
+[[motor]]
+name = "ACME-K40"
+continuous_torque_Nm = 1.0
+peak_torque_Nm = 3.0
+rated_speed_rpm = 6000
+phase_resistance_ohm = 0.5
+torque_constant_Nm_A = 0.1
+rotor_inertia_kgm2 = 2e-5
+mass_kg = 0.3
+outer_diameter_mm = 40
+length_mm = 60
+thermal_time_constant_s = 400
+pole_pairs = 4
+source = "acme"
+"""
+
+
+@pytest.mark.parametrize(
+    ("name", "text", "change", "said"),
+    [
+        # GOST 24738-81 ends at Tr640: 1e300 overflowed the profile (OverflowError, exit 1)
+        (
+            THREADS_FILE,
+            THREAD.format(d=20, pitches=[4], preferred=4),
+            ("20", "1e300"),
+            "field d_mm = 1e+300: must be ≤ 640",
+        ),
+        # the largest bearing of a catalog is about 2 m across
+        (
+            BEARINGS_FILE,
+            BEARING,
+            ("D_mm = 100", "D_mm = 1e300"),
+            "field D_mm = 1e+300: must be ≤ 2000",
+        ),
+        # a denormal torque made the motor's current T/k_T overflow
+        (
+            "bldc_motors.toml",
+            BLDC,
+            ("continuous_torque_Nm = 1.0", "continuous_torque_Nm = 1e-300"),
+            "field continuous_torque_Nm = 1e-300: must be ≥ 0.0001",
+        ),
+        (
+            "bldc_motors.toml",
+            BLDC,
+            ("rated_speed_rpm = 6000", "rated_speed_rpm = 1e-300"),
+            "field rated_speed_rpm = 1e-300: must be ≥ 1",
+        ),
+        (
+            "bldc_motors.toml",
+            BLDC,
+            ("torque_constant_Nm_A = 0.1", "torque_constant_Nm_A = 1e-300"),
+            "field torque_constant_Nm_A = 1e-300: must be ≥ 0.0001",
+        ),
+        (
+            "bldc_motors.toml",
+            BLDC,
+            ("phase_resistance_ohm = 0.5", "phase_resistance_ohm = 5e-324"),
+            "field phase_resistance_ohm = 5e-324: must be ≥ 1e-05",
+        ),
+    ],
+)
+def test_a_field_beyond_its_physical_range_is_refused_naming_file_row_field(
+    tmp_path, capsys, name, text, change, said
+):
+    bad = text.replace(*change, 1)
+    assert bad != text
+    d = _dir(tmp_path, name, bad)
+    msg = _refusal(d)
+    assert name in msg and "row 1 (" in msg and said in msg, msg
+    # through the CLI: exit 2, one line, and the file is called a catalog
+    req = tmp_path / "r.toml"
+    req.write_text(LINEAR.read_text(encoding="utf-8"), encoding="utf-8")
+    assert main(["--batch", str(req), "--catalog-dir", str(d)]) == ExitCode.INVALID_INPUT
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and said in err and "requirement file" not in err
+
+
+@pytest.mark.parametrize("value", ['"5 kN"', "[]", "{}", "true", "1e300", "0"])
+def test_a_motor_catalogs_supply_frequency_must_be_a_number_in_range(tmp_path, value):
+    text = MOTOR.format(power=500, eff=95.0).replace(
+        "supply_frequency_Hz = 50", f"supply_frequency_Hz = {value}"
+    )
+    msg = _refusal(_dir(tmp_path, MOTORS_FILE, text))
+    assert MOTORS_FILE in msg and "supply_frequency_Hz = " in msg
+    assert "must be a number 1 … 1000 Hz" in msg
+
+
+def test_a_file_level_source_must_be_text(tmp_path):
+    text = THREAD.format(d=20, pitches=[4], preferred=4).replace(
+        'source = "a test plan"', "source = [1, 2]"
+    )
+    assert "source = [1, 2]: must be a string" in _refusal(_dir(tmp_path, THREADS_FILE, text))
+
+
+def test_a_fifo_given_as_a_catalog_is_called_a_catalog(tmp_path):
+    import os
+
+    d = tmp_path / "cat"
+    d.mkdir()
+    os.mkfifo(d / THREADS_FILE)
+    msg = _refusal(d)
+    assert "give a catalog file (.toml)" in msg and "requirement" not in msg

@@ -80,9 +80,9 @@ class RotarySegmentReq(_Segment):
     angle_deg: Annotated[
         float | None,
         _num(
-            gt=0,
+            ge=1e-3,
             le=1e7,
-            desc="angle of a move at the output, degrees (a move: required)",
+            desc="angle of a move at the output, 10⁻³ … 10⁷ degrees (a move: required)",
             label="angle",
             step=STEP,
         ),

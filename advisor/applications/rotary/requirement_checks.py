@@ -5,6 +5,17 @@ message the user reads."""
 
 from typing import Any
 
+from advisor.core.ranges import zero_or_from
+
+#: The smallest magnet loss taken as a loss; below it the loss is 0 (none) or a slip: the
+#: power law through two points takes the logarithm of their ratio, which a denormal loss
+#: makes 0 (a math domain error).
+MAGNET_LOSS_MIN_W = 1e-6
+
+
+def magnet_loss_zero_or_range(v: float) -> float:
+    return zero_or_from(v, MAGNET_LOSS_MIN_W, "1e+05 W")  # type: ignore[return-value]
+
 
 def one_loss_per_speed(ref: Any) -> None:
     speeds = [p.speed_rpm for p in ref.magnet_losses]

@@ -109,9 +109,10 @@ class OutputLoadReq(_Strict):
     speed_rpm: Annotated[
         float | None,
         _num(
-            gt=0,
+            ge=1e-3,
             le=1e4,
-            desc="output speed the bearing's life is counted at, > 0 … 10⁴ rpm; left out: "
+            desc="output speed the bearing's life is counted at, 10⁻³ … 10⁴ rpm (as "
+            "rotary.speed_rpm: slower, the life in hours is not finite); left out: "
             "the mean output speed of the duty cycle, or rotary.speed_rpm",
         ),
     ] = None
@@ -128,10 +129,11 @@ class OutputLoadReq(_Strict):
     bearing_spacing_mm: Annotated[
         float | None,
         _num(
-            gt=0,
+            ge=1,
             le=1e4,
             desc="distance between the two output bearings that take a tilting moment, "
-            "> 0 … 10⁴ mm; left out: one bearing takes the loads (no tilting moment)",
+            "1 … 10⁴ mm (a bearing is wider than 1 mm); left out: one bearing takes the loads "
+            "(no tilting moment)",
         ),
     ] = None
 
@@ -206,7 +208,17 @@ class EnvelopeReq(_Strict):
 
 class MagnetLossPoint(_Strict):
     speed_rpm: Annotated[float, _num(ge=1, le=2e5, desc="motor speed, 1 … 2·10⁵ rpm")]
-    loss_W: Annotated[float, _num(ge=0, le=1e5, desc="eddy-current loss in the magnets, 0 … 10⁵ W")]
+    loss_W: Annotated[
+        float,
+        _num(
+            ge=0,
+            le=1e5,
+            desc="eddy-current loss in the magnets, 0 (none) or 10⁻⁶ … 10⁵ W (a power law "
+            "runs through two losses; below a microwatt its exponent is not finite)",
+        ),
+    ]
+
+    _loss_zero_or_range = field_check("loss_W", checks.magnet_loss_zero_or_range)
 
 
 class ReferenceMotor(_Strict):
