@@ -90,3 +90,119 @@ def test_differences_of_plain_data():
         "warning: new, w2",
     ]
     assert differences(a, a) == []
+
+
+# ------------------------------------------------------------------ hostile reports
+#: The least a report diff reads: the header, one check, one decision, the warnings.
+MINIMAL = """warnings = ["w1"]
+
+[report]
+application = "linear"
+status = "feasible"
+
+[[checks]]
+id = "core_stress"
+value = 30.5
+limit = 118.3
+unit = "MPa"
+margin = 3.88
+
+[[decisions]]
+id = "SCR-01"
+decision = "a sliding screw"
+"""
+
+
+def _file(tmp_path, text: str, name: str = "r.toml"):
+    p = tmp_path / name
+    p.write_text(text, encoding="utf-8")
+    return p
+
+
+def test_a_minimal_report_is_read(tmp_path, capsys):
+    a = _file(tmp_path, MINIMAL)
+    assert main(["diff", str(a), str(a)]) == 0
+    assert capsys.readouterr().out == f"{a} and {a}: the same\n"
+
+
+@pytest.mark.parametrize(
+    ("old", "new", "says"),
+    [
+        ('warnings = ["w1"]', "warnings = 5", "warnings must be an array of text, not a number"),
+        ('warnings = ["w1"]', "warnings = [true]", "warnings[0] must be text, not a boolean"),
+        ('warnings = ["w1"]', "design = 5", "design must be a table, not a number"),
+        ('warnings = ["w1"]', "requirements = [1]", "requirements must be a table, not an array"),
+        ('warnings = ["w1"]\n', "", None),  # no warnings at all is a report with none
+        ('application = "linear"', "application = 5", "report.application must be text"),
+        ('status = "feasible"', "", "report.status is missing"),
+        ('status = "feasible"', "status = 1.5", "report.status must be text, not a number"),
+        ('id = "core_stress"', "id = [1]", "checks[0].id must be text, not an array"),
+        ('id = "core_stress"', "a = { b = 1 }", "checks[0].id is missing"),
+        ("margin = 3.88", 'margin = "x"', "checks[0].margin must be a number, not text"),
+        ("margin = 3.88", "margin = true", "checks[0].margin must be a number, not a boolean"),
+        ('unit = "MPa"', "unit = 5", "checks[0].unit must be text, not a number"),
+        ("value = 30.5", "value = [1]", "checks[0].value must be a number or text"),
+        ('id = "SCR-01"', "id = 1", "decisions[0].id must be text, not a number"),
+        ('decision = "a sliding screw"', "", "decisions[0].decision is missing"),
+    ],
+)
+def test_a_malformed_report_is_refused_in_one_line(tmp_path, capsys, old, new, says):
+    assert old in MINIMAL
+    good = _file(tmp_path, MINIMAL, "good.toml")
+    bad = _file(tmp_path, MINIMAL.replace(old, new, 1), "bad.toml")
+    for fmt in ("text", "md", "html"):
+        code = main(["diff", str(good), str(bad), "--format", fmt])
+        out, err = capsys.readouterr()
+        if says is None:
+            assert code == 1 and err == ""
+            continue
+        assert code == 2 and out == ""
+        assert err == f"advisor: {bad}: not a report of the advisor: {err.split(': ', 3)[3]}"
+        assert err.count("\n") == 1 and says in err
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        'checks = "x"\n[report]\napplication = "linear"\nstatus = "feasible"\n',
+        'checks = [{ a = { b = 1 } }]\n[report]\napplication = "linear"\nstatus = "feasible"\n',
+        'checks = [5]\n[report]\napplication = "linear"\nstatus = "feasible"\n',
+        'decisions = 5\n[report]\napplication = "linear"\nstatus = "feasible"\n',
+        "report = 5\n",
+    ],
+)
+def test_arrays_that_are_not_arrays_of_tables_are_refused(tmp_path, capsys, text):
+    good = _file(tmp_path, MINIMAL, "good.toml")
+    bad = _file(tmp_path, text, "bad.toml")
+    assert main(["diff", str(good), str(bad)]) == 2
+    out, err = capsys.readouterr()
+    assert out == "" and err.count("\n") == 1 and str(bad) in err
+
+
+def test_html_style_sheet_is_css_not_a_format_string(tmp_path, capsys):
+    a = _file(tmp_path, MINIMAL, "a.toml")
+    b = _file(tmp_path, MINIMAL.replace("margin = 3.88", "margin = 2.5"), "b.toml")
+    assert main(["diff", str(a), str(b), "--format", "html"]) == 1
+    out = capsys.readouterr().out
+    css = out.split("<style>", 1)[1].split("</style>", 1)[0]
+    assert "{{" not in css and "}}" not in css
+    assert css.count("{") == css.count("}") == 3
+    assert "body { font-family: sans-serif;" in css
+    assert "table { border-collapse: collapse; }" in css
+    # the check's row: margin 3.880 → 2.500, both with their values (30.5 against 118.3 MPa)
+    assert "<td>margin 3.880 (30.5 against 118.3 MPa)</td>" in out
+    assert "<td>margin 2.500 (30.5 against 118.3 MPa)</td>" in out
+
+
+HOSTILE = "a\\u001b[2Jb\\u0007c\\u0000d\\u202ee"  # ESC, BEL, NUL, right-to-left override
+
+
+@pytest.mark.parametrize("fmt", ["text", "html"])
+def test_control_characters_in_a_report_are_shown_escaped(tmp_path, capsys, fmt):
+    a = _file(tmp_path, MINIMAL, "a.toml")
+    b = _file(tmp_path, MINIMAL.replace('"w1"', f'"{HOSTILE}"'), "b.toml")
+    assert main(["diff", str(a), str(b), "--format", fmt]) == 1
+    out = capsys.readouterr().out
+    for raw in ("\x1b", "\x07", "\x00", "\u202e"):
+        assert raw not in out
+    assert "new warning: a\\x1b[2Jb\\x07c\\x00d\\u202ee" in out

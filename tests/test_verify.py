@@ -176,3 +176,143 @@ def test_report_paths():
         lookup(tree, "a.c")
     with pytest.raises(KeyError):
         lookup(tree, "a.b[id=z].v")
+
+
+# ------------------------------------------------------------------ hostile data and targets
+#: One direct calculation: seed 002's 4453 rad/s is 4453·30/π = 42523.2 rpm.
+ONE_CASE = """[[case]]
+id = "c1"
+title = "t"
+source = "s"
+where = "w"
+checked = "c"
+kind = "calc"
+function = "seed002_speed"
+inputs = { speed_rad_s = 4453 }
+
+[[case.quantity]]
+name = "n"
+key = "speed_rpm"
+published = 42523
+unit = "rpm"
+tolerance = 0.001
+"""
+
+
+def _data(tmp_path: Path, text: str, name: str = "data.toml") -> Path:
+    p = tmp_path / name
+    p.write_text(text, encoding="utf-8")
+    return p
+
+
+def test_a_one_case_set_verifies(tmp_path, capsys):
+    p = _data(tmp_path, ONE_CASE)
+    assert main(["verify", "--data", str(p)]) == 0
+    line = next(ln for ln in capsys.readouterr().out.splitlines() if ln.startswith("c1 "))
+    assert "42523" in line and "pass" in line
+
+
+def test_output_onto_the_data_itself_is_refused(tmp_path, capsys):
+    p = _data(tmp_path, ONE_CASE)
+    for target in (p, tmp_path / "." / "data.toml"):
+        assert main(["verify", "--data", str(p), "-o", str(target)]) == 2
+        out, err = capsys.readouterr()
+        assert out == ""
+        assert err.count("\n") == 1 and "is the verification data itself" in err
+    assert p.read_text(encoding="utf-8") == ONE_CASE
+    link = tmp_path / "link.toml"
+    link.symlink_to(p)
+    assert main(["verify", "--data", str(p), "-o", str(link)]) == 2
+    assert p.read_text(encoding="utf-8") == ONE_CASE
+
+
+def test_output_into_a_missing_folder_or_a_directory_is_one_line(tmp_path, capsys):
+    p = _data(tmp_path, ONE_CASE)
+    for target in (tmp_path / "nodir" / "x.txt", tmp_path):
+        assert main(["verify", "--data", str(p), "-o", str(target)]) == 2
+        err = capsys.readouterr().err
+        assert err.count("\n") == 1 and str(target) in err
+    assert sorted(x.name for x in tmp_path.iterdir()) == ["data.toml"]
+
+
+def test_output_is_written_atomically_and_said(tmp_path, capsys):
+    p = _data(tmp_path, ONE_CASE)
+    out = tmp_path / "v.txt"
+    out.write_text("old", encoding="utf-8")
+    out.chmod(0o640)
+    assert main(["verify", "--data", str(p), "-o", str(out)]) == 0
+    text = out.read_text(encoding="utf-8")
+    assert "c1 " in text and text.rstrip().endswith("verified")
+    assert out.stat().st_mode & 0o777 == 0o640  # an existing file keeps its mode
+    assert sorted(x.name for x in tmp_path.iterdir()) == ["data.toml", "v.txt"]  # no temp left
+    assert capsys.readouterr().out.endswith(f"(report: {out})\n")
+
+
+QUANTITY = ONE_CASE.split("[[case.quantity]]\n", 1)[1]
+
+
+@pytest.mark.parametrize(
+    ("text", "says"),
+    [
+        ("case = 5\n", "case must be an array of tables, not a number"),
+        ("case = [1]\n", "case[0] must be a table, not a number"),
+        (ONE_CASE.split("[[case.quantity]]")[0] + "quantity = 5\n", "case c1: quantity must be"),
+        (ONE_CASE.split("[[case.quantity]]")[0], "case c1: quantity is missing"),
+        (
+            ONE_CASE.replace("published = 42523", 'published = [1, 2]\nrelation = "<="'),
+            "case c1: quantity[0]: published must be a finite number or text, not an array",
+        ),
+        (
+            ONE_CASE.replace("published = 42523", 'published = "x"\nrelation = "<="'),
+            "case c1: quantity 'n': published must be a number with relation '<='",
+        ),
+        (ONE_CASE.replace("published = 42523", "published = nan"), "published must be a finite"),
+        (ONE_CASE.replace("tolerance = 0.001", "tolerance = -1"), "tolerance must be a finite"),
+        (ONE_CASE.replace("tolerance = 0.001", ""), "quantity 'n': tolerance (or abs_tolerance)"),
+        (ONE_CASE.replace('key = "speed_rpm"', ""), "quantity 'n': path (or key) is missing"),
+        (ONE_CASE.replace('unit = "rpm"', 'unit = "rpm"\nrelation = ">="'), None),  # a bound
+        (ONE_CASE.replace('unit = "rpm"', 'unit = "rpm"\nrelation = "<"'), "relation '<' is not"),
+        (ONE_CASE.replace('name = "n"', "name = 5"), "quantity[0]: name must be text"),
+        (ONE_CASE.replace('function = "seed002_speed"', 'function = "__init__"'), "'__init__'"),
+        (ONE_CASE.replace('function = "seed002_speed"', ""), "case c1: function is missing"),
+        (ONE_CASE.replace('kind = "calc"', 'kind = "x"'), "case c1: kind 'x' is not"),
+        (ONE_CASE.replace('kind = "calc"', 'kind = "requirement"'), "requirement is missing"),
+        (ONE_CASE.replace('id = "c1"', ""), "case[0]: id is missing"),
+        (ONE_CASE.replace('title = "t"', "title = 5"), "case c1: title must be text, not a"),
+        (ONE_CASE.replace("inputs = {", "inputs = 5\nx = {"), "case c1: inputs must be a table"),
+        (ONE_CASE + "departure = 5\n", "quantity[0]: departure must be a table"),
+        (ONE_CASE + "[case.quantity.departure]\nexpected = 1\n", "departure: reason is missing"),
+        (ONE_CASE + ONE_CASE, "case id 'c1' is not unique"),
+    ],
+)
+def test_malformed_data_is_one_line_naming_file_case_and_key(tmp_path, capsys, text, says):
+    p = _data(tmp_path, text)
+    code = main(["verify", "--data", str(p), "--list"])
+    out, err = capsys.readouterr()
+    if says is None:
+        assert code == 0 and out == "c1  t\n"
+        return
+    assert code == 2 and out == ""
+    assert err.startswith(f"advisor: {p}: ") and err.count("\n") == 1
+    assert says in err
+
+
+@pytest.mark.parametrize(
+    "text", ["", "[application]\nkind = 'rotary'\n", (ROOT / "examples" / "gyro_compensator.toml")]
+)
+def test_a_file_without_cases_is_refused(tmp_path, capsys, text):
+    p = text if isinstance(text, Path) else _data(tmp_path, text)
+    assert main(["verify", "--data", str(p)]) == 2
+    assert (
+        capsys.readouterr().err == f"advisor: no verification cases in {p} (no [[case]] tables)\n"
+    )
+
+
+def test_broken_toml_and_missing_data_name_the_file(tmp_path, capsys):
+    p = _data(tmp_path, "[[case]\n")
+    assert main(["verify", "--data", str(p)]) == 2
+    err = capsys.readouterr().err
+    assert err.startswith(f"advisor: {p}: broken TOML: ") and err.count("\n") == 1
+    assert main(["verify", "--data", str(tmp_path / "none.toml")]) == 2
+    err = capsys.readouterr().err
+    assert err == f"advisor: verification data {tmp_path / 'none.toml'}: no such file\n"
