@@ -27,6 +27,7 @@ import pytest
 from helpers import EXAMPLES
 
 from advisor.cli import main
+from advisor.core.errors import InputError
 from advisor.family import cli as family_cli
 from advisor.family.chunks import cell, neutral, rows_csv, run_chunk, uncell
 from advisor.family.spec import axis_values, parse_family, read_family
@@ -443,12 +444,13 @@ def test_designs_csv_of_hostile_names_and_values(tmp_path):
     text = rows_csv(res.rows, columns(family))
     raw = list(csv.reader(io.StringIO(text)))
     assert [r[1] for r in raw[1:]] == ["'" + hyperlink, "'" + hyperlink, "'@SUM(A1)"]
-    assert [r[3] for r in raw[1:]] == ["'+3500 N", "2000", ""]  # the number as it was
+    # the axis column holds the number the variant was advised with, not the typed string
+    assert [r[3] for r in raw[1:]] == ["3500.0", "2000", ""]
     assert {r[raw[0].index("status")] for r in raw[1:]} == {"design"}
     (tmp_path / "designs.csv").write_text(text, encoding="utf-8")
     rows = read_rows(tmp_path / "designs.csv")
     assert [r["member"] for r in rows] == [hyperlink, hyperlink, "@SUM(A1)"]
-    assert rows[0]["linear.force_N"] == "+3500 N"
+    assert rows[0]["linear.force_N"] == "3500.0"
 
 
 # ------------------------------------------------------------------ quiet
@@ -688,3 +690,58 @@ def test_killed_worker_then_ctrl_c_then_two_identical_studies_at_once(tmp_path):
         "@SUM(A1)",
         "units",
     ]
+
+
+# ------------------------------------------------------------------ hostile review, round 2
+
+
+def test_an_axis_of_one_value_in_two_spellings_is_refused_naming_the_axis():
+    # 1 kN·m = 1000 N·m: converted before the duplicates are looked for (it gave two
+    # identical variants); a value that is no quantity of the unit stays for the requirement
+    with pytest.raises(InputError) as e:
+        axis_values("rotary.torque_Nm", ["1 kN*m", 1000])
+    msg = str(e.value)
+    assert "family axis 'rotary.torque_Nm'" in msg and "'1 kN*m' and 1000" in msg
+    assert axis_values("rotary.torque_Nm", ["1 kN*m", 500]).values == (1000.0, 500)
+    assert axis_values("linear.stroke_m", ["200 mm"]).values == (0.2,)
+    assert axis_values("output_load.bearing", ["6309", "auto"]).values == ("6309", "auto")
+
+
+def test_control_characters_of_a_member_name_are_escaped_in_designs_csv(tmp_path):
+    fam = tmp_path / "f.toml"
+    fam.write_text(
+        '[family]\n[[family.members]]\nname = "a\\u001b[2Jb\\u0007"\n'
+        f"base = '{EXAMPLES / 'linear_screw_actuator.toml'}'\n"
+        "[family.members.axes]\n'linear.travel_time_s' = [5]\n",
+        encoding="utf-8",
+    )
+    family = read_family(fam)
+    assert family.members[0].name == "a\x1b[2Jb\x07"
+    text = rows_csv(run_chunk(family, 0, 0, 1, None, False).rows)
+    assert "\x1b" not in text and "\x07" not in text
+    assert next(csv.reader(io.StringIO(text)))[1] == "a\\x1b[2Jb\\x07"
+    assert cell("tab\there") == "tab\\there"
+
+
+def test_workers_above_the_usable_cpus_are_capped_and_said(capsys, monkeypatch):
+    monkeypatch.setattr("advisor.many.usable_cpus", lambda: 2)
+    assert family_cli.cap_workers(2) == 2 and capsys.readouterr().err == ""
+    assert family_cli.cap_workers(100000) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert err == ["advisor: --workers 100000: capped at 2, the CPUs this process may use"]
+
+
+def test_a_refused_scheduler_connection_is_said_at_once(tmp_path, capsys):
+    """It took about 22 s (Dask's client retried for its 20 s timeout) before exit 2."""
+    with socket.socket() as s:  # a port nothing listens on: bound, never listening
+        s.bind(("127.0.0.1", 0))
+        port = s.getsockname()[1]
+        fam = family_file(tmp_path / "f.toml", '"rotary.speed_rpm" = [2, 5]')
+        t0 = time.monotonic()
+        line = refused(
+            capsys,
+            [str(fam), "--out", str(tmp_path / "o"), "--scheduler", f"tcp://127.0.0.1:{port}"],
+            f"--scheduler tcp://127.0.0.1:{port}: nothing answered",
+        )
+        assert time.monotonic() - t0 < family_cli.CONNECT_TIMEOUT_S, line
+    assert not (tmp_path / "o").exists()

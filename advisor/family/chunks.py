@@ -14,6 +14,7 @@ from typing import Any, NamedTuple
 from advisor.family.adapter import advise_one
 from advisor.family.outputs import COLUMNS, key_outputs
 from advisor.family.spec import Family
+from advisor.io_safety import printable
 
 HEAD = ("variant", "member", "application")
 TAIL = ("status", "exit_code", "reason")
@@ -63,7 +64,9 @@ def cell(value: Any) -> str:
         return str(value)
     if isinstance(value, list | dict):
         return neutral(json.dumps(value))
-    return neutral(str(value))
+    # a control character (a member named "a\x1b[2Jb") is written escaped: raw, it would
+    # reach a terminal that shows the CSV, or end a row in a reader that splits lines
+    return neutral(printable(str(value), newlines=False))
 
 
 def report_name(index: int) -> str:

@@ -115,6 +115,44 @@ def check_options(args: argparse.Namespace) -> None:
         check_scheduler(args.scheduler)
 
 
+def cap_workers(workers: int) -> int:
+    """``--workers`` at most the CPUs this process may use, as ``--batch -j`` is capped: more
+    worker processes than CPUs only share them, and each holds its own interpreter (100 000
+    of them never start and fill the memory). A capped value is said in one line."""
+    from advisor.many import usable_cpus
+
+    cpus = usable_cpus()
+    if workers <= cpus:
+        return workers
+    _err(f"--workers {workers}: capped at {cpus}, the CPUs this process may use")
+    return cpus
+
+
+#: Seconds an explicit --scheduler has to answer before the run is refused: a scheduler
+#: on the network answers in milliseconds; Dask's own default waits 30 s.
+CONNECT_TIMEOUT_S = 5.0
+
+
+def probe_scheduler(address: str, timeout_s: float = CONNECT_TIMEOUT_S) -> None:
+    """Refuse at once (an :class:`InputError`) a scheduler address nothing answers at: a TCP
+    connection within ``timeout_s``, before Dask's client retries for its own timeout."""
+    import socket
+
+    m = _ADDRESS.fullmatch(address)
+    if m is None:  # check_scheduler has refused it already
+        return
+    host, port = m.group(1).strip("[]"), int(m.group(2))
+    try:
+        socket.create_connection((host, port), timeout=timeout_s).close()
+    except TimeoutError:
+        raise InputError(
+            f"--scheduler {address}: nothing answered within {timeout_s:g} s"
+        ) from None
+    except OSError as exc:
+        why = exc.strerror or type(exc).__name__
+        raise InputError(f"--scheduler {address}: nothing answered ({why})") from None
+
+
 #: What a study writes into DIR: files, then folders.
 RESULT_FILES = ("designs.csv", "summary.toml", "family.html")
 RESULT_DIRS = ("chunks", "reports")
@@ -277,7 +315,8 @@ def make_client(scheduler: str | None, workers: int | None) -> tuple[Any, Any]:
         from dask.distributed import Client
     quiet_dask_logging()
     if scheduler:
-        return Client(scheduler, timeout="20s"), None
+        probe_scheduler(scheduler)
+        return Client(scheduler, timeout=f"{CONNECT_TIMEOUT_S:g}s"), None
     cluster = client = None
     try:
         with sigint_blocked_in_new_threads():
@@ -298,8 +337,10 @@ def local_cluster(workers: int | None) -> Any:
 
     from dask.distributed import LocalCluster
 
+    from advisor.many import usable_cpus
+
     return LocalCluster(
-        n_workers=workers or os.cpu_count() or 1,
+        n_workers=workers or usable_cpus(),
         threads_per_worker=1,
         processes=True,
         dashboard_address=None,  # no dashboard
@@ -338,6 +379,8 @@ def _run(args: argparse.Namespace) -> int:
     from advisor.family.spec import DEFAULT_MAX_VARIANTS, read_family
 
     check_options(args)
+    if args.workers is not None:
+        args.workers = cap_workers(args.workers)
     # every error of the family file is raised here, before any work (its size first)
     family = read_family(args.family, args.max_variants or DEFAULT_MAX_VARIANTS)
     if args.catalog_dir is not None:

@@ -166,22 +166,45 @@ def _round6(x: float) -> float:
     return round(x, 5 - math.floor(math.log10(abs(x))))
 
 
+def _in_unit(key: str, v: Any) -> Any:
+    """An axis value as the batch reads it: a quantity string (``"1 kN*m"``) converted to
+    the unit the key names (``rotary.torque_Nm`` → N·m) by :func:`advisor.core.units.to_unit`,
+    the converter of the requirement models; anything else (a number, a designation such as
+    ``"6309"`` or ``"auto"``, a string that is no quantity of that unit) as given, for the
+    requirement to judge per variant."""
+    if not isinstance(v, str):
+        return v
+    from advisor.core.questions import unit_of
+    from advisor.core.units import UnitError, to_unit
+
+    unit = unit_of(key.rsplit(".", 1)[-1])
+    if not unit:
+        return v
+    try:
+        return to_unit(v, unit)
+    except UnitError:
+        return v
+
+
 def axis_values(key: str, spec: Any) -> Axis:
     """The values of one axis: a list as given, or a range ``{from, to, steps, scale}``."""
     where = f"family axis {key!r}"
     if isinstance(spec, list):
         if not spec:
             raise InputError(f"{where}: empty list; give at least one value")
+        typed, spec = spec, [_in_unit(key, v) for v in spec]  # "1 kN*m" and 1000 are one
         seen: dict[Any, int] = {}
         for i, v in enumerate(spec):
             if isinstance(v, float) and not math.isfinite(v):
                 raise InputError(f"{where}: value {v!r}: must be a finite number")
-            first = spec[seen.setdefault(_same_key(v), i)]
-            if seen[_same_key(v)] != i:
+            j = seen.setdefault(_same_key(v), i)
+            if j != i:
+                first, again = typed[j], typed[i]
                 twice = (
-                    f"{_show(v)} appears twice"
-                    if repr(first) == repr(v)
-                    else f"{_show(first)} and {_show(v)} are the same value"
+                    f"{_show(again)} appears twice"
+                    if repr(first) == repr(again)
+                    else f"{_show(first)} and {_show(again)} are the same value"
+                    + (f" ({_show(v)})" if isinstance(first, str) or isinstance(again, str) else "")
                 )
                 raise InputError(f"{where}: {twice}; give each value once")
         return Axis(key, tuple(spec), "list")
