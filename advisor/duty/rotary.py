@@ -519,6 +519,7 @@ def output_loads(req, q: float, eta: float, speed_rpm: float, frame: Frame, hold
 
     duty, rot = req.duty, req.rotary
     p_dev = holder.passage
+
     def carried(m_out: float) -> float:
         """What the reducer's output carries for a load-side torque: the torque itself, or
         through a device at the output its input torque (seed 004: T/η_d while driving, the
