@@ -631,3 +631,14 @@ def test_the_html_datasheet_shows_control_characters_escaped():
     page = render(advise(parse_requirements(doc)), "html")
     assert not any(ch in page for ch in "\x1b\x00\u202e\x07")
     assert "A\\x1b[2J\\x00B\\u202eC" in page
+
+
+def test_at_the_working_point_the_reducer_delivers_what_an_output_device_asks():
+    """No duty cycle: the braking-profile gear (η 0.45) at the output asks 1000/0.45 =
+    2222.2 N·m of the reducer's output stage, which is sized for it."""
+    doc = tomllib.loads((EXAMPLES / "valve_actuator_hold.toml").read_text(encoding="utf-8"))
+    doc["one_way"] = {"type": "inverse_gear", "location": "output_side"}
+    doc["motor"]["frame"] = "auto"
+    load = report(doc)["design"]["reducer_load"]
+    assert load["mean_torque_Nm"] == pytest.approx(1000.0 / 0.45, rel=1e-5)
+    assert load["rated_torque_Nm"] == pytest.approx(1000.0 / 0.45, rel=1e-5)

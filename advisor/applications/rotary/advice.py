@@ -602,7 +602,8 @@ def _reviewer_checks(req, cat, design: rd.Reducer, speed: float, frame_for, sf) 
     else:
         from advisor.calc.load_spectrum import Load
 
-        spectrum = [Load(req.rotary.torque_Nm, req.rotary.speed_rpm, 1.0)]
+        # the torque the output stage delivers: through a device at the output, M/η_d
+        spectrum = [Load(reducer_output_torque(req), req.rotary.speed_rpm, 1.0)]
         regeneration, basis = None, "working point (rotary.torque_Nm at rotary.speed_rpm)"
     rolling = req.gearbox.rolling_body
     reducer_load, checks, warnings = loads.reducer_load(req, design, spectrum, basis, sf, rolling)
