@@ -11,7 +11,7 @@ from typing import Any
 
 from advisor import __version__
 from advisor.core.errors import InfeasibleError
-from advisor.core.report import CheckOut, Report, ReportHeader, _Out
+from advisor.core.report import Report, ReportHeader, _Out
 
 
 class InfeasibleOut(_Out):
@@ -44,25 +44,10 @@ def shortfall(name: str, value: float, limit: float, unit: str, margin: float) -
 
 def infeasible_report(req: Any, exc: InfeasibleError) -> Report:
     """The report of a requirement no design satisfies (``status = "infeasible"``)."""
-    from advisor.core.cite import Cite, text
+    from advisor.core.report import check_out
 
-    checks = []
-    for c in exc.checks:
-        # the ids as they are: the catalogs' short names are not loaded again for this
-        source = text(c.source, {}) if isinstance(c.source, Cite) else str(c.source)
-        checks.append(
-            CheckOut.make(
-                id=c.id,
-                name=c.name,
-                value=c.value,
-                limit=c.limit,
-                unit=c.unit,
-                margin=c.margin,
-                passed=c.passed,
-                source=source,
-                sources=c.source.ids if isinstance(c.source, Cite) else [],
-            )
-        )
+    # the ids as they are: the catalogs' short names are not loaded again for this
+    checks = [check_out(c, {}) for c in exc.checks]
     failing = [c for c in checks if not c.passed]
     return Report.make(
         report=ReportHeader.make(

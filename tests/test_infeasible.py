@@ -123,3 +123,16 @@ def test_the_wizard_says_what_the_report_says():
     assert "Nearest: Tr16x2 + 4A71B4" in text
     assert shortfall(check.name, 15.0, 10.0, "", check.margin) in text
     assert "50 % more capacity, or 33 % less demand" in text
+
+
+def test_an_infeasible_report_keeps_a_checks_service_factor():
+    """A failing strength check under f_B = 1.5 (3500 N × 1.5 against 3707 N: margin
+    3707/5250 = 0.706) keeps its factor in the infeasible report, as in a design's."""
+    req = read_requirements(EXAMPLE)
+    check = Check(
+        "buckling", "buckling", 3500.0, 3707.0, "N", 3707.0 / 5250.0, cite("seed-001"), 1.5
+    )
+    exc = InfeasibleError("no feasible design: the chosen parts fail checks", ["x"], checks=[check])
+    out = infeasible_report(req, exc).checks[0]
+    assert out.factor == 1.5 and out.margin == pytest.approx(0.706, abs=5e-4)
+    assert out.sources == ["seed-001"]

@@ -10,7 +10,7 @@ from advisor.core import registry
 from advisor.core.cite import Cite, cited_ids, note, text
 from advisor.core.errors import InfeasibleError
 from advisor.core.reading import Requirements
-from advisor.core.report import CheckOut, DecisionOut, Report, ReportHeader, SourceOut
+from advisor.core.report import DecisionOut, Report, ReportHeader, SourceOut, check_out
 from advisor.core.rulebook import Trace
 from advisor.ignored import ignored
 from catalogs import load_catalogs
@@ -73,21 +73,7 @@ def advise_with(req: Requirements, cat) -> Report:
         ),
         requirements=req.model_dump(exclude_none=True),
         design=design,
-        checks=[
-            CheckOut.make(
-                id=c.id,
-                name=c.name,
-                value=c.value,
-                limit=c.limit,
-                unit=c.unit,
-                margin=c.margin,
-                passed=c.passed,
-                source=text(c.source, short),
-                sources=c.source.ids,
-                factor=getattr(c, "factor", None),
-            )
-            for c in checks
-        ],
+        checks=[check_out(c, short) for c in checks],
         warnings=[*ignored(req), *warnings],
         decisions=[
             DecisionOut.make(

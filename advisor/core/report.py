@@ -110,6 +110,26 @@ class CheckOut(_Out):
     factor: float | None = None
 
 
+def check_out(c: Any, short: dict[str, str]) -> CheckOut:
+    """A check's report table: its numbers, its verdict and its sources in words (``short``:
+    the catalogs' short names of the bibliography ids; an empty map keeps the ids)."""
+    from advisor.core.cite import Cite, text
+
+    cited = isinstance(c.source, Cite)
+    return CheckOut.make(
+        id=c.id,
+        name=c.name,
+        value=c.value,
+        limit=c.limit,
+        unit=c.unit,
+        margin=c.margin,
+        passed=c.passed,
+        source=text(c.source, short) if cited else str(c.source),
+        sources=c.source.ids if cited else [],
+        factor=getattr(c, "factor", None),
+    )
+
+
 class DecisionOut(_Out):
     id: str
     title: str
