@@ -291,68 +291,31 @@ def _fit(req: Requirements, cat: Catalogs, ref, params, data, speeds: list[float
     # the frame's limit is thermal: a speed is a candidate only if its losses are carried
     limit, basis = bm.loss_limit(mot, steel, steel_mass, terms, ref)
     frame_for = None
+
+    def fit(passing: list[dict], error: InfeasibleError | None = None) -> _Fit:
+        args = (ref, steel, steel_mass, terms, reducible, passing, limit, basis, f_opt, n_opt)
+        return _Fit(*args, frame_for, error)
+
     within = [c for c in reducible if bl_rules.within_limit(c["losses"]["total"], limit)]
     if getattr(ref, "kind", "") == "catalog":  # no core-loss data above the rated speed
         within = [c for c in within if c["speed_rpm"] <= ref.speed_rpm * (1 + 1e-9)]
         if not within and reducible:
-            return _Fit(
-                ref,
-                steel,
-                steel_mass,
-                terms,
-                reducible,
-                [],
-                limit,
-                basis,
-                f_opt,
-                n_opt,
-                None,
-                bm.above_rated(reducible, ref),
-            )
+            return fit([], bm.above_rated(reducible, ref))
     if not within:
-        err = _too_lossy(reducible, limit, basis, n_opt, gb.choice, _device_note(req))
-        return _Fit(
-            ref, steel, steel_mass, terms, reducible, [], limit, basis, f_opt, n_opt, None, err
-        )
-    passing = within
-    if req.duty is not None:  # issue 15: only the speeds whose motor passes the cycle
-        from advisor.duty import rotary as dr
+        return fit([], _too_lossy(reducible, limit, basis, n_opt, gb.choice, _device_note(req)))
+    if req.duty is None:
+        return fit(within)
+    from advisor.duty import rotary as dr  # only the speeds whose motor passes the cycle
 
-        frame_for = dr.frames(ref, steel, steel_mass, terms, limit, data)
-        offered = reducible if getattr(ref, "kind", "") != "catalog" else within
-        try:
-            passing = dr.passing_speeds(
-                req, offered, frame_for, lambda c: _holder(req, c["q_total"], c["eta"]), limit
-            )
-        except InfeasibleError as exc:
-            return _Fit(
-                ref,
-                steel,
-                steel_mass,
-                terms,
-                reducible,
-                [],
-                limit,
-                basis,
-                f_opt,
-                n_opt,
-                frame_for,
-                exc,
-            )
-    return _Fit(
-        ref,
-        steel,
-        steel_mass,
-        terms,
-        reducible,
-        passing,
-        limit,
-        basis,
-        f_opt,
-        n_opt,
-        frame_for,
-        None,
-    )
+    frame_for = dr.frames(ref, steel, steel_mass, terms, limit, data)
+    offered = reducible if getattr(ref, "kind", "") != "catalog" else within
+    try:
+        passing = dr.passing_speeds(
+            req, offered, frame_for, lambda c: _holder(req, c["q_total"], c["eta"]), limit
+        )
+    except InfeasibleError as exc:
+        return fit([], exc)
+    return fit(passing)
 
 
 def _best_words(fit: _Fit) -> str:
