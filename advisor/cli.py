@@ -83,7 +83,7 @@ def build_parser() -> argparse.ArgumentParser:
     return p
 
 
-def _err(message: str) -> None:
+def print_error(message: str) -> None:
     """Each line of ``message`` on stderr after the program name: controls escaped, at most
     :data:`LINE_CHARS` characters (a message never floods the terminal)."""
     from advisor.io_safety import clip, printable
@@ -114,7 +114,7 @@ def _silence_stdout() -> None:
 
 def _stdout_failed(exc: OSError, what: str, after: str = "it is incomplete") -> int:
     _silence_stdout()
-    _err(f"standard output: cannot write {what} ({exc.strerror or exc}); {after}")
+    print_error(f"standard output: cannot write {what} ({exc.strerror or exc}); {after}")
     return ExitCode.INVALID_INPUT
 
 
@@ -124,7 +124,7 @@ def _warn_ignored(warnings: list[str], source: Path | None = None) -> None:
 
     for w in warnings:
         if w.startswith(IGNORED_PREFIX):
-            _err(f"{source}: warning: {w}" if source is not None else f"warning: {w}")
+            print_error(f"{source}: warning: {w}" if source is not None else f"warning: {w}")
 
 
 def run_batch(
@@ -170,11 +170,11 @@ def run_batch(
         try:
             text = render(report, fmt)
         except MissingExtra as exc:
-            _err(str(exc))
+            print_error(str(exc))
             return ExitCode.INVALID_INPUT
     done = ExitCode.OK if infeasible is None else ExitCode.INFEASIBLE
     if infeasible is not None:
-        _err(str(infeasible))
+        print_error(str(infeasible))
     if output is None:
         try:
             sys.stdout.write(text)
@@ -189,7 +189,9 @@ def run_batch(
     except OutputError:
         raise
     except OSError as exc:
-        _err(f"{show(output, 200)}: cannot write the report ({exc.strerror}); nothing was written")
+        print_error(
+            f"{show(output, 200)}: cannot write the report ({exc.strerror}); nothing was written"
+        )
         return ExitCode.INVALID_INPUT
     from advisor.summary import print_summary
 
@@ -213,21 +215,21 @@ def run_many(inputs: list[Path], out_dir: Path, catalog_dir: Path | None, jobs: 
 
     missing = [p for p in inputs if not p.exists()]
     if missing:
-        _err(f"{show(missing[0], 200)}: no such file or directory")
+        print_error(f"{show(missing[0], 200)}: no such file or directory")
         return ExitCode.INVALID_INPUT
     try:
-        worst, outcomes = many.run_many(inputs, out_dir, catalog_dir, jobs, notify=_err)
+        worst, outcomes = many.run_many(inputs, out_dir, catalog_dir, jobs, notify=print_error)
     except many.Interrupted as exc:
-        _err(
+        print_error(
             f"interrupted; {exc.written} of {exc.total} reports were written to "
             f"{show(out_dir, 200)}"
         )
         return 130
     except OSError as exc:
-        _err(f"{show(out_dir, 200)}: cannot write reports there ({exc.strerror})")
+        print_error(f"{show(out_dir, 200)}: cannot write reports there ({exc.strerror})")
         return ExitCode.INVALID_INPUT
     if not outcomes:
-        _err("no requirement files (*.toml) among the inputs")
+        print_error("no requirement files (*.toml) among the inputs")
         return ExitCode.INVALID_INPUT
     try:
         many.print_summary(outcomes, out_dir)
@@ -241,7 +243,7 @@ def run_many(inputs: list[Path], out_dir: Path, catalog_dir: Path | None, jobs: 
     for o, name in zip(outcomes, names, strict=True):
         if o.code != ExitCode.OK:
             for line in (o.headline, *o.messages):
-                _err(f"{name}: {line.strip()}")
+                print_error(f"{name}: {line.strip()}")
         else:
             _warn_ignored(list(o.messages), Path(name))
     return worst
@@ -250,7 +252,7 @@ def run_many(inputs: list[Path], out_dir: Path, catalog_dir: Path | None, jobs: 
 def run_wizard(path: Path | None, catalog_dir: Path | None) -> int:
     """``advisor`` / ``advisor REQ.toml``: the terminal wizard (textual is imported here only)."""
     if path is not None and not path.is_file():
-        _err(f"{path}: no such file" if not path.exists() else f"{path}: not a file")
+        print_error(f"{path}: no such file" if not path.exists() else f"{path}: not a file")
         return ExitCode.INVALID_INPUT
     if path is not None:  # a file that cannot be read is said first, terminal or not
         from advisor.io_safety import read_toml
@@ -258,7 +260,7 @@ def run_wizard(path: Path | None, catalog_dir: Path | None) -> int:
         read_toml(path)
     if not (_is_terminal(sys.stdin) and _is_terminal(sys.stdout)):
         # a wizard on a pipe would wait for keys that never come (and spin the CPU)
-        _err(
+        print_error(
             "the wizard needs a terminal (standard input and output are not one); "
             "for a report without it: advisor --batch REQ.toml"
         )
@@ -304,22 +306,24 @@ def main(argv: list[str] | None = None) -> int:
     try:
         return _dispatch(args)
     except InfeasibleError as exc:
-        _err(str(exc))
+        print_error(str(exc))
         return ExitCode.INFEASIBLE
     except AdvisorError as exc:
-        _err(str(exc))
+        print_error(str(exc))
         return exc.exit_code
     except BrokenPipeError:  # `advisor --batch r.toml | head`: the reader left; not an error
         _silence_stdout()
         return ExitCode.OK
     except KeyboardInterrupt:
-        _err("interrupted; nothing was written")
+        print_error("interrupted; nothing was written")
         return 130
     except RecursionError:  # a guard missed some deep structure: still one line, exit 2
-        _err("the input is nested too deeply to be read")
+        print_error("the input is nested too deeply to be read")
         return ExitCode.INVALID_INPUT
     except Exception as exc:  # a bug: say so in one line, never a traceback
-        _err(f"internal error ({type(exc).__name__}: {exc}); please report it with the input file")
+        print_error(
+            f"internal error ({type(exc).__name__}: {exc}); please report it with the input file"
+        )
         return ExitCode.INTERNAL_ERROR
 
 
@@ -358,20 +362,22 @@ def _run_subcommand(sub: Any, argv: list[str]) -> int:
         _silence_stdout()
         return ExitCode.OK
     except AdvisorError as exc:
-        _err(str(exc))
+        print_error(str(exc))
         return exc.exit_code
     except KeyboardInterrupt:
-        _err("interrupted")
+        print_error("interrupted")
         return 130
     except OSError as exc:
         if exc.filename is None:  # a write to stdout (/dev/full, an I/O error)
             return _stdout_failed(exc, "the output")
         from advisor.io_safety import show
 
-        _err(f"{show(exc.filename, 200)}: {exc.strerror or exc}")
+        print_error(f"{show(exc.filename, 200)}: {exc.strerror or exc}")
         return ExitCode.INVALID_INPUT
     except Exception as exc:  # a bug: say so in one line, never a traceback
-        _err(f"internal error ({type(exc).__name__}: {exc}); please report it with the input file")
+        print_error(
+            f"internal error ({type(exc).__name__}: {exc}); please report it with the input file"
+        )
         return ExitCode.INTERNAL_ERROR
 
 
@@ -397,25 +403,27 @@ def _dispatch(args: argparse.Namespace) -> int:
         ]
         if batch_only:  # without --batch the wizard would open and the option do nothing
             name = args.requirements if args.requirements is not None else "REQ.toml"
-            _err(
+            print_error(
                 f"{', '.join(batch_only)}: only with --batch (advisor --batch {name} …); "
                 "without --batch the wizard opens"
             )
             return ExitCode.INVALID_INPUT
         return run_wizard(args.requirements, args.catalog_dir)
     if args.jobs < 1:
-        _err(f"-j/--jobs = {args.jobs}: must be at least 1")
+        print_error(f"-j/--jobs = {args.jobs}: must be at least 1")
         return ExitCode.INVALID_INPUT
     many = len(inputs) > 1 or inputs[0].is_dir() or args.out_dir is not None
     if many:
         if args.output is not None:
-            _err("-o/--output takes one input; with several use --out-dir DIR")
+            print_error("-o/--output takes one input; with several use --out-dir DIR")
             return ExitCode.INVALID_INPUT
         if args.out_dir is None:
-            _err("several inputs (or a directory) need --out-dir DIR for their reports")
+            print_error("several inputs (or a directory) need --out-dir DIR for their reports")
             return ExitCode.INVALID_INPUT
         if args.format not in (None, "toml"):
-            _err(f"--format {args.format} takes one input; with --out-dir the reports are TOML")
+            print_error(
+                f"--format {args.format} takes one input; with --out-dir the reports are TOML"
+            )
             return ExitCode.INVALID_INPUT
         return run_many(inputs, args.out_dir, args.catalog_dir, args.jobs)
     return run_batch(inputs[0], args.output, args.catalog_dir, args.format)

@@ -342,9 +342,9 @@ def main(argv: list[str]) -> int:
     try:
         a, b = read_report(args.a), read_report(args.b)
     except AdvisorError as exc:
-        from advisor.cli import _err
+        from advisor.cli import print_error
 
-        _err(str(exc).splitlines()[0] if str(exc) else "bad input")
+        print_error(str(exc).splitlines()[0] if str(exc) else "bad input")
         return ExitCode.INVALID_INPUT
     changes = differences(a, b)
     face = {"text": as_text, "md": as_markdown, "html": as_html}[args.format]

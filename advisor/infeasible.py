@@ -11,15 +11,15 @@ from typing import Any
 
 from advisor import __version__
 from advisor.core.errors import InfeasibleError
-from advisor.core.report import Report, ReportHeader, _Out
+from advisor.core.report import Report, ReportHeader, ReportTable
 
 
-class InfeasibleOut(_Out):
+class InfeasibleOut(ReportTable):
     """Why there is no design: the advice's summary, its reasons, the nearest candidate
     and, per failing check, what it would take."""
 
     summary: str
-    reasons: list[str] = []  # noqa: RUF012  (an _Out copies its defaults, see report.py)
+    reasons: list[str] = []  # noqa: RUF012  (an ReportTable copies its defaults, see report.py)
     nearest: str | None = None
     to_be_feasible: list[str] = []  # noqa: RUF012
 

@@ -270,9 +270,9 @@ def test_closed_pipe_is_quiet():
 
 
 def test_a_long_message_line_is_cut_to_the_stated_width(capsys):
-    from advisor.cli import LINE_CHARS, _err
+    from advisor.cli import LINE_CHARS, print_error
 
-    _err("x" * 1000)
+    print_error("x" * 1000)
     line = capsys.readouterr().err.rstrip("\n")
     assert len(line) == LINE_CHARS, line
     assert line.startswith("advisor: xxx") and line.endswith("… (1,000 characters)")

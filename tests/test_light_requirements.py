@@ -308,15 +308,15 @@ def _refusable_models() -> list:
         model_validator,
     )
 
-    from advisor.core.requirements import _Strict
+    from advisor.core.requirements import StrictModel
 
-    class Alias(_Strict):
+    class Alias(StrictModel):
         x: Annotated[float, Field(validation_alias="y")] = 1.0
 
-    class LiteralLength(_Strict):
+    class LiteralLength(StrictModel):
         x: Annotated[Literal["a", "bb"], Field(max_length=1)] = "a"
 
-    class Star(_Strict):
+    class Star(StrictModel):
         x: float = 1.0
 
         @field_validator("*")
@@ -324,18 +324,18 @@ def _refusable_models() -> list:
         def _any(cls, v):
             return v
 
-    class StrMax(_Strict):
+    class StrMax(StrictModel):
         model_config = ConfigDict(str_max_length=3)
         x: str = ""
 
-    class Strip(_Strict):
+    class Strip(StrictModel):
         model_config = ConfigDict(str_strip_whitespace=True)
         x: str = ""
 
-    class Excluded(_Strict):
+    class Excluded(StrictModel):
         x: Annotated[float, Field(exclude=True)] = 1.0
 
-    class Computed(_Strict):
+    class Computed(StrictModel):
         x: float = 1.0
 
         @computed_field
@@ -343,23 +343,23 @@ def _refusable_models() -> list:
         def twice(self) -> float:
             return 2 * self.x
 
-    class Serialized(_Strict):
+    class Serialized(StrictModel):
         x: float = 1.0
 
         @field_serializer("x")
         def _ser(self, v):
             return v
 
-    class ValidateDefault(_Strict):
+    class ValidateDefault(StrictModel):
         x: Annotated[float, Field(validate_default=True)] = 1.0
 
-    class PostInit(_Strict):
+    class PostInit(StrictModel):
         x: float = 1.0
 
         def model_post_init(self, context):
             pass
 
-    class OwnProperty(_Strict):
+    class OwnProperty(StrictModel):
         x: float = 1.0
 
         @property
@@ -371,10 +371,10 @@ def _refusable_models() -> list:
         def twice(self) -> float:
             return 2 * self.x
 
-    class UnslottedMixin(Mixin, _Strict):
+    class UnslottedMixin(Mixin, StrictModel):
         x: float = 1.0
 
-    class Before(_Strict):
+    class Before(StrictModel):
         x: float = 1.0
 
         @field_validator("x", mode="before")
@@ -382,7 +382,7 @@ def _refusable_models() -> list:
         def _b(cls, v):
             return v
 
-    class NoTwin(_Strict):
+    class NoTwin(StrictModel):
         x: float = 1.0
 
         @model_validator(mode="after")

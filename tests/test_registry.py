@@ -12,25 +12,30 @@ from textual.widgets import Input, Label, Static
 from advisor.calc.sizing import Check
 from advisor.cli import main
 from advisor.core import registry
-from advisor.core.report import _Out
-from advisor.core.requirements import ApplicationReq, _num, _Strict
+from advisor.core.report import ReportTable
+from advisor.core.requirements import ApplicationReq, StrictModel, number_field
 from advisor.tui.app import DriveAdvisorApp
 
 
-class LeverReq(_Strict):
-    force_N: Annotated[float, _num(gt=0, le=1e4, desc="hand force, N", label="Hand force", step=1)]
-    arm_m: Annotated[float, _num(gt=0, le=5, desc="lever arm, m", label="Lever arm", step=1)]
+class LeverReq(StrictModel):
+    force_N: Annotated[
+        float, number_field(gt=0, le=1e4, desc="hand force, N", label="Hand force", step=1)
+    ]
+    arm_m: Annotated[
+        float, number_field(gt=0, le=5, desc="lever arm, m", label="Lever arm", step=1)
+    ]
     limit_Nm: Annotated[
-        float, _num(gt=0, le=1e4, desc="torque the shaft takes, N·m", label="Shaft limit", step=3)
+        float,
+        number_field(gt=0, le=1e4, desc="torque the shaft takes, N·m", label="Shaft limit", step=3),
     ] = 100.0
 
 
-class LeverRequirements(_Strict):
+class LeverRequirements(StrictModel):
     application: ApplicationReq
     lever: LeverReq
 
 
-class LeverOut(_Out):
+class LeverOut(ReportTable):
     torque_Nm: float
 
 

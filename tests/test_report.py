@@ -96,7 +96,7 @@ def test_toml_text_writes_what_tomli_w_writes_for_every_example(example):
     from advisor.core.engine import advise
     from advisor.core.requirements import read_requirements
 
-    plain = rp.archive(rp._plain(advise(read_requirements(example))))
+    plain = rp.archive(rp.plain_data(advise(read_requirements(example))))
     assert rp.to_toml(advise(read_requirements(example))) == tomli_w.dumps(plain)
 
 
@@ -128,12 +128,12 @@ def test_toml_text_writes_what_tomli_w_writes(doc):
 
 def test_a_nan_or_an_inf_is_never_written_and_its_key_is_named():
     # issue 13: a denormal span once gave margin = inf in a report
-    from advisor.core.report import NonFiniteValue, _Out
+    from advisor.core.report import NonFiniteValue, ReportTable
 
-    class Inner(_Out):
+    class Inner(ReportTable):
         margin: float
 
-    class Outer(_Out):
+    class Outer(ReportTable):
         checks: list[Inner]
 
     good = Outer.make(checks=[Inner.make(margin=1.5)])

@@ -95,9 +95,9 @@ def _nearest(design) -> str | None:
     """The design that failed its checks, in the words of its parts (for the report of an
     infeasible run); None where it has none to give."""
     try:
-        from advisor.core.report import _plain
+        from advisor.core.report import plain_data
 
-        parts = _plain(design)
+        parts = plain_data(design)
     except (TypeError, ValueError):
         return None
     if not isinstance(parts, dict):

@@ -60,7 +60,7 @@ class Record:
 
     def __reduce__(self) -> tuple[Any, ...]:
         values = {k: self.__dict__[k] for k in self._fields}
-        return (_make, (self._model, values, set(self.model_fields_set)))
+        return (make_record, (self._model, values, set(self.model_fields_set)))
 
     def __repr__(self) -> str:
         inner = ", ".join(f"{k}={self.__dict__[k]!r}" for k in self._fields)
@@ -98,7 +98,7 @@ def _checks(name: str) -> tuple[dict[str, tuple[Any, ...]], tuple[Any, ...]]:
     return fields, tuple(_load(c) for c in spec["after"])
 
 
-def _make(name: str, values: dict[str, Any], given: set[str]) -> Record:
+def make_record(name: str, values: dict[str, Any], given: set[str]) -> Record:
     rec = object.__new__(_record_class(name))
     rec.__dict__.update(values)
     rec.__dict__["model_fields_set"] = given
@@ -109,7 +109,7 @@ def _default(v: Any) -> Any:
     """A default of the spec as a fresh value (a record where the model holds a table)."""
     if isinstance(v, tuple):  # ("record", name, fields_set, values)
         _, name, given, values = v
-        return _make(name, {k: _default(x) for k, x in values.items()}, set(given))
+        return make_record(name, {k: _default(x) for k, x in values.items()}, set(given))
     if isinstance(v, list):
         return [_default(x) for x in v]
     return v
@@ -193,7 +193,7 @@ def _table(name: str, data: Any) -> Record:
         if key in data:  # pydantic checks a value given, not a default
             for check in checks:
                 values[key] = check(values[key])
-    rec = _make(name, values, set(data))
+    rec = make_record(name, values, set(data))
     for check in after:
         check(rec)
     return rec

@@ -69,7 +69,7 @@ def unit_of(name: str) -> str:
     return ""
 
 
-def _strip_optional(ann: Any) -> Any:
+def strip_optional(ann: Any) -> Any:
     if get_origin(ann) in (Union, types.UnionType):
         args = [a for a in get_args(ann) if a is not type(None)]
         if len(args) == 1:
@@ -77,7 +77,7 @@ def _strip_optional(ann: Any) -> Any:
     return ann
 
 
-def _is_model(ann: Any) -> bool:
+def is_model(ann: Any) -> bool:
     from pydantic import BaseModel
 
     return isinstance(ann, type) and issubclass(ann, BaseModel)
@@ -98,7 +98,7 @@ def range_text(info: "FieldInfo") -> str:
     return ", ".join(words)
 
 
-def _extra(info: "FieldInfo") -> dict[str, Any]:
+def field_extra(info: "FieldInfo") -> dict[str, Any]:
     extra = info.json_schema_extra
     return extra if isinstance(extra, dict) else {}
 
@@ -122,7 +122,7 @@ def _default(info: "FieldInfo") -> Any:
     if info.is_required():
         return None
     value = info.get_default(call_default_factory=True)
-    if _is_model(type(value)):
+    if is_model(type(value)):
         return None
     return value
 
@@ -135,13 +135,13 @@ def questions(
     its fields appear once under ``name[]``."""
     out: list[Question] = []
     for name, info in model.model_fields.items():
-        ann = _strip_optional(info.annotation)
+        ann = strip_optional(info.annotation)
         path = (*prefix, name)
-        extra = _extra(info)
-        if _is_model(ann):
+        extra = field_extra(info)
+        if is_model(ann):
             out += questions(ann, path, wizard)
             continue
-        if get_origin(ann) is list and _is_model(get_args(ann)[0]):
+        if get_origin(ann) is list and is_model(get_args(ann)[0]):
             item = get_args(ann)[0]
             if not wizard:
                 out += questions(item, (*prefix, f"{name}[]"), wizard)

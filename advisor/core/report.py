@@ -16,13 +16,13 @@ from advisor.io_safety import write_atomic as write_atomic  # re-exported: the r
 REPORT_FORMAT = 1
 
 
-class _Out:
+class ReportTable:
     """A report table: the fields its class annotates, in their declared order (a base
     class's first), with the defaults the class gives them.
 
     The engine builds the tables from values it has computed, so they are made with
     :meth:`make`, which checks the names (an unknown one or a missing required one is a bug
-    of the advice) and copies mutable defaults, and dumped by :func:`_plain`. A plain class
+    of the advice) and copies mutable defaults, and dumped by :func:`plain_data`. A plain class
     rather than a pydantic model: the report validates nothing, and defining some fifty
     pydantic classes cost about 15 ms of every run (issue 16).
     """
@@ -86,7 +86,7 @@ class _Out:
 
 
 def _as_dict(v: Any) -> Any:
-    if isinstance(v, _Out):
+    if isinstance(v, ReportTable):
         return v.as_dict()
     if isinstance(v, list | tuple):
         return [_as_dict(x) for x in v]
@@ -95,7 +95,7 @@ def _as_dict(v: Any) -> Any:
     return v
 
 
-class CheckOut(_Out):
+class CheckOut(ReportTable):
     id: str
     name: str
     value: float
@@ -130,7 +130,7 @@ def check_out(c: Any, short: dict[str, str]) -> CheckOut:
     )
 
 
-class DecisionOut(_Out):
+class DecisionOut(ReportTable):
     id: str
     title: str
     decision: str
@@ -140,7 +140,7 @@ class DecisionOut(_Out):
     inputs: dict[str, Any] = {}
 
 
-class SourceOut(_Out):
+class SourceOut(ReportTable):
     """One entry of the bibliography (catalogs/bibliography.toml) the report cites."""
 
     id: str
@@ -174,7 +174,7 @@ class SourceOut(_Out):
         return ". ".join(parts)
 
 
-class ReportHeader(_Out):
+class ReportHeader(ReportTable):
     format: int = REPORT_FORMAT
     advisor_version: str
     application: str
@@ -182,7 +182,7 @@ class ReportHeader(_Out):
     status: str = "feasible"
 
 
-class Report(_Out):
+class Report(ReportTable):
     report: ReportHeader
     requirements: dict[str, Any]
     design: Any  # LinearDesignOut, or RotaryDesignOut from advisor.applications.rotary.report
@@ -209,7 +209,7 @@ class NonFiniteValue(ValueError):
     """A report value that is nan or inf: a bug of the advice, never written to a file."""
 
 
-def _plain(obj: Any) -> Any:
+def plain_data(obj: Any) -> Any:
     """Plain dicts and lists of a report, without None (TOML has no null), floats rounded
     to six significant digits, fields in their declared order. A nan or an inf is refused
     with its key named (:class:`NonFiniteValue`): a report states numbers a reader can check.
@@ -247,7 +247,7 @@ def _plain_fast(obj: Any) -> Any:
             for k, v in obj.items()
             if v is not None
         }
-    if isinstance(obj, _Out):
+    if isinstance(obj, ReportTable):
         values = obj.__dict__
         return {
             n: v if type(v) in _KEPT else _plain_fast(v)
@@ -259,7 +259,7 @@ def _plain_fast(obj: Any) -> Any:
 
 def _plain_keyed(obj: Any, key: str) -> Any:
     """The same, naming the key of the value it refuses (the error path only)."""
-    if isinstance(obj, _Out):
+    if isinstance(obj, ReportTable):
         return {
             name: _plain_keyed(getattr(obj, name), _join(key, name))
             for name in obj.field_names
@@ -291,7 +291,7 @@ CURVE_POINTS = 10
 def plain(report: Report) -> dict[str, Any]:
     """The report as nested plain data (curves where the design holds them): what the
     datasheet reads."""
-    return _plain(report)
+    return plain_data(report)
 
 
 _NUMBER_TYPES = (float, int)  # exact types: a bool is no number here
@@ -319,7 +319,7 @@ def curve_part(table: Any) -> dict[str, Any]:
     return arrays
 
 
-def _is_curve(table: Any) -> bool:
+def is_curve(table: Any) -> bool:
     """A table that is all curve data (nothing of it stays in the design)."""
     part = curve_part(table)
     return bool(part) and len(part) == len(table)
@@ -403,11 +403,11 @@ def nest_curves(doc: dict[str, Any]) -> dict[str, Any]:
 def to_toml(report: Report) -> str:
     """The report as TOML text (no nulls: TOML has none), curves in ``[curves]`` at the
     end, as tomli-w writes it (:mod:`advisor.core.toml_text` writes the same bytes faster)."""
-    return toml_text.dumps(archive(_plain(report)))
+    return toml_text.dumps(archive(plain_data(report)))
 
 
 def to_json(report: Report) -> str:
     """The report as JSON: the same document as the TOML, keys in the same order."""
     import json
 
-    return json.dumps(archive(_plain(report)), indent=2, ensure_ascii=False) + "\n"
+    return json.dumps(archive(plain_data(report)), indent=2, ensure_ascii=False) + "\n"

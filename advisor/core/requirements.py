@@ -33,7 +33,7 @@ MAX_PROBLEMS_SHOWN = 5
 _KINDS = "{kinds}"
 
 
-class _Strict(BaseModel):
+class StrictModel(BaseModel):
     # defer_build: a nested model is validated by its parent's validator, so building one of
     # its own at import (about 1 ms a model) would be wasted; a model used alone builds its
     # validator on first use
@@ -91,7 +91,7 @@ def ask(
     )
 
 
-def _num(
+def number_field(
     gt: float | None = None,
     le: float | None = None,
     ge: float | None = None,
@@ -137,7 +137,7 @@ def _kind_schema(schema: dict[str, Any]) -> None:
     schema["enum"] = list(kinds())
 
 
-class ApplicationReq(_Strict):
+class ApplicationReq(StrictModel):
     kind: Annotated[str, Field(description="the application", json_schema_extra=_kind_schema)]
     hold_without_power: Annotated[
         bool,
@@ -167,7 +167,7 @@ class ApplicationReq(_Strict):
     _registered = field_validator("kind")(classmethod(_registered))  # type: ignore[assignment]
 
 
-class OneWayReq(_Strict):
+class OneWayReq(StrictModel):
     """The holding device of a drive with ``hold_without_power`` (seed 004)."""
 
     type: Annotated[
@@ -187,7 +187,7 @@ def _doc_text(desc: str, label: str, example: str, length: int = 200) -> Any:
     return ask(desc, label=label, example=example, max_length=length)
 
 
-class ProjectReq(_Strict):
+class ProjectReq(StrictModel):
     """The ``[project]`` table: the header of the datasheet a design review signs. Every
     field is text, copied as written (the date too: the advisor never reads the clock, so
     two runs of one file give the same datasheet)."""
@@ -210,13 +210,13 @@ ProjectField = Annotated[
 ]
 
 
-class DesignReq(_Strict):
+class DesignReq(StrictModel):
     """The [design] table: what the whole design must meet, whatever the application (issue
     26). Shared by the applications that declare it."""
 
     service_factor: Annotated[
         float | None,
-        _num(
+        number_field(
             ge=1,
             le=5,
             desc="service factor f_B multiplying the load of every strength check; 1 … 5; "
@@ -227,7 +227,7 @@ class DesignReq(_Strict):
     ] = None
 
 
-class _Head(BaseModel):
+class RequirementHead(BaseModel):
     """Only the [application] table, read first to know which model validates the file."""
 
     model_config = ConfigDict(extra="allow", strict=True)
@@ -279,7 +279,7 @@ def _literal_kinds(model: type[BaseModel]) -> tuple[Any, ...]:
     return getattr(f.annotation, "__args__", ()) if f is not None else ()
 
 
-def _walk(loc: tuple[Any, ...], root: Any) -> tuple[tuple[Any, ...], Any, Any]:
+def walk_location(loc: tuple[Any, ...], root: Any) -> tuple[tuple[Any, ...], Any, Any]:
     """Follow a pydantic error location through the requirement models.
 
     Returns the location without the discriminator tags pydantic inserts
@@ -314,7 +314,7 @@ def _walk(loc: tuple[Any, ...], root: Any) -> tuple[tuple[Any, ...], Any, Any]:
     return tuple(out), info, holder
 
 
-def _where(loc: tuple[Any, ...]) -> str:
+def dotted_location(loc: tuple[Any, ...]) -> str:
     """``positioning.motors[1].name``: list items counted from 1, as a reader counts them."""
     out = ""
     for part in loc:
@@ -328,8 +328,8 @@ def format_validation_error(exc: ValidationError, root: Any) -> list[str]:
     unknown: list[str] = []
     for err in exc.errors():
         raw_loc = tuple(err["loc"])
-        loc, info, holder = _walk(raw_loc, root)
-        where = _where(loc)
+        loc, info, holder = walk_location(raw_loc, root)
+        where = dotted_location(loc)
         typ = err["type"]
         ctx = err.get("ctx", {}) or {}
         desc = f" ({info.description})" if info is not None and info.description else ""
@@ -400,9 +400,9 @@ def parse_requirements(data: dict[str, Any]) -> Requirements:
     """Validate a requirement document: [application] first, then the whole file against the
     model of that application."""
     try:
-        kind = _Head.model_validate(data).application.kind
+        kind = RequirementHead.model_validate(data).application.kind
     except ValidationError as exc:
-        raise InputError(*format_validation_error(exc, _Head)) from None
+        raise InputError(*format_validation_error(exc, RequirementHead)) from None
     model = requirements_model(kind)
     from advisor.core.units import convert
     from advisor.ignored import contradictions

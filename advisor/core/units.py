@@ -38,7 +38,7 @@ from typing import Any, NamedTuple, get_args, get_origin
 from pydantic import BaseModel
 
 from advisor.core.errors import InputError
-from advisor.core.questions import _strip_optional
+from advisor.core.questions import strip_optional
 
 #: The longest quantity read; a longer string is refused before it is looked at.
 MAX_CHARS = 64
@@ -455,12 +455,12 @@ def _convert(data: Any, model: type[BaseModel], path: tuple[Any, ...], errors: l
         info = model.model_fields.get(name)
         if info is None:
             continue
-        ann = _strip_optional(info.annotation)
+        ann = strip_optional(info.annotation)
         here = (*path, name)
         if isinstance(value, str) and _is_number(ann):
             out[name] = _one(value, _unit(name, info), here, errors)
         elif isinstance(value, list) and get_origin(ann) is list:
-            item = _strip_optional(get_args(ann)[0])
+            item = strip_optional(get_args(ann)[0])
             item = get_args(item)[0] if get_origin(item) is not None and get_args(item) else item
             if _is_number(item):
                 unit = _unit(name, info)

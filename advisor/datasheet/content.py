@@ -10,7 +10,7 @@ import math
 from dataclasses import dataclass, field
 from typing import Any
 
-from advisor.core.report import _is_curve, curve_part
+from advisor.core.report import curve_part, is_curve
 from advisor.datasheet.labels import UNITS as UNITS  # re-exported
 from advisor.datasheet.labels import split_key as split_key  # re-exported
 from advisor.datasheet.references import readable, references
@@ -226,7 +226,7 @@ def _columns(items: list[dict]) -> list[tuple[str, tuple[str, ...], str]]:
                 seen.add((k,))
                 label, unit = split_key(k)
                 cols.append((label, (k,), unit))
-            elif isinstance(v, dict) and not _is_curve(v):
+            elif isinstance(v, dict) and not is_curve(v):
                 head, unit = split_key(k)
                 for k2, v2 in v.items():
                     if _scalar(v2) and (k, k2) not in seen:
@@ -262,7 +262,7 @@ def block(
     plotted = curve_part(data)
     for k, v in data.items():
         label, own = (labels or {}).get((*path, k)) or split_key(k)
-        if _is_curve(v) or k in plotted:
+        if is_curve(v) or k in plotted:
             continue
         if _scalar(v):
             b.rows.append((label, number(v), own or unit))

@@ -100,21 +100,21 @@ def short_description(desc: str) -> str:
 def requirement_labels(model: Any) -> dict[tuple[str, ...], tuple[str, str]]:
     """(label, unit) of every leaf field of a requirement model by its path; a list of
     tables is keyed by its own path and its items' fields by ``(…, "name[]", field)``."""
-    from advisor.core.questions import _extra, _is_model, _strip_optional, unit_of
+    from advisor.core.questions import field_extra, is_model, strip_optional, unit_of
 
     out: dict[tuple[str, ...], tuple[str, str]] = {}
 
     def walk(m: Any, prefix: tuple[str, ...]) -> None:
         for name, info in m.model_fields.items():
-            ann = _strip_optional(info.annotation)
+            ann = strip_optional(info.annotation)
             path = (*prefix, name)
-            extra = _extra(info)
+            extra = field_extra(info)
             label = extra.get("x-label") or short_description(info.description or "") or name
             unit = extra.get("x-unit", unit_of(name))
             args = getattr(ann, "__args__", ())
-            if _is_model(ann):
+            if is_model(ann):
                 walk(ann, path)
-            elif args and _is_model(args[0]):  # a list of tables
+            elif args and is_model(args[0]):  # a list of tables
                 out[path] = (extra.get("x-row-label") or label, "")
                 walk(args[0], (*prefix, f"{name}[]"))
             else:
@@ -130,14 +130,14 @@ def requirement_defaults(model: Any) -> dict[tuple[str, ...], Any]:
     the motor's ``kind`` of an application, counts as at its default)."""
     from typing import Literal, get_args, get_origin
 
-    from advisor.core.questions import _is_model, _strip_optional
+    from advisor.core.questions import is_model, strip_optional
 
     out: dict[tuple[str, ...], Any] = {}
 
     def walk(m: Any, prefix: tuple[str, ...]) -> None:
         for name, info in m.model_fields.items():
-            ann = _strip_optional(info.annotation)
-            if _is_model(ann):
+            ann = strip_optional(info.annotation)
+            if is_model(ann):
                 walk(ann, (*prefix, name))
             elif get_origin(ann) is Literal and len(get_args(ann)) == 1:
                 out[(*prefix, name)] = get_args(ann)[0]

@@ -1,12 +1,12 @@
 """Report tables of a duty cycle: ``[design.duty]`` and its ``phases``."""
 
 from advisor.calc.duty import Phase
-from advisor.core.report import _Out
+from advisor.core.report import ReportTable
 
 RPM = 30.0 / 3.141592653589793
 
 
-class PhaseOut(_Out):
+class PhaseOut(ReportTable):
     name: str
     time_s: float
     speed_rpm: float  # the highest speed in the phase; a ramp runs from/to it linearly
@@ -16,7 +16,7 @@ class PhaseOut(_Out):
     energy_J: float
 
 
-class ThermalOut(_Out):
+class ThermalOut(ReportTable):
     """A first-order thermal model of the motor over repeated cycles."""
 
     time_constant_s: float
@@ -29,7 +29,7 @@ class ThermalOut(_Out):
     rise_K: list[float]
 
 
-class DutyOut(_Out):
+class DutyOut(ReportTable):
     motor: str
     ratio: float
     cycle_time_s: float

@@ -8,16 +8,16 @@ parameters.
 
 from typing import Annotated, Literal
 
-from advisor.core.requirements import _num, _Strict, after_check, ask, field_check
+from advisor.core.requirements import StrictModel, after_check, ask, field_check, number_field
 from advisor.duty import requirement_checks as checks
 
 STEP = 4  # the wizard step that asks the duty
 
 
-class PositioningDutyReq(_Strict):
+class PositioningDutyReq(StrictModel):
     cycle_time_s: Annotated[
         float,
-        _num(
+        number_field(
             ge=1e-3,
             le=1e6,
             desc="time of one cycle: one move of positioning.travel_rad, then rest, s",
@@ -27,7 +27,7 @@ class PositioningDutyReq(_Strict):
     ]
 
 
-class _Segment(_Strict):
+class _Segment(StrictModel):
     kind: Annotated[
         Literal["move", "dwell", "hold"],
         ask(
@@ -38,7 +38,7 @@ class _Segment(_Strict):
     ]
     time_s: Annotated[
         float,
-        _num(
+        number_field(
             ge=1e-3,
             le=1e6,
             desc="duration of the segment (a move: the time it may take), s",
@@ -51,7 +51,9 @@ class _Segment(_Strict):
 class LinearSegmentReq(_Segment):
     distance_m: Annotated[
         float | None,
-        _num(gt=0, le=20, desc="path of a move, m (a move: required)", label="distance", step=STEP),
+        number_field(
+            gt=0, le=20, desc="path of a move, m (a move: required)", label="distance", step=STEP
+        ),
     ] = None
     direction: Annotated[
         Literal["against", "with"],
@@ -63,7 +65,7 @@ class LinearSegmentReq(_Segment):
     ] = "against"
     force_N: Annotated[
         float | None,
-        _num(
+        number_field(
             ge=0,
             le=5e6,
             desc="axial load of the segment, N: 0 or 1 … 5·10⁶; default linear.force_N",
@@ -79,7 +81,7 @@ class LinearSegmentReq(_Segment):
 class RotarySegmentReq(_Segment):
     angle_deg: Annotated[
         float | None,
-        _num(
+        number_field(
             ge=1e-3,
             le=1e7,
             desc="angle of a move at the output, 10⁻³ … 10⁷ degrees (a move: required)",
@@ -93,7 +95,7 @@ class RotarySegmentReq(_Segment):
     ] = "trapezoidal"
     accel_fraction: Annotated[
         float,
-        _num(
+        number_field(
             ge=1e-3,
             lt=0.5,
             desc="share of a trapezoidal move spent accelerating (and braking)",
@@ -111,7 +113,7 @@ class RotarySegmentReq(_Segment):
     ] = "against"
     torque_Nm: Annotated[
         float | None,
-        _num(
+        number_field(
             ge=0,
             le=1e6,
             desc="output load torque of the segment, N·m; default rotary.torque_Nm",
@@ -123,10 +125,10 @@ class RotarySegmentReq(_Segment):
     _move_has_angle = after_check(checks.move_has_angle)
 
 
-class LoadShareReq(_Strict):
+class LoadShareReq(StrictModel):
     load_share: Annotated[
         float,
-        _num(
+        number_field(
             ge=0,
             le=10,
             desc="load as a share of the rated load: 0 (no load) or 0.001 … 10",
@@ -137,14 +139,16 @@ class LoadShareReq(_Strict):
     _share_zero_or_range = field_check("load_share", checks.share_zero_or_range)
     time_share: Annotated[
         float,
-        _num(gt=0, le=1, desc="share of the time at that load", label="time share", step=STEP),
+        number_field(
+            gt=0, le=1, desc="share of the time at that load", label="time share", step=STEP
+        ),
     ]
 
 
 DutyType = Literal["S1", "S2", "S3", "S4", "S5", "S6", "S7", "S8", "S9", "S10"]
 
 
-class _CycleDuty(_Strict):
+class _CycleDuty(StrictModel):
     duty_type: Annotated[
         DutyType | None,
         ask(
@@ -156,7 +160,7 @@ class _CycleDuty(_Strict):
     ] = None
     cycles_per_hour: Annotated[
         float | None,
-        _num(
+        number_field(
             ge=1e-3,
             le=36000,
             desc="how often the segments repeat, 1/h",
@@ -166,7 +170,7 @@ class _CycleDuty(_Strict):
     ] = None
     cyclic_duration_factor: Annotated[
         float | None,
-        _num(
+        number_field(
             gt=0,
             le=1,
             desc="share of the cycle under load (S3–S6), e.g. 0.4",
@@ -176,7 +180,7 @@ class _CycleDuty(_Strict):
     ] = None
     starts_per_hour: Annotated[
         float | None,
-        _num(
+        number_field(
             ge=1e-3,
             le=36000,
             desc="starts per hour (S4, S5, S7)",
@@ -186,7 +190,7 @@ class _CycleDuty(_Strict):
     ] = None
     duration_min: Annotated[
         float | None,
-        _num(
+        number_field(
             gt=0,
             le=1e4,
             desc="time under load of an S2 duty, min",
@@ -197,7 +201,7 @@ class _CycleDuty(_Strict):
     ] = None
     cycle_time_s: Annotated[
         float,
-        _num(
+        number_field(
             ge=1e-3,
             le=1e6,
             desc="cycle time of an S3–S6 duty, s (IEC: 10 min)",
@@ -223,11 +227,12 @@ class LinearDutyReq(_CycleDuty):
         ),
     ] = []  # noqa: RUF012 - pydantic copies field defaults
     moving_mass_kg: Annotated[
-        float, _num(ge=0, le=1e6, desc="mass the nut moves, kg", label="Moving mass", step=STEP)
+        float,
+        number_field(ge=0, le=1e6, desc="mass the nut moves, kg", label="Moving mass", step=STEP),
     ] = 0.0
     standstill_cooling_factor: Annotated[
         float,
-        _num(
+        number_field(
             gt=0,
             le=1,
             desc="β0: cooling of the self-ventilated motor at standstill against at speed",
@@ -248,7 +253,7 @@ class RotaryDutyReq(_CycleDuty):
     ] = []  # noqa: RUF012 - pydantic copies field defaults
     load_inertia_kgm2: Annotated[
         float,
-        _num(
+        number_field(
             ge=0,
             le=1e7,
             desc="inertia of the load at the output, kg·m²",
@@ -258,7 +263,7 @@ class RotaryDutyReq(_CycleDuty):
     ] = 0.0
     motor_inertia_kgm2: Annotated[
         float | None,
-        _num(
+        number_field(
             ge=1e-11,
             le=1e3,
             desc="rotor inertia of the motor, kg·m²; left out: the chosen frame's or catalog "
@@ -269,7 +274,7 @@ class RotaryDutyReq(_CycleDuty):
     ] = None
     thermal_time_constant_s: Annotated[
         float | None,
-        _num(
+        number_field(
             gt=0,
             le=1e5,
             desc="thermal time constant of the motor, s; left out: the chosen frame's or "
@@ -280,7 +285,7 @@ class RotaryDutyReq(_CycleDuty):
     ] = None
     peak_torque_factor: Annotated[
         float,
-        _num(
+        number_field(
             ge=1,
             le=10,
             desc="peak torque the motor and drive give, as a multiple of the torque at the "

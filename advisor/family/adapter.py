@@ -59,12 +59,12 @@ def advise_one(
 
     from advisor.core.engine import advise
     from advisor.core.reading import parse_requirements
-    from advisor.core.report import _plain, archive
+    from advisor.core.report import archive, plain_data
 
     try:
         req = parse_requirements(requirement)
         report = advise(req, Path(catalog_dir) if catalog_dir else None)
-        data = _plain(report)  # what advisor.core.report.to_toml dumps, curves in place
+        data = plain_data(report)  # what advisor.core.report.to_toml dumps, curves in place
         text = tomli_w.dumps(archive(data)) if with_text else None  # = to_toml(report)
         return Outcome(ExitCode.OK, STATUS[ExitCode.OK], "", data, text)
     except InfeasibleError as exc:
@@ -93,18 +93,18 @@ def field_problems(requirement: dict[str, Any]) -> list[FieldProblem]:
     from pydantic import ValidationError
 
     from advisor.core.requirements import (
-        _Head,
-        _walk,
-        _where,
+        RequirementHead,
+        dotted_location,
         format_validation_error,
         requirements_model,
+        walk_location,
     )
 
     try:
-        kind = _Head.model_validate(requirement).application.kind
+        kind = RequirementHead.model_validate(requirement).application.kind
         model: Any = requirements_model(kind)
     except ValidationError as exc:
-        model, errors = _Head, exc
+        model, errors = RequirementHead, exc
     else:
         from advisor.core.units import convert
 
@@ -119,10 +119,10 @@ def field_problems(requirement: dict[str, Any]) -> list[FieldProblem]:
             errors = exc
     out = []
     for err, line in zip(errors.errors(), format_validation_error(errors, model), strict=True):
-        loc, info, _ = _walk(tuple(err["loc"]), model)
+        loc, info, _ = walk_location(tuple(err["loc"]), model)
         holds_table = info is not None and hasattr(info.annotation, "model_fields")
         cross = err["type"] == "value_error" and (not loc or holds_table)
-        out.append(FieldProblem(_where(loc), line, cross))
+        out.append(FieldProblem(dotted_location(loc), line, cross))
     return out
 
 

@@ -1,9 +1,9 @@
 """Report tables of the one-way (holding) device, shared by the linear and rotary actuators."""
 
-from advisor.core.report import _Out
+from advisor.core.report import ReportTable
 
 
-class DeviceOut(_Out):
+class DeviceOut(ReportTable):
     type: str
     location: str
     torque_Nm: float
@@ -16,7 +16,7 @@ class DeviceOut(_Out):
     basis: str
 
 
-class OneWayOut(_Out):
+class OneWayOut(ReportTable):
     type: str
     location: str
     torque_Nm: float

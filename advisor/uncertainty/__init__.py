@@ -28,10 +28,10 @@ def replaced(table: Any, **update: Any) -> Any:
     a record of the compiled validator (:mod:`advisor.core.light`) alike."""
     if hasattr(table, "model_copy"):
         return table.model_copy(update=update)
-    from advisor.core.light import _make
+    from advisor.core.light import make_record
 
     values = {k: table.__dict__[k] for k in table._fields}
-    return _make(table._model, {**values, **update}, set(table.model_fields_set))
+    return make_record(table._model, {**values, **update}, set(table.model_fields_set))
 
 
 def distributions(req: Any, cat: Any, nominal: dict[str, float]) -> list:

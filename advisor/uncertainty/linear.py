@@ -79,7 +79,7 @@ def _check(report: Any, cid: str) -> Any:
 def margin_model(req: Any, report: Any, cat: Any) -> tuple[Margins, dict[str, float]]:
     """The margins of the design in ``report`` as functions of the uncertain inputs, and the
     nominal value of every input."""
-    from advisor.applications.linear.advice import _thrust_face
+    from advisor.applications.linear.advice import thrust_face
     from advisor.calc import screw as sc
     from advisor.calc.sizing import fit_motor
 
@@ -89,7 +89,7 @@ def margin_model(req: Any, report: Any, cat: Any) -> tuple[Margins, dict[str, fl
     psi = sc.lead_angle(thread.pitch_mm * 1e-3, d2, s.starts)
     model = s.friction_model
     lin = req.linear
-    thrust = _thrust_face(req, cat)
+    thrust = thrust_face(req, cat)
     nominal = {
         "linear.force_N": lin.force_N,
         "linear.support_span_m": lin.support_span_m,
@@ -195,7 +195,7 @@ def candidates(req: Any, cat: Any) -> list[tuple[str, int, int]]:
         buckling_safety_factor=lin.buckling_safety_factor,
         friction_model=s.friction_model,
         material=material,
-        thrust=la._thrust_face(req, cat),
+        thrust=la.thrust_face(req, cat),
         service_factor=service_factor(getattr(req, "design", None)).value,
     )
     screens = la._through_device(screens, la._device_efficiency(req) if hold else 1.0)

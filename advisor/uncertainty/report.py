@@ -4,10 +4,10 @@ choice."""
 
 from typing import Any
 
-from advisor.core.report import _Out
+from advisor.core.report import ReportTable
 
 
-class InputOut(_Out):
+class InputOut(ReportTable):
     name: str
     distribution: str
     nominal: float
@@ -19,12 +19,12 @@ class InputOut(_Out):
     mode: float | None = None
 
 
-class DriverOut(_Out):
+class DriverOut(ReportTable):
     input: str
     rank_correlation: float  # Spearman's ρ of the input with the margin
 
 
-class CheckProbabilityOut(_Out):
+class CheckProbabilityOut(ReportTable):
     id: str
     name: str
     nominal_margin: float
@@ -37,14 +37,14 @@ class CheckProbabilityOut(_Out):
     drivers: list[DriverOut] = []
 
 
-class CandidateOut(_Out):
+class CandidateOut(ReportTable):
     label: str
     p_pass: float
     p_pass_low: float
     p_pass_high: float
 
 
-class RobustOut(_Out):
+class RobustOut(ReportTable):
     target: float
     nominal_choice: str
     nominal_p_pass: float
@@ -53,7 +53,7 @@ class RobustOut(_Out):
     candidates: list[CandidateOut] = []  # those evaluated, in the advisor's order
 
 
-class UncertaintyOut(_Out):
+class UncertaintyOut(ReportTable):
     method: str
     samples: int
     seed: int

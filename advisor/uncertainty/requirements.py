@@ -6,7 +6,7 @@ from typing import Annotated, Literal
 
 from pydantic import Field
 
-from advisor.core.requirements import _num, _Strict, after_check, ask
+from advisor.core.requirements import StrictModel, after_check, ask, number_field
 from advisor.uncertainty import checks
 
 #: The inputs a distribution may be given for: requirement fields and model parameters.
@@ -18,7 +18,7 @@ InputName = Literal[
 ]
 
 
-class InputDistribution(_Strict):
+class InputDistribution(StrictModel):
     """One uncertain input: a uniform range, a normal law with its standard deviation, or a
     triangular law; the normal's mean and the triangle's mode default to the nominal value."""
 
@@ -33,23 +33,29 @@ class InputDistribution(_Strict):
         Literal["uniform", "normal", "triangular"],
         Field(description="uniform (low, high), normal (sd, mean), triangular (low, mode, high)"),
     ]
-    low: Annotated[float | None, _num(desc="lower end, in the input's unit", label="Low")] = None
-    high: Annotated[float | None, _num(desc="upper end, in the input's unit", label="High")] = None
+    low: Annotated[
+        float | None, number_field(desc="lower end, in the input's unit", label="Low")
+    ] = None
+    high: Annotated[
+        float | None, number_field(desc="upper end, in the input's unit", label="High")
+    ] = None
     sd: Annotated[
-        float | None, _num(gt=0, desc="standard deviation of a normal law, > 0", label="Std. dev.")
+        float | None,
+        number_field(gt=0, desc="standard deviation of a normal law, > 0", label="Std. dev."),
     ] = None
     mean: Annotated[
-        float | None, _num(desc="mean of a normal law; left out: the nominal value", label="Mean")
+        float | None,
+        number_field(desc="mean of a normal law; left out: the nominal value", label="Mean"),
     ] = None
     mode: Annotated[
         float | None,
-        _num(desc="mode of a triangular law; left out: the nominal value", label="Mode"),
+        number_field(desc="mode of a triangular law; left out: the nominal value", label="Mode"),
     ] = None
 
     _complete = after_check(checks.distribution_complete)
 
 
-class UncertaintyReq(_Strict):
+class UncertaintyReq(StrictModel):
     """The ``[uncertainty]`` table: the chosen design held fixed and every check evaluated
     over samples of the uncertain inputs; ``target`` makes the choice robust."""
 

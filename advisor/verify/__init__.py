@@ -42,7 +42,7 @@ def _short_names() -> dict[str, str]:
 
 
 def main(argv: list[str]) -> int:
-    from advisor.cli import _err
+    from advisor.cli import print_error
     from advisor.core.errors import AdvisorError
     from advisor.verify.runner import DataError, load_cases
 
@@ -55,25 +55,25 @@ def main(argv: list[str]) -> int:
             _check_output(args.output, args.data)
         cases = load_cases(args.data)
     except (AdvisorError, DataError) as exc:
-        _err(str(exc))
+        print_error(str(exc))
         return 2
     if args.list:
         for c in cases:
             print(f"{c.id}  {c.title}")
         return 0
     if args.case is not None and args.case not in {c.id for c in cases}:
-        _err(f"no case {args.case!r}; the cases: {', '.join(c.id for c in cases)}")
+        print_error(f"no case {args.case!r}; the cases: {', '.join(c.id for c in cases)}")
         return 2
     if args.format == "html" and args.output is None:
-        _err("--format html needs -o FILE.html")
+        print_error("--format html needs -o FILE.html")
         return 2
     try:
         return _report(args, cases)
     except AdvisorError as exc:  # a target that must not be written (a directory, …)
-        _err(str(exc))
+        print_error(str(exc))
         return exc.exit_code
     except KeyboardInterrupt:
-        _err("interrupted; nothing was written")
+        print_error("interrupted; nothing was written")
         return 130
 
 

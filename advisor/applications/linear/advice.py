@@ -293,7 +293,7 @@ def _material(
     )
 
 
-def _thrust_face(req: Requirements, cat: Catalogs) -> ThrustFace | None:
+def thrust_face(req: Requirements, cat: Catalogs) -> ThrustFace | None:
     """The thrust face of ``[screw.thrust]`` (issue 26); None where it is unknown."""
     t = req.screw.thrust
     if t.kind == "collar":
@@ -378,7 +378,7 @@ def advise_linear(
     trace.apply(screw_rules.transmission_type, lin.force_N)
     material, f_range = _material(req, cat, trace)
     model = trace.apply(screw_rules.friction_model, s.friction_model)
-    thrust = _thrust_face(req, cat)
+    thrust = thrust_face(req, cat)
     sf = service_factor(getattr(req, "design", None))
 
     if s.thread is not None and cat.thread(s.thread) is None:

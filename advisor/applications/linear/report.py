@@ -1,11 +1,11 @@
 """Report tables of the linear actuator (imported only on the linear path)."""
 
-from advisor.core.report import _Out
+from advisor.core.report import ReportTable
 from advisor.duty.report import DutyOut
 from advisor.one_way.report import OneWayOut
 
 
-class NutOut(_Out):
+class NutOut(ReportTable):
     height_mm: float
     turns: float
     height_ratio: float
@@ -24,7 +24,7 @@ class NutOut(_Out):
     heat_model: str | None = None
 
 
-class ThrustOut(_Out):
+class ThrustOut(ReportTable):
     """The face that takes the axial force and its friction torque (issue 26)."""
 
     kind: str
@@ -34,7 +34,7 @@ class ThrustOut(_Out):
     efficiency: float  # F·L / (2π·(T_thread + T_thrust))
 
 
-class BucklingOut(_Out):
+class BucklingOut(ReportTable):
     formula: str
     why: str | None = None  # why Euler or Johnson: the slenderness against the transition
     end_fixity: str
@@ -44,7 +44,7 @@ class BucklingOut(_Out):
     safety_factor_required: float
 
 
-class ScrewOut(_Out):
+class ScrewOut(ReportTable):
     thread: str
     imposed: bool
     advisor_choice: str | None = None
@@ -88,13 +88,13 @@ class ScrewOut(_Out):
     service_factor: float | None = None
 
 
-class CurveOut(_Out):
+class CurveOut(ReportTable):
     slip: list[float]
     speed_rpm: list[float]
     torque_Nm: list[float]
 
 
-class MotorCandidateOut(_Out):
+class MotorCandidateOut(ReportTable):
     role: str
     rated_power_kW: float
     model: str | None = None
@@ -116,7 +116,7 @@ class MotorCandidateOut(_Out):
     curve: CurveOut | None = None
 
 
-class InductionMotorOut(_Out):
+class InductionMotorOut(ReportTable):
     kind: str
     supply_frequency_Hz: float
     speed_rpm: float
@@ -142,7 +142,7 @@ class InductionMotorOut(_Out):
     candidates: list[MotorCandidateOut]
 
 
-class LinearDesignOut(_Out):
+class LinearDesignOut(ReportTable):
     screw: ScrewOut
     motor: InductionMotorOut
     one_way: "OneWayOut | None" = None

@@ -10,30 +10,32 @@ from advisor.core.requirements import (
     DesignReq,
     OneWayReq,
     ProjectField,
-    _num,
-    _Strict,
+    StrictModel,
     after_check,
     ask,
     field_check,
+    number_field,
 )
 from advisor.duty.requirements import LinearDutyReq
 from advisor.uncertainty.requirements import UncertaintyField
 
 
-class LinearReq(_Strict):
+class LinearReq(StrictModel):
     """The linear stage. Every number has a physically meaningful range (issue 13): a screw
     actuator of this advisor pushes 1 N … 5 MN over 1 mm … 20 m in 10 ms … about 28 h."""
 
     force_N: Annotated[
         float,
-        _num(ge=1, le=5e6, desc="rated axial force, N; 1 N … 5 MN", label="Axial force", step=1),
+        number_field(
+            ge=1, le=5e6, desc="rated axial force, N; 1 N … 5 MN", label="Axial force", step=1
+        ),
     ]
     stroke_m: Annotated[
-        float, _num(ge=1e-3, le=20, desc="stroke, m; 1 mm … 20 m", label="Stroke", step=1)
+        float, number_field(ge=1e-3, le=20, desc="stroke, m; 1 mm … 20 m", label="Stroke", step=1)
     ]
     travel_time_s: Annotated[
         float,
-        _num(
+        number_field(
             ge=0.01,
             le=1e5,
             desc="time for the full stroke, s; 0.01 … 100000 s",
@@ -43,7 +45,7 @@ class LinearReq(_Strict):
     ]
     support_span_m: Annotated[
         float,
-        _num(
+        number_field(
             ge=1e-3,
             le=20,
             desc="distance between the screw supports, m; 1 mm … 20 m",
@@ -60,11 +62,11 @@ class LinearReq(_Strict):
         ),
     ] = "pinned-pinned"
     buckling_safety_factor: Annotated[
-        float, _num(ge=1, le=20, desc="required margin against buckling; 1 … 20")
+        float, number_field(ge=1, le=20, desc="required margin against buckling; 1 … 20")
     ] = 3.0
     emergency_stop_force_N: Annotated[
         float | None,
-        _num(
+        number_field(
             ge=1,
             le=5e6,
             desc="momentary peak axial force in an emergency stop or a collision, 1 N … 5 MN; "
@@ -77,16 +79,16 @@ class LinearReq(_Strict):
     _stroke_fits = after_check(checks.stroke_fits)
 
 
-class InductionMotorReq(_Strict):
+class InductionMotorReq(StrictModel):
     kind: Annotated[Literal["induction"], Field(description="motor type")]
     supply_frequency_Hz: Annotated[
-        float, _num(gt=0, desc="supply frequency, Hz", label="Supply frequency", step=3)
+        float, number_field(gt=0, desc="supply frequency, Hz", label="Supply frequency", step=3)
     ] = 50.0
 
     _fifty = field_check("supply_frequency_Hz", checks.fifty)
 
 
-class ScrewThrustReq(_Strict):
+class ScrewThrustReq(StrictModel):
     """The face that takes the screw's axial force ([screw.thrust]): a plain collar (its mean
     diameter and friction) or a rolling bearing of the SKF catalog. Its friction torque adds
     to the thread's (Shigley, eq. (8-6)); left as "unknown", the report warns that the motor
@@ -103,7 +105,7 @@ class ScrewThrustReq(_Strict):
     ] = "unknown"
     mean_diameter_mm: Annotated[
         float | None,
-        _num(
+        number_field(
             gt=0,
             le=2000,
             desc="mean diameter of the thrust collar, mm (outer + inner)/2; > 0 … 2000 mm",
@@ -113,7 +115,7 @@ class ScrewThrustReq(_Strict):
     ] = None
     friction_coefficient: Annotated[
         float | None,
-        _num(
+        number_field(
             ge=0.01,
             le=0.6,
             desc="collar friction coefficient f_c; 0.01 … 0.6 (Shigley Table 8-6: 0.06 … 0.12 "
@@ -134,7 +136,7 @@ class ScrewThrustReq(_Strict):
     ] = None
     lubricant_viscosity_mm2_s: Annotated[
         float,
-        _num(
+        number_field(
             ge=0.5,
             le=5000,
             desc="kinematic viscosity of the bearing's lubricant at its temperature, mm²/s; "
@@ -145,10 +147,10 @@ class ScrewThrustReq(_Strict):
     _complete = after_check(checks.thrust_complete)
 
 
-class ScrewReq(_Strict):
+class ScrewReq(StrictModel):
     friction_coefficient: Annotated[
         float | None,
-        _num(
+        number_field(
             ge=0.01,
             le=0.6,
             desc="thread friction coefficient f; 0.01 … 0.6",
@@ -185,7 +187,7 @@ class ScrewReq(_Strict):
     _thread_form = field_check("thread", checks.thread_form)
 
 
-class LinearRequirements(_Strict):
+class LinearRequirements(StrictModel):
     """A linear actuator: induction motor + sliding screw–nut (seed 001)."""
 
     application: ApplicationReq

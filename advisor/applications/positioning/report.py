@@ -1,10 +1,10 @@
 """Report tables of the positioning drive (imported only on that path)."""
 
-from advisor.core.report import _Out
+from advisor.core.report import ReportTable
 from advisor.duty.report import DutyOut
 
 
-class MotionCandidateOut(_Out):
+class MotionCandidateOut(ReportTable):
     name: str
     speed_rad_s: float
     inertia_kgm2: float
@@ -17,12 +17,12 @@ class MotionCandidateOut(_Out):
     profile: str
 
 
-class CurveOut(_Out):
+class CurveOut(ReportTable):
     ratio: list[float]
     move_time_s: list[float]
 
 
-class MotionOut(_Out):
+class MotionOut(ReportTable):
     motor: str
     optimal_ratio: float
     estimated_ratio: float
@@ -46,7 +46,7 @@ class MotionOut(_Out):
     curve: CurveOut
 
 
-class PositioningDesignOut(_Out):
+class PositioningDesignOut(ReportTable):
     motion: MotionOut
     duty: DutyOut | None = None
 

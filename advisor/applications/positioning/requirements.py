@@ -13,22 +13,22 @@ from advisor.applications.positioning import requirement_checks as checks
 from advisor.core.requirements import (
     ApplicationReq,
     ProjectField,
-    _num,
-    _Strict,
+    StrictModel,
     after_check,
     ask,
     field_check,
+    number_field,
 )
 from advisor.duty.requirements import PositioningDutyReq
 
 
-class CandidateMotor(_Strict):
+class CandidateMotor(StrictModel):
     name: Annotated[
         str, ask("a label for the motor", label="name", step=3, min_length=1, max_length=60)
     ]
     speed_rad_s: Annotated[
         float,
-        _num(
+        number_field(
             ge=0.1,
             le=1e4,
             desc="rated speed ω0, 0.1 … 10⁴ rad/s (about 1 … 95 000 rpm)",
@@ -38,7 +38,7 @@ class CandidateMotor(_Strict):
     ]
     inertia_kgm2: Annotated[
         float,
-        _num(
+        number_field(
             ge=1e-9,
             le=1e3,
             desc="motor and coupling inertia J0, 10⁻⁹ … 10³ kg·m²",
@@ -48,7 +48,7 @@ class CandidateMotor(_Strict):
     ]
     accel_torque_Nm: Annotated[
         float,
-        _num(
+        number_field(
             ge=1e-5,
             le=1e6,
             desc="starting and braking torque M_λ, 10⁻⁵ … 10⁶ N·m",
@@ -58,7 +58,7 @@ class CandidateMotor(_Strict):
     ]
     rated_torque_Nm: Annotated[
         float | None,
-        _num(
+        number_field(
             gt=0,
             le=1e6,
             desc="continuous (S1) torque, N·m; required when [duty] is given",
@@ -68,14 +68,14 @@ class CandidateMotor(_Strict):
     ] = None
 
 
-class PositioningReq(_Strict):
+class PositioningReq(StrictModel):
     profile: Annotated[
         Literal["trapezoidal", "triangular"],
         ask("speed graph expected", label="Speed graph", step=1),
     ] = "trapezoidal"
     travel_rad: Annotated[
         float,
-        _num(
+        number_field(
             ge=1e-4,
             le=1e5,
             desc="path of the load shaft α, 10⁻⁴ … 10⁵ rad (0.006° to about 16 000 turns)",
@@ -85,7 +85,7 @@ class PositioningReq(_Strict):
     ]
     load_inertia_kgm2: Annotated[
         float,
-        _num(
+        number_field(
             ge=0,
             le=1e7,
             desc="load inertia J_p, 0 (none) or 10⁻⁹ … 10⁷ kg·m²",
@@ -95,7 +95,7 @@ class PositioningReq(_Strict):
     ]
     load_torque_Nm: Annotated[
         float,
-        _num(
+        number_field(
             ge=0,
             le=1e7,
             desc="load torque M_p, 0 (none) or 10⁻⁶ … 10⁷ N·m",
@@ -105,7 +105,7 @@ class PositioningReq(_Strict):
     ]
     move_time_s: Annotated[
         float | None,
-        _num(
+        number_field(
             ge=1e-4,
             le=1e6,
             desc=(
@@ -132,7 +132,7 @@ class PositioningReq(_Strict):
     _unique_names = after_check(checks.unique_names)
 
 
-class PositioningRequirements(_Strict):
+class PositioningRequirements(StrictModel):
     """A positioning drive: which motor and which ratio make the move fastest."""
 
     application: ApplicationReq

@@ -1,18 +1,18 @@
 """Report tables of the rotary application (imported only on the rotary path)."""
 
-from advisor.core.report import _Out
+from advisor.core.report import ReportTable
 from advisor.duty.report import DutyOut
 from advisor.one_way.report import OneWayOut
 
 
-class LossesOut(_Out):
+class LossesOut(ReportTable):
     ohmic: float
     iron: float
     magnets: float
     total: float
 
 
-class SpeedCandidateOut(_Out):
+class SpeedCandidateOut(ReportTable):
     speed_rpm: float
     electrical_frequency_Hz: float
     total_ratio: float
@@ -25,14 +25,14 @@ class SpeedCandidateOut(_Out):
     iron_loss_three_term_W: float
 
 
-class PoleSlotOut(_Out):
+class PoleSlotOut(ReportTable):
     slots: int
     poles: int
     teeth_per_group: int
     winding_factor: float
 
 
-class SteelOut(_Out):
+class SteelOut(ReportTable):
     grade: str
     thickness_mm: float
     equivalent: str
@@ -44,7 +44,7 @@ class SteelOut(_Out):
     estimated: list[str]
 
 
-class BldcMotorOut(_Out):
+class BldcMotorOut(ReportTable):
     kind: str
     speed_rpm: float
     pole_pairs: int
@@ -63,7 +63,7 @@ class BldcMotorOut(_Out):
     frame: "FrameOut | None" = None
 
 
-class StageOut(_Out):
+class StageOut(ReportTable):
     position: str
     ratio: float
     rows: int
@@ -76,7 +76,7 @@ class StageOut(_Out):
     mass_kg: float
 
 
-class GearboxSummaryOut(_Out):
+class GearboxSummaryOut(ReportTable):
     total_ratio: float
     efficiency: float
     outer_diameter_mm: float
@@ -87,7 +87,7 @@ class GearboxSummaryOut(_Out):
     stages: list[StageOut]
 
 
-class SweepOut(_Out):
+class SweepOut(ReportTable):
     configurations: int  # built and computed: each realises the ratio within the stage limits
     feasible: int  # of those, the ones whose every stage fits the common diameter
     stage_counts: list[int]
@@ -95,13 +95,13 @@ class SweepOut(_Out):
     objective_diameter: str
 
 
-class Fig1Out(_Out):
+class Fig1Out(ReportTable):
     q: list[float]
     rows: list[int]
     volume_per_torque_cm3_per_Nm: list[list[float]]
 
 
-class ParetoPointOut(_Out):
+class ParetoPointOut(ReportTable):
     stages: int
     ratios: list[float]  # output first
     rows_out: int
@@ -111,7 +111,7 @@ class ParetoPointOut(_Out):
     efficiency: float
 
 
-class ParetoOut(_Out):
+class ParetoOut(ReportTable):
     """The front as columns (one entry per design shown, lightest first), like ``fig1``."""
 
     objectives: list[str]
@@ -140,7 +140,7 @@ class GearboxOut(GearboxSummaryOut):
     fig1: Fig1Out
 
 
-class StageLifeOut(_Out):
+class StageLifeOut(ReportTable):
     position: str
     rated_torque_Nm: float  # the torque eq. (16) sized the stage for
     mean_input_speed_rpm: float
@@ -149,7 +149,7 @@ class StageLifeOut(_Out):
     life_L10_h: float
 
 
-class ReducerLoadOut(_Out):
+class ReducerLoadOut(ReportTable):
     """The reducer under its load spectrum (issue 26, item 2): figures at the output."""
 
     basis: str  # "duty cycle" | "working point"
@@ -176,7 +176,7 @@ class ReducerLoadOut(_Out):
     phases_time_s: list[float]
 
 
-class OutputBearingOut(_Out):
+class OutputBearingOut(ReportTable):
     designation: str
     chosen: str  # "given" | "automatic"
     arrangement: str
@@ -196,7 +196,7 @@ class OutputBearingOut(_Out):
     limiting_speed_rpm: float
 
 
-class RegenerationOut(_Out):
+class RegenerationOut(ReportTable):
     """Energy the motor gives back per cycle, and what absorbs it (issue 26, item 6)."""
 
     regenerated_per_cycle_J: float
@@ -215,7 +215,7 @@ class RegenerationOut(_Out):
     rule: str
 
 
-class RotaryDesignOut(_Out):
+class RotaryDesignOut(ReportTable):
     motor: BldcMotorOut
     gearbox: GearboxOut
     one_way: OneWayOut | None = None
@@ -234,7 +234,7 @@ def headline(report) -> str:
     )
 
 
-class FrameTriedOut(_Out):
+class FrameTriedOut(ReportTable):
     name: str
     kind: str  # "scaled" | "catalog"
     torque_Nm: float  # continuous, at the rated speed
@@ -245,7 +245,7 @@ class FrameTriedOut(_Out):
     why: str
 
 
-class FrameOut(_Out):
+class FrameOut(ReportTable):
     """The motor frame the design takes (issue 25) and which kind of data decided."""
 
     name: str

@@ -20,19 +20,19 @@ from advisor.core.requirements import (
     DesignReq,
     OneWayReq,
     ProjectField,
-    _num,
-    _Strict,
+    StrictModel,
     after_check,
     ask,
     field_check,
+    number_field,
 )
 from advisor.duty.requirements import RotaryDutyReq
 
 
-class RotaryReq(_Strict):
+class RotaryReq(StrictModel):
     torque_Nm: Annotated[
         float,
-        _num(
+        number_field(
             ge=1,
             le=1e5,
             desc="peak output torque, 1 … 10⁵ N·m",
@@ -42,7 +42,7 @@ class RotaryReq(_Strict):
     ]
     speed_rpm: Annotated[
         float,
-        _num(
+        number_field(
             ge=1e-3,
             le=1e4,
             desc="maximum output speed, 10⁻³ … 10⁴ rpm",
@@ -52,7 +52,7 @@ class RotaryReq(_Strict):
     ]
     emergency_stop_torque_Nm: Annotated[
         float | None,
-        _num(
+        number_field(
             ge=1,
             le=1e6,
             desc="momentary peak torque at the output in an emergency stop or a collision, "
@@ -64,7 +64,7 @@ class RotaryReq(_Strict):
     ] = None
     emergency_stop_time_s: Annotated[
         float,
-        _num(
+        number_field(
             ge=1e-3,
             le=10,
             desc="how long one emergency-stop peak lasts, 1 ms … 10 s",
@@ -81,23 +81,25 @@ class RotaryReq(_Strict):
     ] = None
 
 
-class OutputLoadReq(_Strict):
+class OutputLoadReq(StrictModel):
     """An external load on the output shaft ([output_load]): its bearing is checked by
     ISO 281 with the SKF catalog (issue 26, item 3)."""
 
     radial_N: Annotated[
         float,
-        _num(
+        number_field(
             ge=0, le=1e7, desc="radial force on the output, 0 … 10⁷ N", label="Radial load", step=2
         ),
     ] = 0.0
     axial_N: Annotated[
         float,
-        _num(ge=0, le=1e7, desc="axial force on the output, 0 … 10⁷ N", label="Axial load", step=2),
+        number_field(
+            ge=0, le=1e7, desc="axial force on the output, 0 … 10⁷ N", label="Axial load", step=2
+        ),
     ] = 0.0
     tilting_moment_Nm: Annotated[
         float,
-        _num(
+        number_field(
             ge=0,
             le=1e6,
             desc="tilting moment on the output, 0 … 10⁶ N·m (taken by a pair of bearings "
@@ -108,7 +110,7 @@ class OutputLoadReq(_Strict):
     ] = 0.0
     speed_rpm: Annotated[
         float | None,
-        _num(
+        number_field(
             ge=1e-3,
             le=1e4,
             desc="output speed the bearing's life is counted at, 10⁻³ … 10⁴ rpm (as "
@@ -128,7 +130,7 @@ class OutputLoadReq(_Strict):
     ] = "auto"
     bearing_spacing_mm: Annotated[
         float | None,
-        _num(
+        number_field(
             ge=1,
             le=1e4,
             desc="distance between the two output bearings that take a tilting moment, "
@@ -140,15 +142,15 @@ class OutputLoadReq(_Strict):
     _moment_needs_pair = after_check(checks.moment_needs_pair)
 
 
-class DriveReq(_Strict):
+class DriveReq(StrictModel):
     """The servo drive's DC bus ([drive]): where the energy the motor gives back goes."""
 
     bus_voltage_V: Annotated[
-        float, _num(ge=12, le=2000, desc="nominal DC-bus voltage, 12 … 2000 V")
+        float, number_field(ge=12, le=2000, desc="nominal DC-bus voltage, 12 … 2000 V")
     ] = 300.0
     bus_max_voltage_V: Annotated[
         float,
-        _num(
+        number_field(
             ge=12,
             le=2500,
             desc="largest DC-bus voltage (the braking chopper's threshold), 12 … 2500 V",
@@ -156,7 +158,7 @@ class DriveReq(_Strict):
     ] = 400.0
     bus_capacitance_uF: Annotated[
         float | None,
-        _num(
+        number_field(
             gt=0,
             le=1e6,
             desc="the drive's DC-bus capacitance, > 0 … 10⁶ µF; left out: the resistor is "
@@ -172,7 +174,7 @@ class RotaryDesignReq(DesignReq):
 
     life_h: Annotated[
         float | None,
-        _num(
+        number_field(
             ge=1,
             le=1e7,
             desc="required L10 life of the reducer's rolling elements and of the output "
@@ -183,10 +185,10 @@ class RotaryDesignReq(DesignReq):
     ] = None
 
 
-class EnvelopeReq(_Strict):
+class EnvelopeReq(StrictModel):
     max_outer_diameter_mm: Annotated[
         float | None,
-        _num(
+        number_field(
             ge=1,
             le=1e4,
             desc="largest outer diameter of the reducer, 1 … 10⁴ mm",
@@ -196,7 +198,7 @@ class EnvelopeReq(_Strict):
     ] = None
     max_length_mm: Annotated[
         float | None,
-        _num(
+        number_field(
             ge=1,
             le=1e4,
             desc="largest length of the reducer, 1 … 10⁴ mm",
@@ -206,11 +208,11 @@ class EnvelopeReq(_Strict):
     ] = None
 
 
-class MagnetLossPoint(_Strict):
-    speed_rpm: Annotated[float, _num(ge=1, le=2e5, desc="motor speed, 1 … 2·10⁵ rpm")]
+class MagnetLossPoint(StrictModel):
+    speed_rpm: Annotated[float, number_field(ge=1, le=2e5, desc="motor speed, 1 … 2·10⁵ rpm")]
     loss_W: Annotated[
         float,
-        _num(
+        number_field(
             ge=0,
             le=1e5,
             desc="eddy-current loss in the magnets, 0 (none) or 10⁻⁶ … 10⁵ W (a power law "
@@ -221,38 +223,44 @@ class MagnetLossPoint(_Strict):
     _loss_zero_or_range = field_check("loss_W", checks.magnet_loss_zero_or_range)
 
 
-class ReferenceMotor(_Strict):
+class ReferenceMotor(StrictModel):
     """The design the loss model scales from; the defaults are the seed 000 motor."""
 
     speed_rpm: Annotated[
-        float, _num(ge=100, le=2e5, desc="speed of the reference design, 100 … 2·10⁵ rpm")
+        float, number_field(ge=100, le=2e5, desc="speed of the reference design, 100 … 2·10⁵ rpm")
     ] = 5000.0
     pole_pairs: Annotated[
         int, Field(ge=1, le=50, description="electrical reduction p, 1 … 50 pole pairs")
     ] = 6
     phase_resistance_ohm: Annotated[
-        float, _num(ge=1e-4, le=1e3, desc="phase resistance, 10⁻⁴ … 10³ Ω")
+        float, number_field(ge=1e-4, le=1e3, desc="phase resistance, 10⁻⁴ … 10³ Ω")
     ] = 1.14
-    current_A: Annotated[float, _num(ge=0.01, le=1e4, desc="phase current, 0.01 … 10⁴ A")] = 5.5
+    current_A: Annotated[
+        float, number_field(ge=0.01, le=1e4, desc="phase current, 0.01 … 10⁴ A")
+    ] = 5.5
     conducting_phases: Annotated[int, Field(ge=1, le=3, description="phases in series, 1 … 3")] = 2
     torque_Nm: Annotated[
-        float, _num(ge=1e-3, le=1e4, desc="torque at that current, 10⁻³ … 10⁴ N·m")
+        float, number_field(ge=1e-3, le=1e4, desc="torque at that current, 10⁻³ … 10⁴ N·m")
     ] = 2.0
     stator_steel_area_mm2: Annotated[
-        float, _num(ge=1, le=1e7, desc="stator steel area, 1 … 10⁷ mm²")
+        float, number_field(ge=1, le=1e7, desc="stator steel area, 1 … 10⁷ mm²")
     ] = 1200.0
-    stack_length_mm: Annotated[float, _num(ge=1, le=1e4, desc="stack length, 1 … 10⁴ mm")] = 50.0
+    stack_length_mm: Annotated[
+        float, number_field(ge=1, le=1e4, desc="stack length, 1 … 10⁴ mm")
+    ] = 50.0
     stacking_factor: Annotated[
-        float, _num(ge=0.5, le=1, desc="steel fill of the stack, 0.5 … 1")
+        float, number_field(ge=0.5, le=1, desc="steel fill of the stack, 0.5 … 1")
     ] = 0.85
     steel_density_kg_m3: Annotated[
-        float, _num(ge=6000, le=9000, desc="steel density, 6000 … 9000 kg/m³")
+        float, number_field(ge=6000, le=9000, desc="steel density, 6000 … 9000 kg/m³")
     ] = 7800.0
     steel_grade: Annotated[str, Field(description="GOST 21427.2-83 grade, e.g. 2413")] = "2413"
     steel_thickness_mm: Annotated[
-        float, _num(ge=0.05, le=2, desc="lamination thickness, 0.05 … 2 mm")
+        float, number_field(ge=0.05, le=2, desc="lamination thickness, 0.05 … 2 mm")
     ] = 0.35
-    induction_T: Annotated[float, _num(ge=0.1, le=2.5, desc="peak flux density, 0.1 … 2.5 T")] = 1.5
+    induction_T: Annotated[
+        float, number_field(ge=0.1, le=2.5, desc="peak flux density, 0.1 … 2.5 T")
+    ] = 1.5
     iron_loss_model: Annotated[
         Literal["quadratic", "three_term"], Field(description="form of eq. (5) used")
     ] = "quadratic"
@@ -266,7 +274,7 @@ class ReferenceMotor(_Strict):
     _one_loss_per_speed = after_check(checks.one_loss_per_speed)
 
 
-class BldcMotorReq(_Strict):
+class BldcMotorReq(StrictModel):
     kind: Annotated[Literal["bldc"], Field(description="motor type")]
     frame: Annotated[
         str,
@@ -282,7 +290,7 @@ class BldcMotorReq(_Strict):
         ),
     ] = "reference"
     candidate_speeds_rpm: Annotated[
-        list[Annotated[float, _num(ge=100, le=2e5, desc="a motor speed, 100 … 2·10⁵ rpm")]],
+        list[Annotated[float, number_field(ge=100, le=2e5, desc="a motor speed, 100 … 2·10⁵ rpm")]],
         ask(
             "motor speeds to compare, 100 … 2·10⁵ rpm each, each once, at most 20",
             label="Motor speeds to compare",
@@ -295,7 +303,7 @@ class BldcMotorReq(_Strict):
     phases: Annotated[int, Field(ge=3, le=3, description="number of phases")] = 3
     max_losses_W: Annotated[
         float | None,
-        _num(
+        number_field(
             ge=0.1,
             le=1e6,
             desc="total losses the motor's cooling carries away, 0.1 … 10⁶ W; by default the "
@@ -307,13 +315,13 @@ class BldcMotorReq(_Strict):
     _each_speed_once = field_check("candidate_speeds_rpm", checks.each_speed_once)
 
 
-class GearboxReq(_Strict):
+class GearboxReq(StrictModel):
     rolling_body: Annotated[
         Literal["ball", "roller"], ask("rolling bodies", label="Rolling bodies", step=3)
     ] = "ball"
     stage_efficiency: Annotated[
         float,
-        _num(
+        number_field(
             ge=0.3,
             le=1,
             desc="efficiency of one stage, 0.3 … 1",
@@ -322,9 +330,11 @@ class GearboxReq(_Strict):
         ),
     ] = 0.9
     density_kg_m3: Annotated[
-        float, _num(ge=1000, le=2e4, desc="material density, 1000 … 2·10⁴ kg/m³")
+        float, number_field(ge=1000, le=2e4, desc="material density, 1000 … 2·10⁴ kg/m³")
     ] = 7800.0
-    fill_factor: Annotated[float, _num(ge=0.1, le=1, desc="k_з of eq. (19), 0.1 … 1")] = 0.75
+    fill_factor: Annotated[float, number_field(ge=0.1, le=1, desc="k_з of eq. (19), 0.1 … 1")] = (
+        0.75
+    )
     choice: Annotated[
         Literal["rules", "lightest", "slimmest"],
         ask(
@@ -350,7 +360,7 @@ class RotaryOneWayReq(OneWayReq):
     ] = "motor_side"
 
 
-class RotaryRequirements(_Strict):
+class RotaryRequirements(StrictModel):
     """A rotary actuator: PM brushless motor + wave-gear reducer with rolling bodies."""
 
     application: ApplicationReq

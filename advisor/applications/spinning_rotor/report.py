@@ -1,31 +1,31 @@
 """Report tables of the spinning-rotor drive (imported only on that path)."""
 
-from advisor.core.report import _Out
+from advisor.core.report import ReportTable
 
 
-class PairOut(_Out):
+class PairOut(ReportTable):
     without_reaction: float
     with_reaction: float
 
 
-class FrictionTermsOut(_Out):
+class FrictionTermsOut(ReportTable):
     radial_Nm: float
     axial_Nm: float
     centrifugal_Nm: float
 
 
-class FrictionPartsOut(_Out):
+class FrictionPartsOut(ReportTable):
     without_reaction: FrictionTermsOut
     with_reaction: FrictionTermsOut
 
 
-class LoadsOut(_Out):
+class LoadsOut(ReportTable):
     radial_N: float
     axial_N: float
     centrifugal_per_ball_N: float
 
 
-class BearingOut(_Out):
+class BearingOut(ReportTable):
     designation: str
     type: str
     d_mm: float
@@ -49,12 +49,12 @@ class BearingOut(_Out):
     estimated: list[str]
 
 
-class CurveOut(_Out):
+class CurveOut(ReportTable):
     time_s: list[float]
     speed_rad_s: list[float]
 
 
-class SlewOut(_Out):
+class SlewOut(ReportTable):
     drive_torque_Nm: float
     duration_s: float
     speed_after_slew_rad_s: float
@@ -63,7 +63,7 @@ class SlewOut(_Out):
     curve: CurveOut
 
 
-class RotorOut(_Out):
+class RotorOut(ReportTable):
     inertia_kgm2: float
     angular_momentum_kgm2_s: float
     speed_rad_s: float
@@ -93,7 +93,7 @@ class RotorOut(_Out):
     run_up: CurveOut
 
 
-class RotorDesignOut(_Out):
+class RotorDesignOut(ReportTable):
     rotor: RotorOut
 
 

@@ -13,11 +13,11 @@ from advisor.applications.spinning_rotor.requirement_checks import (
 from advisor.core.requirements import (
     ApplicationReq,
     ProjectField,
-    _num,
-    _Strict,
+    StrictModel,
     after_check,
     ask,
     field_check,
+    number_field,
 )
 
 
@@ -27,11 +27,11 @@ def _rng(lo: float, hi: float, desc: str, *, open_lo: bool = False, **question: 
     ``question``: the wizard's metadata, as for :func:`advisor.core.requirements.ask`."""
     low = f"above {lo:g}" if open_lo else f"from {lo:g}"
     if open_lo:
-        return _num(gt=lo, le=hi, desc=f"{desc}; {low} to {hi:g}", **question)
-    return _num(ge=lo, le=hi, desc=f"{desc}; {low} to {hi:g}", **question)
+        return number_field(gt=lo, le=hi, desc=f"{desc}; {low} to {hi:g}", **question)
+    return number_field(ge=lo, le=hi, desc=f"{desc}; {low} to {hi:g}", **question)
 
 
-class AeroReq(_Strict):
+class AeroReq(StrictModel):
     """Aerodynamic drag of eq. (5): either the cup geometry or a known loss at the speed."""
 
     loss_W: Annotated[
@@ -74,7 +74,7 @@ class AeroReq(_Strict):
     _one_way = after_check(checks.aero_one_way)
 
 
-class RotorReq(RotorDerived, _Strict):
+class RotorReq(RotorDerived, StrictModel):
     mass_kg: Annotated[float, _rng(1e-3, 1e4, "rotor mass, kg", label="Rotor mass", step=1)]
     angular_momentum_kgm2_s: Annotated[
         float | None,
@@ -114,7 +114,7 @@ class RotorReq(RotorDerived, _Strict):
     ]
     slew_rate_rad_s: Annotated[
         float,
-        _num(
+        number_field(
             ge=0,
             le=100,
             desc="external angular velocity Ω of the housing, rad/s; 0 (no slew) or from "
@@ -172,7 +172,7 @@ class RotorReq(RotorDerived, _Strict):
     _momentum_or_inertia = after_check(checks.momentum_or_inertia)
 
 
-class SpinningRotorRequirements(_Strict):
+class SpinningRotorRequirements(StrictModel):
     """An idling high-speed rotor: bearing losses under the gyroscopic reaction and the drive
     torque that brings it to speed in time."""
 
