@@ -86,7 +86,7 @@ def build_parser() -> argparse.ArgumentParser:
 def print_error(message: str) -> None:
     """Each line of ``message`` on stderr after the program name: controls escaped, at most
     :data:`LINE_CHARS` characters (a message never floods the terminal)."""
-    from advisor.io_safety import clip, printable
+    from advisor.core.io_safety import clip, printable
 
     room = LINE_CHARS - len(PROG) - 2  # "advisor: " comes first
     for line in message.splitlines() or [message]:
@@ -120,7 +120,7 @@ def _stdout_failed(exc: OSError, what: str, after: str = "it is incomplete") -> 
 
 def _warn_ignored(warnings: list[str], source: Path | None = None) -> None:
     """Options the design does not use, said on stderr too (they are in the report)."""
-    from advisor.ignored import IGNORED_PREFIX
+    from advisor.core.ignored import IGNORED_PREFIX
 
     for w in warnings:
         if w.startswith(IGNORED_PREFIX):
@@ -134,8 +134,8 @@ def run_batch(
 
     pydantic_plugins.disable()  # the advisor uses no pydantic plugin: no metadata scan
     from advisor.core.engine import advise
+    from advisor.core.io_safety import OutputError, check_target, same_file, show, write_atomic
     from advisor.core.reading import read_requirements
-    from advisor.io_safety import OutputError, check_target, same_file, show, write_atomic
 
     if fmt is None:
         from advisor.datasheet import format_of
@@ -211,7 +211,7 @@ def run_many(inputs: list[Path], out_dir: Path, catalog_dir: Path | None, jobs: 
 
     pydantic_plugins.disable()
     from advisor import many
-    from advisor.io_safety import show
+    from advisor.core.io_safety import show
 
     missing = [p for p in inputs if not p.exists()]
     if missing:
@@ -255,7 +255,7 @@ def run_wizard(path: Path | None, catalog_dir: Path | None) -> int:
         print_error(f"{path}: no such file" if not path.exists() else f"{path}: not a file")
         return ExitCode.INVALID_INPUT
     if path is not None:  # a file that cannot be read is said first, terminal or not
-        from advisor.io_safety import read_toml
+        from advisor.core.io_safety import read_toml
 
         read_toml(path)
     if not (_is_terminal(sys.stdin) and _is_terminal(sys.stdout)):
@@ -370,7 +370,7 @@ def _run_subcommand(sub: Any, argv: list[str]) -> int:
     except OSError as exc:
         if exc.filename is None:  # a write to stdout (/dev/full, an I/O error)
             return _stdout_failed(exc, "the output")
-        from advisor.io_safety import show
+        from advisor.core.io_safety import show
 
         print_error(f"{show(exc.filename, 200)}: {exc.strerror or exc}")
         return ExitCode.INVALID_INPUT

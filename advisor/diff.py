@@ -168,10 +168,10 @@ COLUMNS = ("what", "item", "before", "after")
 
 def as_text(changes: list[Change], a: str, b: str) -> str:
     if not changes:
-        from advisor.io_safety import printable
+        from advisor.core.io_safety import printable
 
         return printable(f"{a} and {b}: the same", newlines=False) + "\n"
-    from advisor.io_safety import printable
+    from advisor.core.io_safety import printable
 
     lines = [f"{a} → {b}: {len(changes)} changes", *(f"  {w}" for w in words(changes))]
     # report strings are data: an ESC or a bidi override is shown escaped, never obeyed
@@ -199,7 +199,7 @@ def _html(x: str) -> str:
     in HTML at all), then the markup characters escaped."""
     from html import escape
 
-    from advisor.io_safety import printable
+    from advisor.core.io_safety import printable
 
     return escape(printable(x, newlines=False))
 
@@ -312,7 +312,7 @@ def shape_problem(doc: dict[str, Any]) -> str | None:
 
 def read_report(path: Any) -> dict:
     """A report file as plain data; an InputError (exit 2) for a file that is none."""
-    from advisor.io_safety import read_toml, show
+    from advisor.core.io_safety import read_toml, show
 
     doc = read_toml(path)
     head = doc.get("report")

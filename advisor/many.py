@@ -45,7 +45,7 @@ class Interrupted(Exception):
 def _toml_files(directory: Path) -> list[Path]:
     """The requirement files of a directory: *.toml, not the advisor's own *.report.toml
     (an --out-dir that is also an input must not be read back as requirements)."""
-    from advisor.io_safety import show
+    from advisor.core.io_safety import show
 
     try:
         with os.scandir(directory) as it:
@@ -108,10 +108,10 @@ def advise_one(source: Path, target: Path, catalog_dir: Path | None) -> Advised:
     its siblings when one dies), so the files are written by the parent alone
     (:func:`write_report`), which no pool kills in mid-write."""
     from advisor.core.engine import advise
+    from advisor.core.io_safety import same_file, show
     from advisor.core.reading import read_requirements
     from advisor.core.registry import headline
     from advisor.core.report import to_toml
-    from advisor.io_safety import same_file, show
 
     try:
         if same_file(source, target):
@@ -128,7 +128,7 @@ def advise_one(source: Path, target: Path, catalog_dir: Path | None) -> Advised:
                 text,
             )
         text = to_toml(report)
-        from advisor.ignored import IGNORED_PREFIX
+        from advisor.core.ignored import IGNORED_PREFIX
 
         notes = tuple(w for w in report.warnings if w.startswith(IGNORED_PREFIX))
         return Advised(
@@ -167,8 +167,8 @@ def write_report(advised: Advised) -> Outcome:
     """Write an advised file's report (atomically: a temporary file renamed over the target,
     removed by the writer on any failure, Ctrl-C included); a target that cannot be written
     becomes the file's outcome."""
+    from advisor.core.io_safety import show
     from advisor.core.report import write_atomic
-    from advisor.io_safety import show
 
     o = advised.outcome
     if advised.text is None or o.report is None:
@@ -270,11 +270,11 @@ def preload(catalog_dir: Path | None) -> None:
     which report it per file."""
     from importlib import import_module
 
-    from advisor.core import light, registry
+    from advisor.core import compiled_validator, registry
 
-    for module in ("advisor.core.engine", "advisor.core.report", "advisor.ignored"):
+    for module in ("advisor.core.engine", "advisor.core.report", "advisor.core.ignored"):
         import_module(module)
-    light.prepare()
+    compiled_validator.prepare()
     for app in registry.applications():
         for path in (app.pipeline, app.headline):
             registry.load(path)
@@ -399,7 +399,7 @@ def run_many(
     each in a worker of its own, and a file whose own worker dies again is reported as failed.
     Ctrl-C raises :class:`Interrupted` with the count of reports written.
     """
-    from advisor.io_safety import show
+    from advisor.core.io_safety import show
 
     files = expand(inputs)
     out_dir.mkdir(parents=True, exist_ok=True)
@@ -459,7 +459,7 @@ def summary_lines(outcomes: list[Outcome], out_dir: Path) -> list[str]:
     design or reason), then the counts. Plain text: rich's table took 0.4 s to lay out 400
     files, all of it after the workers had finished (issue 16). User text (file names,
     titles, messages) is shown with its control characters escaped."""
-    from advisor.io_safety import printable
+    from advisor.core.io_safety import printable
 
     names = [
         printable(n, newlines=False) for n in display_names([Path(o.source) for o in outcomes])

@@ -9,8 +9,8 @@ import sys
 from pathlib import Path
 from typing import TextIO
 
+from advisor.core.io_safety import printable
 from advisor.core.report import Report
-from advisor.io_safety import printable
 
 
 def summary_lines(report: Report, path: Path) -> list[str]:

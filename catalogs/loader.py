@@ -117,9 +117,9 @@ CATALOG_MAX_BYTES = 16 << 20
 
 def _read(path: Path) -> dict[str, Any]:
     """A catalog file read as safely as a requirement (regular file, bounded size, no deep
-    nesting; see :mod:`advisor.io_safety`)."""
+    nesting; see :mod:`advisor.core.io_safety`)."""
     from advisor.core.errors import InputError
-    from advisor.io_safety import parse_toml, read_input, show
+    from advisor.core.io_safety import parse_toml, read_input, show
 
     try:
         where = f"catalog {show(path, 200)}"
@@ -150,7 +150,7 @@ def _bound_text(err: Any) -> str | None:
 def _fail(path: Path, where: str, exc) -> CatalogError:
     err = exc.errors()[0]
     loc = ".".join(str(p) for p in err["loc"])
-    from advisor.io_safety import show
+    from advisor.core.io_safety import show
 
     field = f"field {loc} = {show(repr(err['input']))}: " if loc else ""
     msg = _bound_text(err) or err["msg"].removeprefix("Value error, ")
@@ -166,7 +166,7 @@ def _rows(path: Path, data: dict[str, Any], key: str) -> list[dict[str, Any]]:
 
 def _key(row: dict[str, Any], key: str) -> str:
     """A row's naming key as a refusal echoes it: short, controls escaped."""
-    from advisor.io_safety import show
+    from advisor.core.io_safety import show
 
     return show(repr(row.get(key)))
 
@@ -175,7 +175,7 @@ def _text(path: Path, data: dict[str, Any], key: str, default: str) -> str:
     """A file-level text key (``source = "..."``, ``law = "..."``): a string, or refused."""
     v = data.get(key, default)
     if not isinstance(v, str):
-        from advisor.io_safety import show
+        from advisor.core.io_safety import show
 
         raise CatalogError(f"catalog {path}: {key} = {show(repr(v))}: must be a string")
     return v
@@ -185,7 +185,7 @@ def _supply_frequency(path: Path, data: dict[str, Any]) -> float:
     """The file-level ``supply_frequency_Hz`` of an induction motor catalog: a number within
     the range :data:`catalogs.schema.SUPPLY_FREQUENCY_RANGE_HZ` (a unit string is not read
     here: a catalog states its numbers in the units its keys name)."""
-    from advisor.io_safety import show
+    from advisor.core.io_safety import show
     from catalogs.schema import SUPPLY_FREQUENCY_RANGE_HZ
 
     lo, hi = SUPPLY_FREQUENCY_RANGE_HZ

@@ -33,11 +33,11 @@ from types import SimpleNamespace
 import pytest
 from helpers import EXAMPLES
 
+from advisor.applications.linear import duty as dl
+from advisor.applications.rotary import duty as dr
 from advisor.calc import duty as du
 from advisor.core.engine import advise
 from advisor.core.requirements import read_requirements
-from advisor.duty import linear as dl
-from advisor.duty import rotary as dr
 from advisor.duty.requirements import RotarySegmentReq
 from rules import duty as du_rules
 
@@ -46,7 +46,7 @@ RPM = 30.0 / math.pi
 
 
 def _screw(d_mm: float, lead_m: float, efficiency: float = 1.0) -> SimpleNamespace:
-    """A screw as advisor.duty.linear reads it: pitch diameter, lead angle, efficiency."""
+    """A screw as advisor.applications.linear.duty reads it: pitch diameter, lead angle, efficiency."""
     return SimpleNamespace(
         thread=SimpleNamespace(d2_mm=d_mm),
         lead_angle_rad=math.atan(lead_m / (math.pi * d_mm * 1e-3)),
@@ -117,7 +117,7 @@ def test_yaskawa_vmd_load_inertia():
     """[Y-VMD] (4): J_L1 = m·(P_B/2πR)² = 250 × (0.01/(2π × 2))² = 1.58·10⁻⁴ kg·m²;
     J_B = (π/32)·ρ·l_B·d_B⁴/R² = 0.31·10⁻⁴; J_G = 0.40·10⁻⁴; J_L = J_L1 + J_B + J_G =
     2.29·10⁻⁴ kg·m².
-    The advisor's screw is steel of 7850 kg/m³ (advisor.duty.linear.STEEL_DENSITY_KG_M3), the
+    The advisor's screw is steel of 7850 kg/m³ (advisor.applications.linear.duty.STEEL_DENSITY_KG_M3), the
     manual's 7870 (iron): J_B = 0.3083·10⁻⁴ against 0.3091·10⁻⁴, both 0.31 as printed.
     The advisor divides the nut's mass term by the screw's efficiency (the load is driven
     through the thread: m·(L/2π)²/η, the convention of Chilikin, as Mitsubishi's MR-J4 manual

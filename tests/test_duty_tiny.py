@@ -9,9 +9,9 @@ import pytest
 
 from advisor.core.engine import advise
 from advisor.core.errors import InfeasibleError, InputError
+from advisor.core.io_safety import read_toml
 from advisor.core.reading import parse_requirements
 from advisor.core.report import to_toml
-from advisor.io_safety import read_toml
 
 EXAMPLES = Path(__file__).parent.parent / "examples"
 ROTARY = read_toml(EXAMPLES / "rudder_actuator_duty.toml")

@@ -15,8 +15,9 @@ from pathlib import Path
 import pytest
 from helpers import EXAMPLES, ROOT, seed001_requirement
 
-from advisor import io_safety, many
+from advisor import many
 from advisor.cli import main
+from advisor.core import io_safety
 from advisor.core.errors import ExitCode, InputError
 
 LINEAR = EXAMPLES / "linear_screw_actuator.toml"
@@ -702,7 +703,7 @@ def test_a_worker_writes_nothing_the_parent_writes_the_report(tmp_path):
 def test_ctrl_c_while_the_parent_writes_counts_what_is_on_disk(tmp_path, monkeypatch):
     """SIGINT arriving in the middle of a write is held until the batch is recorded: both
     reports are on disk and both are counted, then KeyboardInterrupt is raised."""
-    from advisor import io_safety
+    from advisor.core import io_safety
 
     real = io_safety.write_atomic
     writes = []

@@ -12,13 +12,13 @@ from types import SimpleNamespace
 import pytest
 from helpers import EXAMPLES
 
+from advisor.applications.rotary import duty as dr
 from advisor.calc import duty as du
 from advisor.calc import one_way as ow
 from advisor.core.engine import advise
 from advisor.core.errors import InfeasibleError
 from advisor.core.report import to_toml
 from advisor.core.requirements import parse_requirements
-from advisor.duty import rotary as dr
 
 DEVICES = ("auto", "roller_clutch", "em_clutch", "worm", "inverse_gear")
 

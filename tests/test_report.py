@@ -7,7 +7,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from advisor import io_safety
+from advisor.core import io_safety
 from advisor.core import report as rp
 
 
@@ -62,7 +62,7 @@ def test_killed_writer_leaves_the_old_file_and_no_one_deletes_its_temp(tmp_path)
     target.write_text("old = true\n")
     child = (
         "import os, time, sys\n"
-        "from advisor import io_safety as io\n"
+        "from advisor.core import io_safety as io\n"
         "real = os.fsync\n"
         "def slow(fd):\n"
         "    real(fd); print('written', flush=True); time.sleep(60)\n"

@@ -11,12 +11,13 @@ from helpers import EXAMPLES, seed001_requirement
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from advisor.applications.linear import uncertainty as linear
 from advisor.calc import screw as sc
 from advisor.calc.sizing import fit_motor
 from advisor.cli import main
 from advisor.core.engine import advise, advise_with
 from advisor.core.requirements import parse_requirements, read_requirements
-from advisor.uncertainty import evaluate, linear, replaced
+from advisor.uncertainty import evaluate, replaced
 from advisor.uncertainty.analysis import check_results, wilson
 from advisor.uncertainty.sampling import Distribution, sample
 from catalogs import load_catalogs

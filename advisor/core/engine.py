@@ -9,10 +9,10 @@ from advisor import __version__
 from advisor.core import registry
 from advisor.core.cite import Cite, cited_ids, note, text
 from advisor.core.errors import InfeasibleError
+from advisor.core.ignored import ignored
 from advisor.core.reading import Requirements
 from advisor.core.report import DecisionOut, Report, ReportHeader, SourceOut, check_out
 from advisor.core.rulebook import Trace
-from advisor.ignored import ignored
 from catalogs import load_catalogs
 
 

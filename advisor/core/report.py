@@ -11,7 +11,7 @@ import math
 from typing import Any, ClassVar
 
 from advisor.core import toml_text
-from advisor.io_safety import write_atomic as write_atomic  # re-exported: the report writer
+from advisor.core.io_safety import write_atomic as write_atomic  # re-exported: the report writer
 
 REPORT_FORMAT = 1
 

@@ -22,7 +22,7 @@ from pydantic import (
 from pydantic_core import PydanticCustomError
 
 from advisor.core.errors import InputError
-from advisor.io_safety import read_toml, show, show_repr
+from advisor.core.io_safety import read_toml, show, show_repr
 
 #: At most this many unknown keys are listed (50,000 typos are not 50,000 lines) ...
 MAX_UNKNOWN_SHOWN = 3
@@ -110,7 +110,7 @@ def light_name(fn: Any) -> str:
 def after_check(check: Any) -> Any:
     """A model validator running ``check(model)``: a pure function in a pydantic-free module,
     which raises ValueError with the message. The compiled validator of
-    :mod:`advisor.core.light` runs the same function, so the rule is written once."""
+    :mod:`advisor.core.compiled_validator` runs the same function, so the rule is written once."""
 
     def run(self: Any) -> Any:
         check(self)
@@ -404,8 +404,8 @@ def parse_requirements(data: dict[str, Any]) -> Requirements:
     except ValidationError as exc:
         raise InputError(*format_validation_error(exc, RequirementHead)) from None
     model = requirements_model(kind)
+    from advisor.core.ignored import contradictions
     from advisor.core.units import convert
-    from advisor.ignored import contradictions
 
     try:
         data = convert(data, model)  # "5 kN" → 5000 by the strict quantity grammar
@@ -423,6 +423,6 @@ def parse_requirements(data: dict[str, Any]) -> Requirements:
 
 def read_requirements(path: Path) -> Requirements:
     """Read and validate a requirement file; every failure is an :class:`InputError`
-    (reading itself is :func:`advisor.io_safety.read_toml`: regular files of at most 1 MiB,
+    (reading itself is :func:`advisor.core.io_safety.read_toml`: regular files of at most 1 MiB,
     no deep nesting)."""
     return parse_requirements(read_toml(path))

@@ -1,11 +1,11 @@
 """Compile the requirement models into plain data: the spec the batch path validates with.
 
 The pydantic models (``advisor/applications/*/requirements.py``) stay the one source of
-truth for every field: this module walks them and writes what :mod:`advisor.core.light`
+truth for every field: this module walks them and writes what :mod:`advisor.core.compiled_validator`
 needs — each field's type, range, default, and the model's own checks (pure functions,
 named by import path) — into :mod:`advisor.core.requirement_spec`. The batch path then reads
 a requirement file without importing pydantic, whose model machinery alone costs more than
-the advice (issue 16). ``tests/test_light_requirements.py`` regenerates the spec and fails
+the advice (issue 16). ``tests/test_compiled_validator.py`` regenerates the spec and fails
 when the committed file differs, so a changed model cannot go unnoticed.
 
     python -m advisor.core.spec_gen        # rewrites advisor/core/requirement_spec.py

@@ -486,7 +486,7 @@ def _one(text: str, unit: str, path: tuple[Any, ...], errors: list[str]) -> Any:
     try:
         value = to_unit(text, unit)
     except UnitError as exc:
-        from advisor.io_safety import show_repr
+        from advisor.core.io_safety import show_repr
 
         errors.append(f"{_where(path)} = {show_repr(text)}: {exc}")
         return text

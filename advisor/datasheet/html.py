@@ -3,9 +3,9 @@ script, no link to anything outside it (it can be mailed or attached to a review
 
 from html import escape
 
+from advisor.core.io_safety import printable
 from advisor.datasheet.content import Bar, Block, Probability, Required, Sheet, Table
 from advisor.datasheet.plots import Plot, svg, tornado_svg
-from advisor.io_safety import printable
 
 #: The sections, in order: their ids are what a reader (and the test) finds.
 SECTIONS = (

@@ -45,7 +45,7 @@ def text(value: object) -> str:
     >>> text("# Title\n![img](http://x/y.png) <iframe src=x> a_b | c & d")
     '\\# Title !\\[img\\]\\(http://x/y.png) &lt;iframe src=x&gt; a\\_b \\| c &amp; d'
     """
-    from advisor.io_safety import printable
+    from advisor.core.io_safety import printable
 
     s = _BREAKS.sub(" ", str(value))
     s = printable(s, newlines=False)  # the controls left (ESC, NUL…) shown as \x1b, bidi too

@@ -1,6 +1,6 @@
 """The ``[duty]`` table's own rules, free of pydantic: run by the requirement models
 (:mod:`advisor.duty.requirements`) and by the compiled validator of the batch path
-(:mod:`advisor.core.light`). Each raises ValueError with the message the user reads."""
+(:mod:`advisor.core.compiled_validator`). Each raises ValueError with the message the user reads."""
 
 from typing import Any
 

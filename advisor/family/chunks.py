@@ -11,10 +11,10 @@ import json
 import time
 from typing import Any, NamedTuple
 
+from advisor.core.io_safety import printable
 from advisor.family.adapter import advise_one
 from advisor.family.outputs import COLUMNS, key_outputs
 from advisor.family.spec import Family
-from advisor.io_safety import printable
 
 HEAD = ("variant", "member", "application")
 TAIL = ("status", "exit_code", "reason")

@@ -87,7 +87,7 @@ def check_scheduler(address: str) -> str:
     >>> check_scheduler("tcp://127.0.0.1:8786"), check_scheduler("tcp://[::1]:8786")
     ('tcp://127.0.0.1:8786', 'tcp://[::1]:8786')
     """
-    from advisor.io_safety import show_repr
+    from advisor.core.io_safety import show_repr
 
     m = _ADDRESS.fullmatch(address)
     if m is None or m.group(1) is None or not 1 <= int(m.group(2)) <= 65535:
@@ -174,7 +174,7 @@ def check_not_an_input(
     """Refuse a DIR where the study would write over one of its own inputs (the family
     file or a member's base): compared by real path, so a symbolic link either way counts,
     and by file identity (a hard link)."""
-    from advisor.io_safety import same_file, show
+    from advisor.core.io_safety import same_file, show
 
     files, folders = results(html, reports)
     for given in inputs:
@@ -198,7 +198,7 @@ def check_out(out: Path, inputs: tuple[str, ...], html: bool, reports: bool) -> 
     """DIR as the study will use it, checked without writing anything."""
     import stat
 
-    from advisor.io_safety import show
+    from advisor.core.io_safety import show
 
     if out.exists() and not out.is_dir():
         raise InputError(f"--out {show(out, 200)}: exists and is not a directory")
@@ -220,7 +220,7 @@ def check_out(out: Path, inputs: tuple[str, ...], html: bool, reports: bool) -> 
 
 def make_out_dir(out: Path) -> list[Path]:
     """Create DIR (and missing parents); return the folders created, outermost first."""
-    from advisor.io_safety import show
+    from advisor.core.io_safety import show
 
     missing = []
     p = out.absolute()
@@ -239,7 +239,7 @@ def check_writable(folder: Path, what: str) -> None:
     file system, root's privileges, access lists all answer it)."""
     import tempfile
 
-    from advisor.io_safety import show
+    from advisor.core.io_safety import show
 
     try:
         fd, probe = tempfile.mkstemp(prefix=".advisor-probe.", suffix=".tmp", dir=folder)

@@ -154,7 +154,7 @@ def _same_key(v: Any) -> Any:
 
 
 def _show(v: Any) -> str:
-    from advisor.io_safety import show_repr
+    from advisor.core.io_safety import show_repr
 
     return show_repr(v) if isinstance(v, str) else repr(v)[:80]
 
@@ -326,7 +326,7 @@ def check_size(members: list[Member], max_variants: int) -> None:
 def _read_toml(path: Path) -> dict[str, Any]:
     """A family or base file, read with the batch command's care (a regular file of at most
     1 MiB, UTF-8, not nested deeper than TOML needs); every problem an InputError."""
-    from advisor.io_safety import read_toml
+    from advisor.core.io_safety import read_toml
 
     return read_toml(path)
 

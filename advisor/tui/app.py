@@ -47,7 +47,7 @@ from textual.widgets import (
 
 from advisor.core import registry
 from advisor.core.errors import InfeasibleError, InputError
-from advisor.io_safety import plain, printable, show
+from advisor.core.io_safety import plain, printable, show
 
 
 class _OnFirstUse:
@@ -341,7 +341,7 @@ class ExportScreen(ModalScreen[None]):
         """Why a target is refused, as advisor --batch -o refuses it: the requirement file the
         wizard opened (a report must not replace its input), or an existing target that is
         not a regular file (a directory, a FIFO, a device)."""
-        from advisor.io_safety import same_file
+        from advisor.core.io_safety import same_file
 
         source = getattr(self.app, "source", None)
         if what == "report" and source is not None and same_file(source, path):
@@ -1540,12 +1540,12 @@ class DriveAdvisorApp(App[None]):
 def run(path: Path | None, catalog_dir: Path | None) -> int:
     """``advisor`` and ``advisor REQ.toml``: the wizard, prefilled from a file if given.
 
-    The file is read like a batch input (:func:`advisor.io_safety.read_toml`); one that
+    The file is read like a batch input (:func:`advisor.core.io_safety.read_toml`); one that
     cannot be read at all is an :class:`InputError` (exit 2, one line); wrong-typed values
     open with the problems shown (:func:`advisor.tui.draft.shape`)."""
     doc = None
     if path is not None:
-        from advisor.io_safety import read_toml
+        from advisor.core.io_safety import read_toml
 
         doc = read_toml(path)  # shaped by the app, after its first screen
     app = DriveAdvisorApp(doc, path, catalog_dir)

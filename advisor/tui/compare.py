@@ -39,7 +39,7 @@ def table(*columns: str) -> Table:
 
 def mark(chosen: bool, text: str) -> Any:
     """A first cell: the chosen one marked ▶; names from users and catalogs as plain text."""
-    from advisor.io_safety import plain
+    from advisor.core.io_safety import plain
 
     return plain(f"{CHOSEN} {text}" if chosen else f"  {text}")
 

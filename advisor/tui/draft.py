@@ -20,7 +20,7 @@ from typing import Any, NamedTuple
 import tomli_w
 
 from advisor.core.errors import InputError
-from advisor.io_safety import read_toml, show, show_repr, write_atomic
+from advisor.core.io_safety import read_toml, show, show_repr, write_atomic
 from advisor.tui import fields as F
 
 

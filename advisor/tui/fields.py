@@ -66,7 +66,7 @@ def _compiled_fields(kind: str) -> dict[int, tuple[Field, ...]]:
 
 
 def fields_for(kind: str, step: int) -> tuple[Field, ...]:
-    from advisor.core.light import compiled
+    from advisor.core.compiled_validator import compiled
 
     if compiled(kind):  # the shipped applications: their questions compiled, no pydantic
         return _compiled_fields(kind).get(step, ())
@@ -98,7 +98,7 @@ def starting_doc(kind: str) -> dict[str, Any]:
 
 def starting_doc_values(kind: str) -> dict[tuple[str, ...], str]:
     """The fields that allow one value only, by path."""
-    from advisor.core.light import compiled
+    from advisor.core.compiled_validator import compiled
 
     if compiled(kind):
         from advisor.core.requirement_spec import FIXED
@@ -188,7 +188,7 @@ def to_text(field: Field, value: Any) -> str:
         return f"{value:g}"
     # text from a file is shown with its control and bidi characters escaped (\x1b): a box
     # that printed them raw would let a title clear or retitle the terminal
-    from advisor.io_safety import printable
+    from advisor.core.io_safety import printable
 
     return printable(str(value), newlines=False)
 

@@ -8,8 +8,8 @@ from rich.table import Table
 from rich.text import Text
 
 from advisor.core import registry
+from advisor.core.io_safety import plain
 from advisor.core.registry import headline
-from advisor.io_safety import plain
 
 
 def kv(title: str, rows: list[tuple[str, Any]]) -> Table:

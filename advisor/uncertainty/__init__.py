@@ -2,7 +2,8 @@
 
 With an ``[uncertainty]`` table the chosen design is held fixed and every check is evaluated
 over Latin hypercube samples of the inputs known only as a distribution (vectorised with
-numpy: :mod:`advisor.uncertainty.linear` gives the margins as functions of the inputs). The
+numpy: :mod:`advisor.applications.linear.uncertainty` gives the margins as functions of the
+inputs). The
 report's ``[uncertainty]`` section gives P(pass) of each check and of the design with a 95 %
 Wilson interval and the inputs that drive each margin (Spearman's ρ); with ``target`` the
 advisor takes, among the candidates it already considers and in its own order, the first
@@ -17,7 +18,7 @@ from typing import Any
 from advisor.core.errors import InfeasibleError, InputError
 
 #: The applications with a margin model, and where it is.
-MODELS = {"linear": "advisor.uncertainty.linear"}
+MODELS = {"linear": "advisor.applications.linear.uncertainty"}
 
 #: How many candidates the robust choice evaluates at most, in the advisor's order.
 MAX_CANDIDATES = 40
@@ -25,10 +26,10 @@ MAX_CANDIDATES = 40
 
 def replaced(table: Any, **update: Any) -> Any:
     """A copy of a validated requirement table with some keys changed: a pydantic model or
-    a record of the compiled validator (:mod:`advisor.core.light`) alike."""
+    a record of the compiled validator (:mod:`advisor.core.compiled_validator`) alike."""
     if hasattr(table, "model_copy"):
         return table.model_copy(update=update)
-    from advisor.core.light import make_record
+    from advisor.core.compiled_validator import make_record
 
     values = {k: table.__dict__[k] for k in table._fields}
     return make_record(table._model, {**values, **update}, set(table.model_fields_set))

@@ -80,7 +80,7 @@ def main(argv: list[str]) -> int:
 def _check_output(output: Path, data: Path | None) -> None:
     """Refuse ``-o`` where writing would destroy something: the verification data itself, a
     device, a FIFO or a directory, or a folder that does not exist."""
-    from advisor.io_safety import OutputError, check_target, same_file, show
+    from advisor.core.io_safety import OutputError, check_target, same_file, show
     from advisor.verify.runner import data_path
 
     if same_file(output, data or data_path()):
@@ -105,12 +105,12 @@ def _report(args: argparse.Namespace, cases: list) -> int:
         else text_report(outcomes, short)
     )
     if args.output is not None:
-        from advisor.io_safety import show, write_atomic
+        from advisor.core.io_safety import show, write_atomic
 
         try:
             write_atomic(args.output, text)
         except OSError as exc:
-            from advisor.io_safety import OutputError
+            from advisor.core.io_safety import OutputError
 
             raise OutputError(
                 f"{show(args.output, 200)}: cannot write the report ({exc.strerror}); "

@@ -245,10 +245,10 @@ def _case(i: int, c: Any) -> Case:
 def load_cases(path: Path | None = None) -> list[Case]:
     """The cases of the verification set (the shipped one unless ``path`` is given).
 
-    Read as the batch reads a requirement file (:func:`advisor.io_safety.read_input`: a
+    Read as the batch reads a requirement file (:func:`advisor.core.io_safety.read_input`: a
     regular file of at most 1 MiB, never blocking on a FIFO); an :class:`InputError` or a
     :class:`DataError` names the file, the case and the key that is wrong."""
-    from advisor.io_safety import parse_toml, read_input, show
+    from advisor.core.io_safety import parse_toml, read_input, show
 
     source = path or data_path()
     name = show(source, 200)

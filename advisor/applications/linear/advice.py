@@ -492,7 +492,7 @@ def advise_linear(
     warnings: list[str] = []
     duty = None
     if req.duty is not None:  # issue 15: the motor sized for the cycle
-        from advisor.duty.linear import advise_duty
+        from advisor.applications.linear.duty import advise_duty
 
         holder = "screw" if ev.self_locking_at_low_friction else None
         holder = holder or ("one_way" if req.application.hold_without_power else None)
@@ -600,7 +600,7 @@ def _mean_friction_power(req: Requirements, ev: ThreadEvaluation, power_W: float
     if duty is None:
         return power_W, "no [duty]: continuous running assumed (give a duty for the mean)"
     if getattr(duty, "segments", None):
-        from advisor.duty.linear import screw_torque
+        from advisor.applications.linear.duty import screw_torque
 
         lead = ev.thread.pitch_mm * 1e-3 * ev.starts
         work = 0.0

@@ -1,6 +1,7 @@
 """The linear requirement's own rules, free of pydantic: run by the requirement models
 (:mod:`advisor.applications.linear.requirements`) and by the compiled validator of the batch
-path (:mod:`advisor.core.light`). Each raises ValueError with the message the user reads."""
+path (:mod:`advisor.core.compiled_validator`). Each raises ValueError with the message the user
+reads."""
 
 import re
 from typing import Any

@@ -307,7 +307,7 @@ def advise_positioning(req: Requirements, cat: Catalogs, trace: Trace):
         )
     duty = None
     if req.duty is not None:  # issue 15: the move repeated every cycle_time_s
-        from advisor.duty.positioning import advise_duty, rated_torques
+        from advisor.applications.positioning.duty import advise_duty, rated_torques
 
         duty, duty_checks, duty_warnings = advise_duty(
             usable,

@@ -1,6 +1,7 @@
 """The positioning requirement's own rules, free of pydantic: run by the requirement models
 (:mod:`advisor.applications.positioning.requirements`) and by the compiled validator of the
-batch path (:mod:`advisor.core.light`). Each raises ValueError with the message the user reads."""
+batch path (:mod:`advisor.core.compiled_validator`). Each raises ValueError with the message the
+user reads."""
 
 from typing import Any
 

@@ -4,7 +4,7 @@ from typing import Any
 
 from rich.table import Table
 
-from advisor.io_safety import plain
+from advisor.core.io_safety import plain
 from advisor.tui.views import PlotData
 
 

@@ -305,7 +305,9 @@ def _fit(req: Requirements, cat: Catalogs, ref, params, data, speeds: list[float
         return fit([], _too_lossy(reducible, limit, basis, n_opt, gb.choice, _device_note(req)))
     if req.duty is None:
         return fit(within)
-    from advisor.duty import rotary as dr  # only the speeds whose motor passes the cycle
+    from advisor.applications.rotary import (
+        duty as dr,  # only the speeds whose motor passes the cycle
+    )
 
     frame_for = dr.frames(ref, steel, steel_mass, terms, limit, data)
     offered = reducible if getattr(ref, "kind", "") != "catalog" else within
@@ -516,7 +518,7 @@ def advise_rotary(req: Requirements, cat: Catalogs, trace: Trace):
         warnings += dev_warnings
     duty = None
     if req.duty is not None:
-        from advisor.duty import rotary as dr
+        from advisor.applications.rotary import duty as dr
 
         holder = _holder(req, design.total_ratio, design.efficiency)
         duty, duty_checks, duty_warnings = dr.advise_duty(
@@ -554,7 +556,7 @@ def _reviewer_checks(req, cat, design: rd.Reducer, speed: float, frame_for, sf) 
 
     q, eta = design.total_ratio, design.efficiency
     if req.duty is not None:
-        from advisor.duty import rotary as dr
+        from advisor.applications.rotary import duty as dr
 
         holder = _holder(req, q, eta)
         spectrum = dr.output_loads(req, q, eta, speed, frame_for(speed), holder)
@@ -582,7 +584,7 @@ def _reviewer_checks(req, cat, design: rd.Reducer, speed: float, frame_for, sf) 
 def _holder(req: Requirements, q: float, eta: float):
     """What holds the load in the duty cycle: the one-way device that would be chosen for
     this reducer (its passage of torque), or the motor with power on."""
-    from advisor.duty import rotary as dr
+    from advisor.applications.rotary import duty as dr
 
     if not req.application.hold_without_power:
         return dr.NO_HOLDER

@@ -31,7 +31,7 @@ def frame_data(req, frame):
     """The rotor inertia and time constant of the cycle on ``frame`` (None without a cycle)."""
     if req.duty is None:
         return None
-    from advisor.duty import rotary as dr
+    from advisor.applications.rotary import duty as dr
 
     return dr.motor_data(
         req.duty, frame.rotor_inertia_kgm2, frame.thermal_time_constant_s, _words(frame)
@@ -68,7 +68,7 @@ def imposed_data(req, choice: Choice, cat):
     if req.duty is None:
         return None
     if tag == "reference":
-        from advisor.duty import rotary as dr
+        from advisor.applications.rotary import duty as dr
 
         own = "reference" in req.motor.model_fields_set
         seed = None if own else cat.bldc_frame(SEED_FRAME)

@@ -1,6 +1,7 @@
 """The rotary requirement's own rules, free of pydantic: the requirement models run them as
 validators (:mod:`advisor.applications.rotary.requirements`), and so does the compiled
-validator of the batch path (:mod:`advisor.core.light`). Each raises ValueError with the
+validator of the batch path (:mod:`advisor.core.compiled_validator`). Each raises ValueError with
+the
 message the user reads."""
 
 from typing import Any

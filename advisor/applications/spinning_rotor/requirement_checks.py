@@ -1,6 +1,6 @@
 """The spinning rotor's requirement rules and derived values, free of pydantic: used by the
 requirement models (:mod:`advisor.applications.spinning_rotor.requirements`) and by the
-compiled validator of the batch path (:mod:`advisor.core.light`). Each check raises
+compiled validator of the batch path (:mod:`advisor.core.compiled_validator`). Each check raises
 ValueError with the message the user reads."""
 
 from typing import Any

@@ -19,7 +19,7 @@ IGNORED_PREFIX = "ignored: "
 def holds(kind: str) -> bool:
     """Whether an application's design can include a one-way holding device (seed 004): its
     requirement model has a ``[one_way]`` table (linear and rotary actuators)."""
-    from advisor.core.light import has_table
+    from advisor.core.compiled_validator import has_table
 
     known = has_table(kind, "one_way")  # the compiled spec: no pydantic on the batch path
     if known is not None:

@@ -1,4 +1,4 @@
-"""The compiled validator (advisor/core/light.py) against the requirement models it is compiled
+"""The compiled validator (advisor/core/compiled_validator.py) against the requirement models it is compiled
 from: the same documents accepted, the same values, the same report; and the batch path free
 of pydantic (issue 16)."""
 
@@ -13,19 +13,19 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from advisor.core import light
+from advisor.core import compiled_validator
 from advisor.core.errors import InputError
+from advisor.core.io_safety import read_toml
 from advisor.core.reading import parse_requirements
 from advisor.core.requirement_spec import MODELS, ROOTS
 from advisor.core.requirements import parse_requirements as by_models
 from advisor.core.spec_gen import SPEC_PATH, spec_source
-from advisor.io_safety import read_toml
 
 EXAMPLES = sorted(Path(__file__).parent.parent.joinpath("examples").glob("*.toml"))
 
 
 def _fields_set(obj):
-    """Every table's given keys, by path: what advisor.ignored reads."""
+    """Every table's given keys, by path: what advisor.core.ignored reads."""
     out = {}
 
     def walk(o, where):
@@ -42,7 +42,7 @@ def _fields_set(obj):
 
 
 def _same(rec, model) -> None:
-    assert isinstance(rec, light.Record)
+    assert isinstance(rec, compiled_validator.Record)
     assert rec.model_dump() == model.model_dump()
     assert rec.model_dump(exclude_none=True) == model.model_dump(exclude_none=True)
     # the same types too: 5 given for a float field is 5.0 on both sides
@@ -64,7 +64,7 @@ def test_every_application_is_compiled():
 @pytest.mark.parametrize("path", EXAMPLES, ids=lambda p: p.stem)
 def test_every_example_is_read_without_the_models_and_equals_them(path):
     data = read_toml(path)
-    rec = light.validate(data)
+    rec = compiled_validator.validate(data)
     assert rec is not None, "an example fell back to the pydantic models"
     _same(rec, by_models(data))
 
@@ -75,18 +75,18 @@ def test_the_report_is_the_same_from_either(path):
     from advisor.core.report import to_toml
 
     data = read_toml(path)
-    assert to_toml(advise(light.validate(data))) == to_toml(advise(by_models(data)))
+    assert to_toml(advise(compiled_validator.validate(data))) == to_toml(advise(by_models(data)))
 
 
 def test_the_rotor_records_give_j_and_h_as_the_model_does():
     data = read_toml(next(p for p in EXAMPLES if p.stem == "gyro_compensator"))
-    rec, model = light.validate(data), by_models(data)
+    rec, model = compiled_validator.validate(data), by_models(data)
     assert rec.rotor.inertia == model.rotor.inertia
     assert rec.rotor.angular_momentum == model.rotor.angular_momentum
 
 
 def test_records_are_read_only():
-    rec = light.validate(read_toml(EXAMPLES[0]))
+    rec = compiled_validator.validate(read_toml(EXAMPLES[0]))
     with pytest.raises(AttributeError):
         rec.application = None
 
@@ -121,7 +121,7 @@ def test_a_refused_file_is_worded_by_the_models():
 def test_a_unit_string_goes_to_the_models_and_is_converted():
     data = read_toml(next(p for p in EXAMPLES if p.stem == "rudder_actuator"))
     data["rotary"]["torque_Nm"] = "1 kN*m"
-    assert light.validate(data) is None
+    assert compiled_validator.validate(data) is None
     assert parse_requirements(data).rotary.torque_Nm == 1000.0
 
 
@@ -237,7 +237,7 @@ def _has_unit_string(doc) -> bool:
 @settings(max_examples=1000, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(documents())
 def test_the_compiled_validator_accepts_what_the_models_accept(doc):
-    rec = light.validate(copy.deepcopy(doc))
+    rec = compiled_validator.validate(copy.deepcopy(doc))
     model, messages = _models_verdict(doc)
     if rec is not None:
         assert model is not None, f"accepted here, refused by the models: {messages}"
@@ -286,7 +286,7 @@ OWN_CHECKS = [
 def test_the_models_own_checks_decide_alike(example, path, value):
     doc = read_toml(next(p for p in EXAMPLES if p.stem == example))
     _set(doc, path, value)
-    rec = light.validate(copy.deepcopy(doc))
+    rec = compiled_validator.validate(copy.deepcopy(doc))
     model, messages = _models_verdict(doc)
     assert (rec is None) == (model is None), messages
     if rec is not None:
@@ -419,11 +419,13 @@ def test_records_hash_and_pickle_as_the_frozen_models_do():
     import pickle
 
     data = read_toml(next(p for p in EXAMPLES if p.stem == "gyro_compensator"))
-    rec, again = light.validate(data), light.validate(copy.deepcopy(data))
+    rec, again = compiled_validator.validate(data), compiled_validator.validate(copy.deepcopy(data))
     assert hash(rec.rotor.aero) == hash(again.rotor.aero)
     back = pickle.loads(pickle.dumps(rec))
     assert back == rec and back.model_fields_set == rec.model_fields_set
     assert back.rotor.inertia == rec.rotor.inertia  # the mixin came back with the class
-    rudder = light.validate(read_toml(next(p for p in EXAMPLES if p.stem == "rudder_actuator")))
+    rudder = compiled_validator.validate(
+        read_toml(next(p for p in EXAMPLES if p.stem == "rudder_actuator"))
+    )
     with pytest.raises(TypeError):  # a list inside: unhashable, as for the pydantic model
         hash(rudder.motor)

@@ -11,7 +11,7 @@ It decides only *whether* a document is valid, and builds the same values the mo
 It never words a refusal: a document it refuses or cannot judge (a number given as a string
 with a unit, an application it has no spec of) goes to the pydantic models, which validate
 it again and word every message (:mod:`advisor.core.reading`). So the worst a gap here can do
-is cost time. ``tests/test_light_requirements.py`` checks, on the examples and on many
+is cost time. ``tests/test_compiled_validator.py`` checks, on the examples and on many
 generated documents, that both accept the same documents and give the same values.
 """
 
@@ -212,7 +212,7 @@ def validate(data: Any) -> Record | None:
         req = _table(root, data)
     except Exception:  # any doubt goes to the models, which say what is wrong
         return None
-    from advisor.ignored import contradictions
+    from advisor.core.ignored import contradictions
 
     return None if contradictions(data) else req  # the models word the refusal
 
