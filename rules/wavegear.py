@@ -2,6 +2,7 @@
 
 import math
 
+from advisor.calc.wavegear import outer_diameter, rolling_body_diameter
 from advisor.core.cite import cite
 from advisor.core.rulebook import Finding, rule
 
@@ -28,12 +29,9 @@ def reducer_type(torque_Nm: float) -> Finding[str]:
 
 
 def _output_diameter_factor(q: float, rows: int = 3) -> float:
-    """D/∛M of a stage of ratio q: (2.06/sin(π/q) + 1.8)·∛(241/(n_p·(q − 1))·sin(π/(q − 1))),
-    seed 000, eqs. (13) and (16) with balls (the comparison of two ratios does not depend
-    on the torque or the rolling body)."""
-    return (2.06 / math.sin(math.pi / q) + 1.8) * (
-        241.0 / (rows * (q - 1.0)) * math.sin(math.pi / (q - 1.0))
-    ) ** (1.0 / 3.0)
+    """D/∛M of a stage of ratio q with balls, seed 000, eqs. (13) and (16) at M = 1 N·m (the
+    comparison of two ratios does not depend on the torque or the rolling body)."""
+    return float(outer_diameter(q, rolling_body_diameter(1.0, q, rows)))
 
 
 #: Relative tolerance of the stage ratio limits (rounding and typing, not engineering).

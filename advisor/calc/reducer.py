@@ -14,7 +14,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from advisor.calc import wavegear as wg
+from advisor.calc import wavegear
 
 #: Ratio limits of one stage: a positive bore needs q > 6.45 (eq. (14)); seed 000's fig. 2
 #: spans intermediate ratios 6…60 and its two-stage case uses up to 63.
@@ -66,16 +66,16 @@ def evaluate(ratios_out_to_in: list[float], rows_out_to_in: list[int], p: Reduce
     n = len(ratios_out_to_in)
     torque = p.torque_Nm
     q0 = ratios_out_to_in[0]
-    d_out = float(wg.rolling_body_diameter(torque, q0, rows_out_to_in[0], p.k_rb))
-    D = float(wg.outer_diameter(q0, d_out))
-    d = float(wg.inner_diameter(q0, d_out))
-    L_out = float(wg.stage_length(rows_out_to_in[0], d_out))
+    d_out = float(wavegear.rolling_body_diameter(torque, q0, rows_out_to_in[0], p.k_rb))
+    D = float(wavegear.outer_diameter(q0, d_out))
+    d = float(wavegear.inner_diameter(q0, d_out))
+    L_out = float(wavegear.stage_length(rows_out_to_in[0], d_out))
     stages = []
     downstream = 1.0  # product of the ratios between this stage and the output
     for i, (q, rows) in enumerate(zip(ratios_out_to_in, rows_out_to_in, strict=True)):
-        d_rb = float(wg.rolling_body_diameter(torque, q, rows, p.k_rb))
-        length = float(wg.equal_diameter_length(L_out, downstream))
-        vol = float(wg.hollow_cylinder_volume(D, d, length))
+        d_rb = float(wavegear.rolling_body_diameter(torque, q, rows, p.k_rb))
+        length = float(wavegear.equal_diameter_length(L_out, downstream))
+        vol = float(wavegear.hollow_cylinder_volume(D, d, length))
         position = "output" if i == 0 else ("input" if i == n - 1 else "intermediate")
         stages.append(
             Stage(
@@ -84,18 +84,18 @@ def evaluate(ratios_out_to_in: list[float], rows_out_to_in: list[int], p: Reduce
                 rows,
                 torque,
                 d_rb,
-                float(wg.outer_diameter(q, d_rb)),
-                float(wg.inner_diameter(q, d_rb)),
+                float(wavegear.outer_diameter(q, d_rb)),
+                float(wavegear.inner_diameter(q, d_rb)),
                 D,
                 d,
                 length,
-                float(wg.mass_kg(vol, p.density_kg_m3, p.fill_factor)),
+                float(wavegear.mass_kg(vol, p.density_kg_m3, p.fill_factor)),
             )
         )
         downstream *= q
         torque = torque / (q * p.stage_efficiency)
     length = sum(s.length_mm for s in stages)
-    volume = float(wg.hollow_cylinder_volume(D, d, length))
+    volume = float(wavegear.hollow_cylinder_volume(D, d, length))
     return Reducer(
         stages=tuple(reversed(stages)),
         total_ratio=downstream,
@@ -104,7 +104,7 @@ def evaluate(ratios_out_to_in: list[float], rows_out_to_in: list[int], p: Reduce
         inner_diameter_mm=d,
         length_mm=length,
         volume_mm3=volume,
-        mass_kg=float(wg.mass_kg(volume, p.density_kg_m3, p.fill_factor)),
+        mass_kg=float(wavegear.mass_kg(volume, p.density_kg_m3, p.fill_factor)),
     )
 
 
@@ -188,9 +188,58 @@ def _chains(total_ratio: float, n: int, out_grid: np.ndarray, mid_grid: np.ndarr
     return cols
 
 
-def _stage_factor(q: np.ndarray) -> np.ndarray:
-    """sin(π/(q − 1))/(q − 1) of eq. (16)."""
-    return np.sin(np.pi / (q - 1.0)) / (q - 1.0)
+class _Block(NamedTuple):
+    """The configurations of one stage count (chains × output rows) before the feasibility
+    mask: every column of :class:`SweepResult` as a (chains, rows) array."""
+
+    outer_diameter_mm: np.ndarray
+    length_mm: np.ndarray
+    mass_kg: np.ndarray
+    fits: np.ndarray
+
+
+def _stage_count_block(chain: list[np.ndarray], rows: np.ndarray, p: ReducerParams) -> _Block:
+    """Eqs. (12)–(16) for every chain (output ratio first) of one stage count and every output
+    row count, by the same functions :func:`evaluate` calls, broadcast (chains, rows).
+
+    The output stage sets the diameters; the others share them in the equal-diameter layout,
+    L = L_out·(1 + Σ ∛(1/Πq)), and each must fit them with two rows at its own torque."""
+    q_out = chain[0]
+    d_rb = wavegear.rolling_body_diameter(p.torque_Nm, q_out[:, None], rows[None, :], p.k_rb)
+    outer = wavegear.outer_diameter(q_out[:, None], d_rb)
+    inner = wavegear.inner_diameter(q_out[:, None], d_rb)
+    factor = np.ones(q_out.size)
+    own = np.zeros(q_out.size)
+    downstream = np.ones(q_out.size)
+    for j in range(1, len(chain)):
+        downstream = downstream * chain[j - 1]
+        factor += wavegear.equal_diameter_length(1.0, downstream)
+        torque = p.torque_Nm / (downstream * p.stage_efficiency**j)
+        d_rb_j = wavegear.rolling_body_diameter(torque, chain[j], 2.0, p.k_rb)
+        own = np.maximum(own, wavegear.outer_diameter(chain[j], d_rb_j))
+    length = wavegear.stage_length(rows[None, :], d_rb) * factor[:, None]
+    volume = wavegear.hollow_cylinder_volume(outer, inner, length)
+    mass = wavegear.mass_kg(volume, p.density_kg_m3, p.fill_factor)
+    return _Block(outer, length, mass, own[:, None] <= outer)
+
+
+def _feasible_columns(chain: list[np.ndarray], rows: np.ndarray, block: _Block) -> tuple:
+    """The :class:`SweepResult` columns of one stage count's feasible configurations."""
+    n = len(chain)
+    ic, ir = np.nonzero(block.fits)
+    mids = np.full((ic.size, 2), np.nan)
+    for j in range(n - 2):
+        mids[:, j] = chain[1 + j][ic]
+    return (
+        np.full(ic.size, n),
+        chain[0][ic],
+        mids,
+        chain[-1][ic] if n > 1 else np.full(ic.size, np.nan),
+        rows[ir].astype(int),
+        block.outer_diameter_mm[ic, ir],
+        block.length_mm[ic, ir],
+        block.mass_kg[ic, ir],
+    )
 
 
 def sweep(
@@ -202,61 +251,56 @@ def sweep(
     rows: np.ndarray | None = None,
     stage_counts: range | list[int] | None = None,
 ) -> SweepResult:
-    """Every stage count (1…max_stages), split (intermediate ratios from ``mid_grid``),
+    """Every reducer of the design space that realises a total ratio, in flat arrays.
+
+    Every stage count (1…``max_stages``), split (intermediate ratios from ``mid_grid``),
     output ratio (``out_grid``, 6.5…40) and output row count (2…12) that realises
-    ``total_ratio`` with every stage ratio within limits, plus the constraint boundaries
-    (a stage ratio at its limit). Only combinations within the ratio limits are built; each
-    is then checked for the other stages fitting the common diameter."""
+    q_Σ = Π q_k with every stage ratio within limits, plus the constraint boundaries (a
+    stage ratio at its limit). Only combinations within the ratio limits are built; each is
+    then checked for the other stages fitting the common diameter. Every figure is computed
+    by eqs. (12)–(19) through :mod:`advisor.calc.wavegear`, as :func:`evaluate` computes it.
+
+    Parameters
+    ----------
+    total_ratio : float
+        Total reduction q_Σ [-]
+    p : ReducerParams
+        Output torque [N·m], rolling body factor, stage efficiency, density [kg/m³] and
+        fill factor
+    max_stages : int, optional
+        Most stages considered [-]
+    out_grid, mid_grid : numpy.ndarray, optional
+        Output and intermediate stage ratios swept [-]
+    rows : numpy.ndarray, optional
+        Output row counts swept [-]
+    stage_counts : range or list of int, optional
+        Stage counts swept instead of all that can realise ``total_ratio``
+
+    Returns
+    -------
+    SweepResult
+        One entry per feasible configuration: diameters and lengths [mm], masses [kg]
+
+    Notes
+    -----
+    Valid for stage ratios 6.5…64 (a bore needs q > 6.45, eq. (14)).
+
+    References
+    ----------
+    Seed 000, eqs. (12)–(19) and the equal-diameter layout after eq. (19).
+    """
     out_grid = OUTPUT_RATIO_GRID if out_grid is None else out_grid
     mid_grid = INTERMEDIATE_RATIO_GRID if mid_grid is None else mid_grid
     rows_f = (ROW_GRID if rows is None else np.asarray(rows)).astype(float)
     counts = stage_count_bounds(total_ratio, max_stages) if stage_counts is None else stage_counts
-    m, k, eta = p.torque_Nm, p.k_rb, p.stage_efficiency
     parts = []
     evaluated = 0
     for n in counts:
         chain = _chains(total_ratio, n, out_grid, mid_grid)
-        qo = chain[0]
-        if qo.size == 0:
+        if chain[0].size == 0:
             continue
-        evaluated += qo.size * rows_f.size
-        # output stage, eqs. (13)–(16): chains × rows
-        d_rb = np.cbrt(241.0 * m / k * _stage_factor(qo)[:, None] / rows_f[None, :])
-        a = 2.06 / np.sin(np.pi / qo)
-        D = (a + 1.8)[:, None] * d_rb
-        d = (a - 4.4)[:, None] * d_rb
-        # equal-diameter layout: L = L_out·(1 + Σ ∛(1/Π q)) and each stage's own diameter
-        factor = np.ones(qo.size)
-        own = np.zeros(qo.size)
-        downstream = np.ones(qo.size)
-        for j in range(1, n):
-            downstream = downstream * chain[j - 1]
-            factor += np.cbrt(1.0 / downstream)
-            qj = chain[j]
-            torque = m / (downstream * eta**j)
-            own_j = (2.06 / np.sin(np.pi / qj) + 1.8) * np.cbrt(
-                241.0 * torque / (2.0 * k) * _stage_factor(qj)
-            )
-            own = np.maximum(own, own_j)
-        length = (1.2 * rows_f + 1.8)[None, :] * d_rb * factor[:, None]
-        ok = own[:, None] <= D
-        mass = p.density_kg_m3 * p.fill_factor * 1e-9 * np.pi / 4.0 * (D * D - d * d) * length
-        ic, ir = np.nonzero(ok)
-        mids = np.full((ic.size, 2), np.nan)
-        for j in range(n - 2):
-            mids[:, j] = chain[1 + j][ic]
-        parts.append(
-            (
-                np.full(ic.size, n),
-                qo[ic],
-                mids,
-                chain[-1][ic] if n > 1 else np.full(ic.size, np.nan),
-                rows_f[ir].astype(int),
-                D[ic, ir],
-                length[ic, ir],
-                mass[ic, ir],
-            )
-        )
+        evaluated += chain[0].size * rows_f.size
+        parts.append(_feasible_columns(chain, rows_f, _stage_count_block(chain, rows_f, p)))
     if not parts:
         empty = np.array([])
         return SweepResult(
