@@ -5,6 +5,7 @@ import itertools
 import math
 import shutil
 import tomllib
+from pathlib import Path
 
 import pytest
 
@@ -137,6 +138,29 @@ def test_cache_follows_file_changes(tmp_path, monkeypatch):
     with pytest.raises(CatalogError):
         load_catalogs(d)
     shutil.rmtree(tmp_path / "c")
+
+
+def test_cache_key_follows_the_catalog_code(tmp_path, monkeypatch):
+    """The cache is keyed by the source of the code that makes the cached rows: an edit to
+    the loader, the rows or the schema gives a new key, with no version to bump by hand."""
+    from catalogs import loader
+
+    monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path / "c"))
+    files = [HERE / MOTORS_FILE]
+    before = loader.cache_file(files)
+    assert before == loader.cache_file(files)  # the same code, the same key
+    real = Path.read_bytes
+
+    def edited(path: Path) -> bytes:
+        data = real(path)
+        return data + b"# edited\n" if path.name == "rows.py" else data
+
+    loader.code_stamp.cache_clear()
+    with monkeypatch.context() as m:
+        m.setattr(Path, "read_bytes", edited)
+        assert loader.cache_file(files) != before
+    loader.code_stamp.cache_clear()
+    assert loader.cache_file(files) == before
 
 
 @pytest.mark.parametrize("damage", ["truncated", "garbage", "empty", "other data"])
