@@ -290,8 +290,23 @@ def run_schema(argv: list[str]) -> int:
     return ExitCode.OK
 
 
+#: The variables that size numpy's BLAS thread pool (OpenBLAS reads the first, an OpenMP
+#: build the second).
+BLAS_THREAD_VARIABLES = ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS")
+
+
+def one_blas_thread(environ: Any = os.environ) -> None:
+    """One BLAS thread, unless the user sized the pool: OpenBLAS starts a thread per core
+    when numpy is imported, and the advisor does no matrix work (its arrays are element by
+    element), so the pool only costs CPU at every start. Called before numpy is imported."""
+    if not any(name in environ for name in BLAS_THREAD_VARIABLES):
+        for name in BLAS_THREAD_VARIABLES:
+            environ[name] = "1"
+
+
 def main(argv: list[str] | None = None) -> int:
     argv = sys.argv[1:] if argv is None else argv
+    one_blas_thread()
     from advisor.core import pydantic_plugins
 
     pydantic_plugins.disable()  # every path: the advisor uses no pydantic plugin

@@ -284,3 +284,34 @@ def test_unknown_bearing_names_the_catalog_in_runs():
     # consecutive numbers of one series (same suffix, same width) make a run; others stand
     names = ["7000 CD", "7200 BECBP", "7201 BECBP", "7202 BECBP", "6000", "6001", "6003", "X1"]
     assert designation_runs(names) == "7000 CD, 7200 … 7202 BECBP, 6000 … 6001, 6003, X1"
+
+
+def test_one_blas_thread_unless_the_user_sized_the_pool():
+    from advisor.cli import one_blas_thread
+
+    env: dict[str, str] = {}
+    one_blas_thread(env)
+    assert env == {"OPENBLAS_NUM_THREADS": "1", "OMP_NUM_THREADS": "1"}
+    for name in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS"):
+        env = {name: "4"}
+        one_blas_thread(env)
+        assert env == {name: "4"}  # the user's choice stands, the other left to the library
+
+
+def test_the_batch_runs_numpy_with_one_blas_thread(tmp_path):
+    code = (
+        "import os, sys\n"
+        "from advisor.cli import main\n"
+        "assert 'numpy' not in sys.modules  # set before numpy reads it\n"
+        "main(['--batch', sys.argv[1], '-o', sys.argv[2]])\n"
+        "print(os.environ['OPENBLAS_NUM_THREADS'], os.environ['OMP_NUM_THREADS'])\n"
+    )
+    env = {k: v for k, v in os.environ.items() if not k.endswith("_NUM_THREADS")}
+    out = subprocess.run(
+        [sys.executable, "-c", code, str(EXAMPLES / "rudder_actuator.toml"), str(tmp_path / "r")],
+        capture_output=True,
+        text=True,
+        env=env,
+        check=True,
+    ).stdout
+    assert out.splitlines()[-1] == "1 1"
