@@ -1,7 +1,9 @@
 """Rules of the wave-gear reducer with rolling bodies (seed 000)."""
 
 import math
+from typing import NamedTuple
 
+from advisor.calc.reducer import Reducer, fits
 from advisor.calc.wavegear import outer_diameter, rolling_body_diameter
 from advisor.core.cite import cite
 from advisor.core.rulebook import Finding, rule
@@ -287,19 +289,63 @@ def compare_with_front(
     )
 
 
-@rule("WG-06", "Reducer taken from the design space", SEED_000)
-def taken_from_space(
-    taken: str,
+class ReducerOptions(NamedTuple):
+    """The reducers WG-06 chooses among: the rule design of WG-02 and WG-03 (None where the
+    envelope asks more rows than the space holds), the lightest and the slimmest of the
+    design space within the envelope, and what the requirement asks (gearbox.choice)."""
+
+    asked: str
+    rules: Reducer | None
+    lightest: Reducer
+    slimmest: Reducer
+    max_outer_diameter_mm: float | None
+    max_length_mm: float | None
+
+
+def space_choice(
     asked: str,
-    mass_kg: float,
-    diameter_mm: float,
-    rule: dict[str, float] | None,
-) -> Finding[str]:
+    rule_design: Reducer | None,
+    max_outer_diameter_mm: float | None,
+    max_length_mm: float | None,
+) -> str | None:
+    """When WG-06 fires: the reducer of the design space the design takes ("lightest" or
+    "slimmest"), or None where the rule design stands (the requirement asks the rules and
+    their design fits the envelope)."""
+    if asked == "rules" and rule_design is not None:
+        if fits(rule_design, max_outer_diameter_mm, max_length_mm):
+            return None
+    return "slimmest" if asked == "slimmest" else "lightest"
+
+
+def _rule_figures(o: ReducerOptions) -> dict[str, float] | None:
+    """The rule design's figures WG-06 states beside the reducer it takes."""
+    r = o.rules
+    if r is None:
+        return None
+    return {
+        "mass_kg": r.mass_kg,
+        "outer_diameter_mm": r.outer_diameter_mm,
+        "length_mm": r.length_mm,
+        "stages": len(r.stages),
+        "efficiency": r.efficiency,
+        "fits": fits(r, o.max_outer_diameter_mm, o.max_length_mm),
+    }
+
+
+@rule("WG-06", "Reducer taken from the design space", SEED_000)
+def taken_from_space(options: ReducerOptions) -> Finding[Reducer]:
     """The design takes the lightest or the slimmest configuration of the design space
     instead of the rule design of WG-02 and WG-03: because the requirement asks it
-    (``gearbox.choice``), or because the rule design does not fit the envelope. ``rule``
-    holds the rule design's mass_kg, outer_diameter_mm, length_mm, stages, efficiency and
-    whether it fits (None: the envelope asks more rows than the space holds)."""
+    (``gearbox.choice``), or because the rule design does not fit the envelope (or the
+    envelope asks more rows than the space holds). Fires where :func:`space_choice` names
+    a reducer of the space; returns that reducer."""
+    asked = options.asked
+    rule = _rule_figures(options)
+    taken = space_choice(asked, options.rules, options.max_outer_diameter_mm, options.max_length_mm)
+    if taken is None:
+        raise ValueError("WG-06 fires only where the rule design does not stand (space_choice)")
+    design = options.slimmest if taken == "slimmest" else options.lightest
+    mass_kg, diameter_mm = design.mass_kg, design.outer_diameter_mm
     if rule is None:
         rules_give = "the rules give no design: the envelope asks more rows than the space holds"
     else:
@@ -316,7 +362,7 @@ def taken_from_space(
         else "because the rule design cannot be used"
     )
     return Finding(
-        taken,
+        design,
         f"The {taken} reducer of the design space, {why}: {mass_kg:.4g} kg at "
         f"Ø {diameter_mm:.4g} mm; {rules_give}.",
         "The seed's rules (WG-02, WG-03: q_out = 12…20, three rows at the output) are the "

@@ -153,19 +153,18 @@ def test_the_slimmest_is_the_lightest_of_the_equally_slim():
     of those the lightest is taken (it was 7.280 kg where 7.128 kg had the same Ø)."""
     import numpy as np
 
-    from advisor.calc import reducer as rd
-    from advisor.calc import wavegear as wg
+    from advisor.calc import reducer, wavegear
 
     rep = _report(_doc())
     slim = rep["design"]["gearbox"]["optimum_min_diameter"]
-    params = rd.ReducerParams(
+    params = reducer.ReducerParams(
         torque_Nm=1000.0,
-        k_rb=wg.ROLLING_BODY_FACTOR["ball"],
+        k_rb=wavegear.ROLLING_BODY_FACTOR["ball"],
         stage_efficiency=0.8944,
         density_kg_m3=7800.0,
         fill_factor=0.75,
     )
-    space = rd.sweep(600.0, params)
+    space = reducer.sweep(600.0, params)
     d_min = space.outer_diameter_mm.min()
     lightest_of_slim = space.mass_kg[space.outer_diameter_mm == d_min].min()
     assert slim["outer_diameter_mm"] == pytest.approx(d_min, rel=1e-6)
@@ -210,3 +209,39 @@ def test_a_taken_reducer_that_overloads_the_motor_says_what_else_to_take():
     assert "gearbox.choice = 'slimmest' takes a reducer of η" in exc.value.reasons[-1]
     assert "'rules' or 'lightest'" in exc.value.reasons[-1]
     assert "gearbox.choice" in str(exc.value)
+
+
+def test_wg06_makes_the_choice_it_states():
+    """WG-06 is handed the candidates, not the reducer already taken: it fires where the rule
+    design does not stand and returns the reducer of the space it takes."""
+    from advisor.calc import reducer
+    from rules import wavegear as wavegear_rules
+
+    params = reducer.ReducerParams(1000.0, 1.0, 0.8944, 7800.0, 0.75)
+    rule_design = reducer.evaluate([20.0, 30.0], [3, 2], params)
+    space = reducer.sweep(600.0, params)
+    lightest = reducer.evaluate(*_config(space, reducer.best(space, "mass")), params)
+    slimmest = reducer.evaluate(*_config(space, reducer.best(space, "diameter")), params)
+    roomy = rule_design.outer_diameter_mm * 2
+    assert wavegear_rules.space_choice("rules", rule_design, roomy, None) is None
+    assert wavegear_rules.space_choice("rules", None, roomy, None) == "lightest"
+    tight = rule_design.outer_diameter_mm * 0.99
+    for asked, rule_d, d_max, want in (
+        ("rules", rule_design, tight, lightest),
+        ("slimmest", rule_design, roomy, slimmest),
+        ("lightest", rule_design, roomy, lightest),
+    ):
+        options = wavegear_rules.ReducerOptions(asked, rule_d, lightest, slimmest, d_max, None)
+        finding = wavegear_rules.taken_from_space(options)
+        assert finding.value is want
+        assert finding.inputs["taken"] == ("slimmest" if want is slimmest else "lightest")
+        assert finding.inputs["rule_fits"] == (d_max == roomy)
+    with pytest.raises(ValueError):
+        wavegear_rules.taken_from_space(
+            wavegear_rules.ReducerOptions("rules", rule_design, lightest, slimmest, roomy, None)
+        )
+
+
+def _config(space, i: int) -> tuple[list[float], list[int]]:
+    ratios = space.ratios_out_to_in(i)
+    return ratios, [int(space.rows_out[i])] + [2] * (len(ratios) - 1)

@@ -108,6 +108,13 @@ def evaluate(ratios_out_to_in: list[float], rows_out_to_in: list[int], p: Reduce
     )
 
 
+def fits(r: Reducer, max_outer_diameter_mm: float | None, max_length_mm: float | None) -> bool:
+    """Whether reducer ``r`` lies within an envelope (None: no limit)."""
+    return (max_outer_diameter_mm is None or r.outer_diameter_mm <= max_outer_diameter_mm) and (
+        max_length_mm is None or r.length_mm <= max_length_mm
+    )
+
+
 class SweepResult(NamedTuple):
     """Flat arrays, one entry per feasible configuration (every stage ratio within limits and
     every stage's own outer diameter within the common one)."""

@@ -169,14 +169,41 @@ def _adopted_stages(
     adopts. The rules' count where the space has none that fits (the advice then says so)."""
     env = _Envelope(d_max, l_max)
     split = list(split)
+    rule_design = None
     if choice == "rules":
         needed = _rows_needed(torque_Nm, d_max, split, params)
         rows = wg_rules.choose_rows(len(split), needed, MAX_ROWS).value
-        if rows and _fits(rd.evaluate(split, rows, params), env):
-            return len(split)
+        rule_design = rd.evaluate(split, rows, params) if rows else None
+    taken = wg_rules.space_choice(choice, rule_design, d_max, l_max)
+    if taken is None:
+        return len(split)
     space = rd.sweep(q_total, params)
-    best = _optimum(space, q_total, "diameter" if choice == "slimmest" else "mass", params, env)
+    best = _optimum(space, q_total, "diameter" if taken == "slimmest" else "mass", params, env)
     return len(best.stages) if best is not None else len(split)
+
+
+def _adopt(options: wg_rules.ReducerOptions, trace: Trace) -> tuple[rd.Reducer, str, list[str]]:
+    """The reducer the design adopts: the rule design, or the one of the design space that
+    WG-06 takes (and says why, where the requirement asked the rules)."""
+    taken = wg_rules.space_choice(
+        options.asked, options.rules, options.max_outer_diameter_mm, options.max_length_mm
+    )
+    if taken is None:
+        assert options.rules is not None
+        return options.rules, "rules", []
+    warnings = []
+    if options.asked == "rules":
+        design = options.rules
+        why = (
+            "the envelope diameter needs more rows than the design space holds"
+            if design is None
+            else f"the rule design ({design.outer_diameter_mm:.4g} mm × "
+            f"{design.length_mm:.4g} mm) does not fit the envelope"
+        )
+        warnings.append(
+            f"{why}; the lightest reducer of the design space that fits is used instead"
+        )
+    return trace.apply(wg_rules.taken_from_space, options), taken, warnings
 
 
 class _Envelope(NamedTuple):
@@ -426,41 +453,11 @@ def advise_rotary(req: Requirements, cat: Catalogs, trace: Trace):
     slimmest = _optimum(space, q_total, "diameter", params, env)
     if optimum is None or slimmest is None:
         raise _no_reducer(space, params.torque_Nm, env)
-    design = rd.evaluate(split, rows, params) if rows else None
-    warnings: list[str] = []
-    by_rules = design if design is not None and _fits(design, env) else None
-    taken = "rules"
-    if gb.choice != "rules" or by_rules is None:  # the space's lightest or slimmest
-        if by_rules is None and gb.choice == "rules":
-            why = (
-                "the envelope diameter needs more rows than the design space holds"
-                if design is None
-                else f"the rule design ({design.outer_diameter_mm:.4g} mm × "
-                f"{design.length_mm:.4g} mm) does not fit the envelope"
-            )
-            warnings.append(
-                f"{why}; the lightest reducer of the design space that fits is used instead"
-            )
-        taken = "slimmest" if gb.choice == "slimmest" else "lightest"
-        rule_figures = None
-        if design is not None:
-            rule_figures = {
-                "mass_kg": design.mass_kg,
-                "outer_diameter_mm": design.outer_diameter_mm,
-                "length_mm": design.length_mm,
-                "stages": len(design.stages),
-                "efficiency": design.efficiency,
-                "fits": by_rules is not None,
-            }
-        design = optimum if taken == "lightest" else slimmest
-        trace.apply(
-            wg_rules.taken_from_space,
-            taken,
-            gb.choice,
-            design.mass_kg,
-            design.outer_diameter_mm,
-            rule_figures,
-        )
+    rule_design = rd.evaluate(split, rows, params) if rows else None
+    options = wg_rules.ReducerOptions(
+        gb.choice, rule_design, optimum, slimmest, env.max_outer_diameter_mm, env.max_length_mm
+    )
+    design, taken, warnings = _adopt(options, trace)
     if taken == "rules":
         warnings += trace.apply(
             wg_rules.compare_with_optimum,
@@ -658,12 +655,6 @@ def _sized_for(req: Requirements) -> str:
         else f"the working {out:.4g} N·m at the output"
     )
     return f"; sized for {what} × f_B = {f_b:g}"
-
-
-def _fits(r: rd.Reducer, env) -> bool:
-    return (
-        env.max_outer_diameter_mm is None or r.outer_diameter_mm <= env.max_outer_diameter_mm
-    ) and (env.max_length_mm is None or r.length_mm <= env.max_length_mm)
 
 
 def _from_sweep(space: rd.SweepResult, i: int, params: rd.ReducerParams) -> rd.Reducer:
