@@ -459,8 +459,8 @@ def test_designs_csv_of_hostile_names_and_values(tmp_path):
 
 
 def _page(tmp_path: Path, name: str, axis: str, values: list) -> tuple[Path, str]:
-    from advisor.family.html import write_html
-    from advisor.family.summary import summarize
+    from advisor.family.html import plot_points, write_html
+    from advisor.family.summary import build_summary
 
     doc = tomllib.loads(LINEAR)
     doc["family"] = {"axes": {axis: values}}
@@ -482,7 +482,8 @@ def _page(tmp_path: Path, name: str, axis: str, values: list) -> tuple[Path, str
     path = tmp_path / "family.html"
     with warnings.catch_warnings():
         warnings.simplefilter("error")  # any warning that reaches the user fails the test
-        write_html(path, fam, rows, summarize(fam, rows, {}))
+        doc, pictures = build_summary(fam, rows, {}, [plot_points(m) for m in fam.members])
+        write_html(path, fam, doc, pictures)
     return path, path.read_text(encoding="utf-8")
 
 

@@ -413,7 +413,7 @@ def run(family: Any, out: Path, args: argparse.Namespace) -> int:
         previous_chunk_size,
         run_study,
     )
-    from advisor.family.summary import read_rows, summarize, write_summary
+    from advisor.family.summary import build_summary, iter_rows, write_summary
 
     try:
         client, cluster = make_client(args.scheduler, args.workers)
@@ -456,17 +456,18 @@ def run(family: Any, out: Path, args: argparse.Namespace) -> int:
         if cluster is not None:
             cluster.close()
     designs = join_chunks(family, out, size)
-    rows = read_rows(designs)
-    doc = summarize(
-        family,
-        rows,
-        {"chunk_size": size, "chunks": res.chunks, "workers": workers},
-    )
+    keep = None
+    if not args.no_html:
+        from advisor.family.html import plot_points
+
+        keep = [plot_points(m) for m in family.members]
+    extra = {"chunk_size": size, "chunks": res.chunks, "workers": workers}
+    doc, pictures = build_summary(family, iter_rows(designs), extra, keep)
     write_summary(out / "summary.toml", doc)
     if not args.no_html:
         from advisor.family.html import write_html
 
-        write_html(out / "family.html", family, rows, doc)
+        write_html(out / "family.html", family, doc, pictures)
     c = doc["counts"]
     print(
         f"{family.size} variants: {c['design']} designs, {c['infeasible']} infeasible, "

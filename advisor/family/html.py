@@ -1,13 +1,20 @@
 """family.html: the key outputs plotted against the axes, the outcome map and the summary
-tables, in one self-contained page (matplotlib SVG inline; imported only on this path)."""
+tables, in one self-contained page (matplotlib SVG inline; imported only on this path).
+
+Drawn from the summary alone: its document, and what it kept while the rows went by (the
+outcome of every variant, the rows at the points the plots show, :func:`plot_points`)."""
 
 import html
 import io
+from collections.abc import Iterator
 from pathlib import Path
-from typing import Any
+from typing import Any, NamedTuple
+
+import numpy as np
 
 from advisor.family.outputs import NUMERIC
 from advisor.family.spec import Family, Member
+from advisor.family.summary import Picture
 
 MAX_LINES = 6  # lines per plot (values of a second axis); more are sampled evenly
 STATUS_COLOURS = {
@@ -48,81 +55,128 @@ def _numeric_axis(a: Any) -> bool:
     return all(isinstance(v, int | float) and not isinstance(v, bool) for v in a.values)
 
 
-def _grid_value(rows: list[dict[str, str]], member: Member, coords: list[int], col: str) -> float:
+def _local(member: Member, coords: list[int]) -> int:
+    """The number within the member of the variant at ``coords`` (last axis fastest)."""
     local = 0
     for a, k in zip(member.axes, coords, strict=True):
         local = local * len(a.values) + k
-    text = rows[local].get(col, "")
+    return local
+
+
+def _grid_value(picture: Picture, local: int, col: str) -> float:
+    text = picture.points[local].get(col, "")
     return float(text) if text else float("nan")
 
 
-def output_plots(member: Member, rows: list[dict[str, str]]) -> list[str]:
-    """For each axis: the key numbers against it, one line per value of another axis, the
-    remaining axes at their middle value. A gap is a variant without a design."""
-    import matplotlib
+class Line(NamedTuple):
+    value: int | None  # index of the other axis's value on this line (None: one axis only)
+    variants: list[int]  # the member's variants along the plotted axis, in its order
 
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
 
-    cols = [c for c in NUMERIC if any(r.get(c) for r in rows)]
-    if not cols:
-        return []
+def _other_axis(member: Member, ax_i: int) -> int | None:
+    """The axis whose values make the lines of a plot against axis ``ax_i``."""
+    axes = member.axes
+    return next((j for j in range(len(axes)) if j != ax_i and len(axes[j].values) > 1), None)
+
+
+def plot_lines(member: Member) -> Iterator[tuple[int, int | None, list[Line]]]:
+    """For each axis of two values or more: the axis, the other axis, and the lines of its
+    plots (one per sampled value of the other axis; the remaining axes at their middle)."""
     mid = [len(a.values) // 2 for a in member.axes]
-    out = []
     for ax_i, a in enumerate(member.axes):
         if len(a.values) < 2:
             continue
-        other = next(
-            (j for j in range(len(member.axes)) if j != ax_i and len(member.axes[j].values) > 1),
-            None,
+        other = _other_axis(member, ax_i)
+        sampled = (
+            _sample(len(member.axes[other].values), MAX_LINES) if other is not None else [None]
         )
-        xs = list(a.values) if _numeric_axis(a) else list(range(len(a.values)))
-        ncol = min(3, len(cols))
-        nrow = -(-len(cols) // ncol)
-        fig, axs = plt.subplots(nrow, ncol, figsize=(4.2 * ncol, 3.0 * nrow), squeeze=False)
-        for p, col in enumerate(cols):
-            axp = axs[p // ncol][p % ncol]
-            line_idx = (
-                _sample(len(member.axes[other].values), MAX_LINES) if other is not None else [None]
-            )
-            for li in line_idx:
-                coords = list(mid)
-                if other is not None:
-                    coords[other] = li
-                ys = []
-                for k in range(len(a.values)):
-                    coords[ax_i] = k
-                    ys.append(_grid_value(rows, member, coords, col))
-                label = (
-                    _mpl(f"{member.axes[other].key} = {_label(member.axes[other].values[li])}")
-                    if other is not None
-                    else None
-                )
-                axp.plot(xs, ys, marker=".", label=label)
-            if a.scale == "log":
-                axp.set_xscale("log")
-            if not _numeric_axis(a):
-                axp.set_xticks(xs, [_mpl(_label(v)) for v in a.values], rotation=30)
-            axp.set_xlabel(a.key)
-            axp.set_title(col, fontsize=10)
-            axp.grid(alpha=0.3)
-        for p in range(len(cols), nrow * ncol):
-            axs[p // ncol][p % ncol].axis("off")
-        if other is not None:
-            axs[0][0].legend(fontsize=7)
-        rest = [
-            f"{b.key} = {_label(b.values[mid[j]])}"
-            for j, b in enumerate(member.axes)
-            if j not in (ax_i, other)
-        ]
-        title = f"{member.name}: key outputs against {a.key}"
-        fig.suptitle(_mpl(title + (f" ({', '.join(rest)})" if rest else "")), fontsize=11)
-        fig.tight_layout()
-        out.append(_svg(fig))
-    return out
+        lines = []
+        for li in sampled:
+            coords = list(mid)
+            if li is not None and other is not None:
+                coords[other] = li
+            along = []
+            for k in range(len(a.values)):
+                coords[ax_i] = k
+                along.append(_local(member, coords))
+            lines.append(Line(li, along))
+        yield ax_i, other, lines
 
 
-def status_map(member: Member, rows: list[dict[str, str]]) -> str | None:
+def plot_points(member: Member) -> set[int]:
+    """The member's variants whose key numbers the plots show (the summary keeps their rows)."""
+    return {v for _, _, lines in plot_lines(member) for line in lines for v in line.variants}
+
+
+def _plot_column(axp: Any, member: Member, picture: Picture, plot: tuple, col: str) -> None:
+    """One subplot: ``col`` against the plot's axis, one line per value of the other axis."""
+    ax_i, other, lines = plot
+    a = member.axes[ax_i]
+    xs = list(a.values) if _numeric_axis(a) else list(range(len(a.values)))
+    for line in lines:
+        ys = [_grid_value(picture, v, col) for v in line.variants]
+        label = None
+        if other is not None and line.value is not None:
+            b = member.axes[other]
+            label = _mpl(f"{b.key} = {_label(b.values[line.value])}")
+        axp.plot(xs, ys, marker=".", label=label)
+    if a.scale == "log":
+        axp.set_xscale("log")
+    if not _numeric_axis(a):
+        axp.set_xticks(xs, [_mpl(_label(v)) for v in a.values], rotation=30)
+    axp.set_xlabel(a.key)
+    axp.set_title(col, fontsize=10)
+    axp.grid(alpha=0.3)
+
+
+def _axis_figure(member: Member, picture: Picture, cols: list[str], plot: tuple) -> str:
+    """The key numbers against one axis, one subplot per number, as SVG."""
+    import matplotlib.pyplot as plt
+
+    ax_i, other, _ = plot
+    ncol = min(3, len(cols))
+    nrow = -(-len(cols) // ncol)
+    fig, axs = plt.subplots(nrow, ncol, figsize=(4.2 * ncol, 3.0 * nrow), squeeze=False)
+    for p, col in enumerate(cols):
+        _plot_column(axs[p // ncol][p % ncol], member, picture, plot, col)
+    for p in range(len(cols), nrow * ncol):
+        axs[p // ncol][p % ncol].axis("off")
+    if other is not None:
+        axs[0][0].legend(fontsize=7)
+    mid = [len(b.values) // 2 for b in member.axes]
+    rest = [
+        f"{b.key} = {_label(b.values[mid[j]])}"
+        for j, b in enumerate(member.axes)
+        if j not in (ax_i, other)
+    ]
+    title = f"{member.name}: key outputs against {member.axes[ax_i].key}"
+    fig.suptitle(_mpl(title + (f" ({', '.join(rest)})" if rest else "")), fontsize=11)
+    fig.tight_layout()
+    return _svg(fig)
+
+
+def output_plots(member: Member, picture: Picture, cols: list[str]) -> list[str]:
+    """For each axis: the key numbers ``cols`` against it, one line per value of another
+    axis, the remaining axes at their middle value. A gap is a variant without a design."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    if not cols:
+        return []
+    return [_axis_figure(member, picture, cols, plot) for plot in plot_lines(member)]
+
+
+def _status_grid(member: Member, picture: Picture) -> np.ndarray:
+    """The outcome (index into STATUS_COLOURS) over the first two axes, the others at their
+    middle value: one row per value of the second axis."""
+    full = picture.status.reshape(tuple(len(a.values) for a in member.axes)).astype(np.int64)
+    if len(member.axes) == 1:
+        return full.reshape(1, -1)
+    mid = [len(a.values) // 2 for a in member.axes]
+    return full[(slice(None), slice(None), *mid[2:])].T
+
+
+def status_map(member: Member, picture: Picture) -> str | None:
     """The outcome of every variant over the first two axes (others at their middle)."""
     import matplotlib
 
@@ -133,24 +187,8 @@ def status_map(member: Member, rows: list[dict[str, str]]) -> str | None:
     axes = member.axes
     if not axes:
         return None
-    names = list(STATUS_COLOURS)
-    mid = [len(a.values) // 2 for a in axes]
-    a0 = axes[0]
-    a1 = axes[1] if len(axes) > 1 else None
-    n1 = len(a1.values) if a1 is not None else 1
-    grid = []
-    for k1 in range(n1):
-        line = []
-        for k0 in range(len(a0.values)):
-            coords = list(mid)
-            coords[0] = k0
-            if a1 is not None:
-                coords[1] = k1
-            local = 0
-            for a, k in zip(axes, coords, strict=True):
-                local = local * len(a.values) + k
-            line.append(names.index(rows[local]["status"]))
-        grid.append(line)
+    grid = _status_grid(member, picture)
+    a0, n1 = axes[0], grid.shape[0]
     fig, ax = plt.subplots(figsize=(min(12, 2 + 0.35 * len(a0.values)), min(8, 1.5 + 0.35 * n1)))
     ax.imshow(
         grid,
@@ -161,6 +199,17 @@ def status_map(member: Member, rows: list[dict[str, str]]) -> str | None:
         origin="lower",
         interpolation="nearest",
     )
+    _status_ticks(ax, member)
+    fig.tight_layout()
+    return _svg(fig)
+
+
+def _status_ticks(ax: Any, member: Member) -> None:
+    """The status map's ticks, legend and title."""
+    from matplotlib.patches import Patch
+
+    axes = member.axes
+    a0 = axes[0]
     step0 = max(1, len(a0.values) // 12)
     ax.set_xticks(
         range(0, len(a0.values), step0),
@@ -168,27 +217,27 @@ def status_map(member: Member, rows: list[dict[str, str]]) -> str | None:
         rotation=45,
     )
     ax.set_xlabel(a0.key)
-    if a1 is not None:
-        step1 = max(1, n1 // 12)
-        ax.set_yticks(range(0, n1, step1), [_mpl(_label(v)) for v in a1.values[::step1]])
+    if len(axes) > 1:
+        a1 = axes[1]
+        step1 = max(1, len(a1.values) // 12)
+        ax.set_yticks(
+            range(0, len(a1.values), step1), [_mpl(_label(v)) for v in a1.values[::step1]]
+        )
         ax.set_ylabel(a1.key)
     else:
         ax.set_yticks([])
-    from matplotlib.patches import Patch
-
     ax.legend(
         handles=[Patch(color=c, label=s) for s, c in STATUS_COLOURS.items()],
         loc="upper left",
         bbox_to_anchor=(1.01, 1),
         fontsize=8,
     )
+    mid = [len(a.values) // 2 for a in axes]
     rest = [f"{b.key} = {_label(b.values[mid[j]])}" for j, b in enumerate(axes) if j > 1]
     ax.set_title(
         _mpl(f"{member.name}: outcome of each variant" + (f" ({', '.join(rest)})" if rest else "")),
         fontsize=11,
     )
-    fig.tight_layout()
-    return _svg(fig)
 
 
 def _table(head: list[str], body: list[list[Any]]) -> str:
@@ -204,7 +253,64 @@ table{border-collapse:collapse;margin:.5em 0 1.5em}td,th{border:1px solid #ccc;p
 font-size:13px;text-align:left}th{background:#eee}svg{max-width:100%;height:auto}"""
 
 
-def render(family: Family, rows: list[dict[str, str]], doc: dict[str, Any]) -> str:
+def _changes_table(md: dict[str, Any]) -> str:
+    return _table(
+        ["output", "along", "between", "from", "to", "lines"],
+        [
+            [
+                ch["output"],
+                ch["axis"],
+                " – ".join(_label(b) for b in ch["between"]),
+                ch["from"],
+                ch["to"],
+                f"{ch['lines']} of {ch['of_lines']}",
+            ]
+            for ch in md["changes"]
+        ],
+    )
+
+
+def _without_design_table(md: dict[str, Any]) -> str:
+    return _table(
+        ["status", "variants", "example reason", "at axis values"],
+        [
+            [
+                g["status"],
+                g["variants"],
+                g["example"],
+                "; ".join(f"{k}: {', '.join(_label(x) for x in v)}" for k, v in g["axes"].items()),
+            ]
+            for g in md["without_design"]
+        ],
+    )
+
+
+def member_section(m: Member, md: dict[str, Any], picture: Picture) -> list[str]:
+    """A member's part of the page: its axes, the outcome map, the plots and the tables."""
+    parts = [
+        f"<h2>{html.escape(m.name)} ({html.escape(m.application)}), {m.size} variants</h2>",
+        _table(
+            ["axis", "scale", "values"],
+            [
+                [k, v["scale"], ", ".join(_label(x) for x in v["values"])]
+                for k, v in md["axes"].items()
+            ],
+        ),
+    ]
+    sm = status_map(m, picture)
+    if sm:
+        parts.append(sm)
+    # the numbers some variant has (its span is in the summary)
+    parts += output_plots(m, picture, [c for c in NUMERIC if c in md["outputs"]])
+    if md["changes"]:
+        parts += ["<h3>Where the choices change</h3>", _changes_table(md)]
+    if md["without_design"]:
+        parts += ["<h3>Variants without a design</h3>", _without_design_table(md)]
+    return parts
+
+
+def render(family: Family, doc: dict[str, Any], pictures: list[Picture]) -> str:
+    """The page, from the summary document and what the summary kept for the plots."""
     c = doc["counts"]
     parts = [
         f"<!doctype html><html><head><meta charset='utf-8'><title>{html.escape(family.name)}"
@@ -216,68 +322,13 @@ def render(family: Family, rows: list[dict[str, str]], doc: dict[str, Any]) -> s
         + ". Every row of <code>designs.csv</code> is what <code>advisor --batch</code> gives "
         "for that variant alone.</p>",
     ]
-    start = 0
-    for m, md in zip(family.members, doc["members"], strict=True):
-        mine = rows[start : start + m.size]
-        start += m.size
-        parts.append(
-            f"<h2>{html.escape(m.name)} ({html.escape(m.application)}), {m.size} variants</h2>"
-        )
-        parts.append(
-            _table(
-                ["axis", "scale", "values"],
-                [
-                    [k, v["scale"], ", ".join(_label(x) for x in v["values"])]
-                    for k, v in md["axes"].items()
-                ],
-            )
-        )
-        sm = status_map(m, mine)
-        if sm:
-            parts.append(sm)
-        parts += output_plots(m, mine)
-        if md["changes"]:
-            parts.append("<h3>Where the choices change</h3>")
-            parts.append(
-                _table(
-                    ["output", "along", "between", "from", "to", "lines"],
-                    [
-                        [
-                            ch["output"],
-                            ch["axis"],
-                            " – ".join(_label(b) for b in ch["between"]),
-                            ch["from"],
-                            ch["to"],
-                            f"{ch['lines']} of {ch['of_lines']}",
-                        ]
-                        for ch in md["changes"]
-                    ],
-                )
-            )
-        if md["without_design"]:
-            parts.append("<h3>Variants without a design</h3>")
-            parts.append(
-                _table(
-                    ["status", "variants", "example reason", "at axis values"],
-                    [
-                        [
-                            g["status"],
-                            g["variants"],
-                            g["example"],
-                            "; ".join(
-                                f"{k}: {', '.join(_label(x) for x in v)}"
-                                for k, v in g["axes"].items()
-                            ),
-                        ]
-                        for g in md["without_design"]
-                    ],
-                )
-            )
+    for m, md, pic in zip(family.members, doc["members"], pictures, strict=True):
+        parts += member_section(m, md, pic)
     parts.append("</body></html>\n")
     return "\n".join(parts)
 
 
-def write_html(path: Path, family: Family, rows: list[dict[str, str]], doc: dict[str, Any]) -> None:
+def write_html(path: Path, family: Family, doc: dict[str, Any], pictures: list[Picture]) -> None:
     import warnings
 
     from advisor.family.adapter import write_atomic
@@ -286,5 +337,5 @@ def write_html(path: Path, family: Family, rows: list[dict[str, str]], doc: dict
     # applied"): the plot is drawn all the same, and the warning is not the user's business
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        text = render(family, rows, doc)
+        text = render(family, doc, pictures)
     write_atomic(path, text)
