@@ -421,9 +421,7 @@ def advise_duty(
     tau = frame.data.time_constant_s
     r_th = CLASS_F_RISE_K / frame.limit_W
     n = max(1, min(2000, math.ceil(5.0 * tau / t_cycle)))
-    hist = du.thermal_rise(e["losses"], r_th, tau, n)
-    step = max(1, len(hist) // 400)
-    hist = hist[::step] + ([hist[-1]] if (len(hist) - 1) % step else [])
+    hist = du.thermal_history(e["losses"], r_th, tau, n, max_points=400)
     peak_rise = du.periodic_peak_rise(e["losses"], r_th, tau)
     if peak_rise > CLASS_F_RISE_K * (1 + 1e-9):
         warnings.append(
