@@ -197,7 +197,7 @@ def nut_bearing_pressure(force_N: float, d2_m: float, h1_m: float, turns: float)
     return force_N / (math.pi * d2_m * h1_m * turns)
 
 
-# ------------------------------------------------------------------ thrust face (issue 26)
+# ------------------------------------------------------------------ thrust face
 def collar_torque(force_N: float, friction_coefficient: float, mean_diameter_m: float) -> float:
     """Friction torque of a plain thrust collar, T_c = F·f_c·d_c/2  [N·m].
 
@@ -301,7 +301,7 @@ NUT_ALLOWED_RISE_K = 40.0
 def friction_power(torque_Nm: float, speed_rpm: float, efficiency: float) -> float:
     """Power turned into heat in the thread, P_f = M·ω·(1 − η)  [W].
 
-    Issue 26's 8 kN case, Tr18x4 at 943 rpm with about 1 kW at the screw and η ≈ 0.4:
+    An 8 kN drive, Tr18x4 at 943 rpm with about 1 kW at the screw and η ≈ 0.4:
     60 % of 1 kW is heat. Seed 001 (5.085 N·m, 1200 rpm, η 0.2191): 499 W:
 
     >>> round(friction_power(5.085, 1200, 0.2191))

@@ -1,6 +1,6 @@
 """The service factor f_B of a drive: what multiplies the load of every strength check.
 
-Shared by the applications (issue 26, item 5): the linear actuator multiplies the axial force
+Shared by the applications: the linear actuator multiplies the axial force
 and the screw torque of its strength checks (core stress, buckling, flank pressure, thrust
 bearing) by it; the rotary one the reducer's torque. The thermal checks are not multiplied:
 the duty cycle covers them.

@@ -5,8 +5,7 @@ import math
 from functools import lru_cache
 from typing import Any, NamedTuple, Protocol
 
-from advisor.calc import induction as im
-from advisor.calc import screw as sc
+from advisor.calc import induction, screw
 from advisor.calc.checks import Check as Check  # re-exported: the linear chain's checks
 from advisor.core.cite import Cite, cite
 from catalogs.threads import ThreadProfile
@@ -19,7 +18,7 @@ STEEL_DENSITY_KG_M3 = 7850.0
 
 def _margin(value: float, limit: float, factor: float = 1.0) -> float:
     """The margin of a check of the form factor·value ≤ limit: limit / (factor·value)
-    (``factor``: the service factor of a strength check, issue 26)."""
+    (``factor``: the service factor of a strength check)."""
     return math.inf if value <= 0 else limit / (factor * value)
 
 
@@ -52,7 +51,7 @@ def nut_whole_turns(turns_for_pressure: float, turns_for_height: float) -> int:
     height ratio ψ_min·d2/P needs, each rounded up to whole turns. Ivanov [3] sizes the nut
     with z = F/(π·d2·H1·[p]); a nut is made with whole turns, and rounding up keeps the flank
     pressure strictly below [p] except where z is a whole number exactly, so that a design
-    does not depend on the last bit of the force (issue 12, item 5).
+    does not depend on the last bit of the force.
 
     Seed 001's Tr16x2 bronze nut at 3500 N: z = 3500/(π·15·1·10) = 7.43 → 8 for the
     pressure, 1.2·15/2 = 9 for the height: 9 turns.
@@ -67,7 +66,7 @@ def nut_whole_turns(turns_for_pressure: float, turns_for_height: float) -> int:
 
 
 class ThrustFace(NamedTuple):
-    """The face that takes the screw's axial force (issue 26): a plain collar (Shigley,
+    """The face that takes the screw's axial force: a plain collar (Shigley,
     eq. (8-6)) or a rolling bearing of the SKF catalog (its friction moment by the SKF model
     of :func:`advisor.calc.bearing_life.skf_friction`, the axial force its only load)."""
 
@@ -83,7 +82,7 @@ class ThrustFace(NamedTuple):
         friction always resists the motion, whichever way the force acts."""
         force = abs(force_N)
         if self.kind == "collar":
-            return sc.collar_torque(force, self.friction_coefficient, self.mean_diameter_m)
+            return screw.collar_torque(force, self.friction_coefficient, self.mean_diameter_m)
         from advisor.calc.bearing_life import skf_friction
 
         return skf_friction(
@@ -143,7 +142,7 @@ class ThreadEvaluation(NamedTuple):
     thrust: ThrustFace | None = None
     #: the service factor the strength checks multiplied their demand by
     service_factor: float = 1.0
-    #: the fastest the screw may turn: a share of its whirling speed (issue 26)
+    #: the fastest the screw may turn: a share of its whirling speed
     max_speed_rpm: float = math.inf
 
     @property
@@ -173,7 +172,7 @@ def _check_sources(
     yield_safety_factor: float, formula: str, end_fixity: str, buckling_safety_factor: float
 ) -> _CheckSources:
     """The names and sources of a thread's checks: the same for every thread of one design
-    (the joint choice evaluates about a hundred; issue 16)."""
+    (the joint choice evaluates about a hundred)."""
     ivanov = cite("ivanov-dm", "power screws")
     return _CheckSources(
         "screw core stress (axial force + torque, von Mises)",
@@ -219,7 +218,7 @@ def _thread_numbers(
     end_fixity: str,
     buckling_safety_factor: float,
     starts: int,
-    friction_model: sc.FrictionModel,
+    friction_model: screw.FrictionModel,
     material: ScrewMaterial,
     thrust: ThrustFace | None = None,
     service_factor: float = 1.0,
@@ -230,26 +229,28 @@ def _thread_numbers(
     d2 = thread.d2_mm * MM
     d3 = thread.d3_mm * MM
     f = material.friction_coefficient
-    psi = sc.lead_angle(p, d2, starts)
-    phi = sc.friction_angle(f, friction_model, psi)
-    phi_low = sc.friction_angle(material.friction_low, "standard", psi)
+    psi = screw.lead_angle(p, d2, starts)
+    phi = screw.friction_angle(f, friction_model, psi)
+    phi_low = screw.friction_angle(material.friction_low, "standard", psi)
     # the torque of both friction models (the report shows the other beside the chosen),
-    # with the lead and friction angles computed once: eq. (1), as sc.thread_torque
-    phi_std = phi if friction_model == "standard" else sc.friction_angle(f, "standard", psi)
-    torque = sc.torque_from_angles(force_N, d2, psi, phi)
-    revs = sc.revolutions(stroke_m, p, starts)
-    speed = sc.screw_speed_rpm(revs, travel_time_s)
+    # with the lead and friction angles computed once: eq. (1), as screw.thread_torque
+    phi_std = phi if friction_model == "standard" else screw.friction_angle(f, "standard", psi)
+    torque = screw.torque_from_angles(force_N, d2, psi, phi)
+    revs = screw.revolutions(stroke_m, p, starts)
+    speed = screw.screw_speed_rpm(revs, travel_time_s)
 
     # Nut: whole engaged turns, enough for the flank pressure under the service factor and
     # for the minimum height ratio.
     h1 = thread.H1_mm * MM
-    z_req = sc.nut_turns_required(service_factor * force_N, d2, h1, material.allowable_pressure_Pa)
+    z_req = screw.nut_turns_required(
+        service_factor * force_N, d2, h1, material.allowable_pressure_Pa
+    )
     turns = float(nut_whole_turns(z_req, material.nut_height_ratio_min * d2 / p))
     height = turns * p
-    pressure = sc.nut_bearing_pressure(force_N, d2, h1, turns)
+    pressure = screw.nut_bearing_pressure(force_N, d2, h1, turns)
 
-    core = sc.core_equivalent_stress(force_N, torque, d3)
-    p_cr, slenderness, formula = sc.critical_buckling_load(
+    core = screw.core_equivalent_stress(force_N, torque, d3)
+    p_cr, slenderness, formula = screw.critical_buckling_load(
         d3, span_m, end_fixity, material.elastic_modulus_Pa, material.yield_strength_Pa
     )
     allowed_stress = material.yield_strength_Pa / material.yield_safety_factor
@@ -277,8 +278,8 @@ def _thread_numbers(
         formula,
         limits,
         thrust.torque_Nm(force_N, speed) if thrust is not None else 0.0,
-        sc.WHIRL_ALLOWED_SHARE
-        * sc.critical_speed_rpm(
+        screw.WHIRL_ALLOWED_SHARE
+        * screw.critical_speed_rpm(
             d3, span_m, end_fixity, material.elastic_modulus_Pa, STEEL_DENSITY_KG_M3
         ),
     )
@@ -294,7 +295,7 @@ def evaluate_thread(
     end_fixity: str,
     buckling_safety_factor: float,
     starts: int,
-    friction_model: sc.FrictionModel,
+    friction_model: screw.FrictionModel,
     material: ScrewMaterial,
     thrust: ThrustFace | None = None,
     service_factor: float = 1.0,
@@ -305,7 +306,7 @@ def evaluate_thread(
     core von Mises stress ≤ σ_y / S; axial force ≤ P_cr / S_b (Euler or Johnson);
     flank pressure ≤ [p] with the nut of :func:`nut_whole_turns` turns, H = z·P;
     nut height ratio H/d2 ≤ ψ_max; engaged turns ≤ z_max. The first three are strength
-    checks: under a service factor f_B (issue 26) each demand is multiplied by it (the
+    checks: under a service factor f_B each demand is multiplied by it (the
     core stress is linear in the force and the torque, so f_B·σ is the stress under f_B·F),
     and the nut is sized for f_B·F. ``thrust``: the thrust face, whose friction torque at
     the rated force and the screw speed adds to the thread's in :attr:`drive_torque_Nm`
@@ -366,16 +367,16 @@ def evaluate_thread(
         torque_Nm=torque,
         torque_standard_Nm=torque
         if friction_model == "standard"
-        else sc.torque_from_angles(force_N, d2, psi, n.phi_std),
+        else screw.torque_from_angles(force_N, d2, psi, n.phi_std),
         torque_paper_Nm=torque
         if friction_model == "paper"
-        else sc.torque_from_angles(force_N, d2, psi, sc.friction_angle(f, "paper", psi)),
-        efficiency=sc.efficiency(psi, phi),
-        back_driving_efficiency=sc.back_driving_efficiency(psi, phi),
+        else screw.torque_from_angles(force_N, d2, psi, screw.friction_angle(f, "paper", psi)),
+        efficiency=screw.efficiency(psi, phi),
+        back_driving_efficiency=screw.back_driving_efficiency(psi, phi),
         # holding is physics: judged with the standard reduced friction even when the torque
         # follows the paper's f/cos(ψ/2), so it agrees with the low-friction judgement below
-        self_locking=sc.is_self_locking(psi, n.phi_std),
-        self_locking_at_low_friction=sc.is_self_locking(psi, n.phi_low),
+        self_locking=screw.is_self_locking(psi, n.phi_std),
+        self_locking_at_low_friction=screw.is_self_locking(psi, n.phi_low),
         revolutions=n.revs,
         speed_rpm=n.speed,
         nut_height_mm=n.height / MM,
@@ -419,7 +420,7 @@ def thread_geometry(thread: ThreadProfile) -> ThreadGeometry:
 class ThreadScreen(NamedTuple):
     """What the joint choice of thread and motor reads of one thread: whether it passes
     every check, its torque and its speed. The choice screens every thread of the catalog
-    with every number of starts (about a hundred per advice, issue 16); the full
+    with every number of starts (about a hundred per advice); the full
     :class:`ThreadEvaluation`, with its checks and their cited sources, is built only for
     the threads the advice reports. The numbers are those of :func:`evaluate_thread`, to
     the last bit (``tests/test_linear_screen.py`` holds them to it); where ``passed`` is
@@ -436,9 +437,9 @@ class ThreadScreen(NamedTuple):
     #: the driving efficiency of a holding device between the motor and this screw (seed
     #: 004): the motor gives the screw torque divided by it
     device_efficiency: float = 1.0
-    #: the friction torque of the thrust face (issue 26); 0 where none is given
+    #: the friction torque of the thrust face; 0 where none is given
     thrust_torque_Nm: float = 0.0
-    #: the fastest the screw may turn: a share of its whirling speed (issue 26)
+    #: the fastest the screw may turn: a share of its whirling speed
     max_speed_rpm: float = math.inf
 
     @property
@@ -457,7 +458,7 @@ def screen_threads(
     span_m: float,
     end_fixity: str,
     buckling_safety_factor: float,
-    friction_model: sc.FrictionModel,
+    friction_model: screw.FrictionModel,
     material: ScrewMaterial,
     thrust: ThrustFace | None = None,
     service_factor: float = 1.0,
@@ -482,13 +483,13 @@ def screen_threads(
     out = []
     for g in geometries:
         p, d2, d3, h1 = g.pitch_m, g.d2_m, g.d3_m, g.h1_m
-        max_speed = sc.WHIRL_ALLOWED_SHARE * sc.critical_speed_rpm(
+        max_speed = screw.WHIRL_ALLOWED_SHARE * screw.critical_speed_rpm(
             d3, span_m, end_fixity, m.elastic_modulus_Pa, STEEL_DENSITY_KG_M3
         )
-        z_req = sc.nut_turns_required(service_factor * force_N, d2, h1, m.allowable_pressure_Pa)
+        z_req = screw.nut_turns_required(service_factor * force_N, d2, h1, m.allowable_pressure_Pa)
         turns = float(nut_whole_turns(z_req, m.nut_height_ratio_min * d2 / p))
-        pressure = sc.nut_bearing_pressure(force_N, d2, h1, turns)
-        p_cr = sc.critical_buckling_load(
+        pressure = screw.nut_bearing_pressure(force_N, d2, h1, turns)
+        p_cr = screw.critical_buckling_load(
             d3, span_m, end_fixity, m.elastic_modulus_Pa, m.yield_strength_Pa
         )[0]
         if not (
@@ -504,14 +505,14 @@ def screen_threads(
             )
             continue
         for z in starts_options:
-            psi = sc.lead_angle(p, d2, z)
-            torque = sc.torque_from_angles(
-                force_N, d2, psi, sc.friction_angle(f, friction_model, psi)
+            psi = screw.lead_angle(p, d2, z)
+            torque = screw.torque_from_angles(
+                force_N, d2, psi, screw.friction_angle(f, friction_model, psi)
             )
-            core = sc.core_equivalent_stress(force_N, torque, d3)
+            core = screw.core_equivalent_stress(force_N, torque, d3)
             passed = _margin(core / MPA, stress_limit, sf) >= 1.0
-            revs = sc.revolutions(stroke_m, p, z)
-            speed = sc.screw_speed_rpm(revs, travel_time_s)
+            revs = screw.revolutions(stroke_m, p, z)
+            speed = screw.screw_speed_rpm(revs, travel_time_s)
             out.append(
                 ThreadScreen(
                     g.thread,
@@ -522,7 +523,9 @@ def screen_threads(
                     revs if passed else math.nan,
                     speed if passed else math.nan,
                     passed
-                    and sc.is_self_locking(psi, sc.friction_angle(m.friction_low, "standard", psi)),
+                    and screw.is_self_locking(
+                        psi, screw.friction_angle(m.friction_low, "standard", psi)
+                    ),
                     thrust_torque_Nm=thrust.torque_Nm(force_N, speed)
                     if passed and thrust is not None
                     else 0.0,
@@ -551,7 +554,7 @@ class MotorRow(Protocol):
 
 class MotorEvaluation(NamedTuple):
     motor: MotorRow
-    curve: im.KlossCurve
+    curve: induction.KlossCurve
     rated_torque_Nm: float
     max_torque_Nm: float
     starting_torque_Nm: float
@@ -609,7 +612,7 @@ def evaluate_motor(
     n_work = None if s_work is None else n0 * (1.0 - s_work)
     s_req = 1.0 - required_speed_rpm / n0
     at_req = curve.torque(s_req) if 0.0 < s_req <= 1.0 else 0.0
-    slips = im.curve_slips()
+    slips = induction.curve_slips()
     return MotorEvaluation(
         motor=motor,
         curve=curve,
@@ -633,7 +636,7 @@ class MotorFit(NamedTuple):
     """A catalog motor with its fitted characteristic, for screening many loads quickly."""
 
     motor: MotorRow
-    curve: im.KlossCurve
+    curve: induction.KlossCurve
     rated_torque_Nm: float
     starting_torque_Nm: float
     synchronous_speed_rpm: float
@@ -653,7 +656,7 @@ def fit_motor(motor: MotorRow) -> MotorFit:
     )
 
 
-_fit = lru_cache(maxsize=1024)(im.fit_kloss)
+_fit = lru_cache(maxsize=1024)(induction.fit_kloss)
 
 
 def drive_working_speed(

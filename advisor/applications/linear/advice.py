@@ -19,10 +19,18 @@ from advisor.applications.linear.report import (
     ThrustOut,
     back_driving_words,
 )
-from advisor.calc import induction as im
-from advisor.calc import one_way as ow_calc
-from advisor.calc import screw as sc
+from advisor.calc import one_way as one_way_calc
+from advisor.calc import screw as screw_calc
+from advisor.calc.induction import synchronous_speed_rpm
 from advisor.calc.one_way import NO_DEVICE
+from advisor.calc.screw import (
+    END_FIXITY_FACTOR,
+    NUT_ALLOWED_RISE_K,
+    NUT_FILM_COEFFICIENT,
+    NUT_OUTER_DIAMETER_RATIO,
+    WHIRL_ALLOWED_SHARE,
+    WHIRL_EIGENVALUE,
+)
 from advisor.calc.service_factor import ServiceFactor, service_factor
 from advisor.calc.sizing import (
     STEEL_DENSITY_KG_M3,
@@ -48,7 +56,7 @@ from advisor.core.rulebook import Trace
 from catalogs import Catalogs
 from catalogs.rows import InductionMotor
 from catalogs.threads import ThreadProfile
-from rules import induction as im_rules
+from rules import induction as induction_rules
 from rules import screw as screw_rules
 
 
@@ -85,8 +93,8 @@ _PARTS_MAX = 8
 
 
 def _catalog_parts(cat: Catalogs) -> CatalogParts:
-    """The thread geometries and fitted motor lines of ``cat``, computed once per catalog
-    (issue 16: they do not depend on the requirement)."""
+    """The thread geometries and fitted motor lines of ``cat``, computed once per catalog:
+    they do not depend on the requirement."""
     held = _PARTS.get(id(cat))
     if held is not None and held[0] is cat:
         return held[1]
@@ -124,14 +132,14 @@ def line_option(
     A motor whose rated or starting torque is below the screw torque cannot drive it (the
     first test of :func:`drive_working_speed`); the line's reach is the running maximum of
     the smaller of the two, and a bisection on it skips those motors at once instead of
-    testing them one by one (issue 16: the joint choice screens every thread)."""
+    testing them one by one (the joint choice screens every thread, so this runs often)."""
     torque, fits = ev.motor_torque_Nm, line.fits
     for i in range(bisect_left(line.reach, torque), len(fits)):
         fit = fits[i]
         if fit.motor.rated_power_kW > max_power_kW:
             return None
         n = drive_working_speed(fit, torque, ev.speed_rpm)
-        if n is None or n > ev.max_speed_rpm:  # too slow, or whirling (issue 26)
+        if n is None or n > ev.max_speed_rpm:  # too slow, or above the whirling limit
             continue
         m, thread = fit.motor, ev.thread
         return screw_rules.DriveOption(  # positional, in the order of its fields (faster)
@@ -241,7 +249,9 @@ def plan_motor(
     series = cat.power_series(2 * pp)  # a user motor may be off the GOST series
     p_req_kW = ev.torque_Nm * ev.speed_rpm * math.pi / 30.0 / 1e3
     p_work_kW = ev.torque_Nm * sel.working_speed_rpm * math.pi / 30.0 / 1e3
-    band = trace.apply(im_rules.rated_power_band, p_req_kW, p_work_kW, motor.rated_power_kW, series)
+    band = trace.apply(
+        induction_rules.rated_power_band, p_req_kW, p_work_kW, motor.rated_power_kW, series
+    )
     evaluations = {power: evaluate(power) for power in band}
     # IM-03 looks at the line from the lower neighbour up to the chosen motor: the joint
     # choice took the first one that drives the screw, so the rule must agree with it.
@@ -252,11 +262,11 @@ def plan_motor(
         e = evaluations.get(m.rated_power_kW) or evaluate(m.rated_power_kW)
         assert e is not None
         options.append(
-            im_rules.MotorOption(
+            induction_rules.MotorOption(
                 m.rated_power_kW, m.model, tuple(e.problems), e.rated_torque_margin
             )
         )
-    model = trace.apply(im_rules.choose_motor, options)
+    model = trace.apply(induction_rules.choose_motor, options)
     assert model == motor.model, (model, motor.model)
     return MotorPlan(pp, p_req_kW, band, evaluations, motor)
 
@@ -294,7 +304,7 @@ def _material(
 
 
 def thrust_face(req: Requirements, cat: Catalogs) -> ThrustFace | None:
-    """The thrust face of ``[screw.thrust]`` (issue 26); None where it is unknown."""
+    """The thrust face of ``[screw.thrust]``; None where it is unknown."""
     t = req.screw.thrust
     if t.kind == "collar":
         return ThrustFace("collar", t.friction_coefficient, t.mean_diameter_mm * 1e-3)
@@ -317,7 +327,7 @@ def _device_efficiency(req: Requirements) -> float:
     the thread and the motor are chosen: the motor's choice must see it. 'auto' chooses
     between the two clutches (OW-02), both of η = 1."""
     kind = req.one_way.type
-    return 1.0 if kind == "auto" else ow_calc.passage(kind).efficiency
+    return 1.0 if kind == "auto" else one_way_calc.passage(kind).efficiency
 
 
 def _through_device(screens: list[ThreadScreen], efficiency: float) -> list[ThreadScreen]:
@@ -327,8 +337,10 @@ def _through_device(screens: list[ThreadScreen], efficiency: float) -> list[Thre
     if efficiency == 1.0:
         return screens
     return [
-        sc._replace(device_efficiency=efficiency) if not sc.self_locking_at_low_friction else sc
-        for sc in screens
+        screen._replace(device_efficiency=efficiency)
+        if not screen.self_locking_at_low_friction
+        else screen
+        for screen in screens
     ]
 
 
@@ -428,10 +440,11 @@ def advise_linear(
     fits = parts.fits
     options = choice_options(screens, parts.lines, s.thread, hold)
     if s.thread is not None:
-        imposed = [sc for sc in screens if sc.name == s.thread]
-        if not any(sc.passed for sc in imposed):
+        imposed = [screen for screen in screens if screen.name == s.thread]
+        if not any(screen.passed for screen in imposed):
             ev = min(
-                (evaluate(sc.thread, sc.starts) for sc in imposed), key=lambda e: len(e.failed)
+                (evaluate(screen.thread, screen.starts) for screen in imposed),
+                key=lambda e: len(e.failed),
             )
             raise InfeasibleError(
                 f"no feasible design: the imposed thread {s.thread} fails its checks",
@@ -444,7 +457,9 @@ def advise_linear(
         raise _no_drive(screens, s.thread, cat, lin.force_N, evaluate)
     ev = evaluate(
         next(
-            sc.thread for sc in screens if sc.name == chosen.thread and sc.starts == chosen.starts
+            screen.thread
+            for screen in screens
+            if screen.name == chosen.thread and screen.starts == chosen.starts
         ),
         chosen.starts,
     )
@@ -464,23 +479,23 @@ def advise_linear(
             default=None,
         )
         pole_options.append(
-            im_rules.PoleOption(
+            induction_rules.PoleOption(
                 pp,
-                im.synchronous_speed_rpm(freq, pp),
+                synchronous_speed_rpm(freq, pp),
                 best.label if best else None,
                 best.motor_model if best else None,
                 best.rated_power_kW if best else None,
                 best.travel_time_s if best else None,
             )
         )
-    trace.apply(im_rules.choose_pole_pairs, chosen.pole_pairs, ev.speed_rpm, pole_options)
+    trace.apply(induction_rules.choose_pole_pairs, chosen.pole_pairs, ev.speed_rpm, pole_options)
     motor = next(m for m in cat.motors if m.model == chosen.motor_model)
     passage = None  # the one-way device in the chain, where one holds the load
     if hold and not ev.self_locking_at_low_friction:
         from advisor.one_way.advice import device_passage
 
         passage = device_passage(req.one_way, ev.torque_Nm, ev.torque_Nm)
-    # the torque that moves the load: the thread's and the thrust face's (issue 26); the
+    # the torque that moves the load: the thread's and the thrust face's; the
     # motor drives the screw through the device: it gives that torque over the device's η
     drive = ev._replace(torque_Nm=ev.drive_torque_Nm, thrust_torque_Nm=0.0)
     at_motor = (
@@ -491,7 +506,7 @@ def advise_linear(
 
     warnings: list[str] = []
     duty = None
-    if req.duty is not None:  # issue 15: the motor sized for the cycle
+    if req.duty is not None:  # the motor sized for the cycle
         from advisor.applications.linear.duty import advise_duty
 
         holder = "screw" if ev.self_locking_at_low_friction else None
@@ -577,7 +592,7 @@ def advise_linear(
 
 
 class NutHeat(NamedTuple):
-    """The nut's wear and heat (issue 26): flank sliding speed, Shigley's safe pressure at
+    """The nut's wear and heat: flank sliding speed, Shigley's safe pressure at
     it, p·v, and the steady temperature rise from the mean friction power."""
 
     sliding_speed_m_s: float
@@ -624,15 +639,15 @@ def nut_heat(req: Requirements, ev: ThreadEvaluation, speed_rpm: float) -> NutHe
     """Sliding speed, safe pressure, p·v and temperature rise of the chosen nut at the
     motor's working speed."""
     t = ev.thread
-    v = sc.flank_sliding_speed(t.d2_mm * 1e-3, speed_rpm, ev.lead_angle_rad)
+    v = screw_calc.flank_sliding_speed(t.d2_mm * 1e-3, speed_rpm, ev.lead_angle_rad)
     nut = "bronze" if "bronze" in req.screw.material_pair else "cast_iron"
     if req.screw.material_pair == "steel_steel":
         safe, row = 0.0, "steel–steel: not in Shigley's Table 8-4 (no safe value for a moving nut)"
     else:
-        safe, row = sc.shigley_bearing_pressure(nut, v)
-    power = sc.friction_power(ev.torque_Nm, speed_rpm, ev.efficiency)
+        safe, row = screw_calc.shigley_bearing_pressure(nut, v)
+    power = screw_calc.friction_power(ev.torque_Nm, speed_rpm, ev.efficiency)
     mean, basis = _mean_friction_power(req, ev, power)
-    area = sc.nut_surface(t.d_mm * 1e-3, ev.nut_height_mm * 1e-3)
+    area = screw_calc.nut_surface(t.d_mm * 1e-3, ev.nut_height_mm * 1e-3)
     return NutHeat(
         v,
         safe,
@@ -642,7 +657,7 @@ def nut_heat(req: Requirements, ev: ThreadEvaluation, speed_rpm: float) -> NutHe
         mean,
         basis,
         area,
-        sc.nut_temperature_rise(mean, area),
+        screw_calc.nut_temperature_rise(mean, area),
     )
 
 
@@ -655,30 +670,30 @@ def _screw_checks(
     cat: Catalogs,
 ) -> tuple[list[Check], list[str]]:
     """The whirling speed and the thrust bearing's static load as checks; the thrust face
-    left out, and the nut's wear and heat, as warnings where they need a word (issue 26)."""
+    left out, and the nut's wear and heat, as warnings where they need a word."""
     lin = req.linear
     checks, warnings = [], []
     n_work = sel.working_speed_rpm or ev.speed_rpm
     steel = cat.steel(req.screw.screw_steel)
-    n_cr = sc.critical_speed_rpm(
+    n_cr = screw_calc.critical_speed_rpm(
         ev.thread.d3_mm * 1e-3,
         lin.support_span_m,
         lin.end_fixity,
         steel.elastic_modulus_MPa * 1e6,
         STEEL_DENSITY_KG_M3,
     )
-    allowed = sc.WHIRL_ALLOWED_SHARE * n_cr
+    allowed = WHIRL_ALLOWED_SHARE * n_cr
     checks.append(
         Check(
             "critical_speed",
-            f"screw speed against {sc.WHIRL_ALLOWED_SHARE:g} of its whirling speed "
-            f"({lin.end_fixity}, βL = {sc.WHIRL_EIGENVALUE[lin.end_fixity]:.5g}, core d3)",
+            f"screw speed against {WHIRL_ALLOWED_SHARE:g} of its whirling speed "
+            f"({lin.end_fixity}, βL = {WHIRL_EIGENVALUE[lin.end_fixity]:.5g}, core d3)",
             n_work,
             allowed,
             "rpm",
             allowed / n_work,
             cite("blevins", "table 8-1").with_note(
-                f"n_cr = {n_cr:.5g} rpm; {sc.WHIRL_ALLOWED_SHARE:g}·n_cr, screw makers' rule"
+                f"n_cr = {n_cr:.5g} rpm; {WHIRL_ALLOWED_SHARE:g}·n_cr, screw makers' rule"
             ),
         )
     )
@@ -723,14 +738,14 @@ def _screw_checks(
             f"({heat.safe_pressure_row}); a slower screw (a reduction stage), a longer nut "
             "or a ball screw"
         )
-    if heat.temperature_rise_K > sc.NUT_ALLOWED_RISE_K:
+    if heat.temperature_rise_K > NUT_ALLOWED_RISE_K:
         warnings.append(
             f"the nut overheats: {heat.mean_friction_power_W:.3g} W of thread friction on "
             f"average ({heat.mean_basis}) through its {heat.surface_m2 * 1e4:.3g} cm² surface "
             f"gives a steady rise of {heat.temperature_rise_K:.3g} K, above the "
-            f"{sc.NUT_ALLOWED_RISE_K:g} K allowed (natural convection, "
-            f"h = {sc.NUT_FILM_COEFFICIENT:g} W/(m²·K), nut body "
-            f"{sc.NUT_OUTER_DIAMETER_RATIO:g}·d; the screw's own cooling neglected)"
+            f"{NUT_ALLOWED_RISE_K:g} K allowed (natural convection, "
+            f"h = {NUT_FILM_COEFFICIENT:g} W/(m²·K), nut body "
+            f"{NUT_OUTER_DIAMETER_RATIO:g}·d; the screw's own cooling neglected)"
         )
     return checks, warnings
 
@@ -841,7 +856,7 @@ def _no_drive(
     whirl = [ev for ev in passing if ev.speed_rpm > ev.max_speed_rpm]
     if whirl:
         reasons.append(
-            f"{len(whirl)} of them would turn above {100 * sc.WHIRL_ALLOWED_SHARE:g} % of their "
+            f"{len(whirl)} of them would turn above {100 * WHIRL_ALLOWED_SHARE:g} % of their "
             "whirling speed: a shorter span, a stiffer end fixity or a coarser lead"
         )
     if speeds[0] > fastest:
@@ -894,13 +909,13 @@ def _screw_out(
             model=ev.thrust.describe(),
             torque_Nm=ev.thrust_torque_Nm,
             drive_torque_Nm=ev.drive_torque_Nm,
-            efficiency=sc.thread_efficiency_with_thrust(
+            efficiency=screw_calc.thread_efficiency_with_thrust(
                 req.linear.force_N, lead, ev.torque_Nm, ev.thrust_torque_Nm
             ),
         )
     lin = req.linear
     assert lin is not None
-    v = sc.linear_speed(lin.stroke_m, lin.travel_time_s)
+    v = screw_calc.linear_speed(lin.stroke_m, lin.travel_time_s)
     return ScrewOut.make(
         thread=t.name,
         imposed=req.screw.thread is not None,
@@ -955,22 +970,22 @@ def _screw_out(
             mean_friction_power_W=heat.mean_friction_power_W,
             mean_friction_basis=heat.mean_basis,
             temperature_rise_K=heat.temperature_rise_K,
-            allowed_temperature_rise_K=sc.NUT_ALLOWED_RISE_K,
-            heat_model=f"ΔT = P̄_f/(h·A), h = {sc.NUT_FILM_COEFFICIENT:g} W/(m²·K) natural "
-            f"convection, A = nut body of {sc.NUT_OUTER_DIAMETER_RATIO:g}·d over its length "
+            allowed_temperature_rise_K=NUT_ALLOWED_RISE_K,
+            heat_model=f"ΔT = P̄_f/(h·A), h = {NUT_FILM_COEFFICIENT:g} W/(m²·K) natural "
+            f"convection, A = nut body of {NUT_OUTER_DIAMETER_RATIO:g}·d over its length "
             "and end faces; the screw's cooling neglected",
         ),
         buckling=BucklingOut.make(
             formula=ev.buckling_formula,
             why=why,
             end_fixity=lin.end_fixity,
-            effective_length_factor=sc.END_FIXITY_FACTOR[lin.end_fixity],
+            effective_length_factor=END_FIXITY_FACTOR[lin.end_fixity],
             slenderness=ev.slenderness,
             critical_load_N=ev.critical_load_N,
             safety_factor_required=lin.buckling_safety_factor,
         ),
         thrust=thrust,
-        critical_speed_rpm=sc.critical_speed_rpm(
+        critical_speed_rpm=screw_calc.critical_speed_rpm(
             t.d3_mm * 1e-3,
             lin.support_span_m,
             lin.end_fixity,
@@ -1002,7 +1017,7 @@ def _motor_out(
         supply_frequency_Hz=freq,
         speed_rpm=ev.speed_rpm,
         pole_pairs=plan.pole_pairs,
-        synchronous_speed_rpm=im.synchronous_speed_rpm(freq, plan.pole_pairs),
+        synchronous_speed_rpm=synchronous_speed_rpm(freq, plan.pole_pairs),
         required_torque_Nm=ev.torque_Nm,
         required_power_kW=plan.required_power_kW,
         rated_power_kW=m.rated_power_kW,

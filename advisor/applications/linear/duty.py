@@ -1,4 +1,4 @@
-"""The linear actuator's duty (issue 15): a cage induction motor on 50 Hz driving the screw
+"""The linear actuator's duty: a cage induction motor on 50 Hz driving the screw
 through a cycle of moves, dwells and holds, or an IEC 60034-1 duty type.
 
 Per move, at the motor: a direct-on-line start with the motor's mean starting torque
@@ -19,15 +19,15 @@ already takes (:func:`advisor.calc.duty.allowed_starts_per_hour`).
 
 import math
 
-from advisor.calc import duty as du
-from advisor.calc import induction as im
-from advisor.calc import one_way as ow
+from advisor.calc import duty as duty_calc
+from advisor.calc import one_way as one_way_calc
+from advisor.calc.induction import fit_kloss
 from advisor.calc.sizing import Check
 from advisor.core.cite import cite
 from advisor.core.errors import InfeasibleError, InputError
 from advisor.core.rulebook import Trace
 from advisor.duty.report import DutyOut, phases_out
-from rules import duty as du_rules
+from rules import duty as duty_rules
 
 RPM = 30.0 / math.pi
 STEEL_DENSITY_KG_M3 = 7850.0
@@ -39,7 +39,7 @@ ELECTRIC_BRAKING_HEAT = 1.0
 def screw_torque(ev, force_N: float, direction: str, thrust: bool = True) -> float:
     """Seed 001's thread torque at the motor: against the load F·d2/2·tan(ψ + φ'); with the
     load F·d2/2·tan(φ' − ψ), negative when the load drives the screw back. With ``thrust``,
-    the friction torque of the thrust face (issue 26) is added: it resists the motion
+    the friction torque of the thrust face is added: it resists the motion
     whichever way the force acts."""
     half_d2 = ev.thread.d2_mm * 1e-3 / 2.0
     psi, phi = ev.lead_angle_rad, ev.friction_angle_rad
@@ -73,7 +73,7 @@ class MotorModel:
 
     def __init__(self, m, j_load: float) -> None:
         self.m = m
-        self.curve = im.fit_kloss(
+        self.curve = fit_kloss(
             m.rated_torque_Nm, m.rated_slip, m.breakdown_torque_ratio, m.starting_torque_ratio
         )
         self.w0 = m.synchronous_speed_rpm * math.pi / 30.0
@@ -95,7 +95,9 @@ class MotorModel:
             tot += (4 if k % 2 else 2) * self.curve.torque(a + k * h)
         return tot * h / 3.0 / (b - a)
 
-    def move(self, name: str, path_rad: float, load: float) -> tuple[list[du.Phase], float, float]:
+    def move(
+        self, name: str, path_rad: float, load: float
+    ) -> tuple[list[duty_calc.Phase], float, float]:
         """Start, run, coast over a path at the motor: (phases, mean start torque, k_L)."""
         s = self.slip(load)
         if s is None:
@@ -110,11 +112,11 @@ class MotorModel:
             run = 0.0
         else:
             run = (path_rad - ramps) / w
-        out = [du.Phase(f"{name}: start", w / e1, 0.0, w, mm)]
+        out = [duty_calc.Phase(f"{name}: start", w / e1, 0.0, w, mm)]
         if run > 0:
-            out.append(du.Phase(f"{name}: run", run, w, w, load))
+            out.append(duty_calc.Phase(f"{name}: run", run, w, w, load))
         if e2 != math.inf:
-            out.append(du.Phase(f"{name}: coast", w / e2, w, 0.0, 0.0))
+            out.append(duty_calc.Phase(f"{name}: coast", w / e2, w, 0.0, 0.0))
         return out, mm, mm / (mm - load) if load > 0 else 1.0
 
 
@@ -127,7 +129,7 @@ def _unheld(ev, n: int, force: float, when: str) -> str:
     )
 
 
-def _segments_cycle(req, ev, mot: MotorModel, holder: str | None, passage=ow.NO_DEVICE):
+def _segments_cycle(req, ev, mot: MotorModel, holder: str | None, passage=one_way_calc.NO_DEVICE):
     """Phases of the segments, the starts per cycle, the worst k_L, and problems.
 
     A load stands on the screw from a move or a hold until a dwell takes it off. Where it
@@ -138,7 +140,7 @@ def _segments_cycle(req, ev, mot: MotorModel, holder: str | None, passage=ow.NO_
     no torque back (:func:`advisor.calc.one_way.motor_torque_through`)."""
     duty, lin = req.duty, req.linear
     lead = _lead_m(ev)
-    phases: list[du.Phase] = []
+    phases: list[duty_calc.Phase] = []
     problems: list[str] = []
     starts, k_l, peak_load = 0, 1.0, 0.0
     standing = 0.0  # the force on the screw at rest
@@ -147,7 +149,9 @@ def _segments_cycle(req, ev, mot: MotorModel, holder: str | None, passage=ow.NO_
         label = f"{n} {seg.kind}"
         if seg.kind == "move":
             screw = screw_torque(ev, force, seg.direction)
-            load = ow.motor_torque_through(passage, screw) if holder == "one_way" else screw
+            load = (
+                one_way_calc.motor_torque_through(passage, screw) if holder == "one_way" else screw
+            )
             peak_load = max(peak_load, abs(load))
             if holder is None and force > 0:
                 problems.append(_unheld(ev, n, force, "switched off at the end of the move,"))
@@ -159,7 +163,7 @@ def _segments_cycle(req, ev, mot: MotorModel, holder: str | None, passage=ow.NO_
                     f"{mot.curve.max_torque_Nm:.3g} N·m of {mot.m.model}"
                 )
                 continue
-            t = du.cycle_time(ph)
+            t = duty_calc.cycle_time(ph)
             if t > seg.time_s * (1 + 1e-9):
                 problems.append(
                     f"segment {n}: the move of {seg.distance_m:g} m takes {t:.4g} s with "
@@ -167,17 +171,17 @@ def _segments_cycle(req, ev, mot: MotorModel, holder: str | None, passage=ow.NO_
                 )
             phases += ph
             if seg.time_s > t:
-                phases.append(du.Phase(f"{label}: rest", seg.time_s - t, 0.0, 0.0, 0.0))
+                phases.append(duty_calc.Phase(f"{label}: rest", seg.time_s - t, 0.0, 0.0, 0.0))
             starts += 1
             k_l = max(k_l, kl)
             standing = force
         elif seg.kind == "hold":
             if holder is None and force > 0:
                 problems.append(_unheld(ev, n, force, "holding at standstill,"))
-            phases.append(du.Phase(label, seg.time_s, 0.0, 0.0, 0.0))
+            phases.append(duty_calc.Phase(label, seg.time_s, 0.0, 0.0, 0.0))
             standing = force
         else:
-            phases.append(du.Phase(label, seg.time_s, 0.0, 0.0, 0.0))
+            phases.append(duty_calc.Phase(label, seg.time_s, 0.0, 0.0, 0.0))
             standing = 0.0
     rest = 3600.0 / duty.cycles_per_hour - sum(s.time_s for s in duty.segments)
     if rest > 1e-9:
@@ -185,16 +189,16 @@ def _segments_cycle(req, ev, mot: MotorModel, holder: str | None, passage=ow.NO_
             problems.append(
                 _unheld(ev, len(duty.segments), standing, "in the cycle's closing rest")
             )
-        phases.append(du.Phase("rest", rest, 0.0, 0.0, 0.0))
+        phases.append(duty_calc.Phase("rest", rest, 0.0, 0.0, 0.0))
     return phases, starts * duty.cycles_per_hour, k_l, peak_load, problems
 
 
-def _iec_cycle(req, ev, mot: MotorModel, passage=ow.NO_DEVICE):
+def _iec_cycle(req, ev, mot: MotorModel, passage=one_way_calc.NO_DEVICE):
     """Phases of one cycle of an IEC 60034-1 duty type at the rated force's screw torque
     (through the holding device's efficiency where one sits at the motor)."""
     duty = req.duty
     t = duty.duty_type
-    load = ow.motor_torque_through(passage, ev.torque_Nm)
+    load = one_way_calc.motor_torque_through(passage, ev.torque_Nm)
     s = mot.slip(load)
     problems: list[str] = []
     if s is None:
@@ -208,18 +212,24 @@ def _iec_cycle(req, ev, mot: MotorModel, passage=ow.NO_DEVICE):
     t_brake = mot.j * w / (mm + load)  # electric braking with the same mean torque
     k_l = mm / (mm - load)
     on = cdf * period
-    ph: list[du.Phase] = []
+    ph: list[duty_calc.Phase] = []
     braking = 0.0
     if t == "S1":
-        ph = [du.Phase("run", period, w, w, load)]
+        ph = [duty_calc.Phase("run", period, w, w, load)]
         starts_h = 0.0
     elif t == "S2":  # one run for the stated time; the rest until cold is not a cycle
-        ph = [du.Phase("run", duty.duration_min * 60.0, w, w, load)]
+        ph = [duty_calc.Phase("run", duty.duration_min * 60.0, w, w, load)]
         starts_h = 0.0
     elif t == "S3":
-        ph = [du.Phase("run", on, w, w, load), du.Phase("rest", period - on, 0.0, 0.0, 0.0)]
+        ph = [
+            duty_calc.Phase("run", on, w, w, load),
+            duty_calc.Phase("rest", period - on, 0.0, 0.0, 0.0),
+        ]
     elif t == "S6":
-        ph = [du.Phase("run", on, w, w, load), du.Phase("no load", period - on, w, w, 0.0)]
+        ph = [
+            duty_calc.Phase("run", on, w, w, load),
+            duty_calc.Phase("no load", period - on, w, w, 0.0),
+        ]
     elif t in ("S4", "S5", "S7"):
         if t == "S7":
             on = period
@@ -232,11 +242,14 @@ def _iec_cycle(req, ev, mot: MotorModel, passage=ow.NO_DEVICE):
                 f"than the time under load, {on:.4g} s"
             )
             run = 0.0
-        ph = [du.Phase("start", t_start, 0.0, w, mm), du.Phase("run", run, w, w, load)]
+        ph = [
+            duty_calc.Phase("start", t_start, 0.0, w, mm),
+            duty_calc.Phase("run", run, w, w, load),
+        ]
         if brake:
-            ph.append(du.Phase("electric brake", brake, w, 0.0, -mm))
+            ph.append(duty_calc.Phase("electric brake", brake, w, 0.0, -mm))
         if period - on > 0:
-            ph.append(du.Phase("rest", period - on, 0.0, 0.0, 0.0))
+            ph.append(duty_calc.Phase("rest", period - on, 0.0, 0.0, 0.0))
     else:  # S9, S10: the loads as shares of the rated one
         for k, x in enumerate(duty.loads, 1):
             sk = mot.slip(x.load_share * load)
@@ -244,7 +257,9 @@ def _iec_cycle(req, ev, mot: MotorModel, passage=ow.NO_DEVICE):
                 problems.append(f"load {k}: {mot.m.model} stalls under {x.load_share:g} × load")
                 sk = 0.0
             wk = mot.w0 * (1.0 - sk)
-            ph.append(du.Phase(f"load {k}", x.time_share * period, wk, wk, x.load_share * load))
+            ph.append(
+                duty_calc.Phase(f"load {k}", x.time_share * period, wk, wk, x.load_share * load)
+            )
         starts_h = 0.0
     # the load's torque: the motor's own starting and braking torques are not a demand
     peak = max(
@@ -254,14 +269,14 @@ def _iec_cycle(req, ev, mot: MotorModel, passage=ow.NO_DEVICE):
     return ph, starts_h, k_l, peak, problems, braking
 
 
-def evaluate(req, ev, m, j_load: float, holder: str | None, passage=ow.NO_DEVICE) -> dict:
+def evaluate(req, ev, m, j_load: float, holder: str | None, passage=one_way_calc.NO_DEVICE) -> dict:
     """The cycle with motor m: phases, RMS, starts and every problem. ``holder``: what holds
     the load at standstill ('screw', 'one_way' or None); ``passage``: the one-way device's."""
     mot = MotorModel(m, j_load)
     duty = req.duty
     braking = 0.0
     if not holder == "one_way":
-        passage = ow.NO_DEVICE
+        passage = one_way_calc.NO_DEVICE
     if duty.segments:
         phases, starts_h, k_l, peak_load, problems = _segments_cycle(req, ev, mot, holder, passage)
     else:
@@ -277,16 +292,16 @@ def evaluate(req, ev, m, j_load: float, holder: str | None, passage=ow.NO_DEVICE
     # a start's heat, the load's share included (k_L), is counted by the starts per hour:
     # in the equivalent torque it counts as a ramp at zero torque
     thermal = [p._replace(torque_Nm=0.0) if p.name.endswith("start") else p for p in phases]
-    rms = du.rms_torque(thermal, duty.standstill_cooling_factor) if phases else 0.0
+    rms = duty_calc.rms_torque(thermal, duty.standstill_cooling_factor) if phases else 0.0
     rated = m.rated_torque_Nm
     # S2: SEW's power increasing factor K raises the thermal limit to K·M_n (same speed)
-    k_s2 = du.s2_power_factor(duty.duration_min) if duty.duty_type == "S2" else 1.0
+    k_s2 = duty_calc.s2_power_factor(duty.duration_min) if duty.duty_type == "S2" else 1.0
     limit = k_s2 * rated
     p_loss = m.rated_power_kW * 1e3 * (100.0 / m.efficiency_pct - 1.0)
     ramp = (1.0 + duty.standstill_cooling_factor) / 2.0
-    z0 = du.no_load_starts_per_hour(p_loss, m.inertia_kgm2, mot.w0, ramp)
-    fi = du.inertia_factor(m.inertia_kgm2, j_load)
-    allowed = du.allowed_starts_per_hour(z0, fi, k_l, rms / rated, 1.0, braking)
+    z0 = duty_calc.no_load_starts_per_hour(p_loss, m.inertia_kgm2, mot.w0, ramp)
+    fi = duty_calc.inertia_factor(m.inertia_kgm2, j_load)
+    allowed = duty_calc.allowed_starts_per_hour(z0, fi, k_l, rms / rated, 1.0, braking)
     start_torque = mot.curve.torque(1.0)
     if rms > limit:
         problems.append(
@@ -298,7 +313,7 @@ def evaluate(req, ev, m, j_load: float, holder: str | None, passage=ow.NO_DEVICE
         )
     # S3: the running torque also against SEW's K·M_n for the cdf (the stricter decides)
     k_s3 = (
-        du.s3_factor_for_cycle(duty.cyclic_duration_factor, duty.cycle_time_s)
+        duty_calc.s3_factor_for_cycle(duty.cyclic_duration_factor, duty.cycle_time_s)
         if duty.duty_type == "S3"
         else 1.0
     )
@@ -346,7 +361,7 @@ def _held_by(ev, holder: str | None, passage) -> str:
     return "nothing: no load stands on the screw while the motor is off"
 
 
-def _mean_start(phases: list[du.Phase]) -> float | None:
+def _mean_start(phases: list[duty_calc.Phase]) -> float | None:
     """The motor's mean starting torque where the cycle has a start (the same in every one)."""
     return next((p.torque_Nm for p in phases if p.name.endswith("start")), None)
 
@@ -366,7 +381,9 @@ def segment_loads_within_rating(req) -> None:
             )
 
 
-def advise_duty(req, ev, selected, cat, holder: str | None, trace: Trace, passage=ow.NO_DEVICE):
+def advise_duty(
+    req, ev, selected, cat, holder: str | None, trace: Trace, passage=one_way_calc.NO_DEVICE
+):
     """The motor for the cycle: the point's motor, or the next larger of its pole count that
     passes; the duty table, the checks and the warnings."""
     segment_loads_within_rating(req)
@@ -381,9 +398,9 @@ def advise_duty(req, ev, selected, cat, holder: str | None, trace: Trace, passag
     ok = [e for e in tried if not e["problems"]]
     if duty.duty_type:
         trace.apply(
-            du_rules.duty_type,
+            duty_rules.duty_type,
             duty.duty_type,
-            du.IEC_DUTY_TYPES[duty.duty_type],
+            duty_calc.IEC_DUTY_TYPES[duty.duty_type],
             _iec_how(duty),
         )
     if not ok:
@@ -399,17 +416,17 @@ def advise_duty(req, ev, selected, cat, holder: str | None, trace: Trace, passag
     e = ok[0]
     m = e["motor"]
     rows = {x["motor"].model: (x["motor"].rated_power_kW, x["problems"]) for x in tried}
-    trace.apply(du_rules.motor_for_cycle_linear, rows, selected.model, j_basis)
+    trace.apply(duty_rules.motor_for_cycle_linear, rows, selected.model, j_basis)
     phases = e["phases"]
-    out_J, _ = du.energies(phases)
+    out_J, _ = duty_calc.energies(phases)
     # an electric (DC-injection) stop dissipates the kinetic energy in the rotor, below the
     # synchronous speed: nothing of it reaches the supply
-    _, back_J = du.energies([p for p in phases if p.name != "electric brake"])
+    _, back_J = duty_calc.energies([p for p in phases if p.name != "electric brake"])
     beta0 = duty.standstill_cooling_factor
     util = e["rms"] / e["limit"]
     k_s2 = e["k_s2"]
     if duty.duty_type == "S2":
-        trace.apply(du_rules.power_increasing_factor, "S2", duty.duration_min, k_s2)
+        trace.apply(duty_rules.power_increasing_factor, "S2", duty.duration_min, k_s2)
         thermal_how = (
             f"Torque of the S2 run {e['rms']:.4g} N·m against K·M_n = {k_s2:g} × "
             f"{e['rated']:.5g} = {e['limit']:.4g} N·m of {m.model} (DU-09: SEW's power "
@@ -428,7 +445,7 @@ def advise_duty(req, ev, selected, cat, holder: str | None, trace: Trace, passag
     if duty.duty_type == "S3":
         cdf = duty.cyclic_duration_factor
         trace.apply(
-            du_rules.power_increasing_factor, "S3", cdf, k_s3, cdf * duty.cycle_time_s / 60.0
+            duty_rules.power_increasing_factor, "S3", cdf, k_s3, cdf * duty.cycle_time_s / 60.0
         )
         util_k = e["run_s3"] / (k_s3 * e["rated"])
         thermal_how += (
@@ -440,10 +457,10 @@ def advise_duty(req, ev, selected, cat, holder: str | None, trace: Trace, passag
         if util_k > util:
             util = util_k
             basis = f"S3 running torque over K·M_n (K = {k_s3:g}, SEW's S3 factor)"
-    trace.apply(du_rules.thermal, util, thermal_how)
-    peak = du.peak_torque(phases)
+    trace.apply(duty_rules.thermal, util, thermal_how)
+    peak = duty_calc.peak_torque(phases)
     trace.apply(
-        du_rules.peak,
+        duty_rules.peak,
         e["peak_load"],
         e["start_torque"],
         "The largest load torque of the cycle against the motor's starting torque (from the "
@@ -467,14 +484,14 @@ def advise_duty(req, ev, selected, cat, holder: str | None, trace: Trace, passag
         "A start heats rotor and stator by J·ω0²/2 each (R1/R2' = 1): Chilikin, ch. 9."
     )
     if e["starts"] > 0:
-        trace.apply(du_rules.starts, e["starts"], e["allowed"], starts_basis)
+        trace.apply(duty_rules.starts, e["starts"], e["allowed"], starts_basis)
     ir = j_load / m.inertia_kgm2
-    within = trace.apply(du_rules.inertia_ratio, ir)
+    within = trace.apply(duty_rules.inertia_ratio, ir)
     warnings = []
     if not within:
         warnings.append(
             f"duty: the load's inertia at the motor is {ir:.3g} times the motor's (guideline "
-            f"{du_rules.INERTIA_RATIO_GUIDELINE:g})"
+            f"{duty_rules.INERTIA_RATIO_GUIDELINE:g})"
         )
     if m.model != selected.model:
         warnings.append(
@@ -491,9 +508,9 @@ def advise_duty(req, ev, selected, cat, holder: str | None, trace: Trace, passag
             e["limit"],
             "N·m",
             e["limit"] / e["rms"] if e["rms"] > 0 else math.inf,
-            du_rules.SEW_K + du_rules.IEC_60034_1
+            duty_rules.SEW_K + duty_rules.IEC_60034_1
             if duty.duty_type == "S2"
-            else du_rules.KLYUCHEV + du_rules.ISSUE_15,
+            else duty_rules.KLYUCHEV + duty_rules.ISSUE_15,
         ),
         Check(
             "duty_peak_torque",
@@ -502,7 +519,7 @@ def advise_duty(req, ev, selected, cat, holder: str | None, trace: Trace, passag
             e["start_torque"],
             "N·m",
             e["start_torque"] / e["peak_load"] if e["peak_load"] > 0 else math.inf,
-            cite("4a-table", "M_start/M_n") + du_rules.ISSUE_15,
+            cite("4a-table", "M_start/M_n") + duty_rules.ISSUE_15,
         ),
     ]
     if duty.duty_type == "S3":
@@ -514,7 +531,7 @@ def advise_duty(req, ev, selected, cat, holder: str | None, trace: Trace, passag
                 k_s3 * e["rated"],
                 "N·m",
                 k_s3 * e["rated"] / e["run_s3"] if e["run_s3"] > 0 else math.inf,
-                du_rules.SEW_K + du_rules.IEC_60034_1,
+                duty_rules.SEW_K + duty_rules.IEC_60034_1,
             )
         )
     if e["starts"] > 0:
@@ -526,11 +543,11 @@ def advise_duty(req, ev, selected, cat, holder: str | None, trace: Trace, passag
                 e["allowed"],
                 "1/h",
                 e["allowed"] / e["starts"],
-                du_rules.IEC_60034_1,
+                duty_rules.IEC_60034_1,
             )
         )
     move = sum(p.time_s for p in phases if p.speed_start_rad_s or p.speed_end_rad_s)
-    t_cycle = du.cycle_time(phases)
+    t_cycle = duty_calc.cycle_time(phases)
     out = DutyOut.make(
         motor=m.model,
         ratio=2.0 * math.pi / _lead_m(ev),
@@ -546,10 +563,10 @@ def advise_duty(req, ev, selected, cat, holder: str | None, trace: Trace, passag
         thermal_utilisation=util,
         thermal_basis=basis,
         inertia_ratio=ir,
-        inertia_ratio_guideline=du_rules.INERTIA_RATIO_GUIDELINE,
+        inertia_ratio_guideline=duty_rules.INERTIA_RATIO_GUIDELINE,
         energy_per_cycle_J=out_J,
         regenerated_per_cycle_J=back_J,
-        mean_speed_rpm=du.mean_speed(phases) * RPM,
+        mean_speed_rpm=duty_calc.mean_speed(phases) * RPM,
         # S2 is one run from cold, not a cycle that repeats
         cycles_per_hour=None if duty.duty_type == "S2" else 3600.0 / t_cycle if t_cycle else 0.0,
         duty_type=duty.duty_type or "cycle",

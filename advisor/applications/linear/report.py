@@ -11,7 +11,7 @@ class NutOut(ReportTable):
     height_ratio: float
     bearing_pressure_MPa: float
     allowable_pressure_MPa: float
-    # wear and heat at the motor's working speed (issue 26)
+    # wear and heat at the motor's working speed
     sliding_speed_m_s: float | None = None
     safe_pressure_MPa: float | None = None  # Shigley, Table 8-4, at the sliding speed
     safe_pressure_basis: str | None = None
@@ -25,7 +25,7 @@ class NutOut(ReportTable):
 
 
 class ThrustOut(ReportTable):
-    """The face that takes the axial force and its friction torque (issue 26)."""
+    """The face that takes the axial force and its friction torque."""
 
     kind: str
     model: str

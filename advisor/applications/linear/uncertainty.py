@@ -80,13 +80,13 @@ def margin_model(req: Any, report: Any, cat: Any) -> tuple[Margins, dict[str, fl
     """The margins of the design in ``report`` as functions of the uncertain inputs, and the
     nominal value of every input."""
     from advisor.applications.linear.advice import thrust_face
-    from advisor.calc import screw as sc
+    from advisor.calc import screw as screw_calc
     from advisor.calc.sizing import fit_motor
 
     s = report.design.screw
     thread = cat.thread(s.thread)
     d2, d3 = thread.d2_mm * 1e-3, thread.d3_mm * 1e-3
-    psi = sc.lead_angle(thread.pitch_mm * 1e-3, d2, s.starts)
+    psi = screw_calc.lead_angle(thread.pitch_mm * 1e-3, d2, s.starts)
     model = s.friction_model
     lin = req.linear
     thrust = thrust_face(req, cat)
@@ -99,7 +99,7 @@ def margin_model(req: Any, report: Any, cat: Any) -> tuple[Margins, dict[str, fl
         nominal["screw.thrust.friction_coefficient"] = thrust.friction_coefficient
     steel = cat.steel(req.screw.screw_steel)
     e_pa, sy_pa = steel.elastic_modulus_MPa * 1e6, steel.yield_strength_MPa * 1e6
-    mu = sc.END_FIXITY_FACTOR[lin.end_fixity]
+    mu = screw_calc.END_FIXITY_FACTOR[lin.end_fixity]
     motor = next(m for m in cat.motors if m.model == report.design.motor.model)
     curve = fit_motor(motor).curve
     n0 = motor.synchronous_speed_rpm
@@ -174,19 +174,19 @@ def candidates(req: Any, cat: Any) -> list[tuple[str, int, int]]:
     preference (:func:`rules.screw.drive_order`): (thread, starts, pole pairs) of each, with
     the smallest motor of that pole count that drives it. Built by the linear advice's own
     functions, so the robust choice looks at exactly the advisor's candidates."""
-    from advisor.applications.linear import advice as la
+    from advisor.applications.linear import advice
     from advisor.calc.service_factor import service_factor
     from advisor.calc.sizing import screen_threads
     from advisor.core.rulebook import Trace
     from rules import screw as screw_rules
 
     lin, s, trace = req.linear, req.screw, Trace()
-    material, _ = la._material(req, cat, trace)
+    material, _ = advice._material(req, cat, trace)
     hold = req.application.hold_without_power
-    parts = la._catalog_parts(cat)
+    parts = advice._catalog_parts(cat)
     screens = screen_threads(
         parts.threads,
-        (s.starts,) if s.starts is not None else la.STARTS_FREE,
+        (s.starts,) if s.starts is not None else advice.STARTS_FREE,
         force_N=lin.force_N,
         stroke_m=lin.stroke_m,
         travel_time_s=lin.travel_time_s,
@@ -195,13 +195,13 @@ def candidates(req: Any, cat: Any) -> list[tuple[str, int, int]]:
         buckling_safety_factor=lin.buckling_safety_factor,
         friction_model=s.friction_model,
         material=material,
-        thrust=la.thrust_face(req, cat),
+        thrust=advice.thrust_face(req, cat),
         service_factor=service_factor(getattr(req, "design", None)).value,
     )
-    screens = la._through_device(screens, la._device_efficiency(req) if hold else 1.0)
+    screens = advice._through_device(screens, advice._device_efficiency(req) if hold else 1.0)
     options = [
         o
-        for o in la.drive_options(screens, parts.lines)
+        for o in advice.drive_options(screens, parts.lines)
         if s.thread is None or o.thread == s.thread
     ]
     options.sort(key=lambda o: screw_rules.drive_order(o, hold))
