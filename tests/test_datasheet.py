@@ -12,14 +12,15 @@ from pathlib import Path
 import pytest
 from helpers import EXAMPLES
 
+from advisor.applications.rotary.plots import reducer_space
 from advisor.cli import main
 from advisor.core.engine import advise
+from advisor.core.reading import read_requirements
 from advisor.core.report import nest_curves, plain, to_toml
-from advisor.core.requirements import read_requirements
 from advisor.datasheet import render
 from advisor.datasheet.content import TIGHT_MARGIN, number, sheet
 from advisor.datasheet.html import SECTIONS
-from advisor.datasheet.plots import duty, plots, reducer_space
+from advisor.datasheet.plots import duty, plots
 
 pytest.importorskip("matplotlib")
 
@@ -196,6 +197,7 @@ def test_the_duty_plot_steps_through_the_phases(reports):
 
 def test_pareto_front_and_duty_when_the_report_has_them():
     doc = {
+        "report": {"application": "rotary"},
         "requirements": {"envelope": {"max_outer_diameter_mm": 180.0}},
         "design": {
             "gearbox": {

@@ -11,7 +11,7 @@ import pytest
 from helpers import EXAMPLES
 
 from advisor.core.engine import advise
-from advisor.core.requirements import parse_requirements, read_requirements
+from advisor.core.reading import parse_requirements, read_requirements
 from advisor.datasheet import _sheet, render
 from advisor.datasheet.labels import short_description, split_key
 from advisor.datasheet.review import covering
@@ -169,8 +169,8 @@ def test_covering_by_table_pattern_and_name():
 
 
 def test_the_loss_plot_draws_points_not_a_line_between_candidates(reports):
+    from advisor.applications.rotary.plots import motor_losses
     from advisor.core.report import plain
-    from advisor.datasheet.plots import motor_losses
 
     plot = motor_losses(plain(reports["rudder_actuator.toml"]))
     assert {line.style for line in plot.lines} == {"points"}

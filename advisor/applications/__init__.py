@@ -14,6 +14,7 @@ register(
         summary_rows="advisor.applications.linear.report:summary_rows",
         views="advisor.applications.linear.views",
         covers="advisor.applications.linear.coverage:COVERS",
+        plots="advisor.applications.linear.plots:DATASHEET_PLOTS",
         steps=("Load and stroke", "Screw and holding", "Motor and friction", "Duty cycle"),
     )
 )
@@ -26,6 +27,7 @@ register(
         headline="advisor.applications.rotary.report:headline",
         views="advisor.applications.rotary.views",
         covers="advisor.applications.rotary.coverage:COVERS",
+        plots="advisor.applications.rotary.plots:DATASHEET_PLOTS",
         steps=("Torque and speed", "Envelope and holding", "Motor and reducer", "Duty cycle"),
     )
 )
@@ -38,6 +40,7 @@ register(
         headline="advisor.applications.positioning.report:headline",
         views="advisor.applications.positioning.views",
         covers="advisor.applications.positioning.coverage:COVERS",
+        plots="advisor.applications.positioning.plots:DATASHEET_PLOTS",
         steps=("Move and load", "", "Candidate motors", "Duty cycle"),
     )
 )
@@ -50,6 +53,7 @@ register(
         headline="advisor.applications.spinning_rotor.report:headline",
         views="advisor.applications.spinning_rotor.views",
         covers="advisor.applications.spinning_rotor.coverage:COVERS",
+        plots="advisor.applications.spinning_rotor.plots:DATASHEET_PLOTS",
         steps=("Rotor and manoeuvre", "Aerodynamic drag", "Bearings", "Duty cycle"),
     )
 )

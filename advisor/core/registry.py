@@ -30,6 +30,9 @@ class Application(NamedTuple):
     # "module:NAME", {requirement path: check id patterns}: which checks cover a requirement
     # (the datasheet's required-vs-achieved table; see :func:`covering`)
     covers: Any = None
+    # "module:NAME", a tuple of functions (report's plain data) -> Plot or None: the
+    # datasheet's plots of this application (:mod:`advisor.datasheet.plots`)
+    plots: Any = None
 
 
 _APPLICATIONS: dict[str, Application] = {}
@@ -112,6 +115,12 @@ def covers(kind: str) -> dict[str, tuple[str, ...]]:
     patterns (``duty_*``). Empty where the application says nothing."""
     app = application(kind)
     return dict(load(app.covers)) if app.covers else {}
+
+
+def datasheet_plots(kind: str) -> tuple[Any, ...]:
+    """The datasheet's plot functions of an application (empty where it registers none)."""
+    app = application(kind)
+    return tuple(load(app.plots)) if app.plots else ()
 
 
 def expected_text(values: tuple[str, ...]) -> str:

@@ -1,5 +1,7 @@
 """The datasheet's plots: which ones a report has (pure, from its plain data) and each drawn
 as an SVG with matplotlib, imported here only (``pip install 'drive-advisor[report]'``).
+The plots every report may have (the motor's envelope, the duty cycle) are here; each
+application's own are in its package, named by its registry entry (``plots``).
 
 The SVG is deterministic, so that two datasheets of the same input diff clean: no date, no
 creator, ids salted per plot (``svg.hashsalt``) instead of random, text kept as text.
@@ -8,6 +10,7 @@ creator, ids salted per plot (``svg.hashsalt``) instead of random, text kept as 
 import io
 import itertools
 import math
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -38,7 +41,8 @@ MARKERS = ("o", "s", "^", "D", "v", "P", "X", "*")
 DASHES = ("-", "--", "-.", ":", (0, (5, 1, 1, 1, 1, 1)), (0, (1, 1)))
 
 
-def _get(doc: Any, *path: str) -> Any:
+def at(doc: Any, *path: str) -> Any:
+    """The value at ``path`` in a report's plain data, None where a key is missing."""
     for p in path:
         if not isinstance(doc, dict) or p not in doc:
             return None
@@ -46,210 +50,11 @@ def _get(doc: Any, *path: str) -> Any:
     return doc
 
 
-def motor_characteristics(doc: dict) -> Plot | None:
-    """M(n) of the candidate induction motors with the screw's working point (seed 001)."""
-    cands = _get(doc, "design", "motor", "candidates") or []
-    lines = [
-        Line(
-            f"{c.get('model') or c.get('role')} {c.get('rated_power_kW', 0):g} kW",
-            c["curve"]["speed_rpm"],
-            c["curve"]["torque_Nm"],
-        )
-        for c in cands
-        if isinstance(_get(c, "curve", "speed_rpm"), list)
-    ]
-    n, m = (
-        _get(doc, "design", "motor", "working_speed_rpm"),
-        _get(doc, "design", "screw", "torque_Nm"),
-    )
-    if not lines:
-        return None
-    if n is not None and m is not None:
-        lines.append(Line(f"working point {n:.0f} rpm, {m:.4g} N·m", [n], [m], "marker"))
-    return Plot(
-        "motor-torque-speed",
-        "M(n) of the candidate motors and the working point",
-        "speed, rpm",
-        "torque, N·m",
-        lines,
-    )
-
-
-def motor_losses(doc: dict) -> Plot | None:
-    """The BLDC motor's losses at each candidate speed, the chosen one marked (seed 000)."""
-    cands = [c for c in _get(doc, "design", "motor", "candidates") or [] if "losses_W" in c]
-    if not cands:
-        return None
-    cands = sorted(cands, key=lambda c: c["speed_rpm"])
-    speeds = [c["speed_rpm"] for c in cands]
-    # the candidates are points of a curve the report does not hold: a straight line
-    # between two of them would draw a curve nobody computed
-    lines = [
-        Line(part, speeds, [c["losses_W"][part] for c in cands], "points")
-        for part in ("ohmic", "iron", "magnets", "total")
-        if all(part in c["losses_W"] for c in cands)
-    ]
-    motor = _get(doc, "design", "motor") or {}
-    chosen, best = motor.get("speed_rpm"), motor.get("optimum_speed_rpm")
-    vlines = [(chosen, f"chosen {chosen:g} rpm")] if chosen is not None else []
-    if isinstance(best, int | float):
-        vlines.append((best, f"loss optimum {best:.4g} rpm"))
-    limit = motor.get("loss_limit_W")
-    hlines = [(limit, f"frame's limit {limit:.4g} W")] if isinstance(limit, int | float) else []
-    return Plot(
-        "motor-losses",
-        "Motor losses at the candidate speeds",
-        "motor speed, rpm",
-        "loss, W",
-        lines,
-        vlines,
-        hlines,
-    )
-
-
-def _point(label: str, g: Any, style: str = "marker") -> Line | None:
-    if isinstance(g, dict) and "outer_diameter_mm" in g and "mass_kg" in g:
-        return Line(label, [g["outer_diameter_mm"]], [g["mass_kg"]], style)
-    return None
-
-
-def reducer_space(doc: dict) -> Plot | None:
-    """The reducer design space as mass against outer diameter: the rule's design, the
-    optima of the sweep and, where the report has it, the Pareto front (seed 000)."""
-    g = _get(doc, "design", "gearbox")
-    if not isinstance(g, dict) or "mass_kg" not in g:
-        return None
-    lines: list[Line] = []
-    pareto = g.get("pareto") if isinstance(g.get("pareto"), dict) else {}
-    if isinstance(pareto.get("points"), list):  # a front as rows
-        rows = [p for p in pareto["points"] if "outer_diameter_mm" in p and "mass_kg" in p]
-        xs, ys = [p["outer_diameter_mm"] for p in rows], [p["mass_kg"] for p in rows]
-    else:  # a front as columns, like fig1
-        xs, ys = pareto.get("outer_diameter_mm"), pareto.get("mass_kg")
-    if isinstance(xs, list) and isinstance(ys, list) and xs and len(xs) == len(ys):
-        front = sorted(zip(xs, ys, strict=True))
-        size = pareto.get("front_size")
-        lines.append(
-            Line(
-                "Pareto front (mass, diameter, length, efficiency)"
-                + (f": {len(front)} of {size} designs" if size else ""),
-                [x for x, _ in front],
-                [y for _, y in front],
-                "points",
-            )
-        )
-    by = _point("lightest design that dominates the rule's", pareto.get("dominated_by"))
-    for label, part in (
-        ("least mass in the design space", g.get("optimum")),
-        ("least diameter in the design space", g.get("optimum_min_diameter")),
-        ("the rule's design (adopted)", g),
-    ):
-        line = _point(label, part)
-        if line is not None:
-            lines.append(line)
-    if by is not None:
-        lines.append(by)
-    d_max = _get(doc, "requirements", "envelope", "max_outer_diameter_mm")
-    vlines = [(d_max, f"envelope Ø{d_max:g} mm")] if d_max is not None else []
-    return Plot(
-        "reducer-design-space",
-        "Reducer design space: mass against outer diameter",
-        "outer diameter, mm",
-        "mass, kg",
-        lines,
-        vlines,
-    )
-
-
-def reducer_fig1(doc: dict) -> Plot | None:
-    """Stage volume per unit torque against q for 2…12 rows (seed 000, fig. 1)."""
-    f = _get(doc, "design", "gearbox", "fig1")
-    if not isinstance(f, dict) or not f.get("q"):
-        return None
-    lines = [
-        Line(f"{n} rows", f["q"], vols)
-        for n, vols in zip(f["rows"], f["volume_per_torque_cm3_per_Nm"], strict=True)
-    ]
-    return Plot(
-        "reducer-fig1",
-        "Stage volume per unit torque against q (seed 000, fig. 1)",
-        "stage ratio q",
-        "volume per torque, cm³/(N·m)",
-        lines,
-    )
-
-
-def move_time(doc: dict) -> Plot | None:
-    """Move time against the ratio for the fastest motor, the optimum marked (seed 003)."""
-    m = _get(doc, "design", "motion")
-    curve = _get(m, "curve")
-    if not isinstance(curve, dict) or not curve.get("ratio"):
-        return None
-    lines = [Line(f"motor {m.get('motor', '')}".strip(), curve["ratio"], curve["move_time_s"])]
-    if "optimal_ratio" in m and "move_time_s" in m:
-        lines.append(
-            Line(
-                f"optimum i = {m['optimal_ratio']:.4g}, {m['move_time_s']:.4g} s",
-                [m["optimal_ratio"]],
-                [m["move_time_s"]],
-                "marker",
-            )
-        )
-    est = m.get("estimated_ratio")
-    vlines = [(est, f"graphical estimate i = {est:.4g}")] if est is not None else []
-    return Plot(
-        "move-time-ratio",
-        "Move time against ratio",
-        "ratio i",
-        "move time, s",
-        lines,
-        vlines,
-        logx=True,
-    )
-
-
-def run_up(doc: dict) -> Plot | None:
-    """The rotor's run-up at the drive torque to the design speed (seed 002)."""
-    up = _get(doc, "design", "rotor", "run_up")
-    if not isinstance(up, dict) or not up.get("time_s"):
-        return None
-    target = _get(doc, "requirements", "rotor", "speed_rad_s")
-    t_req = _get(doc, "requirements", "rotor", "run_up_time_s")
-    return Plot(
-        "run-up",
-        "Run-up of the rotor at the drive torque",
-        "time, s",
-        "speed, rad/s",
-        [Line("run-up", up["time_s"], up["speed_rad_s"])],
-        [(t_req, f"required {t_req:g} s")] if t_req is not None else [],
-        [(target, f"design speed {target:g} rad/s")] if target is not None else [],
-    )
-
-
-def slew(doc: dict) -> Plot | None:
-    """The rotor's speed in a sustained slew with the drive limited to the steady torque
-    without the gyroscopic reaction (seed 002)."""
-    s = _get(doc, "design", "rotor", "slew")
-    curve = _get(s, "curve")
-    if not isinstance(curve, dict) or not curve.get("time_s"):
-        return None
-    settle = s.get("balance_speed_rad_s")
-    return Plot(
-        "slew",
-        "Rotor speed in a sustained slew at the steady torque",
-        "time, s",
-        "speed, rad/s",
-        [Line("speed", curve["time_s"], curve["speed_rad_s"])],
-        [],
-        [(settle, f"settles at {settle:.4g} rad/s")] if settle is not None else [],
-    )
-
-
 def duty(doc: dict) -> Plot | None:
     """Motor torque against time over the duty cycle, where the report has one: its phases
     (each ``time_s`` or ``duration_s`` long at ``torque_Nm``) as steps, or arrays
     (``time_s`` and ``…_Nm``); the RMS torque and the peak limit as lines."""
-    d = _get(doc, "design", "duty")
+    d = at(doc, "design", "duty")
     if not isinstance(d, dict):
         return None
     phases = next(
@@ -290,7 +95,7 @@ def duty(doc: dict) -> Plot | None:
 
 def duty_thermal(doc: dict) -> Plot | None:
     """The winding's temperature rise over repeated duty cycles against its limit."""
-    th = _get(doc, "design", "duty", "thermal")
+    th = at(doc, "design", "duty", "thermal")
     if not isinstance(th, dict) or not th.get("time_s") or not th.get("rise_K"):
         return None
     lim = th.get("limit_rise_K")
@@ -331,17 +136,17 @@ def _motor_limits(doc: dict) -> tuple[list[Line], list[Line]] | None:
     """The continuous and peak torque–speed limits of the design's motor, from whichever
     data the report holds: a catalog motor's M(n) with its rated point, a frame's rated
     torque at its speed with the cycle's peak limit, or the listed motor the design chose."""
-    motor = _get(doc, "design", "motor") or {}
+    motor = at(doc, "design", "motor") or {}
     model = motor.get("model")
     curve = next(
         (
             c["curve"]
             for c in motor.get("candidates") or []
-            if c.get("model") == model and isinstance(_get(c, "curve", "speed_rpm"), list)
+            if c.get("model") == model and isinstance(at(c, "curve", "speed_rpm"), list)
         ),
         None,
     )
-    peak_limit = _get(doc, "design", "duty", "peak_torque_limit_Nm")
+    peak_limit = at(doc, "design", "duty", "peak_torque_limit_Nm")
     if curve is not None and "rated_torque_Nm" in motor:
         n_r, m_r = motor.get("rated_speed_rpm", max(curve["speed_rpm"])), motor["rated_torque_Nm"]
         return (
@@ -361,7 +166,7 @@ def _motor_limits(doc: dict) -> tuple[list[Line], list[Line]] | None:
         return cont, peak
     from advisor.datasheet.review import _listed
 
-    chosen = _get(doc, "design", "motion", "motor")
+    chosen = at(doc, "design", "motion", "motor")
     row = _listed(doc.get("requirements", {}), chosen) if isinstance(chosen, str) else None
     if row and "speed_rad_s" in row:
         n0 = row["speed_rad_s"] * 30.0 / math.pi
@@ -405,7 +210,7 @@ def envelope(doc: dict) -> Plot | None:
     if pts:
         label = "phases of the cycle (a ramp at its mean speed)"
         lines.append(Line(label, [x for x, _ in pts], [y for _, y in pts], "points"))
-    d = _get(doc, "design", "duty") or {}
+    d = at(doc, "design", "duty") or {}
     rms, n_mean = d.get("rms_torque_Nm"), d.get("mean_speed_rpm")
     if isinstance(rms, int | float) and isinstance(n_mean, int | float):
         lines.append(Line(f"RMS {rms:.4g} N·m at the mean speed", [n_mean], [rms], "marker"))
@@ -414,9 +219,9 @@ def envelope(doc: dict) -> Plot | None:
         n_pk = max(pts, key=lambda p: p[1])[0]
         lines.append(Line(f"peak {m_pk:.4g} N·m", [n_pk], [m_pk], "marker"))
     if not phases:
-        motor = _get(doc, "design", "motor") or {}
+        motor = at(doc, "design", "motor") or {}
         n = motor.get("working_speed_rpm", motor.get("speed_rpm"))
-        m = _get(doc, "design", "screw", "torque_Nm") or motor.get("torque_Nm")
+        m = at(doc, "design", "screw", "torque_Nm") or motor.get("torque_Nm")
         if isinstance(n, int | float) and isinstance(m, int | float):
             lines.append(Line(f"working point {n:.4g} rpm, {m:.4g} N·m", [n], [m], "marker"))
     return Plot(
@@ -428,24 +233,27 @@ def envelope(doc: dict) -> Plot | None:
     )
 
 
-PLOTS = (
-    envelope,
-    motor_characteristics,
-    motor_losses,
-    reducer_space,
-    reducer_fig1,
-    move_time,
-    run_up,
-    slew,
-    duty,
-    duty_speed,
-    duty_thermal,
-)
+#: The plots every application's report may have, around its own (its registry entry's
+#: ``plots``): the motor's envelope first, the duty cycle's last.
+FIRST = (envelope,)
+LAST = (duty, duty_speed, duty_thermal)
+
+
+def application_plots(doc: dict) -> tuple[Callable[[dict], Plot | None], ...]:
+    """The plot functions the report's application registers (none for a kind the registry
+    does not know, e.g. a report file of an application removed since)."""
+    from advisor.core import registry
+
+    kind = at(doc, "report", "application")
+    if kind not in registry.kinds():
+        return ()
+    return registry.datasheet_plots(kind)
 
 
 def plots(doc: dict) -> list[Plot]:
     """Every plot the report has data for, in a fixed order."""
-    return [p for p in (f(doc) for f in PLOTS) if p is not None]
+    funcs = (*FIRST, *application_plots(doc), *LAST)
+    return [p for p in (f(doc) for f in funcs) if p is not None]
 
 
 def _style(salt: str) -> dict[str, Any]:
