@@ -180,6 +180,18 @@ def thermal_rise(
     return out
 
 
+def _phase_maps(
+    losses_W: list[tuple[float, float]], resistance_K_W: float, time_constant_s: float
+) -> list[tuple[float, float, float]]:
+    """(time, A_j, B_j) after the first j phases of a cycle, j = 0 … m: ΔT ↦ ΔT·A_j + B_j."""
+    prefix = [(0.0, 1.0, 0.0)]
+    for p, d in losses_W:
+        a = math.exp(-d / time_constant_s)
+        t, a_j, b_j = prefix[-1]
+        prefix.append((t + d, a_j * a, b_j * a + p * resistance_K_W * (1.0 - a)))
+    return prefix
+
+
 def thermal_history(
     losses_W: list[tuple[float, float]],
     resistance_K_W: float,
@@ -221,11 +233,7 @@ def thermal_history(
     True
     """
     m = len(losses_W)
-    prefix = [(0.0, 1.0, 0.0)]  # (time, A_j, B_j) after the first j phases of a cycle
-    for p, d in losses_W:
-        a = math.exp(-d / time_constant_s)
-        t, a_j, b_j = prefix[-1]
-        prefix.append((t + d, a_j * a, b_j * a + p * resistance_K_W * (1.0 - a)))
+    prefix = _phase_maps(losses_W, resistance_K_W, time_constant_s)
     cycle_s, _, b_cycle = prefix[-1]
     x = cycle_s / time_constant_s  # the cycle's A = e^(−x)
 
