@@ -16,7 +16,7 @@ import time
 from _results import ROOT, save
 
 from advisor.core.engine import advise, advise_with
-from advisor.core.requirements import read_requirements
+from advisor.core.reading import read_requirements
 from advisor.uncertainty import evaluate, replaced
 from catalogs import load_catalogs
 

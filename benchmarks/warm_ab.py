@@ -25,7 +25,7 @@ import statistics, sys, time
 from pathlib import Path
 from advisor.core.engine import advise
 from advisor.core.report import to_toml
-from advisor.core.requirements import read_requirements
+from advisor.core.reading import read_requirements
 ex = Path(sys.argv[1])
 for _ in range(3):
     to_toml(advise(read_requirements(ex)))

@@ -135,7 +135,7 @@ def _rotary(torque_Nm: float, speeds: list[float], **motor) -> dict:
 
 def _advise(data: dict):
     from advisor.core.engine import advise
-    from advisor.core.requirements import parse_requirements
+    from advisor.core.reading import parse_requirements
 
     return advise(parse_requirements(data))
 

@@ -16,8 +16,8 @@ from hypothesis import strategies as st
 
 from advisor.core.engine import advise
 from advisor.core.errors import InfeasibleError
+from advisor.core.reading import parse_requirements
 from advisor.core.report import to_toml
-from advisor.core.requirements import parse_requirements
 
 SLOW = settings(
     max_examples=40,

@@ -8,8 +8,8 @@ from helpers import EXAMPLES
 
 from advisor.cli import main
 from advisor.core.engine import advise
+from advisor.core.reading import parse_requirements
 from advisor.core.report import to_toml
-from advisor.core.requirements import parse_requirements
 from advisor.diff import changes_between, differences
 
 

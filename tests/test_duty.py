@@ -12,7 +12,7 @@ from advisor.applications.positioning import duty as dp
 from advisor.calc import duty as du
 from advisor.calc import motion as mo
 from advisor.core.engine import advise
-from advisor.core.requirements import read_requirements
+from advisor.core.reading import read_requirements
 
 # Seed 003's load (examples/positioning_drive.toml) and its motor A.
 A = mo.Drive(150.0, 0.01, 20.0, 5.0, 100.0)

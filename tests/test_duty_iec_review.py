@@ -12,7 +12,7 @@ import pytest
 from helpers import EXAMPLES
 
 from advisor.core.engine import advise
-from advisor.core.requirements import parse_requirements
+from advisor.core.reading import parse_requirements
 
 M_N = 750.0 / (1390.0 * 3.141592653589793 / 30.0)
 M_L = 5.08485

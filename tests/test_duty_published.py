@@ -37,7 +37,7 @@ from advisor.applications.linear import duty as dl
 from advisor.applications.rotary import duty as dr
 from advisor.calc import duty as du
 from advisor.core.engine import advise
-from advisor.core.requirements import read_requirements
+from advisor.core.reading import read_requirements
 from advisor.duty.requirements import RotarySegmentReq
 from rules import duty as du_rules
 

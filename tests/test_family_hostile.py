@@ -47,7 +47,7 @@ def no_cluster(monkeypatch):
     def tripwire(*args, **kwargs):
         raise ClusterStarted
 
-    monkeypatch.setattr(family_cli, "make_client", tripwire)
+    monkeypatch.setattr(family_cli, "make_runner", tripwire)
 
 
 def family_file(path: Path, axes: str, base: str = ROTARY, name: str = "x") -> Path:

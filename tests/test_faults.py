@@ -623,7 +623,7 @@ def test_the_wizard_views_show_user_names_literally(tmp_path):
     from rich.console import Console
 
     from advisor.core.engine import advise
-    from advisor.core.requirements import parse_requirements
+    from advisor.core.reading import parse_requirements
     from advisor.tui import views
 
     doc = tomllib.loads((EXAMPLES / "positioning_drive.toml").read_text())

@@ -17,8 +17,8 @@ from advisor.calc import duty as du
 from advisor.calc import one_way as ow
 from advisor.core.engine import advise
 from advisor.core.errors import InfeasibleError
+from advisor.core.reading import parse_requirements
 from advisor.core.report import to_toml
-from advisor.core.requirements import parse_requirements
 
 DEVICES = ("auto", "roller_clutch", "em_clutch", "worm", "inverse_gear")
 
@@ -298,7 +298,7 @@ def test_headline_states_the_duty_design():
 
 
 def test_family_row_states_the_duty_ratio():
-    from advisor.family.outputs import positioning_outputs
+    from advisor.applications.positioning.family import key_outputs as positioning_outputs
 
     doc = tomllib.loads((EXAMPLES / "indexing_table_duty.toml").read_text(encoding="utf-8"))
     rep = report(doc)

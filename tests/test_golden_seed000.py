@@ -10,8 +10,8 @@ from helpers import EXAMPLES
 from advisor.cli import main
 from advisor.core.engine import advise
 from advisor.core.errors import ExitCode, InfeasibleError
+from advisor.core.reading import parse_requirements, read_requirements
 from advisor.core.report import to_toml
-from advisor.core.requirements import parse_requirements, read_requirements
 
 EXAMPLE = EXAMPLES / "rudder_actuator.toml"
 

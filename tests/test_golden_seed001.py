@@ -7,8 +7,8 @@ import pytest
 from helpers import EXAMPLES, seed001_requirement
 
 from advisor.core.engine import advise
+from advisor.core.reading import parse_requirements, read_requirements
 from advisor.core.report import to_toml
-from advisor.core.requirements import parse_requirements, read_requirements
 from rules import induction as im_rules
 
 

@@ -25,7 +25,7 @@ from helpers import EXAMPLES
 from advisor.calc import bearing_life as bl
 from advisor.calc import rotor as ro
 from advisor.core.engine import advise
-from advisor.core.requirements import read_requirements
+from advisor.core.reading import read_requirements
 from catalogs import load_catalogs
 
 MASS, H, OMEGA = 0.56, 1.814, 4453.0

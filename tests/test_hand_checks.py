@@ -9,7 +9,7 @@ import math
 import pytest
 
 from advisor.core.engine import advise
-from advisor.core.requirements import parse_requirements
+from advisor.core.reading import parse_requirements
 
 REL = 1e-4
 

@@ -12,8 +12,8 @@ from advisor.calc.checks import Check
 from advisor.cli import main
 from advisor.core.cite import cite
 from advisor.core.errors import ExitCode, InfeasibleError
+from advisor.core.reading import read_requirements
 from advisor.core.report import to_toml
-from advisor.core.requirements import read_requirements
 from advisor.infeasible import infeasible_report, shortfall
 from advisor.summary import summary_lines
 

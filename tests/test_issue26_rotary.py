@@ -16,7 +16,7 @@ from advisor.calc.duty import Phase
 from advisor.cli import main
 from advisor.core.engine import advise
 from advisor.core.errors import InfeasibleError
-from advisor.core.requirements import parse_requirements
+from advisor.core.reading import parse_requirements
 from catalogs import load_catalogs
 
 

@@ -10,8 +10,8 @@ from helpers import EXAMPLES
 
 from advisor.core.engine import advise
 from advisor.core.errors import InfeasibleError
+from advisor.core.reading import parse_requirements
 from advisor.core.registry import headline
-from advisor.core.requirements import parse_requirements
 
 
 def _leaves(doc, path=()):

@@ -12,8 +12,8 @@ from hypothesis import strategies as st
 from advisor.calc.sizing import ScrewMaterial, evaluate_thread
 from advisor.core.engine import advise
 from advisor.core.errors import InfeasibleError
+from advisor.core.reading import parse_requirements
 from advisor.core.report import to_toml
-from advisor.core.requirements import parse_requirements
 from catalogs import load_catalogs
 from rules import screw as screw_rules
 

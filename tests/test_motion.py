@@ -9,8 +9,8 @@ from helpers import EXAMPLES
 from advisor.calc import motion as mo
 from advisor.core.engine import advise
 from advisor.core.errors import InputError
+from advisor.core.reading import parse_requirements, read_requirements
 from advisor.core.report import to_toml
-from advisor.core.requirements import parse_requirements, read_requirements
 
 # motor A of the example: ω0 = 150 rad/s, J0 = 0.01 kg·m², M_λ = 20 N·m;
 # load 5 kg·m², 100 N·m, path 10 rad

@@ -12,7 +12,7 @@ from advisor.calc import one_way as ow
 from advisor.cli import main
 from advisor.core.engine import advise
 from advisor.core.errors import InfeasibleError
-from advisor.core.requirements import parse_requirements, read_requirements
+from advisor.core.reading import parse_requirements, read_requirements
 from rules import one_way as rules
 
 M_MOTOR = 1000.0 / (600 * 0.8)  # 2.0833 N·m

@@ -9,7 +9,7 @@ from hypothesis import strategies as st
 
 from advisor.core.engine import advise
 from advisor.core.errors import InfeasibleError, InputError
-from advisor.core.requirements import parse_requirements
+from advisor.core.reading import parse_requirements
 
 finite = dict(allow_nan=False, allow_infinity=False)
 

@@ -11,7 +11,7 @@ from brute_reducer import lightest
 from advisor.calc import reducer as rd
 from advisor.core.engine import advise
 from advisor.core.errors import InfeasibleError
-from advisor.core.requirements import parse_requirements
+from advisor.core.reading import parse_requirements
 from rules.wavegear import split_ratio
 
 P = rd.ReducerParams(1620.0, 1.0, 0.9, 7800.0, 0.75)

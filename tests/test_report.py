@@ -94,7 +94,7 @@ def test_toml_text_writes_what_tomli_w_writes_for_every_example(example):
     import tomli_w
 
     from advisor.core.engine import advise
-    from advisor.core.requirements import read_requirements
+    from advisor.core.reading import read_requirements
 
     plain = rp.archive(rp.plain_data(advise(read_requirements(example))))
     assert rp.to_toml(advise(read_requirements(example))) == tomli_w.dumps(plain)

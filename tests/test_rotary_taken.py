@@ -10,8 +10,8 @@ import pytest
 
 from advisor.core.engine import advise
 from advisor.core.errors import InfeasibleError
+from advisor.core.reading import parse_requirements
 from advisor.core.report import to_toml
-from advisor.core.requirements import parse_requirements
 
 VALVE = Path(__file__).parent.parent / "examples" / "valve_actuator_hold.toml"
 

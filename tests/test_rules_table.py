@@ -10,7 +10,7 @@ from helpers import EXAMPLES
 
 from advisor.cli import main
 from advisor.core.engine import advise
-from advisor.core.requirements import parse_requirements
+from advisor.core.reading import parse_requirements
 from advisor.core.rules_table import DOC, as_markdown, rows
 
 TESTS = Path(__file__).resolve().parent

@@ -12,8 +12,8 @@ from advisor.calc.service_factor import load_classification, service_factor
 from advisor.calc.sizing import ScrewMaterial, ThrustFace, evaluate_thread
 from advisor.core.engine import advise
 from advisor.core.errors import InputError
+from advisor.core.reading import parse_requirements, read_requirements
 from advisor.core.report import to_toml
-from advisor.core.requirements import parse_requirements, read_requirements
 from catalogs import load_catalogs
 
 CAT = load_catalogs()

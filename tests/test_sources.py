@@ -11,8 +11,8 @@ import rules  # noqa: F401 - registers every rule
 from advisor.core.cite import cite, note, text
 from advisor.core.engine import advise
 from advisor.core.errors import CatalogError
+from advisor.core.reading import read_requirements
 from advisor.core.report import SourceOut, to_toml
-from advisor.core.requirements import read_requirements
 from advisor.core.rulebook import REGISTRY
 from catalogs import load_catalogs
 from catalogs.loader import BIBLIOGRAPHY_FILE, HERE, MOTORS_FILE

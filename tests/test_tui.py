@@ -11,8 +11,8 @@ from helpers import EXAMPLES
 from textual.widgets import Input, Label, Static
 
 from advisor.core.engine import advise
+from advisor.core.reading import read_requirements
 from advisor.core.report import to_toml
-from advisor.core.requirements import read_requirements
 from advisor.tui import draft as drafts
 from advisor.tui.app import ConfirmScreen, DriveAdvisorApp, ExportScreen
 

@@ -12,8 +12,8 @@ from rich.text import Text
 from textual.widgets import Input, Label, Static
 
 from advisor.core.engine import advise
+from advisor.core.reading import parse_requirements, read_requirements
 from advisor.core.report import to_toml
-from advisor.core.requirements import parse_requirements, read_requirements
 from advisor.tui.app import DriveAdvisorApp, SteadyStatic
 
 SIZE = (120, 40)

@@ -14,8 +14,8 @@ import pytest
 from helpers import EXAMPLES
 
 from advisor.core.engine import advise
+from advisor.core.reading import read_requirements
 from advisor.core.report import to_toml
-from advisor.core.requirements import read_requirements
 from advisor.tui.draft import draft_path
 
 pytestmark = pytest.mark.skipif(shutil.which("tmux") is None, reason="tmux is not installed")

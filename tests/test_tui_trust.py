@@ -503,7 +503,7 @@ def test_the_loss_curve_passes_through_every_candidate_speed():
     whose losses are the frame's limit)."""
     from advisor.applications.rotary.views import loss_curve
     from advisor.core.engine import advise
-    from advisor.core.requirements import read_requirements
+    from advisor.core.reading import read_requirements
 
     report = advise(read_requirements(EXAMPLES / "rudder_actuator.toml"))
     curve = {round(c["speed_rpm"], 6): c for c in loss_curve(report)}

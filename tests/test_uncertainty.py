@@ -16,7 +16,7 @@ from advisor.calc import screw as sc
 from advisor.calc.sizing import fit_motor
 from advisor.cli import main
 from advisor.core.engine import advise, advise_with
-from advisor.core.requirements import parse_requirements, read_requirements
+from advisor.core.reading import parse_requirements, read_requirements
 from advisor.uncertainty import evaluate, replaced
 from advisor.uncertainty.analysis import check_results, wilson
 from advisor.uncertainty.sampling import Distribution, sample

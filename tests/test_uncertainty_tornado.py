@@ -13,7 +13,7 @@ import pytest
 from helpers import EXAMPLES
 
 from advisor.core.engine import advise
-from advisor.core.requirements import read_requirements
+from advisor.core.reading import read_requirements
 from advisor.datasheet import render
 from advisor.uncertainty.drivers import charted, input_label, least_probable, tornado
 

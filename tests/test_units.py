@@ -14,8 +14,8 @@ from helpers import EXAMPLES
 from advisor.cli import main
 from advisor.core.engine import advise
 from advisor.core.errors import InputError
+from advisor.core.reading import parse_requirements
 from advisor.core.report import to_toml
-from advisor.core.requirements import parse_requirements
 from advisor.core.units import UnitError, to_unit
 
 

@@ -21,8 +21,8 @@ from hypothesis import strategies as st
 from advisor.core import registry
 from advisor.core.engine import advise
 from advisor.core.errors import InfeasibleError, InputError
+from advisor.core.reading import parse_requirements
 from advisor.core.report import to_toml
-from advisor.core.requirements import parse_requirements
 
 #: Where a range has no stated end, the draw stops here (a finite number is then the rule).
 OPEN_END = 1e12

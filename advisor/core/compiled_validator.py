@@ -201,7 +201,9 @@ def _table(name: str, data: Any) -> Record:
 
 def validate(data: Any) -> Record | None:
     """The requirement of document ``data`` as records, or None when the compiled validator
-    does not accept it (then the pydantic models validate it, and word what is wrong)."""
+    does not accept it (then the pydantic models validate it, and word what is wrong). The
+    checks across tables (:mod:`advisor.core.ignored`) are the reading path's
+    (:func:`advisor.core.reading.compiled_or_none`)."""
     from advisor.core.registry import application
 
     try:
@@ -209,12 +211,9 @@ def validate(data: Any) -> Record | None:
         root = ROOTS.get(app.kind)
         if root is None or application(app.kind).requirements != root:
             return None  # an application the spec does not hold (one registered later)
-        req = _table(root, data)
+        return _table(root, data)
     except Exception:  # any doubt goes to the models, which say what is wrong
         return None
-    from advisor.core.ignored import contradictions
-
-    return None if contradictions(data) else req  # the models word the refusal
 
 
 def prepare() -> None:

@@ -8,7 +8,6 @@ application kind needs must be present.
 """
 
 import math
-from pathlib import Path
 from typing import Annotated, Any, Literal
 
 from pydantic import (
@@ -22,7 +21,7 @@ from pydantic import (
 from pydantic_core import PydanticCustomError
 
 from advisor.core.errors import InputError
-from advisor.core.io_safety import read_toml, show, show_repr
+from advisor.core.io_safety import show, show_repr
 
 #: At most this many unknown keys are listed (50,000 typos are not 50,000 lines) ...
 MAX_UNKNOWN_SHOWN = 3
@@ -236,7 +235,7 @@ class RequirementHead(BaseModel):
     ]
 
 
-#: What ``parse_requirements`` returns: one model per application kind.
+#: What ``validate_with_models`` returns: one model per application kind.
 Requirements = Any
 
 
@@ -396,9 +395,11 @@ def _show(value: Any) -> str:
     return show(repr(value))
 
 
-def parse_requirements(data: dict[str, Any]) -> Requirements:
-    """Validate a requirement document: [application] first, then the whole file against the
-    model of that application."""
+def validate_with_models(data: dict[str, Any]) -> Requirements:
+    """Validate a requirement document by the pydantic models: [application] first, then the
+    whole file against the model of that application. Read files through
+    :func:`advisor.core.reading.parse_requirements`, which comes here for every document the
+    compiled validator does not accept (and with ``compiled=False``)."""
     try:
         kind = RequirementHead.model_validate(data).application.kind
     except ValidationError as exc:
@@ -419,10 +420,3 @@ def parse_requirements(data: dict[str, Any]) -> Requirements:
     if conflicts:
         raise InputError(*conflicts)
     return req
-
-
-def read_requirements(path: Path) -> Requirements:
-    """Read and validate a requirement file; every failure is an :class:`InputError`
-    (reading itself is :func:`advisor.core.io_safety.read_toml`: regular files of at most 1 MiB,
-    no deep nesting)."""
-    return parse_requirements(read_toml(path))

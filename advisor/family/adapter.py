@@ -1,7 +1,7 @@
 """The one call from a family study into the engine, and requirement validation for axes.
 
 Everything a family study needs from the engine goes through this module, built on the same
-functions as ``advisor --batch``: :func:`advisor.core.requirements.parse_requirements` (the
+functions as ``advisor --batch``: :func:`advisor.core.reading.parse_requirements` (the
 TOML reading of the batch path minus the file), :func:`advisor.core.engine.advise` and the
 report's TOML conversion. A row of ``designs.csv`` therefore equals what the batch command
 gives for that variant alone.

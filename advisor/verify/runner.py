@@ -302,8 +302,8 @@ def lookup(tree: Any, path: str) -> Any:
 
 def _requirement_values(case: Case, catalog_dir: Path | None) -> dict[str, Any]:
     from advisor.core.engine import advise
+    from advisor.core.reading import parse_requirements
     from advisor.core.report import to_toml
-    from advisor.core.requirements import parse_requirements
 
     report = tomllib.loads(to_toml(advise(parse_requirements(case.requirement), catalog_dir)))
     out: dict[str, Any] = {}
