@@ -8,10 +8,15 @@ range over the pairs, so load that comes and goes cannot favour one side. The co
 timed on stdout, with ``-o`` and as a first run without the catalog cache (see
 ``cold_batch.py``), in wall time and in CPU time (user + system, which does not count the
 time spent waiting for a core on a loaded machine). The sweep counts only the configurations
-it computed (see ``sweep.py``).
+it computed (see ``sweep.py``). ``goals.py`` adds the cold figures beyond the batch (a file
+with unit strings, the HTML datasheet against matplotlib's import, numpy's BLAS threads);
+``tui_latency.py`` the wizard's (a key at the first paint among them); and every
+``family_*.py`` that defines ``run_all(quick) -> list[tuple[str, str, str]]`` (measurement,
+case, figure) the family studies' rows.
 """
 
 import argparse
+import importlib
 import json
 import os
 import platform
@@ -22,9 +27,10 @@ import tempfile
 import time
 from pathlib import Path
 
+import goals
+import tui_latency as tui
 from _results import ROOT, examples, save
 from cold_batch import advisor_cmd, cold, spread, timed
-from tui_latency import tui_latency
 
 BEGIN, END = "<!-- results:begin -->", "<!-- results:end -->"
 
@@ -32,8 +38,8 @@ BEGIN, END = "<!-- results:begin -->", "<!-- results:end -->"
 def warm(n: int) -> dict:
     """In-process read + advise + TOML per example, imports and catalogs already loaded."""
     from advisor.core.engine import advise
+    from advisor.core.reading import read_requirements
     from advisor.core.report import to_toml
-    from advisor.core.requirements import read_requirements
 
     out = {}
     for ex in examples():
@@ -161,6 +167,7 @@ def table(res: dict) -> str:
         f"{m['j1_s']['median']:.2f} s vs {m['j2_s']['median']:.2f} s wall, "
         f"{m['j1_cpu_s']['median']:.2f} s vs {m['j2_cpu_s']['median']:.2f} s CPU |"
     )
+    rows += goal_rows(res)
     for name, r in res["tui_latency"].items():
         rows.append(
             f"| wizard in a pty: start → first screen painted | {name} | "
@@ -176,6 +183,67 @@ def table(res: dict) -> str:
             f"{r['median_ms']:.0f} ms (max {r['max_ms']:.0f} ms) |"
         )
     return "\n".join(rows)
+
+
+def _ratio(r: dict, what: str) -> str:
+    w, c = r["ratio"], r["cpu_ratio"]
+    return (
+        f"**{c['median']:.2f} ×** CPU ({_iqr(c)}); {w['median']:.2f} × wall ({_iqr(w)}); "
+        f"{r['b_cpu_ms']['median']:.0f} ms vs {r['a_cpu_ms']['median']:.0f} ms CPU {what}"
+    )
+
+
+def goal_rows(res: dict) -> list[str]:
+    """The rows of ``goals.py``, the wizard's first key and the family studies."""
+    rows = []
+    for name, r in res["unit_strings"].items():
+        rows.append(
+            f"| cold batch of a file with unit strings / import floor | {name} (two keys as "
+            f"unit strings) | {_ratio(r['vs_floor'], '(file vs floor)')} |"
+        )
+        rows.append(
+            f"| the same / the file in plain numbers | {name} | "
+            f"{_ratio(r['vs_plain'], '(unit strings vs numbers)')} |"
+        )
+    for name, r in res["html"].items():
+        rows.append(
+            f"| HTML datasheet (`--format html -o`) / matplotlib's import | {name} | "
+            f"{_ratio(r, '(datasheet vs import)')} |"
+        )
+    rows.append(
+        "| numpy's BLAS threads: the CLI's one thread / a pool of every core "
+        f"(`OPENBLAS_NUM_THREADS` set) | rudder_actuator.toml | "
+        f"{_ratio(res['blas_threads'], '(one thread vs pool)')} |"
+    )
+    for name, r in res.get("first_key", {}).items():
+        t = r["this"]
+        lo, hi = t["at_paint_range_ms"]
+        rows.append(
+            f"| wizard in a pty: a key (F1) at the first paint → answered | {name} | "
+            f"{t['at_paint_median_ms']:.0f} ms median (range {lo:.0f}–{hi:.0f}); the screen "
+            f"settled: {t['settled_median_ms']:.0f} ms |"
+        )
+    for name, family_rows in res.get("family", {}).items():
+        rows += [f"| {m} | {case} ({name}) | {fig} |" for m, case, fig in family_rows]
+    return rows
+
+
+def family(quick: bool) -> dict:
+    """The rows of every ``family_*.py`` that defines ``run_all(quick)``."""
+    out = {}
+    for path in sorted((ROOT / "benchmarks").glob("family_*.py")):
+        module = importlib.import_module(path.stem)
+        if hasattr(module, "run_all"):
+            out[path.stem] = module.run_all(quick)
+    return out
+
+
+def first_key(runs: int) -> dict:
+    """A key at the wizard's first paint (when ``tui_latency.py`` measures it)."""
+    if not hasattr(tui, "first_keys"):
+        return {}
+    chosen = ("rudder_actuator.toml", "linear_screw_actuator.toml")
+    return {ex.name: tui.first_keys(ex, runs) for ex in examples() if ex.name in chosen}
 
 
 def commit() -> str:
@@ -206,8 +274,13 @@ def main() -> None:
     res["cold_batch"] = cold(7 if quick else 21)
     res["warm_advice"] = warm(20 if quick else 100)
     res["sweep"] = sweep(5 if quick else 20)
-    res["many"] = many(1 if quick else 3, 100 if quick else 400)
-    res["tui_latency"] = tui_latency(5 if quick else 15)
+    res["many"] = many(1 if quick else 3, 400)
+    res["unit_strings"] = goals.unit_strings(7 if quick else 21)
+    res["html"] = goals.html(5 if quick else 15)
+    res["blas_threads"] = goals.blas_threads(7 if quick else 21)
+    res["tui_latency"] = tui.tui_latency(5 if quick else 15)
+    res["first_key"] = first_key(5 if quick else 15)
+    res["family"] = family(quick)
     res["machine_after"] = machine()
     res["date"] = time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime())
     save("all", res)

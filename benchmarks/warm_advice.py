@@ -10,8 +10,8 @@ import time
 from _results import examples, save
 
 from advisor.core.engine import advise
+from advisor.core.reading import read_requirements
 from advisor.core.report import to_toml
-from advisor.core.requirements import read_requirements
 
 
 def main() -> None:
