@@ -18,9 +18,12 @@ already takes (:func:`advisor.calc.duty.allowed_starts_per_hour`).
 """
 
 import math
+from dataclasses import dataclass, replace
+from typing import Any, NamedTuple
 
 from advisor.calc import duty as duty_calc
 from advisor.calc import one_way as one_way_calc
+from advisor.calc.duty import Phase
 from advisor.calc.induction import fit_kloss
 from advisor.calc.sizing import Check
 from advisor.core.cite import cite
@@ -95,9 +98,7 @@ class MotorModel:
             tot += (4 if k % 2 else 2) * self.curve.torque(a + k * h)
         return tot * h / 3.0 / (b - a)
 
-    def move(
-        self, name: str, path_rad: float, load: float
-    ) -> tuple[list[duty_calc.Phase], float, float]:
+    def move(self, name: str, path_rad: float, load: float) -> tuple[list[Phase], float, float]:
         """Start, run, coast over a path at the motor: (phases, mean start torque, k_L)."""
         s = self.slip(load)
         if s is None:
@@ -112,11 +113,11 @@ class MotorModel:
             run = 0.0
         else:
             run = (path_rad - ramps) / w
-        out = [duty_calc.Phase(f"{name}: start", w / e1, 0.0, w, mm)]
+        out = [Phase(f"{name}: start", w / e1, 0.0, w, mm)]
         if run > 0:
-            out.append(duty_calc.Phase(f"{name}: run", run, w, w, load))
+            out.append(Phase(f"{name}: run", run, w, w, load))
         if e2 != math.inf:
-            out.append(duty_calc.Phase(f"{name}: coast", w / e2, w, 0.0, 0.0))
+            out.append(Phase(f"{name}: coast", w / e2, w, 0.0, 0.0))
         return out, mm, mm / (mm - load) if load > 0 else 1.0
 
 
@@ -129,8 +130,51 @@ def _unheld(ev, n: int, force: float, when: str) -> str:
     )
 
 
-def _segments_cycle(req, ev, mot: MotorModel, holder: str | None, passage=one_way_calc.NO_DEVICE):
-    """Phases of the segments, the starts per cycle, the worst k_L, and problems.
+class CycleLoads(NamedTuple):
+    """One cycle at the motor: its phases, the starts per hour, the worst load factor of a
+    start k_L, the largest load torque, what is wrong with it, and the heat of its electric
+    stops as a share of a start's (k_b)."""
+
+    phases: list[Phase]
+    starts_per_hour: float
+    load_factor: float
+    peak_load_Nm: float
+    problems: list[str]
+    braking_heat: float = 0.0
+
+
+def _move_phases(ev, mot: MotorModel, n: int, seg, load: float):
+    """One move segment at the motor: its start, run and coast and the rest to its time_s,
+    the start's load factor k_L (``None``: the motor stalls under the load) and what is
+    wrong with it."""
+    label = f"{n} {seg.kind}"
+    try:
+        phases, _, k_l = mot.move(label, seg.distance_m / _lead_m(ev) * 2.0 * math.pi, load)
+    except ValueError:
+        return (
+            [],
+            None,
+            [
+                f"segment {n}: the screw asks {load:.3g} N·m, above the maximum torque "
+                f"{mot.curve.max_torque_Nm:.3g} N·m of {mot.m.model}"
+            ],
+        )
+    problems = []
+    t = duty_calc.cycle_time(phases)
+    if t > seg.time_s * (1 + 1e-9):
+        problems.append(
+            f"segment {n}: the move of {seg.distance_m:g} m takes {t:.4g} s with "
+            f"{mot.m.model}, longer than its time_s = {seg.time_s:g} s"
+        )
+    if seg.time_s > t:
+        phases.append(Phase(f"{label}: rest", seg.time_s - t, 0.0, 0.0, 0.0))
+    return phases, k_l, problems
+
+
+def _segments_cycle(
+    req, ev, mot: MotorModel, holder: str | None, passage=one_way_calc.NO_DEVICE
+) -> CycleLoads:
+    """The cycle of the duty's segments.
 
     A load stands on the screw from a move or a hold until a dwell takes it off. Where it
     back-drives the screw, something must hold it whenever the motor is off (the stop of a
@@ -139,156 +183,215 @@ def _segments_cycle(req, ev, mot: MotorModel, holder: str | None, passage=one_wa
     the motor gives the screw torque over its efficiency, and a self-locking device passes
     no torque back (:func:`advisor.calc.one_way.motor_torque_through`)."""
     duty, lin = req.duty, req.linear
-    lead = _lead_m(ev)
-    phases: list[duty_calc.Phase] = []
+    phases: list[Phase] = []
     problems: list[str] = []
     starts, k_l, peak_load = 0, 1.0, 0.0
     standing = 0.0  # the force on the screw at rest
     for n, seg in enumerate(duty.segments, 1):
         force = lin.force_N if seg.force_N is None else seg.force_N
-        label = f"{n} {seg.kind}"
-        if seg.kind == "move":
-            screw = screw_torque(ev, force, seg.direction)
-            load = (
-                one_way_calc.motor_torque_through(passage, screw) if holder == "one_way" else screw
-            )
-            peak_load = max(peak_load, abs(load))
-            if holder is None and force > 0:
-                problems.append(_unheld(ev, n, force, "switched off at the end of the move,"))
-            try:
-                ph, _, kl = mot.move(label, seg.distance_m / lead * 2.0 * math.pi, load)
-            except ValueError:
-                problems.append(
-                    f"segment {n}: the screw asks {load:.3g} N·m, above the maximum torque "
-                    f"{mot.curve.max_torque_Nm:.3g} N·m of {mot.m.model}"
-                )
-                continue
-            t = duty_calc.cycle_time(ph)
-            if t > seg.time_s * (1 + 1e-9):
-                problems.append(
-                    f"segment {n}: the move of {seg.distance_m:g} m takes {t:.4g} s with "
-                    f"{mot.m.model}, longer than its time_s = {seg.time_s:g} s"
-                )
-            phases += ph
-            if seg.time_s > t:
-                phases.append(duty_calc.Phase(f"{label}: rest", seg.time_s - t, 0.0, 0.0, 0.0))
-            starts += 1
-            k_l = max(k_l, kl)
-            standing = force
-        elif seg.kind == "hold":
-            if holder is None and force > 0:
+        if seg.kind != "move":
+            if seg.kind == "hold" and holder is None and force > 0:
                 problems.append(_unheld(ev, n, force, "holding at standstill,"))
-            phases.append(duty_calc.Phase(label, seg.time_s, 0.0, 0.0, 0.0))
-            standing = force
-        else:
-            phases.append(duty_calc.Phase(label, seg.time_s, 0.0, 0.0, 0.0))
-            standing = 0.0
+            phases.append(Phase(f"{n} {seg.kind}", seg.time_s, 0.0, 0.0, 0.0))
+            standing = force if seg.kind == "hold" else 0.0
+            continue
+        screw = screw_torque(ev, force, seg.direction)
+        load = one_way_calc.motor_torque_through(passage, screw) if holder == "one_way" else screw
+        peak_load = max(peak_load, abs(load))
+        if holder is None and force > 0:
+            problems.append(_unheld(ev, n, force, "switched off at the end of the move,"))
+        move, k_move, trouble = _move_phases(ev, mot, n, seg, load)
+        problems += trouble
+        if k_move is None:
+            continue
+        phases += move
+        starts += 1
+        k_l = max(k_l, k_move)
+        standing = force
     rest = 3600.0 / duty.cycles_per_hour - sum(s.time_s for s in duty.segments)
     if rest > 1e-9:
         if holder is None and standing > 0:
             problems.append(
                 _unheld(ev, len(duty.segments), standing, "in the cycle's closing rest")
             )
-        phases.append(duty_calc.Phase("rest", rest, 0.0, 0.0, 0.0))
-    return phases, starts * duty.cycles_per_hour, k_l, peak_load, problems
+        phases.append(Phase("rest", rest, 0.0, 0.0, 0.0))
+    return CycleLoads(phases, starts * duty.cycles_per_hour, k_l, peak_load, problems)
 
 
-def _iec_cycle(req, ev, mot: MotorModel, passage=one_way_calc.NO_DEVICE):
-    """Phases of one cycle of an IEC 60034-1 duty type at the rated force's screw torque
-    (through the holding device's efficiency where one sits at the motor)."""
-    duty = req.duty
+#: The IEC duty types whose cycle starts and stops the motor: their starts are counted.
+START_STOP_TYPES = ("S4", "S5", "S7")
+
+
+def _start_stop_phases(
+    duty_type: str,
+    mot: MotorModel,
+    load: float,
+    w: float,
+    mean_start: float,
+    period: float,
+    on: float,
+):
+    """S4, S5, S7: a direct-on-line start with the mean starting torque, the run, an electric
+    stop (S5, S7) with the same mean torque, and the rest; (phases, k_b, problems)."""
+    on = period if duty_type == "S7" else on
+    t_start = mot.j * w / (mean_start - load)
+    brake = mot.j * w / (mean_start + load) if duty_type in ("S5", "S7") else 0.0
+    braking = ELECTRIC_BRAKING_HEAT if brake else 0.0
+    run = on - t_start - brake
+    problems = []
+    if run < 0:
+        problems.append(
+            f"{duty_type}: the start ({t_start:.3g} s) and the stop ({brake:.3g} s) take longer "
+            f"than the time under load, {on:.4g} s"
+        )
+        run = 0.0
+    phases = [Phase("start", t_start, 0.0, w, mean_start), Phase("run", run, w, w, load)]
+    if brake:
+        phases.append(Phase("electric brake", brake, w, 0.0, -mean_start))
+    if period - on > 0:
+        phases.append(Phase("rest", period - on, 0.0, 0.0, 0.0))
+    return phases, braking, problems
+
+
+def _shared_load_phases(duty, mot: MotorModel, load: float, period: float):
+    """S9, S10: the loads as shares of the rated one; (phases, k_b, problems)."""
+    phases, problems = [], []
+    for k, x in enumerate(duty.loads, 1):
+        slip = mot.slip(x.load_share * load)
+        if slip is None:
+            problems.append(f"load {k}: {mot.m.model} stalls under {x.load_share:g} × load")
+            slip = 0.0
+        w = mot.w0 * (1.0 - slip)
+        phases.append(Phase(f"load {k}", x.time_share * period, w, w, x.load_share * load))
+    return phases, 0.0, problems
+
+
+def _iec_phases(duty, mot: MotorModel, load: float, w: float, mean_start: float, period: float):
+    """The phases of one cycle of an IEC 60034-1 duty type; (phases, k_b, problems)."""
     t = duty.duty_type
-    load = one_way_calc.motor_torque_through(passage, ev.torque_Nm)
-    s = mot.slip(load)
-    problems: list[str] = []
-    if s is None:
-        return [], 0.0, 1.0, load, [f"{mot.m.model} stalls under {load:.3g} N·m"], 0.0
-    w = mot.w0 * (1.0 - s)
-    cdf = duty.cyclic_duration_factor or 1.0
-    starts_h = duty.starts_per_hour or 0.0
-    period = 3600.0 / starts_h if t in ("S4", "S5", "S7") else duty.cycle_time_s
-    mm = mot.mean_start_torque(s)
-    t_start = mot.j * w / (mm - load)
-    t_brake = mot.j * w / (mm + load)  # electric braking with the same mean torque
-    k_l = mm / (mm - load)
-    on = cdf * period
-    ph: list[duty_calc.Phase] = []
-    braking = 0.0
+    on = (duty.cyclic_duration_factor or 1.0) * period
     if t == "S1":
-        ph = [duty_calc.Phase("run", period, w, w, load)]
-        starts_h = 0.0
-    elif t == "S2":  # one run for the stated time; the rest until cold is not a cycle
-        ph = [duty_calc.Phase("run", duty.duration_min * 60.0, w, w, load)]
-        starts_h = 0.0
-    elif t == "S3":
-        ph = [
-            duty_calc.Phase("run", on, w, w, load),
-            duty_calc.Phase("rest", period - on, 0.0, 0.0, 0.0),
-        ]
-    elif t == "S6":
-        ph = [
-            duty_calc.Phase("run", on, w, w, load),
-            duty_calc.Phase("no load", period - on, w, w, 0.0),
-        ]
-    elif t in ("S4", "S5", "S7"):
-        if t == "S7":
-            on = period
-        brake = t_brake if t in ("S5", "S7") else 0.0
-        braking = ELECTRIC_BRAKING_HEAT if brake else 0.0
-        run = on - t_start - brake
-        if run < 0:
-            problems.append(
-                f"{t}: the start ({t_start:.3g} s) and the stop ({brake:.3g} s) take longer "
-                f"than the time under load, {on:.4g} s"
-            )
-            run = 0.0
-        ph = [
-            duty_calc.Phase("start", t_start, 0.0, w, mm),
-            duty_calc.Phase("run", run, w, w, load),
-        ]
-        if brake:
-            ph.append(duty_calc.Phase("electric brake", brake, w, 0.0, -mm))
-        if period - on > 0:
-            ph.append(duty_calc.Phase("rest", period - on, 0.0, 0.0, 0.0))
-    else:  # S9, S10: the loads as shares of the rated one
-        for k, x in enumerate(duty.loads, 1):
-            sk = mot.slip(x.load_share * load)
-            if sk is None:
-                problems.append(f"load {k}: {mot.m.model} stalls under {x.load_share:g} × load")
-                sk = 0.0
-            wk = mot.w0 * (1.0 - sk)
-            ph.append(
-                duty_calc.Phase(f"load {k}", x.time_share * period, wk, wk, x.load_share * load)
-            )
+        return [Phase("run", period, w, w, load)], 0.0, []
+    if t == "S2":  # one run for the stated time; the rest until cold is not a cycle
+        return [Phase("run", duty.duration_min * 60.0, w, w, load)], 0.0, []
+    if t == "S3":
+        return [Phase("run", on, w, w, load), Phase("rest", period - on, 0.0, 0.0, 0.0)], 0.0, []
+    if t == "S6":
+        return [Phase("run", on, w, w, load), Phase("no load", period - on, w, w, 0.0)], 0.0, []
+    if t in START_STOP_TYPES:
+        return _start_stop_phases(t, mot, load, w, mean_start, period, on)
+    return _shared_load_phases(duty, mot, load, period)
+
+
+def _iec_cycle(req, ev, mot: MotorModel, passage=one_way_calc.NO_DEVICE) -> CycleLoads:
+    """One cycle of an IEC 60034-1 duty type at the rated force's screw torque (through the
+    holding device's efficiency where one sits at the motor). Starts are counted where the
+    duty type starts the motor, or gives starts per hour with a cyclic duration (S3, S6)."""
+    duty = req.duty
+    load = one_way_calc.motor_torque_through(passage, ev.torque_Nm)
+    slip = mot.slip(load)
+    if slip is None:
+        return CycleLoads([], 0.0, 1.0, load, [f"{mot.m.model} stalls under {load:.3g} N·m"])
+    w = mot.w0 * (1.0 - slip)
+    starts_h = duty.starts_per_hour or 0.0
+    period = 3600.0 / starts_h if duty.duty_type in START_STOP_TYPES else duty.cycle_time_s
+    mean_start = mot.mean_start_torque(slip)
+    k_l = mean_start / (mean_start - load)
+    phases, braking, problems = _iec_phases(duty, mot, load, w, mean_start, period)
+    if duty.duty_type not in (*START_STOP_TYPES, "S3", "S6"):
         starts_h = 0.0
     # the load's torque: the motor's own starting and braking torques are not a demand
     peak = max(
-        (abs(p.torque_Nm) for p in ph if "start" not in p.name and "brake" not in p.name),
+        (abs(p.torque_Nm) for p in phases if "start" not in p.name and "brake" not in p.name),
         default=0.0,
     )
-    return ph, starts_h, k_l, peak, problems, braking
+    return CycleLoads(phases, starts_h, k_l, peak, problems, braking)
 
 
-def evaluate(req, ev, m, j_load: float, holder: str | None, passage=one_way_calc.NO_DEVICE) -> dict:
+def _cycle(req, ev, mot: MotorModel, holder: str | None, passage) -> CycleLoads:
+    """The cycle of the duty's segments or of its IEC duty type."""
+    if req.duty.segments:
+        return _segments_cycle(req, ev, mot, holder, passage)
+    cycle = _iec_cycle(req, ev, mot, passage)
+    if holder is None and req.linear.force_N > 0:  # the same rule as for the segments
+        cycle.problems.append(
+            f"{req.duty.duty_type}: the load of {req.linear.force_N:g} N back-drives the screw "
+            f"{ev.thread.name} (not self-locking at the low end of its friction range) "
+            "whenever the motor stops, and an induction motor on the line cannot hold a "
+            "load at standstill; set application.hold_without_power = true for a one-way "
+            "device"
+        )
+    return cycle
+
+
+@dataclass(frozen=True, slots=True)
+class CycleEvaluation:
+    """The cycle with one catalog motor: its phases, the thermal figures, the starts and
+    every problem (none: the motor passes)."""
+
+    motor: Any
+    phases: list[Phase]
+    #: the equivalent torque (the S2 run's torque for S2) and the rated torque  [N·m]
+    rms_torque_Nm: float
+    rated_torque_Nm: float
+    #: the thermal limit of the equivalent torque: K·M_n (K of S2, else 1)  [N·m]
+    limit_Nm: float
+    s2_factor: float
+    #: SEW's S3 factor K and the S3 running torque it is held against  [N·m]
+    s3_factor: float
+    s3_running_torque_Nm: float
+    starts_per_hour: float
+    allowed_starts_per_hour: float
+    no_load_starts_per_hour: float
+    inertia_factor: float
+    #: k_L = M_m/(M_m − M_L): the load's share of a start's heat
+    load_factor: float
+    #: the largest load torque of the cycle and the motor's starting torque  [N·m]
+    peak_load_Nm: float
+    starting_torque_Nm: float
+    mean_starting_torque_Nm: float | None
+    braking_heat: float
+    problems: list[str]
+
+
+def _limit_problems(e: CycleEvaluation) -> list[str]:
+    """The thermal, starts and starting-torque limits the cycle exceeds, in words."""
+    problems, rated, k_s2 = [], e.rated_torque_Nm, e.s2_factor
+    if e.rms_torque_Nm > e.limit_Nm:
+        problems.append(
+            # a product printed multiplies out: 1.2 × 5.1525 = 6.183 (5.152 would not)
+            f"RMS torque {e.rms_torque_Nm:.4g} N·m above the rated {rated:.5g} N·m × K = "
+            f"{k_s2:g} for S2 = {e.limit_Nm:.4g} N·m"
+            if k_s2 != 1.0
+            else f"RMS torque {e.rms_torque_Nm:.4g} N·m above the rated {rated:.4g} N·m"
+        )
+    k_s3, run_s3 = e.s3_factor, e.s3_running_torque_Nm
+    if run_s3 > k_s3 * rated:
+        problems.append(
+            f"S3 running torque {run_s3:.4g} N·m above K·M_n = {k_s3:g} × {rated:.5g} = "
+            f"{k_s3 * rated:.4g} N·m (SEW's S3 factor)"
+        )
+    if e.starts_per_hour > e.allowed_starts_per_hour:
+        problems.append(
+            f"{e.starts_per_hour:.4g} starts/h above the {e.allowed_starts_per_hour:.4g} it allows"
+        )
+    if e.peak_load_Nm > e.starting_torque_Nm:
+        problems.append(
+            f"the load torque {e.peak_load_Nm:.4g} N·m above the starting torque "
+            f"{e.starting_torque_Nm:.4g}"
+        )
+    return problems
+
+
+def evaluate(
+    req, ev, m, j_load: float, holder: str | None, passage=one_way_calc.NO_DEVICE
+) -> CycleEvaluation:
     """The cycle with motor m: phases, RMS, starts and every problem. ``holder``: what holds
     the load at standstill ('screw', 'one_way' or None); ``passage``: the one-way device's."""
     mot = MotorModel(m, j_load)
     duty = req.duty
-    braking = 0.0
-    if not holder == "one_way":
-        passage = one_way_calc.NO_DEVICE
-    if duty.segments:
-        phases, starts_h, k_l, peak_load, problems = _segments_cycle(req, ev, mot, holder, passage)
-    else:
-        phases, starts_h, k_l, peak_load, problems, braking = _iec_cycle(req, ev, mot, passage)
-        if holder is None and req.linear.force_N > 0:  # the same rule as for the segments
-            problems.append(
-                f"{duty.duty_type}: the load of {req.linear.force_N:g} N back-drives the screw "
-                f"{ev.thread.name} (not self-locking at the low end of its friction range) "
-                "whenever the motor stops, and an induction motor on the line cannot hold a "
-                "load at standstill; set application.hold_without_power = true for a one-way "
-                "device"
-            )
+    cycle = _cycle(req, ev, mot, holder, passage if holder == "one_way" else one_way_calc.NO_DEVICE)
+    phases = cycle.phases
     # a start's heat, the load's share included (k_L), is counted by the starts per hour:
     # in the equivalent torque it counts as a ramp at zero torque
     thermal = [p._replace(torque_Nm=0.0) if p.name.endswith("start") else p for p in phases]
@@ -296,60 +399,38 @@ def evaluate(req, ev, m, j_load: float, holder: str | None, passage=one_way_calc
     rated = m.rated_torque_Nm
     # S2: SEW's power increasing factor K raises the thermal limit to K·M_n (same speed)
     k_s2 = duty_calc.s2_power_factor(duty.duration_min) if duty.duty_type == "S2" else 1.0
-    limit = k_s2 * rated
     p_loss = m.rated_power_kW * 1e3 * (100.0 / m.efficiency_pct - 1.0)
     ramp = (1.0 + duty.standstill_cooling_factor) / 2.0
     z0 = duty_calc.no_load_starts_per_hour(p_loss, m.inertia_kgm2, mot.w0, ramp)
     fi = duty_calc.inertia_factor(m.inertia_kgm2, j_load)
-    allowed = duty_calc.allowed_starts_per_hour(z0, fi, k_l, rms / rated, 1.0, braking)
-    start_torque = mot.curve.torque(1.0)
-    if rms > limit:
-        problems.append(
-            # a product printed multiplies out: 1.2 × 5.1525 = 6.183 (5.152 would not)
-            f"RMS torque {rms:.4g} N·m above the rated {rated:.5g} N·m × K = {k_s2:g} for S2 "
-            f"= {limit:.4g} N·m"
-            if k_s2 != 1.0
-            else f"RMS torque {rms:.4g} N·m above the rated {rated:.4g} N·m"
-        )
+    k_l = cycle.load_factor
+    s3 = duty.duty_type == "S3"
     # S3: the running torque also against SEW's K·M_n for the cdf (the stricter decides)
-    k_s3 = (
-        duty_calc.s3_factor_for_cycle(duty.cyclic_duration_factor, duty.cycle_time_s)
-        if duty.duty_type == "S3"
-        else 1.0
+    record = CycleEvaluation(
+        motor=m,
+        phases=phases,
+        rms_torque_Nm=rms,
+        rated_torque_Nm=rated,
+        limit_Nm=k_s2 * rated,
+        s2_factor=k_s2,
+        s3_factor=duty_calc.s3_factor_for_cycle(duty.cyclic_duration_factor, duty.cycle_time_s)
+        if s3
+        else 1.0,
+        s3_running_torque_Nm=phases[0].torque_Nm if s3 and phases else 0.0,
+        starts_per_hour=cycle.starts_per_hour,
+        allowed_starts_per_hour=duty_calc.allowed_starts_per_hour(
+            z0, fi, k_l, rms / rated, 1.0, cycle.braking_heat
+        ),
+        no_load_starts_per_hour=z0,
+        inertia_factor=fi,
+        load_factor=k_l,
+        peak_load_Nm=cycle.peak_load_Nm,
+        starting_torque_Nm=mot.curve.torque(1.0),
+        mean_starting_torque_Nm=_mean_start(phases),
+        braking_heat=cycle.braking_heat,
+        problems=[],
     )
-    run_s3 = phases[0].torque_Nm if duty.duty_type == "S3" and phases else 0.0
-    if run_s3 > k_s3 * rated:
-        problems.append(
-            f"S3 running torque {run_s3:.4g} N·m above K·M_n = {k_s3:g} × {rated:.5g} = "
-            f"{k_s3 * rated:.4g} N·m (SEW's S3 factor)"
-        )
-    if starts_h > allowed:
-        problems.append(f"{starts_h:.4g} starts/h above the {allowed:.4g} it allows")
-    if peak_load > start_torque:
-        problems.append(
-            f"the load torque {peak_load:.4g} N·m above the starting torque {start_torque:.4g}"
-        )
-    return {
-        "motor": m,
-        "mot": mot,
-        "phases": phases,
-        "rms": rms,
-        "rated": rated,
-        "limit": limit,
-        "k_s2": k_s2,
-        "k_s3": k_s3,
-        "run_s3": run_s3,
-        "starts": starts_h,
-        "allowed": allowed,
-        "z0": z0,
-        "fi": fi,
-        "k_l": k_l,
-        "peak_load": peak_load,
-        "start_torque": start_torque,
-        "mean_start": _mean_start(phases),
-        "braking": braking,
-        "problems": problems,
-    }
+    return replace(record, problems=[*cycle.problems, *_limit_problems(record)])
 
 
 def _held_by(ev, holder: str | None, passage) -> str:
@@ -361,7 +442,7 @@ def _held_by(ev, holder: str | None, passage) -> str:
     return "nothing: no load stands on the screw while the motor is off"
 
 
-def _mean_start(phases: list[duty_calc.Phase]) -> float | None:
+def _mean_start(phases: list[Phase]) -> float | None:
     """The motor's mean starting torque where the cycle has a start (the same in every one)."""
     return next((p.torque_Nm for p in phases if p.name.endswith("start")), None)
 
@@ -381,21 +462,17 @@ def segment_loads_within_rating(req) -> None:
             )
 
 
-def advise_duty(
-    req, ev, selected, cat, holder: str | None, trace: Trace, passage=one_way_calc.NO_DEVICE
-):
-    """The motor for the cycle: the point's motor, or the next larger of its pole count that
-    passes; the duty table, the checks and the warnings."""
-    segment_loads_within_rating(req)
-    duty, lin = req.duty, req.linear
-    j_load, j_basis = load_inertia(ev, duty.moving_mass_kg, lin.support_span_m)
+def _motor_for_cycle(req, ev, selected, cat, holder, passage, j_load, j_basis, trace: Trace):
+    """The point's motor, or the next larger of its pole count, the first that passes the
+    cycle (rule DU-08); infeasible when none does."""
+    duty = req.duty
     line = [
         m
         for m in cat.motors_with_poles(selected.poles)
         if m.rated_power_kW >= selected.rated_power_kW
     ]
     tried = [evaluate(req, ev, m, j_load, holder, passage) for m in line]
-    ok = [e for e in tried if not e["problems"]]
+    ok = [e for e in tried if not e.problems]
     if duty.duty_type:
         trace.apply(
             duty_rules.duty_type,
@@ -408,49 +485,48 @@ def advise_duty(
         raise InfeasibleError(
             "no feasible design: no motor of the chosen pole count passes the duty cycle",
             [
-                *(f"{e['motor'].model}: " + "; ".join(e["problems"]) for e in shown),
+                *(f"{e.motor.model}: " + "; ".join(e.problems) for e in shown),
                 "larger motors of the same pole count were tried; the moves run at the speed "
                 "chosen for linear.travel_time_s (a shorter one picks a faster motor)",
             ],
         )
-    e = ok[0]
-    m = e["motor"]
-    rows = {x["motor"].model: (x["motor"].rated_power_kW, x["problems"]) for x in tried}
+    rows = {x.motor.model: (x.motor.rated_power_kW, x.problems) for x in tried}
     trace.apply(duty_rules.motor_for_cycle_linear, rows, selected.model, j_basis)
-    phases = e["phases"]
-    out_J, _ = duty_calc.energies(phases)
-    # an electric (DC-injection) stop dissipates the kinetic energy in the rotor, below the
-    # synchronous speed: nothing of it reaches the supply
-    _, back_J = duty_calc.energies([p for p in phases if p.name != "electric brake"])
+    return ok[0]
+
+
+def _thermal_verdict(duty, e: CycleEvaluation, trace: Trace) -> tuple[float, str]:
+    """The thermal utilisation of the motor and its basis: the equivalent torque (the run's
+    for S2, against SEW's K·M_n) over the rated torque, and for S3 also the running torque
+    against SEW's S3 factor, the larger deciding."""
+    m, rms, rated, limit = e.motor, e.rms_torque_Nm, e.rated_torque_Nm, e.limit_Nm
     beta0 = duty.standstill_cooling_factor
-    util = e["rms"] / e["limit"]
-    k_s2 = e["k_s2"]
+    util, k_s2, k_s3 = rms / limit, e.s2_factor, e.s3_factor
     if duty.duty_type == "S2":
         trace.apply(duty_rules.power_increasing_factor, "S2", duty.duration_min, k_s2)
         thermal_how = (
-            f"Torque of the S2 run {e['rms']:.4g} N·m against K·M_n = {k_s2:g} × "
-            f"{e['rated']:.5g} = {e['limit']:.4g} N·m of {m.model} (DU-09: SEW's power "
+            f"Torque of the S2 run {rms:.4g} N·m against K·M_n = {k_s2:g} × "
+            f"{rated:.5g} = {limit:.4g} N·m of {m.model} (DU-09: SEW's power "
             "increasing factor for S2, at the same speed a factor on the torque)."
         )
         basis = f"torque of the S2 run over K·M_n (K = {k_s2:g}, SEW's S2 factor)"
     else:
         thermal_how = (
-            f"Equivalent torque √(Σ M²·t / Σ β·t) = {e['rms']:.4g} N·m against the rated "
-            f"{e['rated']:.4g} N·m of {m.model}; β = 1 at speed, β0 = {beta0:g} at standstill, "
+            f"Equivalent torque √(Σ M²·t / Σ β·t) = {rms:.4g} N·m against the rated "
+            f"{rated:.4g} N·m of {m.model}; β = 1 at speed, β0 = {beta0:g} at standstill, "
             f"(1 + β0)/2 in a ramp (a self-ventilated motor, IP44). A start counts at zero "
             "torque: its heat, the load's share included, is counted by the starts per hour."
         )
         basis = f"equivalent torque (β0 = {beta0:g} at standstill) over the rated torque"
-    k_s3 = e["k_s3"]
     if duty.duty_type == "S3":
-        cdf = duty.cyclic_duration_factor
+        cdf, run_s3 = duty.cyclic_duration_factor, e.s3_running_torque_Nm
         trace.apply(
             duty_rules.power_increasing_factor, "S3", cdf, k_s3, cdf * duty.cycle_time_s / 60.0
         )
-        util_k = e["run_s3"] / (k_s3 * e["rated"])
+        util_k = run_s3 / (k_s3 * rated)
         thermal_how += (
-            f" Beside it SEW's S3 factor (DU-09): the running torque {e['run_s3']:.4g} N·m "
-            f"against K·M_n = {k_s3:g} × {e['rated']:.5g} = {k_s3 * e['rated']:.4g} N·m, "
+            f" Beside it SEW's S3 factor (DU-09): the running torque {run_s3:.4g} N·m "
+            f"against K·M_n = {k_s3:g} × {rated:.5g} = {k_s3 * rated:.4g} N·m, "
             f"utilisation {util_k:.3g} against {util:.3g} by the equivalent torque; the "
             "larger decides."
         )
@@ -458,111 +534,141 @@ def advise_duty(
             util = util_k
             basis = f"S3 running torque over K·M_n (K = {k_s3:g}, SEW's S3 factor)"
     trace.apply(duty_rules.thermal, util, thermal_how)
-    peak = duty_calc.peak_torque(phases)
+    return util, basis
+
+
+def _peak_verdict(e: CycleEvaluation, trace: Trace) -> None:
+    """The largest load torque of the cycle against the motor's starting torque."""
+    peak = duty_calc.peak_torque(e.phases)
     trace.apply(
         duty_rules.peak,
-        e["peak_load"],
-        e["start_torque"],
+        e.peak_load_Nm,
+        e.starting_torque_Nm,
         "The largest load torque of the cycle against the motor's starting torque (from the "
         "catalog's M_start/M_n): the motor must start under it. "
         + (
             f"The peak of the cycle, {peak:.4g} N·m, is the motor's own mean starting torque "
             "in a start."
-            if any(p.name.endswith("start") for p in phases)
+            if any(p.name.endswith("start") for p in e.phases)
             else f"No start is counted in this duty: the cycle's peak is the running torque "
             f"{peak:.4g} N·m."
         ),
         peak,
     )
-    starts_basis = (
+
+
+def _starts_basis(e: CycleEvaluation) -> str:
+    """How the starts the motor allows per hour are derived, in words."""
+    m = e.motor
+    return (
         f"z = z0·(1 − (M_eq/M_n)²)/(FI·k_L·(1 + k_b)): z0 = 3600·P_loss·(1 + β0)/2/(J_M·ω0²)"
-        f" = {e['z0']:.4g} no-load starts/h (derived: the catalog gives none) from the rated "
-        "losses "
+        f" = {e.no_load_starts_per_hour:.4g} no-load starts/h (derived: the catalog gives "
+        "none) from the rated losses "
         f"{m.rated_power_kW * 1e3 * (100.0 / m.efficiency_pct - 1.0):.4g} W (its efficiency "
         f"{m.efficiency_pct:g} %, an estimated value) and rotor inertia {m.inertia_kgm2:g} kg·m²; "
-        f"FI = {e['fi']:.3g}; k_L = M_m/(M_m − M_L) = {e['k_l']:.3g}; k_b = {e['braking']:g}. "
+        f"FI = {e.inertia_factor:.3g}; k_L = M_m/(M_m − M_L) = {e.load_factor:.3g}; "
+        f"k_b = {e.braking_heat:g}. "
         "A start heats rotor and stator by J·ω0²/2 each (R1/R2' = 1): Chilikin, ch. 9."
     )
-    if e["starts"] > 0:
-        trace.apply(duty_rules.starts, e["starts"], e["allowed"], starts_basis)
-    ir = j_load / m.inertia_kgm2
-    within = trace.apply(duty_rules.inertia_ratio, ir)
+
+
+def _duty_warnings(inertia_ratio: float, within: bool, m, selected) -> list[str]:
+    """The inertia ratio above its guideline, and a motor larger than the point's."""
     warnings = []
     if not within:
         warnings.append(
-            f"duty: the load's inertia at the motor is {ir:.3g} times the motor's (guideline "
-            f"{duty_rules.INERTIA_RATIO_GUIDELINE:g})"
+            f"duty: the load's inertia at the motor is {inertia_ratio:.3g} times the motor's "
+            f"(guideline {duty_rules.INERTIA_RATIO_GUIDELINE:g})"
         )
     if m.model != selected.model:
         warnings.append(
             f"duty: the cycle needs {m.model} ({m.rated_power_kW:g} kW), larger than "
             f"{selected.model} for the rated point"
         )
+    return warnings
+
+
+def _upper_check(cid: str, name: str, value: float, limit: float, unit: str, source) -> Check:
+    """A check of the form value ≤ limit; margin limit / value (∞ for no demand)."""
+    return Check(cid, name, value, limit, unit, limit / value if value > 0 else math.inf, source)
+
+
+def _duty_checks(duty, e: CycleEvaluation) -> list[Check]:
+    """The cycle's checks: equivalent (or S2 run's) torque, peak load torque, the S3 running
+    torque and the starts per hour where they apply."""
+    s2 = duty.duty_type == "S2"
     checks = [
-        Check(
+        _upper_check(
             "duty_rms_torque",
-            f"torque of the S2 run within K·M_n (K = {k_s2:g}, SEW's S2 factor)"
-            if duty.duty_type == "S2"
+            f"torque of the S2 run within K·M_n (K = {e.s2_factor:g}, SEW's S2 factor)"
+            if s2
             else "equivalent torque of the cycle within the rated torque",
-            e["rms"],
-            e["limit"],
+            e.rms_torque_Nm,
+            e.limit_Nm,
             "N·m",
-            e["limit"] / e["rms"] if e["rms"] > 0 else math.inf,
             duty_rules.SEW_K + duty_rules.IEC_60034_1
-            if duty.duty_type == "S2"
+            if s2
             else duty_rules.KLYUCHEV + duty_rules.ISSUE_15,
         ),
-        Check(
+        _upper_check(
             "duty_peak_torque",
             "largest load torque of the cycle within the starting torque",
-            e["peak_load"],
-            e["start_torque"],
+            e.peak_load_Nm,
+            e.starting_torque_Nm,
             "N·m",
-            e["start_torque"] / e["peak_load"] if e["peak_load"] > 0 else math.inf,
             cite("4a-table", "M_start/M_n") + duty_rules.ISSUE_15,
         ),
     ]
     if duty.duty_type == "S3":
         checks.append(
-            Check(
+            _upper_check(
                 "duty_s3_factor",
-                f"S3 running torque within K·M_n (K = {k_s3:g}, SEW's S3 factor)",
-                e["run_s3"],
-                k_s3 * e["rated"],
+                f"S3 running torque within K·M_n (K = {e.s3_factor:g}, SEW's S3 factor)",
+                e.s3_running_torque_Nm,
+                e.s3_factor * e.rated_torque_Nm,
                 "N·m",
-                k_s3 * e["rated"] / e["run_s3"] if e["run_s3"] > 0 else math.inf,
                 duty_rules.SEW_K + duty_rules.IEC_60034_1,
             )
         )
-    if e["starts"] > 0:
+    if e.starts_per_hour > 0:
         checks.append(
             Check(
                 "duty_starts_per_hour",
                 "starts per hour within what the motor allows",
-                e["starts"],
-                e["allowed"],
+                e.starts_per_hour,
+                e.allowed_starts_per_hour,
                 "1/h",
-                e["allowed"] / e["starts"],
+                e.allowed_starts_per_hour / e.starts_per_hour,
                 duty_rules.IEC_60034_1,
             )
         )
-    move = sum(p.time_s for p in phases if p.speed_start_rad_s or p.speed_end_rad_s)
+    return checks
+
+
+def _duty_out(duty, ev, e: CycleEvaluation, thermal, inertia_ratio: float, held_by: str):
+    """The duty table of the report, from the cycle of the chosen motor."""
+    phases = e.phases
+    out_J, _ = duty_calc.energies(phases)
+    # an electric (DC-injection) stop dissipates the kinetic energy in the rotor, below the
+    # synchronous speed: nothing of it reaches the supply
+    _, back_J = duty_calc.energies([p for p in phases if p.name != "electric brake"])
     t_cycle = duty_calc.cycle_time(phases)
-    out = DutyOut.make(
-        motor=m.model,
+    counted = e.starts_per_hour > 0  # allowed starts mean something only where counted
+    return DutyOut.make(
+        motor=e.motor.model,
         ratio=2.0 * math.pi / _lead_m(ev),
         cycle_time_s=t_cycle,
-        move_time_s=move,
+        move_time_s=sum(p.time_s for p in phases if p.speed_start_rad_s or p.speed_end_rad_s),
         # the check's demand and capacity: the largest load torque at the motor against the
         # starting torque; the motor's own mean starting torque stated beside them
-        peak_torque_Nm=e["peak_load"],
-        peak_torque_limit_Nm=e["start_torque"],
-        mean_starting_torque_Nm=e["mean_start"],
-        rms_torque_Nm=e["rms"],
-        rated_torque_Nm=e["rated"],
-        thermal_utilisation=util,
-        thermal_basis=basis,
-        inertia_ratio=ir,
+        peak_torque_Nm=e.peak_load_Nm,
+        peak_torque_limit_Nm=e.starting_torque_Nm,
+        mean_starting_torque_Nm=e.mean_starting_torque_Nm,
+        rms_torque_Nm=e.rms_torque_Nm,
+        rated_torque_Nm=e.rated_torque_Nm,
+        thermal_utilisation=thermal[0],
+        thermal_basis=thermal[1],
+        inertia_ratio=inertia_ratio,
         inertia_ratio_guideline=duty_rules.INERTIA_RATIO_GUIDELINE,
         energy_per_cycle_J=out_J,
         regenerated_per_cycle_J=back_J,
@@ -570,23 +676,46 @@ def advise_duty(
         # S2 is one run from cold, not a cycle that repeats
         cycles_per_hour=None if duty.duty_type == "S2" else 3600.0 / t_cycle if t_cycle else 0.0,
         duty_type=duty.duty_type or "cycle",
-        held_by=_held_by(ev, holder, passage),
-        regenerated_to=(
-            "the supply: a motor on the line generates above its synchronous speed straight "
-            "into the mains, so there is no DC bus and no braking resistor to size (on an "
-            "inverter the bus would take it: see the rotary drive's [drive] table)"
-            if back_J > 0
-            else None
-        ),
-        standstill_cooling_factor=beta0,
-        starts_per_hour=e["starts"],
-        # the starts allowed mean something only where starts are counted (S4, S5, S7, moves)
-        allowed_starts_per_hour=e["allowed"] if e["starts"] > 0 else None,
-        no_load_starts_per_hour=e["z0"] if e["starts"] > 0 else None,
-        inertia_factor=e["fi"],
+        held_by=held_by,
+        regenerated_to=REGENERATED_TO if back_J > 0 else None,
+        standstill_cooling_factor=duty.standstill_cooling_factor,
+        starts_per_hour=e.starts_per_hour,
+        allowed_starts_per_hour=e.allowed_starts_per_hour if counted else None,
+        no_load_starts_per_hour=e.no_load_starts_per_hour if counted else None,
+        inertia_factor=e.inertia_factor,
         phases=phases_out(phases),
     )
-    return out, m, checks, warnings
+
+
+#: Where the energy a generating motor gives back goes, on the line.
+REGENERATED_TO = (
+    "the supply: a motor on the line generates above its synchronous speed straight "
+    "into the mains, so there is no DC bus and no braking resistor to size (on an "
+    "inverter the bus would take it: see the rotary drive's [drive] table)"
+)
+
+
+def advise_duty(
+    req, ev, selected, cat, holder: str | None, trace: Trace, passage=one_way_calc.NO_DEVICE
+):
+    """The motor for the cycle: the point's motor, or the next larger of its pole count that
+    passes; the duty table, the motor, the checks and the warnings."""
+    segment_loads_within_rating(req)
+    duty = req.duty
+    j_load, j_basis = load_inertia(ev, duty.moving_mass_kg, req.linear.support_span_m)
+    e = _motor_for_cycle(req, ev, selected, cat, holder, passage, j_load, j_basis, trace)
+    m = e.motor
+    thermal = _thermal_verdict(duty, e, trace)
+    _peak_verdict(e, trace)
+    if e.starts_per_hour > 0:
+        trace.apply(
+            duty_rules.starts, e.starts_per_hour, e.allowed_starts_per_hour, _starts_basis(e)
+        )
+    inertia_ratio = j_load / m.inertia_kgm2
+    within = trace.apply(duty_rules.inertia_ratio, inertia_ratio)
+    warnings = _duty_warnings(inertia_ratio, within, m, selected)
+    out = _duty_out(duty, ev, e, thermal, inertia_ratio, _held_by(ev, holder, passage))
+    return out, m, _duty_checks(duty, e), warnings
 
 
 def _iec_how(duty) -> str:
