@@ -15,6 +15,7 @@ register(
         views="advisor.applications.linear.views",
         covers="advisor.applications.linear.coverage:COVERS",
         plots="advisor.applications.linear.plots:DATASHEET_PLOTS",
+        family="advisor.applications.linear.family",
         steps=("Load and stroke", "Screw and holding", "Motor and friction", "Duty cycle"),
     )
 )
@@ -28,6 +29,7 @@ register(
         views="advisor.applications.rotary.views",
         covers="advisor.applications.rotary.coverage:COVERS",
         plots="advisor.applications.rotary.plots:DATASHEET_PLOTS",
+        family="advisor.applications.rotary.family",
         steps=("Torque and speed", "Envelope and holding", "Motor and reducer", "Duty cycle"),
     )
 )
@@ -41,6 +43,7 @@ register(
         views="advisor.applications.positioning.views",
         covers="advisor.applications.positioning.coverage:COVERS",
         plots="advisor.applications.positioning.plots:DATASHEET_PLOTS",
+        family="advisor.applications.positioning.family",
         steps=("Move and load", "", "Candidate motors", "Duty cycle"),
     )
 )
@@ -54,6 +57,7 @@ register(
         views="advisor.applications.spinning_rotor.views",
         covers="advisor.applications.spinning_rotor.coverage:COVERS",
         plots="advisor.applications.spinning_rotor.plots:DATASHEET_PLOTS",
+        family="advisor.applications.spinning_rotor.family",
         steps=("Rotor and manoeuvre", "Aerodynamic drag", "Bearings", "Duty cycle"),
     )
 )

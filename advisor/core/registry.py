@@ -33,6 +33,10 @@ class Application(NamedTuple):
     # "module:NAME", a tuple of functions (report's plain data) -> Plot or None: the
     # datasheet's plots of this application (:mod:`advisor.datasheet.plots`)
     plots: Any = None
+    # "module" with key_outputs(report's plain data) -> {column: value} and MEANING
+    # ({column: what it means here}): the application's columns of a family study's rows
+    # (:mod:`advisor.family.outputs`)
+    family: Any = None
 
 
 _APPLICATIONS: dict[str, Application] = {}
@@ -121,6 +125,13 @@ def datasheet_plots(kind: str) -> tuple[Any, ...]:
     """The datasheet's plot functions of an application (empty where it registers none)."""
     app = application(kind)
     return tuple(load(app.plots)) if app.plots else ()
+
+
+def family_outputs(kind: str) -> Any:
+    """The module (or object) giving an application's key outputs in a family study
+    (``key_outputs(report)``, ``MEANING``); None where the application gives none."""
+    app = application(kind)
+    return load(app.family) if app.family else None
 
 
 def expected_text(values: tuple[str, ...]) -> str:

@@ -1,15 +1,15 @@
 """The key outputs of a variant, read from its report (the TOML data of ``advisor --batch``).
 
-One small function per application, each reading only its own report's keys, so that each
-can move into its application's package. Every application fills the same columns (blank
-where the quantity does not exist for it); what each column means per application is in
-:data:`MEANING` and docs/family.md.
+Every application fills the same columns (blank where the quantity does not exist for it),
+each from its own report's keys in its own package: its registry entry's ``family`` module
+gives ``key_outputs(report)`` and ``MEANING`` (what a column means for it; docs/family.md);
+an application without one gets its lowest margin only.
+The helpers below read the parts every report may have (the checks, a one-way device).
 """
 
-from collections.abc import Callable
 from typing import Any
 
-from advisor.family.adapter import round_sig
+from advisor.core.registry import family_outputs
 
 Row = dict[str, Any]
 
@@ -34,25 +34,9 @@ DISCRETE = ("motor", "frame", "pole_pairs", "stages", "screw_thread", "one_way")
 #: Numbers plotted against the axes in family.html.
 NUMERIC = ("motor_speed_rpm", "ratio", "mass_kg", "outer_diameter_mm", "losses_W", "lowest_margin")
 
-MEANING = {
-    "rotary": {
-        "motor": "'bldc N rpm': the candidate speed chosen (the frame rewound for it)",
-        "frame": "the motor frame chosen (issue 25): a scaled frame BLDDDxLLL or a catalog motor",
-        "mass_kg": "wave-gear reducer + one-way device (the motor is not sized by mass)",
-        "outer_diameter_mm": "reducer outer diameter",
-        "losses_W": "motor losses (ohmic + iron + magnets)",
-    },
-    "linear": {
-        "motor": "4A catalog model",
-        "motor_speed_rpm": "working speed under the load",
-        "mass_kg": "catalog motor + one-way device",
-    },
-    "positioning": {"motor": "chosen candidate", "ratio": "optimal ratio"},
-    "spinning_rotor": {"losses_W": "steady power with the gyroscopic reaction"},
-}
 
-
-def _lowest_margin(report: dict[str, Any]) -> Row:
+def lowest_margin(report: dict[str, Any]) -> Row:
+    """The check with the least margin: its margin and its id (empty without checks)."""
     checks = report.get("checks", [])
     if not checks:
         return {}
@@ -60,75 +44,26 @@ def _lowest_margin(report: dict[str, Any]) -> Row:
     return {"lowest_margin": worst["margin"], "lowest_margin_check": worst["id"]}
 
 
-def _one_way(design: dict[str, Any]) -> Row:
+def one_way(design: dict[str, Any]) -> Row:
+    """The one-way device of a design as ``type (location)`` (empty without one)."""
     ow = design.get("one_way")
     if not ow:
         return {}
     return {"one_way": f"{ow['type']} ({ow['location']})"}
 
 
-def _one_way_mass_kg(design: dict[str, Any]) -> float:
+def one_way_mass_kg(design: dict[str, Any]) -> float:
+    """The mass of a design's one-way device, 0 without one."""
     return (design.get("one_way") or {}).get("mass_kg", 0.0)
-
-
-def rotary_outputs(report: dict[str, Any]) -> Row:
-    d = report["design"]
-    m, g = d["motor"], d["gearbox"]
-    return {
-        "motor": f"bldc {m['speed_rpm']:g} rpm",  # the choice among the candidate speeds
-        "frame": (m.get("frame") or {}).get("name"),  # the frame chosen (issue 25)
-        "pole_pairs": m["pole_pairs"],
-        "motor_speed_rpm": m["speed_rpm"],
-        "ratio": g["total_ratio"],
-        "stages": len(g["stages"]),
-        "mass_kg": round_sig(g["mass_kg"] + _one_way_mass_kg(d)),
-        "outer_diameter_mm": g["outer_diameter_mm"],
-        "losses_W": m["losses_W"]["total"],
-        **_one_way(d),
-        **_lowest_margin(report),
-    }
-
-
-def linear_outputs(report: dict[str, Any]) -> Row:
-    d = report["design"]
-    s, m = d["screw"], d["motor"]
-    return {
-        "motor": m["model"],
-        "pole_pairs": m["pole_pairs"],
-        "motor_speed_rpm": m["working_speed_rpm"],
-        "mass_kg": round_sig(m["mass_kg"] + _one_way_mass_kg(d)),
-        "screw_thread": s["thread"],
-        **_one_way(d),
-        **_lowest_margin(report),
-    }
-
-
-def positioning_outputs(report: dict[str, Any]) -> Row:
-    # the drive to build: the duty cycle's ratio where there is one (the fastest may fail it)
-    mo, duty = report["design"]["motion"], report["design"].get("duty")
-    src = duty if duty is not None else {"motor": mo["motor"], "ratio": mo["optimal_ratio"]}
-    return {"motor": src["motor"], "ratio": src["ratio"], **_lowest_margin(report)}
-
-
-def spinning_rotor_outputs(report: dict[str, Any]) -> Row:
-    r = report["design"]["rotor"]
-    return {
-        "motor_speed_rpm": r["speed_rpm"],
-        "losses_W": r["steady_power_W"]["with_reaction"],
-        **_lowest_margin(report),
-    }
-
-
-#: The extractor of each application kind (the report's ``report.application``).
-EXTRACTORS: dict[str, Callable[[dict[str, Any]], Row]] = {
-    "rotary": rotary_outputs,
-    "linear": linear_outputs,
-    "positioning": positioning_outputs,
-    "spinning_rotor": spinning_rotor_outputs,
-}
 
 
 def key_outputs(report: dict[str, Any]) -> Row:
     """The key outputs of a report, every column present (None where not applicable)."""
-    row = EXTRACTORS[report["report"]["application"]](report)
+    outputs = family_outputs(report["report"]["application"])
+    row = outputs.key_outputs(report) if outputs is not None else lowest_margin(report)
     return {c: row.get(c) for c in COLUMNS}
+
+
+def meaning(kind: str) -> dict[str, str]:
+    """What a column means for an application, where it needs saying (empty if nothing)."""
+    return dict(getattr(family_outputs(kind), "MEANING", {}))
