@@ -6,8 +6,9 @@ from advisor.core.cite import cite, note
 from advisor.core.rulebook import Finding, rule
 
 SEED_003 = cite("seed-003")
-#: Sizing by a required time: the project's issue 25, not a published source.
-ISSUE_25 = note("issue 25")
+#: Sizing by a required time is the project's own method, not a published source; the note's
+#: text is what every report prints as that basis.
+REQUIRED_TIME = note("issue 25")
 
 
 @rule("MO-01", "Gear ratio of each motor", SEED_003)
@@ -108,7 +109,7 @@ class Sized(NamedTuple):
     decisive_time_s: float
 
 
-@rule("MO-05", "Smallest motor that meets the required move time", SEED_003 + ISSUE_25)
+@rule("MO-05", "Smallest motor that meets the required move time", SEED_003 + REQUIRED_TIME)
 def smallest_meeting(
     required_s: float, rows: dict[str, Sized], power_basis: str, band: float
 ) -> Finding[str]:
@@ -155,34 +156,49 @@ def smallest_meeting(
     )
 
 
-@rule("MO-06", "Smallest motor for the cycle", SEED_003.at("the move") + ISSUE_25)
+class CycleFit(NamedTuple):
+    """A motor against the duty cycle (DU-01, MO-06): its move time at the ratio that passes
+    (or its fastest), that ratio, whether it passes, and why not."""
+
+    move_time_s: float
+    ratio: float
+    passes: bool
+    why_not: str
+
+
+class Size(NamedTuple):
+    """The size that ranks a motor (MO-05, MO-06): power, then rotor inertia."""
+
+    power_W: float
+    inertia_kgm2: float
+
+
+@rule("MO-06", "Smallest motor for the cycle", SEED_003.at("the move") + REQUIRED_TIME)
 def smallest_for_cycle(
-    required_s: float,
-    rows: dict[str, tuple[float, float, bool, str]],
-    size: dict[str, tuple[float, float]],
+    required_s: float, rows: dict[str, CycleFit], size: dict[str, Size]
 ) -> Finding[str]:
-    """rows: name -> (move time, ratio, passes the cycle and the time, why not); size: name ->
-    (power W, inertia kg·m²). The smallest motor that passes, as MO-05 for the single move."""
-    ok = [n for n, r in rows.items() if r[2]]
+    """The smallest motor that passes the cycle and the required time, as MO-05 for the single
+    move."""
+    ok = [n for n, r in rows.items() if r.passes]
     best = min(ok, key=lambda n: (*size[n], n))
     order = sorted(rows, key=lambda n: (*size[n], n))
     smaller = order[: order.index(best)][-3:]
     why = "; ".join(
-        f"{n} ({size[n][0] / 1e3:.4g} kW): {rows[n][0]:.4g} s at i = {rows[n][1]:.4g}"
-        + ("" if rows[n][2] else f" ({rows[n][3]})")
+        f"{n} ({size[n].power_W / 1e3:.4g} kW): {rows[n].move_time_s:.4g} s at "
+        f"i = {rows[n].ratio:.4g}" + ("" if rows[n].passes else f" ({rows[n].why_not})")
         for n in smaller
     )
     return Finding(
         best,
-        f"Motor {best} at i = {rows[best][1]:.4g}: the smallest that passes the cycle and moves "
-        f"the load within {required_s:g} s ({rows[best][0]:.4g} s).",
+        f"Motor {best} at i = {rows[best].ratio:.4g}: the smallest that passes the cycle and "
+        f"moves the load within {required_s:g} s ({rows[best].move_time_s:.4g} s).",
         "Each motor at the fastest ratio where its RMS torque over the cycle stays within its "
         "rated torque and the move fits; ranked by power, then inertia. The next smaller ones "
         f"fail — {why or 'none: it is the smallest candidate'}.",
         {
             "motor": best,
-            "ratio": rows[best][1],
-            "move_time_s": rows[best][0],
+            "ratio": rows[best].ratio,
+            "move_time_s": rows[best].move_time_s,
             "required_move_time_s": required_s,
         },
     )

@@ -13,6 +13,7 @@ References
 """
 
 import math
+from dataclasses import dataclass
 from typing import NamedTuple
 
 from advisor.calc.roots import bisect, golden_min
@@ -248,3 +249,62 @@ def move_time_engineering(
     return 60.0 * revolutions * i / n_rpm + n_rpm * gd2_kgfm2 / (
         120.0 * G / math.pi * accel_torque_kgfm
     ) * (i * i + big_i) / (i * i - m * m)
+
+
+@dataclass(frozen=True, slots=True)
+class RatioSolution:
+    """A motor's fastest ratio (seed 003): the optimum under the time law asked for, then under
+    the law that actually happens, with the seed's estimates beside it."""
+
+    exact_ratio: float  # the optimum under the law asked for
+    ratio: float  # the optimum under the law that happens
+    estimated_ratio: float  # graphical fixed point (trapezoidal) or closed form (triangular)
+    first_step: float  # K(μ0)·∛A, the graphical method's first step
+    first_step_moves_load: bool  # whether that first step exceeds m
+    ratio_i0: float  # i0 = ∛A
+    k_factor: float  # K at the graphical fixed point
+    move_time_s: float  # at ``ratio``
+    profile: str  # the law that happens at ``ratio``
+
+
+def happening_profile(d: Drive, path_rad: float, asked: str, i: float) -> str:
+    """The speed graph that happens at ratio ``i``, the optimum of the ``asked`` law: the
+    trapezoidal one when the path covers the transients; a triangular optimum whose path would
+    pass the transients only if the motor could pass ω0 stays triangular when its peak speed
+    stays within ω0."""
+    actual = "trapezoidal" if path_rad >= transient_path(d, i) else "triangular"
+    if asked == "triangular" and actual == "trapezoidal":
+        # the triangular optimum would pass ω0: the trapezoidal law governs
+        if triangular_peak_speed(d, path_rad, i) <= d.speed_rad_s:
+            actual = "triangular"
+    return actual
+
+
+def optimal_ratio(d: Drive, path_rad: float, profile: str) -> float:
+    """The fastest ratio under the ``profile`` time law (eq. (6) or the triangular law)."""
+    if profile == "trapezoidal":
+        return optimal_ratio_trapezoidal(d, path_rad)
+    return optimal_ratio_triangular(d, path_rad)
+
+
+def solve_ratio(d: Drive, path_rad: float, asked: str) -> RatioSolution:
+    """Optimal ratio under the asked time law, then under the law that actually happens; the
+    seed's estimate for the asked law and the graphical method's first step beside it."""
+    first, i0, _ = graphical_estimate(d, path_rad)
+    fp = graphical_fixed_point(d, path_rad)
+    exact = optimal_ratio(d, path_rad, asked)
+    estimate = fp.ratio if asked == "trapezoidal" else triangular_ratio(d)
+    actual = happening_profile(d, path_rad, asked, exact)
+    i = exact if actual == asked else optimal_ratio(d, path_rad, actual)
+    t, happened = move_time(d, path_rad, i)
+    return RatioSolution(
+        exact_ratio=exact,
+        ratio=i,
+        estimated_ratio=estimate,
+        first_step=first,
+        first_step_moves_load=first_step_moves_load(d, first),
+        ratio_i0=i0,
+        k_factor=fp.k,
+        move_time_s=t,
+        profile=happened,
+    )

@@ -1,4 +1,4 @@
-"""The positioning drive's duty (issue 15): seed 003's move repeated every ``cycle_time_s``.
+"""The positioning drive's duty: seed 003's move repeated every ``cycle_time_s``.
 
 At ratio i the motor accelerates with M_λ against M_p/i, runs at ω0 with M_p/i and brakes with
 M_λ helped by M_p/i, on J0 + J_p/i² (seed 003, eqs. (1)–(4)); then it rests, holding nothing
@@ -8,38 +8,49 @@ whose move is fastest among those that pass, each at the fastest ratio that pass
 """
 
 import math
+from dataclasses import dataclass
 from functools import lru_cache
 
-from advisor.calc import duty as du
-from advisor.calc import motion as mo
+import rules.duty
+from advisor.applications.positioning.candidates import Solved
 from advisor.calc.checks import Check
+from advisor.calc.duty import (
+    Phase,
+    cycle_time,
+    energies,
+    mean_speed,
+    peak_torque,
+    reflected_inertia,
+    rms_torque,
+    trapezoid_phases,
+)
+from advisor.calc.motion import RATIO_MAX, RATIO_MIN, Drive
 from advisor.calc.roots import golden_min
 from advisor.core.errors import InfeasibleError
 from advisor.core.rulebook import Trace
 from advisor.duty.report import DutyOut, phases_out
-from rules import duty as du_rules
-from rules import motion as mo_rules
+from rules.motion import SEED_003, CycleFit, Size, smallest_for_cycle
 
 RPM = 30.0 / math.pi
 
 
-def cycle(d: mo.Drive, path_rad: float, i: float, cycle_time_s: float) -> list[du.Phase] | None:
+def cycle(d: Drive, path_rad: float, i: float, cycle_time_s: float) -> list[Phase] | None:
     """The phases of one cycle at ratio i (None: the motor cannot move the load, i ≤ m)."""
     load = d.load_torque_Nm / i
     if d.accel_torque_Nm <= load:
         return None
-    j = d.inertia_kgm2 + du.reflected_inertia(d.load_inertia_kgm2, i)
-    phases = du.trapezoid_phases(
+    j = d.inertia_kgm2 + reflected_inertia(d.load_inertia_kgm2, i)
+    phases = trapezoid_phases(
         d.speed_rad_s, d.accel_torque_Nm, d.accel_torque_Nm, load, j, path_rad * i, load, load
     )
-    rest = cycle_time_s - du.cycle_time(phases)
+    rest = cycle_time_s - cycle_time(phases)
     if rest > 0:
-        phases.append(du.Phase("rest", rest, 0.0, 0.0, 0.0))
+        phases.append(Phase("rest", rest, 0.0, 0.0, 0.0))
     return phases
 
 
 @lru_cache(maxsize=8192)
-def _eval(d: mo.Drive, path: float, i: float, t_cycle: float) -> tuple[float, float]:
+def _eval(d: Drive, path: float, i: float, t_cycle: float) -> tuple[float, float]:
     """(move time, RMS torque over the cycle) at ratio i; inf where the load cannot move.
     Cached within one advice (:func:`advise_duty` clears it first): the fastest passing
     ratio and the least-RMS ratio scan the same grid."""
@@ -47,12 +58,12 @@ def _eval(d: mo.Drive, path: float, i: float, t_cycle: float) -> tuple[float, fl
     if ph is None:
         return math.inf, math.inf
     move = sum(p.time_s for p in ph if p.name != "rest")
-    return move, du.rms_torque(ph) if move <= t_cycle else math.inf
+    return move, rms_torque(ph) if move <= t_cycle else math.inf
 
 
-def _grid(d: mo.Drive, fastest: float) -> list[float]:
-    lo = max(d.torque_ratio * (1.0 + 1e-6), mo.RATIO_MIN, fastest / 1e3)
-    hi = min(max(fastest * 1e3, lo * 10.0), mo.RATIO_MAX)
+def _grid(d: Drive, fastest: float) -> list[float]:
+    lo = max(d.torque_ratio * (1.0 + 1e-6), RATIO_MIN, fastest / 1e3)
+    hi = min(max(fastest * 1e3, lo * 10.0), RATIO_MAX)
     n = 400
     return [lo * (hi / lo) ** (k / n) for k in range(n + 1)]
 
@@ -71,7 +82,7 @@ def _refine(f, a: float, b: float, n: int = 80) -> float:
 
 
 def fastest_passing(
-    d: mo.Drive, path: float, t_cycle: float, rated: float, fastest: float
+    d: Drive, path: float, t_cycle: float, rated: float, fastest: float
 ) -> tuple[float, float] | None:
     """The fastest ratio whose cycle passes (move fits, RMS ≤ rated): (ratio, move time).
     The unconstrained optimum when it passes; otherwise the constraint binds, and the best
@@ -101,7 +112,7 @@ def fastest_passing(
     return best
 
 
-def least_rms(d: mo.Drive, path: float, t_cycle: float, fastest: float) -> tuple[float, float]:
+def least_rms(d: Drive, path: float, t_cycle: float, fastest: float) -> tuple[float, float]:
     """The ratio of least RMS torque over the cycle among those whose move fits: a grid, then
     a golden-section search on log i around the grid's minimum, or, where the minimum lies
     at the edge of the fitting ratios (the move filling the whole cycle), bisection on that
@@ -125,151 +136,235 @@ def least_rms(d: mo.Drive, path: float, t_cycle: float, fastest: float) -> tuple
     return best
 
 
-def advise_duty(
-    drives: list[tuple[str, mo.Drive]],
+@dataclass(frozen=True, slots=True)
+class CycleAtRatio:
+    """One motor's cycle at one ratio: its phases and the figures the duty checks."""
+
+    motor: str
+    drive: Drive
+    ratio: float
+    phases: list[Phase]
+    move_time_s: float
+    rms_torque_Nm: float
+    rated_torque_Nm: float
+    min_rms_ratio: float  # the ratio of least RMS torque whose move fits (DU-02)
+    min_rms_torque_Nm: float
+
+    @property
+    def utilisation(self) -> float:
+        return self.rms_torque_Nm / self.rated_torque_Nm
+
+    @property
+    def inertia_ratio(self) -> float:
+        return reflected_inertia(self.drive.load_inertia_kgm2, self.ratio) / self.drive.inertia_kgm2
+
+
+def fit_cycle(
+    s: Solved, rated: float, path: float, cycle_time_s: float, required_s: float | None
+) -> tuple[CycleFit, str | None]:
+    """A motor against the cycle: at the fastest ratio whose cycle passes, its move time and
+    whether it passes (the move fits, the RMS torque within the rated one, and with a required
+    time the move meets it); where it fails, the reason the infeasible report gives."""
+    name, d, i_fast = s.name, s.drive, s.solution.ratio
+    t_fast, rms_fast = _eval(d, path, i_fast, cycle_time_s)
+    if t_fast > cycle_time_s:
+        return CycleFit(t_fast, i_fast, False, "the move does not fit in the cycle"), (
+            f"motor {name}: its fastest move takes {t_fast:.4g} s (i = {i_fast:.4g}), "
+            f"longer than duty.cycle_time_s = {cycle_time_s:g} s"
+        )
+    found = fastest_passing(d, path, cycle_time_s, rated, i_fast)
+    if found is None:
+        i_min, rms_min = least_rms(d, path, cycle_time_s, i_fast)
+        return CycleFit(t_fast, i_fast, False, f"RMS {rms_fast:.4g} > {rated:.4g} N·m"), (
+            f"motor {name}: RMS torque {rms_fast:.4g} N·m at its fastest ratio "
+            f"{i_fast:.4g}, and at least {rms_min:.4g} N·m at any ratio (i = {i_min:.4g}), "
+            f"against its rated torque {rated:.4g} N·m"
+        )
+    i, t = found
+    if required_s is not None and t > required_s:
+        return CycleFit(t, i, False, f"move > {required_s:g} s required"), (
+            f"motor {name}: its move at the ratio that passes the cycle, i = "
+            f"{i:.4g}, takes {t:.4g} s, longer than the required "
+            f"{required_s:g} s"
+        )
+    return CycleFit(t, i, True, ""), None
+
+
+def choose_for_cycle(
+    solved: list[Solved],
     rated: dict[str, float],
-    fastest: dict[str, float],
     path: float,
     cycle_time_s: float,
-    seed_best: str,
+    required_s: float | None,
     trace: Trace,
-    sizing: tuple[float, dict[str, tuple[float, float]]] | None = None,
-) -> tuple[DutyOut, list[Check], list[str]]:
-    """Choose motor and ratio for the cycle; the checks and warnings of that choice.
-
-    ``sizing`` — (required move time, name → (power, inertia)): a motor passes only if its
-    move at the cycle's ratio also meets the required time, and the smallest that passes is
-    chosen (issue 25, decision MO-06); without it, the fastest that passes (DU-01)."""
-    _eval.cache_clear()  # one advice's evaluations are shared, never a previous advice's
-    rows: dict[str, tuple[float, float, bool, str]] = {}
+) -> tuple[Solved, float]:
+    """The motor and ratio for the cycle: the fastest that passes (DU-01), or with a required
+    time the smallest that passes (MO-06); none: no feasible design."""
+    rows: dict[str, CycleFit] = {}
     reasons = []
-    for name, d in drives:
-        i_fast = fastest[name]
-        t_fast, rms_fast = _eval(d, path, i_fast, cycle_time_s)
-        if t_fast > cycle_time_s:
-            rows[name] = (t_fast, i_fast, False, "the move does not fit in the cycle")
-            reasons.append(
-                f"motor {name}: its fastest move takes {t_fast:.4g} s (i = {i_fast:.4g}), "
-                f"longer than duty.cycle_time_s = {cycle_time_s:g} s"
-            )
-            continue
-        found = fastest_passing(d, path, cycle_time_s, rated[name], i_fast)
-        if found is None:
-            i_min, rms_min = least_rms(d, path, cycle_time_s, i_fast)
-            rows[name] = (t_fast, i_fast, False, f"RMS {rms_fast:.4g} > {rated[name]:.4g} N·m")
-            reasons.append(
-                f"motor {name}: RMS torque {rms_fast:.4g} N·m at its fastest ratio "
-                f"{i_fast:.4g}, and at least {rms_min:.4g} N·m at any ratio (i = {i_min:.4g}), "
-                f"against its rated torque {rated[name]:.4g} N·m"
-            )
-            continue
-        if sizing is not None and found[1] > sizing[0]:
-            rows[name] = (found[1], found[0], False, f"move > {sizing[0]:g} s required")
-            reasons.append(
-                f"motor {name}: its move at the ratio that passes the cycle, i = "
-                f"{found[0]:.4g}, takes {found[1]:.4g} s, longer than the required "
-                f"{sizing[0]:g} s"
-            )
-            continue
-        rows[name] = (found[1], found[0], True, "")
-    if not any(r[2] for r in rows.values()):
+    for s in solved:
+        rows[s.name], reason = fit_cycle(s, rated[s.name], path, cycle_time_s, required_s)
+        if reason is not None:
+            reasons.append(reason)
+    if not any(r.passes for r in rows.values()):
         raise InfeasibleError("no feasible design: no motor passes the duty cycle", reasons)
-    if sizing is None:
-        best = trace.apply(du_rules.motor_for_cycle, rows)
+    if required_s is None:
+        best = trace.apply(rules.duty.motor_for_cycle, rows)
     else:
-        best = trace.apply(mo_rules.smallest_for_cycle, sizing[0], rows, sizing[1])
-    d = dict(drives)[best]
-    i = rows[best][1]
-    phases = cycle(d, path, i, cycle_time_s)
+        sizes = {s.name: Size(s.candidate.power_W, s.drive.inertia_kgm2) for s in solved}
+        best = trace.apply(smallest_for_cycle, required_s, rows, sizes)
+    return next(s for s in solved if s.name == best), rows[best].ratio
+
+
+def cycle_at(s: Solved, i: float, rated: float, path: float, cycle_time_s: float) -> CycleAtRatio:
+    """The chosen motor's cycle at ratio ``i``, with the ratio of least RMS torque beside it."""
+    phases = cycle(s.drive, path, i, cycle_time_s)
     assert phases is not None
-    move = sum(p.time_s for p in phases if p.name != "rest")
-    rms = du.rms_torque(phases)
-    peak = du.peak_torque(phases)
-    out_J, back_J = du.energies(phases)
-    i_min, rms_min = least_rms(d, path, cycle_time_s, fastest[best])
-    trace.apply(du_rules.least_rms_ratio, best, i_min, rms_min, i, rms)
-    util = rms / rated[best]
+    i_min, rms_min = least_rms(s.drive, path, cycle_time_s, s.solution.ratio)
+    return CycleAtRatio(
+        motor=s.name,
+        drive=s.drive,
+        ratio=i,
+        phases=phases,
+        move_time_s=sum(p.time_s for p in phases if p.name != "rest"),
+        rms_torque_Nm=rms_torque(phases),
+        rated_torque_Nm=rated,
+        min_rms_ratio=i_min,
+        min_rms_torque_Nm=rms_min,
+    )
+
+
+def explain_cycle(c: CycleAtRatio, trace: Trace) -> bool:
+    """DU-02, DU-04, DU-05, DU-03: least-RMS ratio, thermal verdict, peak torque and inertia
+    ratio of the chosen cycle; whether the inertia ratio is within its guideline."""
     trace.apply(
-        du_rules.thermal,
-        util,
-        f"RMS torque over the cycle √(Σ M²·t / T) = {rms:.4g} N·m against the motor's rated "
-        f"(S1) torque {rated[best]:.4g} N·m; the phases M_λ, M_p/i, M_λ of seed 003, then "
-        "rest at zero torque (the load resists motion only). The motor's cooling is taken as "
-        "at speed throughout (β0 = 1): rated_torque_Nm is the continuous torque it holds in "
-        "this cycle's cooling.",
+        rules.duty.least_rms_ratio,
+        c.motor,
+        c.min_rms_ratio,
+        c.min_rms_torque_Nm,
+        c.ratio,
+        c.rms_torque_Nm,
     )
     trace.apply(
-        du_rules.peak,
-        peak,
-        d.accel_torque_Nm,
+        rules.duty.thermal,
+        c.utilisation,
+        f"RMS torque over the cycle √(Σ M²·t / T) = {c.rms_torque_Nm:.4g} N·m against the "
+        f"motor's rated (S1) torque {c.rated_torque_Nm:.4g} N·m; the phases M_λ, M_p/i, M_λ of "
+        "seed 003, then rest at zero torque (the load resists motion only). The motor's cooling "
+        "is taken as at speed throughout (β0 = 1): rated_torque_Nm is the continuous torque it "
+        "holds in this cycle's cooling.",
+    )
+    trace.apply(
+        rules.duty.peak,
+        peak_torque(c.phases),
+        c.drive.accel_torque_Nm,
         "Seed 003's move starts and brakes at the motor's M_λ: the peak is M_λ by "
         "construction, the motor's own starting and braking torque.",
     )
-    ir = du.reflected_inertia(d.load_inertia_kgm2, i) / d.inertia_kgm2
-    within = trace.apply(du_rules.inertia_ratio, ir)
+    return trace.apply(rules.duty.inertia_ratio, c.inertia_ratio)
+
+
+def cycle_warnings(
+    c: CycleAtRatio, within: bool, seed_best: str, fastest_ratio: float, sized: bool
+) -> list[str]:
+    """What the reader of the cycle must know: a hard-to-tune inertia ratio, a motor or a
+    ratio other than the single move's."""
     warnings = []
     if not within:
         warnings.append(
-            f"duty: the load's inertia at the motor is {ir:.3g} times the motor's (guideline "
-            f"{du_rules.INERTIA_RATIO_GUIDELINE:g}): expect a hard-to-tune control loop"
+            f"duty: the load's inertia at the motor is {c.inertia_ratio:.3g} times the motor's "
+            f"(guideline {rules.duty.INERTIA_RATIO_GUIDELINE:g}): expect a hard-to-tune "
+            "control loop"
         )
-    if best != seed_best:
-        single = "the fastest motor" if sizing is None else "the motor"
+    if c.motor != seed_best:
+        single = "the motor" if sized else "the fastest motor"
         warnings.append(
-            f"duty: the cycle chooses motor {best}, not {single} of the single move "
+            f"duty: the cycle chooses motor {c.motor}, not {single} of the single move "
             "(design.motion), which does not pass the cycle"
         )
-    elif abs(i / fastest[best] - 1.0) > 1e-9:
+    elif abs(c.ratio / fastest_ratio - 1.0) > 1e-9:
         warnings.append(
-            f"duty: the cycle needs i = {i:.4g}, not the fastest ratio {fastest[best]:.4g}: "
-            "there the RMS torque exceeds the rated torque; i is the ratio nearest the fastest "
-            "where the RMS torque equals the rated one, so its thermal margin is 1.000 by "
-            "construction — a ratio a little larger runs cooler at almost the same move time"
+            f"duty: the cycle needs i = {c.ratio:.4g}, not the fastest ratio "
+            f"{fastest_ratio:.4g}: there the RMS torque exceeds the rated torque; i is the ratio "
+            "nearest the fastest where the RMS torque equals the rated one, so its thermal "
+            "margin is 1.000 by construction — a ratio a little larger runs cooler at almost "
+            "the same move time"
         )
-    src = du_rules.KLYUCHEV + du_rules.ISSUE_15
-    checks = [
+    return warnings
+
+
+def cycle_checks(c: CycleAtRatio, cycle_time_s: float) -> list[Check]:
+    """The move fits in the cycle; the RMS torque within the rated (S1) torque."""
+    rms, rated = c.rms_torque_Nm, c.rated_torque_Nm
+    return [
         Check(
             "duty_move_fits",
             "the move fits in the cycle time",
-            move,
+            c.move_time_s,
             cycle_time_s,
             "s",
-            cycle_time_s / move,
-            du_rules.SEED_003.at("eq. (4)") + du_rules.ISSUE_15,
+            cycle_time_s / c.move_time_s,
+            SEED_003.at("eq. (4)") + rules.duty.ISSUE_15,
         ),
         Check(
             "duty_rms_torque",
             "RMS torque over the cycle within the rated (S1) torque",
             rms,
-            rated[best],
+            rated,
             "N·m",
-            rated[best] / rms if rms > 0 else math.inf,
-            src,
+            rated / rms if rms > 0 else math.inf,
+            rules.duty.KLYUCHEV + rules.duty.ISSUE_15,
         ),
     ]
-    duty = DutyOut.make(
-        motor=best,
-        ratio=i,
+
+
+def duty_out(c: CycleAtRatio, cycle_time_s: float) -> DutyOut:
+    """The report's duty table of the chosen cycle."""
+    out_J, back_J = energies(c.phases)
+    return DutyOut.make(
+        motor=c.motor,
+        ratio=c.ratio,
         cycle_time_s=cycle_time_s,
-        move_time_s=move,
-        peak_torque_Nm=peak,
-        peak_torque_limit_Nm=d.accel_torque_Nm,
-        rms_torque_Nm=rms,
-        rated_torque_Nm=rated[best],
-        thermal_utilisation=util,
+        move_time_s=c.move_time_s,
+        peak_torque_Nm=peak_torque(c.phases),
+        peak_torque_limit_Nm=c.drive.accel_torque_Nm,
+        rms_torque_Nm=c.rms_torque_Nm,
+        rated_torque_Nm=c.rated_torque_Nm,
+        thermal_utilisation=c.utilisation,
         thermal_basis="RMS torque over the rated (S1) torque",
-        inertia_ratio=ir,
-        inertia_ratio_guideline=du_rules.INERTIA_RATIO_GUIDELINE,
+        inertia_ratio=c.inertia_ratio,
+        inertia_ratio_guideline=rules.duty.INERTIA_RATIO_GUIDELINE,
         energy_per_cycle_J=out_J,
         regenerated_per_cycle_J=back_J,
-        mean_speed_rpm=du.mean_speed(phases) * RPM,
+        mean_speed_rpm=mean_speed(c.phases) * RPM,
         cycles_per_hour=3600.0 / cycle_time_s,
         duty_type="cycle",
-        min_rms_ratio=i_min,
-        min_rms_torque_Nm=rms_min,
-        phases=phases_out(phases),
+        min_rms_ratio=c.min_rms_ratio,
+        min_rms_torque_Nm=c.min_rms_torque_Nm,
+        phases=phases_out(c.phases),
     )
-    return duty, checks, warnings
+
+
+def advise_duty(
+    solved: list[Solved],
+    rated: dict[str, float],
+    path: float,
+    cycle_time_s: float,
+    seed_best: str,
+    trace: Trace,
+    required_s: float | None = None,
+) -> tuple[DutyOut, list[Check], list[str]]:
+    """Choose motor and ratio for the cycle; the checks and warnings of that choice.
+
+    ``required_s`` — a required move time: a motor passes only if its move at the cycle's
+    ratio also meets it, and the smallest that passes is chosen (MO-06); without it, the
+    fastest that passes (DU-01)."""
+    _eval.cache_clear()  # one advice's evaluations are shared, never a previous advice's
+    best, i = choose_for_cycle(solved, rated, path, cycle_time_s, required_s, trace)
+    c = cycle_at(best, i, rated[best.name], path, cycle_time_s)
+    within = explain_cycle(c, trace)
+    warnings = cycle_warnings(c, within, seed_best, best.solution.ratio, required_s is not None)
+    return duty_out(c, cycle_time_s), cycle_checks(c, cycle_time_s), warnings
 
 
 def rated_torques(req, cat) -> dict[str, float]:

@@ -1,0 +1,141 @@
+"""The candidate motors of a positioning drive (seed 003): the listed motors, or the induction
+motors of the catalog at their rated speed with their starting torque; each with the size that
+ranks them where a move time is required (MO-05)."""
+
+import math
+from dataclasses import dataclass
+
+from advisor.calc.motion import RATIO_MAX, Drive, RatioSolution
+from advisor.core.errors import InfeasibleError
+from advisor.core.reading import Requirements
+from catalogs import Catalogs
+from rules.motion import INERTIA_BAND
+
+
+@dataclass(frozen=True, slots=True)
+class Candidate:
+    """One candidate motor driving the load."""
+
+    name: str
+    drive: Drive
+    power_W: float  # the size that ranks it (MO-05)
+    inertia_estimated: bool  # its rotor inertia is an estimate (MO-05 counts it higher)
+
+
+@dataclass(frozen=True, slots=True)
+class CandidateSet:
+    """The candidates, what their size is, and what the report must say about them."""
+
+    candidates: tuple[Candidate, ...]
+    power_basis: str
+    warnings: tuple[str, ...]
+
+
+@dataclass(frozen=True, slots=True)
+class Solved:
+    """A candidate at its own fastest ratio."""
+
+    candidate: Candidate
+    solution: RatioSolution
+
+    @property
+    def name(self) -> str:
+        return self.candidate.name
+
+    @property
+    def drive(self) -> Drive:
+        return self.candidate.drive
+
+
+def listed_candidates(req: Requirements) -> CandidateSet:
+    """The motors of [[positioning.motors]], sized by their rated power M_n·ω0, or, without a
+    rated torque for every motor, by the power M_λ·ω0 at their starting torque."""
+    pos = req.positioning
+    rated = all(m.rated_torque_Nm is not None for m in pos.motors)
+    return CandidateSet(
+        tuple(
+            Candidate(
+                m.name,
+                Drive(
+                    m.speed_rad_s,
+                    m.inertia_kgm2,
+                    m.accel_torque_Nm,
+                    pos.load_inertia_kgm2,
+                    pos.load_torque_Nm,
+                ),
+                (m.rated_torque_Nm if rated else m.accel_torque_Nm) * m.speed_rad_s,
+                False,
+            )
+            for m in pos.motors
+        ),
+        "rated power M_n·ω0"
+        if rated
+        else "power at the starting torque M_λ·ω0 (no rated torque listed for every motor)",
+        (),
+    )
+
+
+def catalog_candidates(req: Requirements, cat: Catalogs) -> CandidateSet:
+    """The induction motors of the catalog at their rated speed with their starting torque,
+    sized by their rated power; a note says so, and how many inertias are estimates."""
+    pos = req.positioning
+    found = tuple(
+        Candidate(
+            m.model,
+            Drive(
+                m.rated_speed_rpm * math.pi / 30.0,
+                m.inertia_kgm2,
+                m.starting_torque_ratio * m.rated_torque_Nm,
+                pos.load_inertia_kgm2,
+                pos.load_torque_Nm,
+            ),
+            m.rated_power_kW * 1e3,
+            "inertia_kgm2" in m.estimated,
+        )
+        for m in cat.motors
+    )
+    estimated = len({c.name for c in found if c.inertia_estimated})
+    note = (
+        "no [[positioning.motors]] given: candidates are the induction motors of the catalog "
+        "at their rated speed with their starting torque"
+    )
+    if estimated:
+        note += (
+            f"; the rotor inertias of {estimated} of them are estimated values, counted "
+            f"{INERTIA_BAND * 100:.0f} % higher where they decide (MO-05)"
+        )
+    return CandidateSet(found, "rated power of the catalog", (note,))
+
+
+def candidates(req: Requirements, cat: Catalogs) -> CandidateSet:
+    """The listed motors, or without them the catalog's."""
+    if req.positioning.motors:
+        return listed_candidates(req)
+    return catalog_candidates(req, cat)
+
+
+def usable(cands: CandidateSet) -> tuple[tuple[Candidate, ...], list[str]]:
+    """The candidates that can be given a ratio that moves the load with some margin, and a
+    warning naming how many were left out; none: no feasible design.
+
+    A motor whose torque only balances the load near the top of the ratios searched cannot be
+    given a ratio that moves the load with any margin."""
+    kept = tuple(c for c in cands.candidates if c.drive.torque_ratio < RATIO_MAX / 2.0)
+    if not kept:
+        m_min = min(c.drive.torque_ratio for c in cands.candidates)
+        raise InfeasibleError(
+            f"no feasible design: no motor can move the load through a ratio up to {RATIO_MAX:g}",
+            [
+                f"the least ratio at which a motor balances the load, m = M_p/M_λ, is "
+                f"{m_min:.4g} (needs a ratio below {RATIO_MAX / 2:g}); give a stronger motor "
+                "or check the load torque"
+            ],
+        )
+    dropped = len(cands.candidates) - len(kept)
+    warnings = []
+    if dropped:
+        warnings.append(
+            f"{dropped} motor(s) left out: each needs a ratio above {RATIO_MAX / 2:g} only to "
+            "balance the load torque"
+        )
+    return kept, warnings
