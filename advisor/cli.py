@@ -127,63 +127,63 @@ def _warn_ignored(warnings: list[str], source: Path | None = None) -> None:
             print_error(f"{source}: warning: {w}" if source is not None else f"warning: {w}")
 
 
-def run_batch(
-    req_path: Path, output: Path | None, catalog_dir: Path | None, fmt: str | None = None
-) -> int:
-    from advisor.core import pydantic_plugins
+def _check_output(output: Path, req_path: Path) -> None:
+    """Refuse a target that would destroy something, before computing."""
+    from advisor.core.io_safety import OutputError, check_target, same_file, show
 
-    pydantic_plugins.disable()  # the advisor uses no pydantic plugin: no metadata scan
+    if same_file(output, req_path):
+        raise OutputError(
+            f"{show(output, 200)}: is the requirement file itself; the report would "
+            "replace it (choose another -o)"
+        )
+    check_target(output)
+
+
+def _advise_or_why(req: Any, catalog_dir: Path | None, why_wanted: bool) -> tuple[Any, Any]:
+    """(report, None), or (a report saying why, the InfeasibleError) when no design is
+    feasible and ``why_wanted`` (a file or a datasheet asked for); else the error is raised."""
     from advisor.core.engine import advise
-    from advisor.core.io_safety import OutputError, check_target, same_file, show, write_atomic
-    from advisor.core.reading import read_requirements
 
-    if fmt is None:
-        from advisor.datasheet import format_of
-
-        fmt = (format_of(output) if output is not None else None) or "toml"
-    if output is not None:  # refuse a target that would destroy something, before computing
-        if same_file(output, req_path):
-            raise OutputError(
-                f"{show(output, 200)}: is the requirement file itself; the report would "
-                "replace it (choose another -o)"
-            )
-        check_target(output)
-    req = read_requirements(req_path)
     try:
-        report = advise(req, catalog_dir)
+        return advise(req, catalog_dir), None
     except InfeasibleError as exc:
-        if output is None and fmt == "toml":  # nothing asked for but the exit code and why
+        if not why_wanted:  # nothing asked for but the exit code and why
             raise
         from advisor.infeasible import infeasible_report
 
-        report, infeasible = infeasible_report(req, exc), exc  # a report says why (exit 3)
-    else:
-        infeasible = None
-    _warn_ignored(report.warnings)
+        return infeasible_report(req, exc), exc
+
+
+def _text(report: Any, fmt: str) -> str | None:
+    """The report in ``fmt``; None (said on stderr) when the format's extra is missing."""
     if fmt == "toml":
         from advisor.core.report import to_toml
 
-        text = to_toml(report)
-    else:
-        from advisor.datasheet import MissingExtra, render
+        return to_toml(report)
+    from advisor.datasheet import MissingExtra, render
 
-        try:
-            text = render(report, fmt)
-        except MissingExtra as exc:
-            print_error(str(exc))
-            return ExitCode.INVALID_INPUT
-    done = ExitCode.OK if infeasible is None else ExitCode.INFEASIBLE
-    if infeasible is not None:
-        print_error(str(infeasible))
-    if output is None:
-        try:
-            sys.stdout.write(text)
-            sys.stdout.flush()
-        except BrokenPipeError:
-            raise
-        except OSError as exc:  # /dev/full, a full disk: never exit 0 with half a report
-            return _stdout_failed(exc, "the report")
-        return done
+    try:
+        return render(report, fmt)
+    except MissingExtra as exc:
+        print_error(str(exc))
+        return None
+
+
+def _to_stdout(text: str, done: int) -> int:
+    try:
+        sys.stdout.write(text)
+        sys.stdout.flush()
+    except BrokenPipeError:
+        raise
+    except OSError as exc:  # /dev/full, a full disk: never exit 0 with half a report
+        return _stdout_failed(exc, "the report")
+    return done
+
+
+def _to_file(report: Any, text: str, output: Path, done: int) -> int:
+    """Write the report atomically, then its summary on stdout."""
+    from advisor.core.io_safety import OutputError, show, write_atomic
+
     try:
         write_atomic(output, text)
     except OutputError:
@@ -204,6 +204,34 @@ def run_batch(
     except OSError as exc:
         return _stdout_failed(exc, "the summary", f"the report was written to {show(output, 200)}")
     return done
+
+
+def run_batch(
+    req_path: Path, output: Path | None, catalog_dir: Path | None, fmt: str | None = None
+) -> int:
+    from advisor.core import pydantic_plugins
+
+    pydantic_plugins.disable()  # the advisor uses no pydantic plugin: no metadata scan
+    from advisor.core.reading import read_requirements
+
+    if fmt is None:
+        from advisor.datasheet import format_of
+
+        fmt = (format_of(output) if output is not None else None) or "toml"
+    if output is not None:
+        _check_output(output, req_path)
+    req = read_requirements(req_path)
+    report, infeasible = _advise_or_why(req, catalog_dir, output is not None or fmt != "toml")
+    _warn_ignored(report.warnings)
+    text = _text(report, fmt)
+    if text is None:
+        return ExitCode.INVALID_INPUT
+    done = ExitCode.OK if infeasible is None else ExitCode.INFEASIBLE
+    if infeasible is not None:
+        print_error(str(infeasible))
+    if output is None:
+        return _to_stdout(text, done)
+    return _to_file(report, text, output, done)
 
 
 def run_many(inputs: list[Path], out_dir: Path, catalog_dir: Path | None, jobs: int) -> int:
