@@ -399,46 +399,16 @@ def run_many(
     each in a worker of its own, and a file whose own worker dies again is reported as failed.
     Ctrl-C raises :class:`Interrupted` with the count of reports written.
     """
-    from advisor.core.io_safety import show
-
     files = expand(inputs)
     out_dir.mkdir(parents=True, exist_ok=True)
     taken: set[str] = set()
     targets = [out_dir / report_name(f, taken) for f in files]
     jobs = max(1, min(jobs, len(files), usable_cpus()))
     outcomes: dict[int, Outcome] = {}
-    todo = []
-    given = _identities(files)
-    for i, (f, t) in enumerate(zip(files, targets, strict=True)):
-        clash = _identities([t]) & given
-        if clash:  # a.toml's report would replace an input named a.report.toml
-            outcomes[i] = Outcome(
-                str(f),
-                ExitCode.INVALID_INPUT,
-                None,
-                f"its report {show(t, 200)} would replace an input file; nothing was written",
-                (),
-            )
-        else:
-            todo.append((i, f, t))
+    todo = _refuse_clashes(files, targets, outcomes)
     try:
         if jobs > 1:
-            preload(catalog_dir)
-            while todo:
-                held, todo = _run_pool(jobs, todo, catalog_dir, outcomes)
-                if not held:
-                    break
-                if notify is not None:
-                    notify(
-                        f"a worker process died; {len(held)} file(s) it may have held are re-run"
-                    )
-                # the files of the tasks in flight, again in the pool but a file a task: only
-                # those in flight at a second death are then run alone
-                again, rest = _run_pool(jobs, held, catalog_dir, outcomes, size=1)
-                for item in again:  # each alone: only the file that kills its worker fails
-                    if _run_pool(1, [item], catalog_dir, outcomes, size=1)[0]:
-                        outcomes[item[0]] = _died(item[1])
-                todo = rest + todo
+            _run_parallel(jobs, todo, catalog_dir, outcomes, notify)
         else:
             for i, f, t in todo:
                 settle([(i, advise_one(f, t, catalog_dir))], outcomes)
@@ -448,6 +418,53 @@ def run_many(
     ordered = [outcomes[i] for i in range(len(files))]
     worst = max((o.code for o in ordered), key=lambda c: SEVERITY[ExitCode(c)], default=0)
     return int(worst), ordered
+
+
+def _refuse_clashes(
+    files: list[Path], targets: list[Path], outcomes: dict[int, Outcome]
+) -> list[tuple[int, Path, Path]]:
+    """The (index, file, target) to advise; a file whose report would replace an input
+    (a.toml's report and an input named a.report.toml) gets its refusal in ``outcomes``."""
+    from advisor.core.io_safety import show
+
+    todo = []
+    given = _identities(files)
+    for i, (f, t) in enumerate(zip(files, targets, strict=True)):
+        if _identities([t]) & given:
+            outcomes[i] = Outcome(
+                str(f),
+                ExitCode.INVALID_INPUT,
+                None,
+                f"its report {show(t, 200)} would replace an input file; nothing was written",
+                (),
+            )
+        else:
+            todo.append((i, f, t))
+    return todo
+
+
+def _run_parallel(
+    jobs: int,
+    todo: list[tuple[int, Path, Path]],
+    catalog_dir: Path | None,
+    outcomes: dict[int, Outcome],
+    notify=None,
+) -> None:
+    """Advise ``todo`` in ``jobs`` workers; the files a dying worker held are run again."""
+    preload(catalog_dir)
+    while todo:
+        held, todo = _run_pool(jobs, todo, catalog_dir, outcomes)
+        if not held:
+            break
+        if notify is not None:
+            notify(f"a worker process died; {len(held)} file(s) it may have held are re-run")
+        # the files of the tasks in flight, again in the pool but a file a task: only
+        # those in flight at a second death are then run alone
+        again, rest = _run_pool(jobs, held, catalog_dir, outcomes, size=1)
+        for item in again:  # each alone: only the file that kills its worker fails
+            if _run_pool(1, [item], catalog_dir, outcomes, size=1)[0]:
+                outcomes[item[0]] = _died(item[1])
+        todo = rest + todo
 
 
 #: The result column's words, by exit code.
