@@ -82,7 +82,7 @@ class Frame:
         """Iron and magnet losses at a speed (0 at standstill)."""
         if rpm <= 0:
             return 0.0
-        return self._losses_at(self.ref, self.iron_at(rpm), rpm, 0.0)["total"]
+        return self._losses_at(self.ref, self.iron_at(rpm), rpm, 0.0).total
 
     def copper(self, torque: float) -> float:
         return self.ohmic_ref * (torque / self.ref.torque_Nm) ** 2
@@ -336,23 +336,23 @@ def segment_loads_within_rating(req) -> None:
             )
 
 
-def passing_speeds(req, cands: list[dict], frame_for, holder_for, limit_W: float) -> list[dict]:
-    """The candidate speeds whose motor passes the cycle with its rule reducer (and the point
-    check, with the same limit and allowance as the checks that report them); exit 3 naming
-    each candidate's reason when none does. ``holder_for(candidate)``: what holds the load."""
+def passing_speeds(req, cands: list, frame_for, holder_for, limit_W: float) -> list:
+    """The candidate speeds (:class:`~advisor.applications.rotary.candidates.SpeedCandidate`)
+    whose motor passes the cycle with its rule reducer (and the point check, with the same
+    limit and allowance as the checks that report them); exit 3 naming each candidate's
+    reason when none does. ``holder_for(candidate)``: what holds the load."""
     segment_loads_within_rating(req)
     ok, reasons = [], []
     for c in cands:
-        if not bl_rules.within_limit(c["losses"]["total"], limit_W):
+        if not bl_rules.within_limit(c.losses_W.total, limit_W):
             reasons.append(
-                f"{c['speed_rpm']:g} rpm: losses at the rated point {c['losses']['total']:.4g} W "
+                f"{c.speed_rpm:g} rpm: losses at the rated point {c.losses_W.total:.4g} W "
                 f"above the frame's limit {limit_W:.4g} W (+ {bl_rules.LIMIT_REL_TOL:.1%} "
                 "allowance)"
             )
             continue
-        e = evaluate(
-            req, c["q_total"], c["eta"], c["speed_rpm"], frame_for(c["speed_rpm"]), holder_for(c)
-        )
+        frame = frame_for(c.speed_rpm)
+        e = evaluate(req, c.total_ratio, c.gearbox_efficiency, c.speed_rpm, frame, holder_for(c))
         if e["problems"]:
             reasons += e["problems"]
         else:

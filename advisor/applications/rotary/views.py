@@ -58,8 +58,7 @@ def loss_curve(report, points: int = 40) -> list[dict]:
     candidate to twice the highest, computed exactly as the candidates are (seed 000, eqs.
     (4), (5), (9); the reducer split by the rules at each speed). Empty when the catalog
     steel differs from the report's (a user catalog the view does not know)."""
-    from advisor.applications.rotary import advice as ra
-    from advisor.calc import bldc
+    from advisor.applications.rotary.candidates import frame_model, speed_candidate
     from advisor.calc import reducer as rd
     from advisor.calc import wavegear as wg
     from advisor.core.reading import parse_requirements
@@ -72,13 +71,9 @@ def loss_curve(report, points: int = 40) -> list[dict]:
         ref = load_catalogs().bldc_frame(frame.name)
         if ref is None:  # a catalog motor of a directory the view does not know
             return []
-    steel = ra._steel(req, load_catalogs(), ref)
-    if abs(steel.p15_50_W_kg - report.design.motor.steel.p15_50_W_kg) > 1e-9:
+    model = frame_model(req, load_catalogs(), ref)
+    if abs(model.steel.p15_50_W_kg - report.design.motor.steel.p15_50_W_kg) > 1e-9:
         return []
-    steel_mass = bldc.stator_steel_mass(
-        ref.stator_steel_area_mm2, ref.stack_length_mm, ref.stacking_factor, ref.steel_density_kg_m3
-    )
-    terms = bldc.fit_eq5(steel.p10_50_W_kg, steel.p15_50_W_kg, steel.p10_400_W_kg)
     from advisor.calc.service_factor import service_factor
 
     params = rd.ReducerParams(  # sized as the advice sizes it (issue 26: × f_B)
@@ -93,9 +88,9 @@ def loss_curve(report, points: int = 40) -> list[dict]:
     grid = sorted({*speeds, *(lo * (hi / lo) ** (k / (points - 1)) for k in range(points))})
     out = []
     for n in grid:
-        c = ra._candidate(n, req, steel, steel_mass, terms, params, ref)
-        if c["split"]:  # a speed no reducer of the rules realises has no torque, no losses
-            out.append({"speed_rpm": n, **c["losses"]})
+        c = speed_candidate(n, req, model, params)
+        if c.split:  # a speed no reducer of the rules realises has no torque, no losses
+            out.append({"speed_rpm": n, **c.losses_W._asdict()})
     return out
 
 
