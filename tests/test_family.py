@@ -223,6 +223,50 @@ def test_a_window_of_three_tasks_gives_the_same_study(client, family, reference,
     assert (out / "designs.csv").read_bytes() == (reference / "designs.csv").read_bytes()
 
 
+def test_the_local_runners_give_the_dask_study(family, reference, tmp_path):
+    """In this process, and in forked workers of which one is killed mid-study: the same
+    designs.csv and reports as on the Dask cluster; an interrupted run resumes."""
+    from advisor.family.local import ForkPool, InProcess
+
+    out = tmp_path / "inprocess"
+    out.mkdir()
+
+    def stop_after_two(n):
+        if n == 2:
+            raise KeyboardInterrupt
+
+    with pytest.raises(KeyboardInterrupt):
+        run_study(family, out, InProcess(), CHUNK, reports=True, on_chunk=stop_after_two)
+    assert (
+        run_study(family, out, InProcess(), CHUNK, reports=True).computed
+        == -(-N_VARIANTS // CHUNK) - 2
+    )
+    join_chunks(family, out, CHUNK)
+    assert (out / "designs.csv").read_bytes() == (reference / "designs.csv").read_bytes()
+
+    out = tmp_path / "forked"
+    out.mkdir()
+    pool = ForkPool(2)
+    killed = []
+
+    def kill_one(n):
+        import multiprocessing
+
+        kids = multiprocessing.active_children()
+        if n == 2 and kids and not killed:
+            os.kill(kids[0].pid, signal.SIGKILL)  # its chunk is given to a new worker
+            killed.append(kids[0].pid)
+
+    res = run_study(family, out, pool, CHUNK, reports=True, on_chunk=kill_one)
+    assert killed and res.computed == res.chunks
+    join_chunks(family, out, CHUNK)
+    assert (out / "designs.csv").read_bytes() == (reference / "designs.csv").read_bytes()
+    assert sorted(p.name for p in (out / "reports").iterdir()) == sorted(
+        p.name for p in (reference / "reports").iterdir()
+    )
+    assert not list(out.glob("**/*.tmp"))
+
+
 # ------------------------------------------------------------------ axes and summary
 
 

@@ -11,13 +11,11 @@ input of the study, through symbolic links too).
 """
 
 import argparse
-import contextlib
 import os
 import re
-import signal
 import sys
 import time
-from collections.abc import Iterator
+from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
@@ -29,8 +27,9 @@ PROG = "advisor family"
 def build_parser() -> argparse.ArgumentParser:
     p = argparse.ArgumentParser(
         prog=PROG,
-        description="Advise every variant of a product family (the product of its axes) on a "
-        "Dask cluster; write designs.csv, summary.toml and family.html.",
+        description="Advise every variant of a product family (the product of its axes) on "
+        "this machine's cores or a Dask cluster; write designs.csv, summary.toml and "
+        "family.html.",
         epilog="Exit codes: 0 study complete, 2 invalid family file or option, 130 "
         "interrupted (run the same command again to resume).",
     )
@@ -39,13 +38,13 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument(
         "--scheduler",
         metavar="tcp://HOST:PORT",
-        help="an existing dask.distributed scheduler (default: a local cluster on this machine)",
+        help="an existing dask.distributed scheduler (default: worker processes on this machine)",
     )
     p.add_argument(
         "--workers",
         type=int,
         metavar="N",
-        help="worker processes of the local cluster (default: the number of cores)",
+        help="worker processes on this machine (default: the number of cores)",
     )
     p.add_argument(
         "--chunk-size",
@@ -109,7 +108,7 @@ def check_options(args: argparse.Namespace) -> None:
             raise InputError(f"{flag} = {v}: must be at least 1")
     if args.scheduler is not None and args.workers is not None:
         raise InputError(
-            "--workers sizes the local cluster; with --scheduler the cluster has its own"
+            "--workers sets the processes on this machine; with --scheduler the cluster has its own"
         )
     if args.scheduler is not None:
         check_scheduler(args.scheduler)
@@ -260,32 +259,6 @@ def remove_if_empty(created: list[Path]) -> None:
             return
 
 
-@contextlib.contextmanager
-def sigint_blocked_in_new_threads() -> Iterator[None]:
-    """Block SIGINT in this thread while Dask starts its threads; they inherit the mask,
-    and so do the worker processes those threads start, now and after a restart.
-
-    ctrl+c signals the whole process group: a worker that receives it dies with a
-    KeyboardInterrupt traceback of its own (four workers, 66 lines). Blocked, it never
-    sees it; the client (this process, whose main thread does not block it) stops the
-    study and closes the cluster, which ends the workers. A SIGINT that arrives while the
-    mask is set stays pending and is delivered when it is lifted.
-    """
-    if not hasattr(signal, "pthread_sigmask"):  # Windows: no process groups to signal
-        yield
-        return
-    from multiprocessing import resource_tracker
-
-    # multiprocessing starts its resource tracker from the first thread that needs it and
-    # then UNBLOCKS SIGINT in that thread (Dask's event loop): start it here, before
-    resource_tracker.ensure_running()
-    old = signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT})
-    try:
-        yield
-    finally:
-        signal.pthread_sigmask(signal.SIG_SETMASK, old)
-
-
 #: Loggers that write to the terminal on their own: Dask's (e.g. "Couldn't gather keys"
 #: after a worker died, which the study recovers from), tornado's, asyncio's.
 NOISY_LOGGERS = ("distributed", "tornado", "bokeh", "asyncio")
@@ -306,49 +279,35 @@ def quiet_dask_logging() -> None:
     # and propagate to the handler silenced above; the handler decides
 
 
-def make_client(scheduler: str | None, workers: int | None) -> tuple[Any, Any]:
-    """A Dask client on the given scheduler, or on a new local cluster (returned too)."""
+def make_client(scheduler: str) -> Any:
+    """A Dask client on the given scheduler (refused at once if nothing answers there)."""
     import warnings
 
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")  # import-time deprecation notes of Dask's own
         from dask.distributed import Client
     quiet_dask_logging()
-    if scheduler:
-        probe_scheduler(scheduler)
-        return Client(scheduler, timeout=f"{CONNECT_TIMEOUT_S:g}s"), None
-    cluster = client = None
+    probe_scheduler(scheduler)
+    return Client(scheduler, timeout=f"{CONNECT_TIMEOUT_S:g}s")
+
+
+def make_runner(args: argparse.Namespace) -> tuple[Any, Callable[[], None]]:
+    """What runs the chunks, and what closes it: the cluster of ``--scheduler`` (Dask), or
+    this machine (this process for one worker, else worker processes forked from it)."""
+    if args.scheduler is None:
+        from advisor.family.local import ForkPool, InProcess
+        from advisor.many import usable_cpus
+
+        workers = args.workers or usable_cpus()
+        return (InProcess() if workers == 1 else ForkPool(workers)), lambda: None
+    from advisor.family.study import DaskRunner
+
     try:
-        with sigint_blocked_in_new_threads():
-            cluster = local_cluster(workers)
-            client = Client(cluster)
-    except BaseException:  # a ctrl+c held back while the cluster started lands here
-        if client is not None:
-            client.close()
-        if cluster is not None:
-            cluster.close()
-        raise
-    return client, cluster
-
-
-def local_cluster(workers: int | None) -> Any:
-    """A cluster of worker processes on this machine, one thread each, saying nothing."""
-    import logging
-
-    from dask.distributed import LocalCluster
-
-    from advisor.many import usable_cpus
-
-    return LocalCluster(
-        n_workers=workers or usable_cpus(),
-        threads_per_worker=1,
-        processes=True,
-        dashboard_address=None,  # no dashboard
-        # nor the scheduler's HTTP routes on the default port 8787 (another cluster's:
-        # "Port 8787 is already in use"): a free port on this machine only
-        scheduler_kwargs={"dashboard_address": "127.0.0.1:0"},
-        silence_logs=logging.CRITICAL,
-    )
+        client = make_client(args.scheduler)
+    except (OSError, TimeoutError) as exc:
+        why = (str(exc).splitlines() or [type(exc).__name__])[0]
+        raise InputError(f"--scheduler {args.scheduler}: cannot connect ({why})") from None
+    return DaskRunner(client), client.close
 
 
 def main(argv: list[str]) -> int:
@@ -404,31 +363,28 @@ def _run(args: argparse.Namespace) -> int:
         raise
 
 
-def run(family: Any, out: Path, args: argparse.Namespace) -> int:
-    from advisor.family.study import (
-        Progress,
-        auto_chunk_size,
-        chunk_count,
-        join_chunks,
-        previous_chunk_size,
-        run_study,
-    )
-    from advisor.family.summary import build_summary, iter_rows, write_summary
+def chunk_size(args: argparse.Namespace, family: Any, out: Path, workers: int) -> int:
+    """Variants per chunk: as given, as the family file says, as the study being resumed
+    had it, or from the cost model."""
+    from advisor.family.study import auto_chunk_size, previous_chunk_size
 
-    try:
-        client, cluster = make_client(args.scheduler, args.workers)
-    except (OSError, TimeoutError) as exc:
-        why = (str(exc).splitlines() or [type(exc).__name__])[0]
-        raise InputError(f"--scheduler {args.scheduler}: cannot connect ({why})") from None
+    return (
+        args.chunk_size
+        or family.chunk_size
+        or previous_chunk_size(out)
+        or auto_chunk_size(family.size, workers)
+    )
+
+
+def compute(family: Any, out: Path, args: argparse.Namespace) -> tuple[Any, int, int]:
+    """Run the study's chunks; (what was done, the chunk size, the workers)."""
+    from advisor.family.study import Progress, chunk_count, run_study
+
+    runner, close = make_runner(args)
     progress = None
     try:
-        workers = len(client.scheduler_info()["workers"]) or 1
-        size = (
-            args.chunk_size
-            or family.chunk_size
-            or previous_chunk_size(out)
-            or auto_chunk_size(family.size, workers)
-        )
+        workers = runner.workers
+        size = chunk_size(args, family, out, workers)
         chunks = chunk_count(family.size, size)
         if not args.quiet:
             print(
@@ -436,12 +392,11 @@ def run(family: Any, out: Path, args: argparse.Namespace) -> int:
                 f"{workers} workers → {out}",
                 file=sys.stderr,
             )
-        progress = None if args.quiet else Progress(chunks, family.size)
-        t0 = time.perf_counter()
+            progress = Progress(chunks, family.size)
         res = run_study(
             family,
             out,
-            client,
+            runner,
             size,
             reports=args.reports,
             catalog_dir=args.catalog_dir,
@@ -452,23 +407,37 @@ def run(family: Any, out: Path, args: argparse.Namespace) -> int:
             progress.end_line()  # the message that follows starts on a line of its own
         raise
     finally:
-        client.close()
-        if cluster is not None:
-            cluster.close()
-    designs = join_chunks(family, out, size)
+        close()
+    return res, size, workers
+
+
+def write_results(family: Any, out: Path, args: argparse.Namespace, extra: dict) -> dict:
+    """designs.csv (the chunks joined), then summary.toml and family.html from one pass
+    over its rows; the summary document."""
+    from advisor.family.study import join_chunks
+    from advisor.family.summary import build_summary, iter_rows, write_summary
+
+    designs = join_chunks(family, out, extra["chunk_size"])
     keep = None
     if not args.no_html:
         from advisor.family.html import plot_points
 
         keep = [plot_points(m) for m in family.members]
-    extra = {"chunk_size": size, "chunks": res.chunks, "workers": workers}
     doc, pictures = build_summary(family, iter_rows(designs), extra, keep)
     write_summary(out / "summary.toml", doc)
     if not args.no_html:
         from advisor.family.html import write_html
 
         write_html(out / "family.html", family, doc, pictures)
-    c = doc["counts"]
+    return doc
+
+
+def run(family: Any, out: Path, args: argparse.Namespace) -> int:
+    t0 = time.perf_counter()
+    res, size, workers = compute(family, out, args)
+    extra = {"chunk_size": size, "chunks": res.chunks, "workers": workers}
+    c = write_results(family, out, args, extra)["counts"]
+    designs = out / "designs.csv"
     print(
         f"{family.size} variants: {c['design']} designs, {c['infeasible']} infeasible, "
         f"{c['invalid']} invalid"

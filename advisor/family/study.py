@@ -1,11 +1,11 @@
-"""Running a family study on a ``dask.distributed`` cluster, with resume and progress.
+"""Running a family study, with resume and progress: on this machine
+(:mod:`advisor.family.local`) or on a ``dask.distributed`` cluster (:class:`DaskRunner`).
 
-The client splits the variants into chunks, submits one task per chunk not yet written,
-and writes each chunk's rows to ``DIR/chunks/cNNNNNN.csv`` (atomically) as it arrives. A
-rerun of the same study skips the chunks already written, so an interrupted or killed
-study resumes where it stopped. A worker that dies mid-task costs only a retry of its
-chunks: the scheduler reassigns them. When every chunk is in, the chunks are joined into
-``DIR/designs.csv``.
+The command splits the variants into chunks, hands one task per chunk not yet written to
+the runner, and writes each chunk's rows to ``DIR/chunks/cNNNNNN.csv`` (atomically) as it
+arrives. A rerun of the same study skips the chunks already written, so an interrupted or
+killed study resumes where it stopped. A worker that dies mid-task costs only a retry of
+its chunk. When every chunk is in, the chunks are joined into ``DIR/designs.csv``.
 """
 
 import itertools
@@ -16,15 +16,17 @@ import sys
 import tempfile
 import time
 import uuid
-from collections.abc import Callable
+from collections.abc import Callable, Generator, Iterable
 from pathlib import Path
-from typing import Any, NamedTuple
+from typing import Any, NamedTuple, Protocol
 
 from advisor.family.adapter import InputError, write_atomic
 from advisor.family.chunks import ChunkResult, columns, rows_csv, run_chunk
 from advisor.family.spec import Family
 
 MANIFEST = "study.json"
+#: (chunk number, first variant, variant after the last)
+Job = tuple[int, int, int]
 
 
 class StudyResult(NamedTuple):
@@ -227,6 +229,89 @@ def chunks_written(out_dir: Path, chunks: int) -> set[int]:
     return done
 
 
+class DaskRunner:
+    """The chunks as tasks on a ``dask.distributed`` cluster, at most ``window`` at a time
+    (default: four per worker, at least 16): the next is submitted as one arrives, so
+    neither the client nor the scheduler ever holds the whole study. A task whose worker
+    dies is retried on another (twice)."""
+
+    def __init__(self, client: Any, window: int | None = None) -> None:
+        self.client = client
+        self.workers = len(client.scheduler_info()["workers"]) or 1
+        self.window = window or max(16, 4 * self.workers)
+
+    def results(
+        self, family: Family, jobs: Iterable[Job], catalog_dir: str | None, reports: bool
+    ) -> Generator[ChunkResult, None, None]:
+        from dask.distributed import as_completed
+
+        # a key of its own per run: the tasks of an interrupted run may still be cancelling
+        run_id = f"{family.fingerprint()}-{uuid.uuid4().hex[:8]}"
+        jobs = iter(jobs)
+        in_flight: set[Any] = set()
+
+        def submit(job: Job) -> Any:
+            fut = self.client.submit(
+                run_chunk,
+                family,
+                *job,
+                catalog_dir,
+                reports,
+                key=f"advisor-family-{run_id}-{job[0]}",
+                retries=2,
+            )
+            in_flight.add(fut)
+            return fut
+
+        try:
+            queue = as_completed([submit(j) for j in itertools.islice(jobs, self.window)])
+            for fut in queue:
+                res: ChunkResult = fut.result()
+                in_flight.discard(fut)
+                fut.release()
+                nxt = next(jobs, None)
+                if nxt is not None:
+                    queue.add(submit(nxt))
+                yield res
+        except BaseException:  # an error, ctrl+c, or the study stopped reading
+            self.client.cancel(list(in_flight))
+            raise
+
+
+class Runner(Protocol):
+    """What runs a study's chunks: :class:`DaskRunner`, or one of :mod:`advisor.family.local`."""
+
+    workers: int
+
+    def results(
+        self, family: Family, jobs: Iterable[Job], catalog_dir: str | None, reports: bool
+    ) -> Generator[ChunkResult, None, None]: ...
+
+
+def as_runner(runner: Any, window: int | None = None) -> Runner:
+    """A runner as given, or a Dask client wrapped in a :class:`DaskRunner`."""
+    return runner if hasattr(runner, "results") else DaskRunner(runner, window)
+
+
+def start_study(
+    family: Family, out_dir: Path, chunk_size: int, reports: bool
+) -> tuple[set[int], int]:
+    """Check or write the manifest; the chunks already written and their variants."""
+    check_manifest(out_dir, make_manifest(family, chunk_size, reports))
+    if reports:
+        (out_dir / "reports").mkdir(exist_ok=True)
+    done = chunks_written(out_dir, chunk_count(family.size, chunk_size))
+    variants = sum(b - a for a, b in (chunk_range(n, family.size, chunk_size) for n in done))
+    return done, variants
+
+
+def write_chunk(out_dir: Path, res: ChunkResult) -> None:
+    """A chunk's reports, then its rows: a chunk file marks its reports written."""
+    for name, text in res.reports:
+        write_replace(out_dir / "reports" / name, text)
+    write_atomic(chunk_path(out_dir, res.number), rows_csv(res.rows))
+
+
 def run_study(
     family: Family,
     out_dir: Path,
@@ -241,61 +326,25 @@ def run_study(
 ) -> StudyResult:
     """Compute every chunk not yet written in ``out_dir/chunks``; return what was done.
 
-    At most ``window`` tasks are on the cluster at a time (default: four per worker, at
-    least 16); the next is submitted as one arrives, so neither the client nor the
-    scheduler ever holds the whole study. ``on_chunk(n_written_this_run)`` is called after
-    each chunk is written (tests use it to interrupt a study or kill a worker in
-    mid-study).
+    ``client`` is a runner (:mod:`advisor.family.local`) or a Dask client (``window``: the
+    tasks it keeps on the cluster, see :class:`DaskRunner`). ``on_chunk(n_written_this_run)``
+    is called after each chunk is written (tests use it to interrupt a study or kill a
+    worker in mid-study).
     """
-    from dask.distributed import as_completed
-
     n_chunks = chunk_count(family.size, chunk_size)
-    manifest = make_manifest(family, chunk_size, reports)
-    check_manifest(out_dir, manifest)
-    if reports:
-        (out_dir / "reports").mkdir(exist_ok=True)
-    done = chunks_written(out_dir, n_chunks)
+    done, done_variants = start_study(family, out_dir, chunk_size, reports)
     done_chunks = len(done)
-    done_variants = sum(b - a for a, b in (chunk_range(n, family.size, chunk_size) for n in done))
     if progress is not None:
         progress.update(done_chunks, done_variants, final=done_chunks == n_chunks)
-    if window is None:
-        window = max(16, 4 * len(client.scheduler_info()["workers"]))
     t0 = time.perf_counter()
     advise_s = 0.0
     cat = str(catalog_dir) if catalog_dir is not None else None
-    # a key of its own per run: the tasks of an interrupted run may still be cancelling
-    run_id = f"{manifest['fingerprint']}-{uuid.uuid4().hex[:8]}"
-    pending = (n for n in range(n_chunks) if n not in done)
-    in_flight: set[Any] = set()
-
-    def submit(n: int) -> Any:
-        fut = client.submit(
-            run_chunk,
-            family,
-            n,
-            *chunk_range(n, family.size, chunk_size),
-            cat,
-            reports,
-            key=f"advisor-family-{run_id}-{n}",
-            retries=2,
-        )
-        in_flight.add(fut)
-        return fut
-
+    jobs = ((n, *chunk_range(n, family.size, chunk_size)) for n in range(n_chunks) if n not in done)
+    results = as_runner(client, window).results(family, jobs, cat, reports)
     computed = 0
     try:
-        queue = as_completed([submit(n) for n in itertools.islice(pending, window)])
-        for fut in queue:
-            res: ChunkResult = fut.result()
-            in_flight.discard(fut)
-            fut.release()
-            nxt = next(pending, None)
-            if nxt is not None:
-                queue.add(submit(nxt))
-            for name, text in res.reports:
-                write_replace(out_dir / "reports" / name, text)
-            write_atomic(chunk_path(out_dir, res.number), rows_csv(res.rows))
+        for res in results:
+            write_chunk(out_dir, res)
             computed += 1
             advise_s += res.seconds
             done_chunks += 1
@@ -304,9 +353,8 @@ def run_study(
                 progress.update(done_chunks, done_variants, final=done_chunks == n_chunks)
             if on_chunk is not None:
                 on_chunk(computed)
-    except BaseException:
-        client.cancel(list(in_flight))
-        raise
+    finally:
+        results.close()  # the runner's tasks cancelled, its workers ended
     return StudyResult(family.size, n_chunks, computed, time.perf_counter() - t0, advise_s)
 
 
