@@ -16,6 +16,7 @@ register(
         covers="advisor.applications.linear.coverage:COVERS",
         plots="advisor.applications.linear.plots:DATASHEET_PLOTS",
         family="advisor.applications.linear.family",
+        uncertainty="advisor.applications.linear.uncertainty",
         steps=("Load and stroke", "Screw and holding", "Motor and friction", "Duty cycle"),
     )
 )
@@ -30,6 +31,7 @@ register(
         covers="advisor.applications.rotary.coverage:COVERS",
         plots="advisor.applications.rotary.plots:DATASHEET_PLOTS",
         family="advisor.applications.rotary.family",
+        duty_uses={"cycle_time_s": ("S2",)},  # its S2 runs as S1 over cycle_time_s
         steps=("Torque and speed", "Envelope and holding", "Motor and reducer", "Duty cycle"),
     )
 )

@@ -42,8 +42,9 @@ def contradictions(data: dict[str, Any]) -> list[str]:
     return []
 
 
-#: The [duty] keys that only some forms of a cycle use (linear and rotary), and which use
-#: them: a duty type (IEC 60034-1), or segments (None).
+#: The [duty] keys that only some forms of a cycle use (the drives that give segments or a duty
+#: type), and which use them: a duty type (IEC 60034-1), or segments (None). An application
+#: adds to it through its registry entry (``duty_uses``).
 DUTY_KEYS_USED: dict[str, set[str | None]] = {
     "cycles_per_hour": {None},
     "cyclic_duration_factor": {"S3", "S4", "S5", "S6"},
@@ -52,6 +53,17 @@ DUTY_KEYS_USED: dict[str, set[str | None]] = {
     "cycle_time_s": {"S1", "S3", "S6", "S9", "S10"},
     "loads": {"S9", "S10"},
 }
+
+
+def duty_keys_used(kind: str) -> dict[str, set[str | None]]:
+    """:data:`DUTY_KEYS_USED` with the duty types an application also reads a key for (its
+    registry entry's ``duty_uses``: a drive whose S2 runs as S1 over ``cycle_time_s``)."""
+    from advisor.core.registry import application
+
+    uses = dict(DUTY_KEYS_USED)
+    for key, forms in (application(kind).duty_uses or {}).items():
+        uses[key] = uses.get(key, set()) | set(forms)
+    return uses
 
 
 def ignored(req: Any) -> list[str]:
@@ -69,9 +81,7 @@ def ignored(req: Any) -> list[str]:
     duty = getattr(req, "duty", None)
     if duty is not None and hasattr(duty, "duty_type"):
         form = duty.duty_type
-        uses = dict(DUTY_KEYS_USED)
-        if req.application.kind == "rotary":  # its S2 runs as S1 over cycle_time_s
-            uses["cycle_time_s"] = uses["cycle_time_s"] | {"S2"}
+        uses = duty_keys_used(req.application.kind)
         unused = [k for k, used in uses.items() if k in duty.model_fields_set and form not in used]
         if unused:
             what = f"duty_type = {form!r}" if form else "a cycle of segments"

@@ -37,6 +37,12 @@ class Application(NamedTuple):
     # ({column: what it means here}): the application's columns of a family study's rows
     # (:mod:`advisor.family.outputs`)
     family: Any = None
+    # "module" with margin_model, candidates and restricted: the design's probability of
+    # passing under an [uncertainty] table (:mod:`advisor.uncertainty`); None refuses it
+    uncertainty: Any = None
+    # {[duty] key: the IEC 60034-1 duty types this application also reads it for, beyond
+    # the shared table :data:`advisor.core.ignored.DUTY_KEYS_USED`}
+    duty_uses: Any = None
 
 
 _APPLICATIONS: dict[str, Application] = {}

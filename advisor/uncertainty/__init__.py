@@ -1,24 +1,22 @@
-"""The probability that a design passes, and what drives it (issue 30, part 2).
+"""The probability that a design passes, and what drives it.
 
 With an ``[uncertainty]`` table the chosen design is held fixed and every check is evaluated
 over Latin hypercube samples of the inputs known only as a distribution (vectorised with
-numpy: :mod:`advisor.applications.linear.uncertainty` gives the margins as functions of the
-inputs). The
-report's ``[uncertainty]`` section gives P(pass) of each check and of the design with a 95 %
-Wilson interval and the inputs that drive each margin (Spearman's ρ); with ``target`` the
-advisor takes, among the candidates it already considers and in its own order, the first
-(the lightest) whose P(pass) reaches the target, and says what the nominal rule chose.
+numpy: the application's margin model, its registry entry's ``uncertainty`` module, gives
+the margins as functions of the inputs). The report's ``[uncertainty]`` section gives
+P(pass) of each check and of the design with a 95 % Wilson interval and the inputs that
+drive each margin (Spearman's ρ); with ``target`` the advisor takes, among the candidates it
+already considers and in its own order, the first (the lightest) whose P(pass) reaches the
+target, and says what the nominal rule chose.
 
-Only the linear actuator has a margin model so far; another application with ``[uncertainty]``
-is refused with one line (exit 2). Nothing here is imported on a run without the table.
+An application without a margin model refuses ``[uncertainty]`` with one line (exit 2).
+Nothing here is imported on a run without the table.
 """
 
 from typing import Any
 
+from advisor.core import registry
 from advisor.core.errors import InfeasibleError, InputError
-
-#: The applications with a margin model, and where it is.
-MODELS = {"linear": "advisor.applications.linear.uncertainty"}
 
 #: How many candidates the robust choice evaluates at most, in the advisor's order.
 MAX_CANDIDATES = 40
@@ -83,30 +81,26 @@ def _label(report: Any) -> str:
     return f"{s.thread} ({s.starts} start{'s' if s.starts > 1 else ''}) with {m.model}"
 
 
-def evaluate(req: Any, report: Any, cat: Any) -> Any:
-    """The ``[uncertainty]`` section of ``report``'s design under ``req``'s distributions."""
-    import importlib
+def margin_model(kind: str) -> Any:
+    """The module of an application's margin model (``margin_model``, ``candidates``,
+    ``restricted``); an InputError where the application has none."""
+    model = registry.application(kind).uncertainty
+    if model is None:
+        available = [a.kind for a in registry.applications() if a.uncertainty is not None]
+        raise InputError(
+            f"[uncertainty]: not available for application.kind = {kind!r} yet "
+            f"(available: {', '.join(available)})"
+        )
+    return registry.load(model)
 
-    from advisor.uncertainty.analysis import check_results
-    from advisor.uncertainty.report import (
-        CheckProbabilityOut,
-        DriverOut,
-        InputOut,
-        UncertaintyOut,
-    )
-    from advisor.uncertainty.sampling import sample
 
-    u = req.uncertainty
-    margins_of, nominal = importlib.import_module(MODELS[req.application.kind]).margin_model(
-        req, report, cat
-    )
-    dists = distributions(req, cat, nominal)
-    x = sample(dists, u.samples, u.seed)
-    margins = margins_of(x)
-    results, every = check_results(margins, x)
+def check_probabilities(report: Any, results: list, varied: set[str]) -> list:
+    """P(pass) of each of the report's checks the model evaluates, with the drivers among the
+    varied inputs (in the report's order of checks)."""
+    from advisor.uncertainty.report import CheckProbabilityOut, DriverOut
+
     by_id = {r.id: r for r in results}
-    varied = {d.name for d in dists}
-    checks = []
+    out = []
     for c in report.checks:
         r = by_id.get(c.id)
         if r is None:
@@ -114,7 +108,7 @@ def evaluate(req: Any, report: Any, cat: Any) -> Any:
         drivers = [
             DriverOut.make(input=k, rank_correlation=rho) for k, rho in r.drivers if k in varied
         ]
-        checks.append(
+        out.append(
             CheckProbabilityOut.make(
                 id=c.id,
                 name=c.name,
@@ -128,6 +122,41 @@ def evaluate(req: Any, report: Any, cat: Any) -> Any:
                 drivers=drivers,
             )
         )
+    return out
+
+
+def inputs_out(dists: list) -> list:
+    """The report's rows of the sampled inputs' laws."""
+    from advisor.uncertainty.report import InputOut
+
+    return [
+        InputOut.make(
+            name=d.name,
+            distribution=d.kind,
+            nominal=d.nominal,
+            basis=d.basis,
+            low=d.low,
+            high=d.high,
+            sd=d.sd,
+            mean=d.mean,
+            mode=d.mode,
+        )
+        for d in dists
+    ]
+
+
+def evaluate(req: Any, report: Any, cat: Any) -> Any:
+    """The ``[uncertainty]`` section of ``report``'s design under ``req``'s distributions."""
+    from advisor.uncertainty.analysis import check_results
+    from advisor.uncertainty.report import UncertaintyOut
+    from advisor.uncertainty.sampling import sample
+
+    u = req.uncertainty
+    margins_of, nominal = margin_model(req.application.kind).margin_model(req, report, cat)
+    dists = distributions(req, cat, nominal)
+    x = sample(dists, u.samples, u.seed)
+    results, every = check_results(margins_of(x), x)
+    modelled = {r.id for r in results}
     return UncertaintyOut.make(
         method="Latin hypercube sampling (scipy.stats.qmc), inputs independent; P(pass) with "
         "Wilson's 95 % score interval; drivers by Spearman's rank correlation",
@@ -138,22 +167,9 @@ def evaluate(req: Any, report: Any, cat: Any) -> Any:
         p_pass=every.p,
         p_pass_low=every.low,
         p_pass_high=every.high,
-        inputs=[
-            InputOut.make(
-                name=d.name,
-                distribution=d.kind,
-                nominal=d.nominal,
-                basis=d.basis,
-                low=d.low,
-                high=d.high,
-                sd=d.sd,
-                mean=d.mean,
-                mode=d.mode,
-            )
-            for d in dists
-        ],
-        checks=checks,
-        not_modelled=[c.id for c in report.checks if c.id not in by_id],
+        inputs=inputs_out(dists),
+        checks=check_probabilities(report, results, {d.name for d in dists}),
+        not_modelled=[c.id for c in report.checks if c.id not in modelled],
     )
 
 
@@ -162,12 +178,7 @@ def apply(req: Any, cat: Any, report: Any, advise_with: Any) -> Any:
     candidate in the advisor's order whose P(pass) reaches it (``advise_with(req, cat)`` runs
     the rules on a requirement and catalog), with decision UQ-01 saying what the nominal rule
     chose and its P(pass)."""
-    kind = req.application.kind
-    if kind not in MODELS:
-        raise InputError(
-            f"[uncertainty]: not available for application.kind = {kind!r} yet "
-            f"(available: {', '.join(MODELS)})"
-        )
+    margin_model(req.application.kind)  # refused before any sampling where there is none
     section = evaluate(req, report, cat)
     target = req.uncertainty.target
     if target is None:
@@ -176,12 +187,10 @@ def apply(req: Any, cat: Any, report: Any, advise_with: Any) -> Any:
 
 
 def _robust(req: Any, cat: Any, nominal: Any, section: Any, advise_with: Any) -> Any:
-    import importlib
-
     from advisor.uncertainty.report import CandidateOut, RobustOut
 
     target = req.uncertainty.target
-    model = importlib.import_module(MODELS[req.application.kind])
+    model = margin_model(req.application.kind)
     tried: list[Any] = []
     chosen, chosen_section = None, None
     if section.p_pass_low >= target:
