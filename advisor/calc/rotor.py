@@ -9,6 +9,7 @@ Numbers of the seed's example (7000 CD pair, h = 10 mm) are reproduced in
 
 import functools
 import math
+from dataclasses import dataclass
 from typing import NamedTuple
 
 from advisor.calc.roots import brent
@@ -245,6 +246,61 @@ def resistance(rotor: Rotor, slewing: bool) -> Resistance:
     )
 
 
+@dataclass(frozen=True, slots=True)
+class GyroscopicLoads:
+    """One bearing's loads and eq. (4) friction without and with the gyroscopic reaction."""
+
+    moment_Nm: float  # M = H·Ω·sin α
+    reaction_axial_N: float  # eq. (3) at ωt = 0
+    reaction_radial_N: float
+    calm: Loads  # without the reaction
+    slewing: Loads  # with it
+    friction_calm: FrictionParts
+    friction_slewing: FrictionParts
+
+    @property
+    def preload_N(self) -> float:
+        """The preload sized with the reaction (the axial load less the reaction's part)."""
+        return self.slewing.axial_N - self.reaction_axial_N
+
+
+def gyroscopic_loads(rotor: Rotor, moment: float, speed: float) -> GyroscopicLoads:
+    """Loads and friction of one bearing at ``speed``, without and with the gyroscopic moment
+    ``moment`` (seed 002, eqs. (3), (4))."""
+    balls, h, share = rotor.balls, rotor.plane_to_cg_m, rotor.weight_share_N
+    f_ax, f_rad = reaction_forces(moment, balls.pitch_radius_m, h)
+    calm = bearing_loads(share, 0.0, balls, h, speed)
+    slewing = bearing_loads(share, moment, balls, h, speed)
+    return GyroscopicLoads(
+        moment,
+        f_ax,
+        f_rad,
+        calm,
+        slewing,
+        friction_moment(calm, balls, rotor.rolling_friction_m),
+        friction_moment(slewing, balls, rotor.rolling_friction_m),
+    )
+
+
+@dataclass(frozen=True, slots=True)
+class SteadyTorques:
+    """The torque that holds the rotor at speed: all bearings' friction plus the drag."""
+
+    aero_Nm: float
+    calm_Nm: float  # without the gyroscopic reaction
+    slewing_Nm: float  # with it
+
+
+def steady_torques(rotor: Rotor, loads: GyroscopicLoads, speed: float) -> SteadyTorques:
+    """The resisting torque of eq. (5) at ``speed``, without and with the reaction."""
+    aero = rotor.aero_k * speed**1.5
+    return SteadyTorques(
+        aero,
+        rotor.bearings * loads.friction_calm.total_Nm + aero,
+        rotor.bearings * loads.friction_slewing.total_Nm + aero,
+    )
+
+
 # ------------------------------------------------------------------ quadrature of eq. (5)
 #: Gauss–Legendre nodes per panel. The integrands below are analytic with their nearest
 #: singularity at least a panel's width away, so 16 nodes give about 1e-15 (the error falls
@@ -455,3 +511,23 @@ def balance_speed(rotor: Rotor, drive_torque: float, speed: float, slewing: bool
     if excess(0.0) <= 0.0:
         return 0.0
     return brent(excess, 0.0, speed, xtol=1e-9 * speed / max(1.0, speed))
+
+
+@dataclass(frozen=True, slots=True)
+class SlewLoss:
+    """Speed lost in a sustained slew with the drive saturated (eq. (5) with the reaction)."""
+
+    drive_torque_Nm: float
+    duration_s: float
+    time_s: list[float]  # the curve down to the balance speed
+    speed_rad_s: list[float]
+    balance_speed_rad_s: float
+    speed_after_rad_s: float
+
+
+def slew_loss(rotor: Rotor, drive_torque: float, speed: float, duration_s: float) -> SlewLoss:
+    """The speed curve under a sustained slew from ``speed`` at ``drive_torque``, and the speed
+    a slew of ``duration_s`` leaves (:func:`slew_response`, :func:`speed_after`)."""
+    times, speeds, balance = slew_response(rotor, drive_torque, speed)
+    after = speed_after(times, speeds, rotor, drive_torque, duration_s)
+    return SlewLoss(drive_torque, duration_s, times, speeds, balance, after)
