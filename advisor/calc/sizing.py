@@ -2,6 +2,7 @@
 evaluated on its load. Pure functions of numbers and catalog rows; no decisions here."""
 
 import math
+from dataclasses import dataclass
 from functools import lru_cache
 from typing import Any, NamedTuple, Protocol
 
@@ -186,8 +187,8 @@ def _check_sources(
 
 
 class _ThreadNumbers(NamedTuple):
-    """The numbers of one thread under one requirement, shared by :func:`evaluate_thread`
-    and :func:`screen_thread` so that both see the same floats."""
+    """The numbers of one thread under one requirement, from which :func:`evaluate_thread`
+    builds its evaluation and its checks."""
 
     psi: float
     phi: float
@@ -203,10 +204,28 @@ class _ThreadNumbers(NamedTuple):
     p_cr: float
     slenderness: float
     formula: str
-    #: (value, limit) of each check, in the order of ThreadEvaluation.checks
-    limits: tuple[tuple[float, float], ...]
     thrust_torque: float = 0.0
     max_speed: float = math.inf
+
+
+def _nut(
+    force_N: float, d2: float, p: float, h1: float, material: ScrewMaterial, service_factor: float
+) -> tuple[float, float]:
+    """The nut's whole engaged turns, enough for the flank pressure under the service factor
+    and for the minimum height ratio, and its flank pressure under the force (the same floats
+    for :func:`evaluate_thread` and :func:`screen_threads`)."""
+    z_req = screw.nut_turns_required(
+        service_factor * force_N, d2, h1, material.allowable_pressure_Pa
+    )
+    turns = float(nut_whole_turns(z_req, material.nut_height_ratio_min * d2 / p))
+    return turns, screw.nut_bearing_pressure(force_N, d2, h1, turns)
+
+
+def _max_speed_rpm(d3: float, span_m: float, end_fixity: str, material: ScrewMaterial) -> float:
+    """The fastest the screw may turn: the allowed share of its whirling speed  [rpm]."""
+    return screw.WHIRL_ALLOWED_SHARE * screw.critical_speed_rpm(
+        d3, span_m, end_fixity, material.elastic_modulus_Pa, STEEL_DENSITY_KG_M3
+    )
 
 
 def _thread_numbers(
@@ -216,7 +235,6 @@ def _thread_numbers(
     travel_time_s: float,
     span_m: float,
     end_fixity: str,
-    buckling_safety_factor: float,
     starts: int,
     friction_model: screw.FrictionModel,
     material: ScrewMaterial,
@@ -224,64 +242,139 @@ def _thread_numbers(
     service_factor: float = 1.0,
 ) -> _ThreadNumbers:
     """Torque, speed, nut, core stress and buckling of one thread (see
-    :func:`evaluate_thread`), with the value and the limit of each check."""
+    :func:`evaluate_thread`)."""
     p = thread.pitch_mm * MM
     d2 = thread.d2_mm * MM
     d3 = thread.d3_mm * MM
     f = material.friction_coefficient
     psi = screw.lead_angle(p, d2, starts)
     phi = screw.friction_angle(f, friction_model, psi)
-    phi_low = screw.friction_angle(material.friction_low, "standard", psi)
     # the torque of both friction models (the report shows the other beside the chosen),
     # with the lead and friction angles computed once: eq. (1), as screw.thread_torque
     phi_std = phi if friction_model == "standard" else screw.friction_angle(f, "standard", psi)
     torque = screw.torque_from_angles(force_N, d2, psi, phi)
     revs = screw.revolutions(stroke_m, p, starts)
     speed = screw.screw_speed_rpm(revs, travel_time_s)
-
-    # Nut: whole engaged turns, enough for the flank pressure under the service factor and
-    # for the minimum height ratio.
-    h1 = thread.H1_mm * MM
-    z_req = screw.nut_turns_required(
-        service_factor * force_N, d2, h1, material.allowable_pressure_Pa
-    )
-    turns = float(nut_whole_turns(z_req, material.nut_height_ratio_min * d2 / p))
-    height = turns * p
-    pressure = screw.nut_bearing_pressure(force_N, d2, h1, turns)
-
-    core = screw.core_equivalent_stress(force_N, torque, d3)
+    turns, pressure = _nut(force_N, d2, p, thread.H1_mm * MM, material, service_factor)
     p_cr, slenderness, formula = screw.critical_buckling_load(
         d3, span_m, end_fixity, material.elastic_modulus_Pa, material.yield_strength_Pa
     )
-    allowed_stress = material.yield_strength_Pa / material.yield_safety_factor
-    limits = (
-        (core / MPA, allowed_stress / MPA),
-        (force_N, p_cr / buckling_safety_factor),
-        (pressure / MPA, material.allowable_pressure_Pa / MPA),
-        (height / d2, material.nut_height_ratio_max),
-        (turns, float(material.nut_max_turns)),
-    )
     return _ThreadNumbers(
-        psi,
-        phi,
-        phi_low,
-        phi_std,
-        torque,
-        revs,
-        speed,
-        turns,
-        height,
-        pressure,
-        core,
-        p_cr,
-        slenderness,
-        formula,
-        limits,
-        thrust.torque_Nm(force_N, speed) if thrust is not None else 0.0,
-        screw.WHIRL_ALLOWED_SHARE
-        * screw.critical_speed_rpm(
-            d3, span_m, end_fixity, material.elastic_modulus_Pa, STEEL_DENSITY_KG_M3
+        psi=psi,
+        phi=phi,
+        phi_low=screw.friction_angle(material.friction_low, "standard", psi),
+        phi_std=phi_std,
+        torque=torque,
+        revs=revs,
+        speed=speed,
+        turns=turns,
+        height=turns * p,
+        pressure=pressure,
+        core=screw.core_equivalent_stress(force_N, torque, d3),
+        p_cr=p_cr,
+        slenderness=slenderness,
+        formula=formula,
+        thrust_torque=thrust.torque_Nm(force_N, speed) if thrust is not None else 0.0,
+        max_speed=_max_speed_rpm(d3, span_m, end_fixity, material),
+    )
+
+
+def _thread_checks(
+    n: _ThreadNumbers,
+    force_N: float,
+    d2: float,
+    material: ScrewMaterial,
+    end_fixity: str,
+    buckling_safety_factor: float,
+    service_factor: float,
+) -> tuple[Check, ...]:
+    """The five checks of a thread (see :func:`evaluate_thread`), the first three strength
+    checks under the service factor."""
+    m = material
+    src = _check_sources(m.yield_safety_factor, n.formula, end_fixity, buckling_safety_factor)
+    sf = service_factor if service_factor != 1.0 else None
+    allowed_stress = m.yield_strength_Pa / m.yield_safety_factor
+    return (
+        _upper(
+            "core_stress", src.core_name, n.core / MPA, allowed_stress / MPA, "MPa", src.core, sf
         ),
+        _upper(
+            "buckling",
+            src.buckling_name,
+            force_N,
+            n.p_cr / buckling_safety_factor,
+            "N",
+            src.buckling,
+            sf,
+        ),
+        _upper(
+            "nut_pressure",
+            "nut flank bearing pressure",
+            n.pressure / MPA,
+            m.allowable_pressure_Pa / MPA,
+            "MPa",
+            src.ivanov,
+            sf,
+        ),
+        _upper(
+            "nut_height",
+            "nut height ratio H/d2",
+            n.height / d2,
+            m.nut_height_ratio_max,
+            "",
+            src.ivanov,
+        ),
+        _upper("nut_turns", "engaged nut turns", n.turns, float(m.nut_max_turns), "", src.ivanov),
+    )
+
+
+def _evaluation(
+    thread: ThreadProfile,
+    starts: int,
+    force_N: float,
+    friction_model: screw.FrictionModel,
+    material: ScrewMaterial,
+    n: _ThreadNumbers,
+    checks: tuple[Check, ...],
+    thrust: ThrustFace | None,
+    service_factor: float,
+) -> ThreadEvaluation:
+    """The evaluation of a thread from its numbers and its checks."""
+    psi, phi, torque, d2 = n.psi, n.phi, n.torque, thread.d2_mm * MM
+    f = material.friction_coefficient
+    return ThreadEvaluation(
+        thread=thread,
+        starts=starts,
+        friction_model=friction_model,
+        lead_angle_rad=psi,
+        friction_angle_rad=phi,
+        torque_Nm=torque,
+        torque_standard_Nm=torque
+        if friction_model == "standard"
+        else screw.torque_from_angles(force_N, d2, psi, n.phi_std),
+        torque_paper_Nm=torque
+        if friction_model == "paper"
+        else screw.torque_from_angles(force_N, d2, psi, screw.friction_angle(f, "paper", psi)),
+        efficiency=screw.efficiency(psi, phi),
+        back_driving_efficiency=screw.back_driving_efficiency(psi, phi),
+        # holding is physics: judged with the standard reduced friction even when the torque
+        # follows the paper's f/cos(ψ/2), so it agrees with the low-friction judgement below
+        self_locking=screw.is_self_locking(psi, n.phi_std),
+        self_locking_at_low_friction=screw.is_self_locking(psi, n.phi_low),
+        revolutions=n.revs,
+        speed_rpm=n.speed,
+        nut_height_mm=n.height / MM,
+        nut_turns=n.turns,
+        nut_pressure_Pa=n.pressure,
+        critical_load_N=n.p_cr,
+        slenderness=n.slenderness,
+        buckling_formula=n.formula,
+        core_stress_Pa=n.core,
+        checks=checks,
+        thrust_torque_Nm=n.thrust_torque,
+        thrust=thrust,
+        service_factor=service_factor,
+        max_speed_rpm=n.max_speed,
     )
 
 
@@ -319,78 +412,18 @@ def evaluate_thread(
         travel_time_s,
         span_m,
         end_fixity,
-        buckling_safety_factor,
         starts,
         friction_model,
         material,
         thrust,
         service_factor,
     )
-    psi, phi, torque = n.psi, n.phi, n.torque
     d2 = thread.d2_mm * MM
-    f = material.friction_coefficient
-    src = _check_sources(
-        material.yield_safety_factor, n.formula, end_fixity, buckling_safety_factor
+    checks = _thread_checks(
+        n, force_N, d2, material, end_fixity, buckling_safety_factor, service_factor
     )
-    (
-        (core, core_max),
-        (force, force_max),
-        (pressure, pressure_max),
-        (ratio, ratio_max),
-        (
-            turns,
-            turns_max,
-        ),
-    ) = n.limits
-    sf = service_factor if service_factor != 1.0 else None
-    checks = (
-        _upper("core_stress", src.core_name, core, core_max, "MPa", src.core, sf),
-        _upper("buckling", src.buckling_name, force, force_max, "N", src.buckling, sf),
-        _upper(
-            "nut_pressure",
-            "nut flank bearing pressure",
-            pressure,
-            pressure_max,
-            "MPa",
-            src.ivanov,
-            sf,
-        ),
-        _upper("nut_height", "nut height ratio H/d2", ratio, ratio_max, "", src.ivanov),
-        _upper("nut_turns", "engaged nut turns", turns, turns_max, "", src.ivanov),
-    )
-    return ThreadEvaluation(
-        thread=thread,
-        starts=starts,
-        friction_model=friction_model,
-        lead_angle_rad=psi,
-        friction_angle_rad=phi,
-        torque_Nm=torque,
-        torque_standard_Nm=torque
-        if friction_model == "standard"
-        else screw.torque_from_angles(force_N, d2, psi, n.phi_std),
-        torque_paper_Nm=torque
-        if friction_model == "paper"
-        else screw.torque_from_angles(force_N, d2, psi, screw.friction_angle(f, "paper", psi)),
-        efficiency=screw.efficiency(psi, phi),
-        back_driving_efficiency=screw.back_driving_efficiency(psi, phi),
-        # holding is physics: judged with the standard reduced friction even when the torque
-        # follows the paper's f/cos(ψ/2), so it agrees with the low-friction judgement below
-        self_locking=screw.is_self_locking(psi, n.phi_std),
-        self_locking_at_low_friction=screw.is_self_locking(psi, n.phi_low),
-        revolutions=n.revs,
-        speed_rpm=n.speed,
-        nut_height_mm=n.height / MM,
-        nut_turns=n.turns,
-        nut_pressure_Pa=n.pressure,
-        critical_load_N=n.p_cr,
-        slenderness=n.slenderness,
-        buckling_formula=n.formula,
-        core_stress_Pa=n.core,
-        checks=checks,
-        thrust_torque_Nm=n.thrust_torque,
-        thrust=thrust,
-        service_factor=service_factor,
-        max_speed_rpm=n.max_speed,
+    return _evaluation(
+        thread, starts, force_N, friction_model, material, n, checks, thrust, service_factor
     )
 
 
@@ -448,6 +481,71 @@ class ThreadScreen(NamedTuple):
         return (self.torque_Nm + self.thrust_torque_Nm) / self.device_efficiency
 
 
+def _holds_the_load(
+    g: ThreadGeometry,
+    force_N: float,
+    span_m: float,
+    end_fixity: str,
+    buckling_safety_factor: float,
+    material: ScrewMaterial,
+    service_factor: float,
+) -> bool:
+    """Whether a thread passes the four checks that do not depend on its number of starts:
+    buckling, flank pressure, nut height and nut turns (the same margins as
+    :func:`evaluate_thread`)."""
+    m, sf = material, service_factor
+    p, d2 = g.pitch_m, g.d2_m
+    turns, pressure = _nut(force_N, d2, p, g.h1_m, m, service_factor)
+    p_cr = screw.critical_buckling_load(
+        g.d3_m, span_m, end_fixity, m.elastic_modulus_Pa, m.yield_strength_Pa
+    )[0]
+    return (
+        _margin(force_N, p_cr / buckling_safety_factor, sf) >= 1.0
+        and _margin(pressure / MPA, m.allowable_pressure_Pa / MPA, sf) >= 1.0
+        and _margin(turns * p / d2, m.nut_height_ratio_max) >= 1.0
+        and _margin(turns, float(m.nut_max_turns)) >= 1.0
+    )
+
+
+def _screen_lead(
+    g: ThreadGeometry,
+    starts: int,
+    force_N: float,
+    stroke_m: float,
+    travel_time_s: float,
+    friction_model: screw.FrictionModel,
+    material: ScrewMaterial,
+    thrust: ThrustFace | None,
+    service_factor: float,
+    max_speed_rpm: float,
+) -> ThreadScreen:
+    """The screen of a thread that holds the load, with one number of starts: its core
+    stress under the torque of that lead decides."""
+    m = material
+    psi = screw.lead_angle(g.pitch_m, g.d2_m, starts)
+    torque = screw.torque_from_angles(
+        force_N, g.d2_m, psi, screw.friction_angle(m.friction_coefficient, friction_model, psi)
+    )
+    core = screw.core_equivalent_stress(force_N, torque, g.d3_m)
+    stress_limit = m.yield_strength_Pa / m.yield_safety_factor / MPA
+    passed = _margin(core / MPA, stress_limit, service_factor) >= 1.0
+    revs = screw.revolutions(stroke_m, g.pitch_m, starts)
+    speed = screw.screw_speed_rpm(revs, travel_time_s)
+    low = screw.friction_angle(m.friction_low, "standard", psi)
+    return ThreadScreen(
+        g.thread,
+        g.name,
+        starts,
+        passed,
+        torque if passed else math.nan,
+        revs if passed else math.nan,
+        speed if passed else math.nan,
+        passed and screw.is_self_locking(psi, low),
+        thrust_torque_Nm=thrust.torque_Nm(force_N, speed) if passed and thrust is not None else 0.0,
+        max_speed_rpm=max_speed_rpm,
+    )
+
+
 def screen_threads(
     geometries: list[ThreadGeometry],
     starts_options: tuple[int, ...],
@@ -473,30 +571,11 @@ def screen_threads(
     thread, and a thread that fails one of them fails with every number of starts, so its
     torque is not computed. Only the core stress needs the torque of each lead.
     """
-    m = material
-    f = m.friction_coefficient
-    allowed_stress = m.yield_strength_Pa / m.yield_safety_factor
-    stress_limit = allowed_stress / MPA
-    pressure_limit = m.allowable_pressure_Pa / MPA
-    turns_limit = float(m.nut_max_turns)
-    sf = service_factor
     out = []
     for g in geometries:
-        p, d2, d3, h1 = g.pitch_m, g.d2_m, g.d3_m, g.h1_m
-        max_speed = screw.WHIRL_ALLOWED_SHARE * screw.critical_speed_rpm(
-            d3, span_m, end_fixity, m.elastic_modulus_Pa, STEEL_DENSITY_KG_M3
-        )
-        z_req = screw.nut_turns_required(service_factor * force_N, d2, h1, m.allowable_pressure_Pa)
-        turns = float(nut_whole_turns(z_req, m.nut_height_ratio_min * d2 / p))
-        pressure = screw.nut_bearing_pressure(force_N, d2, h1, turns)
-        p_cr = screw.critical_buckling_load(
-            d3, span_m, end_fixity, m.elastic_modulus_Pa, m.yield_strength_Pa
-        )[0]
-        if not (
-            _margin(force_N, p_cr / buckling_safety_factor, sf) >= 1.0
-            and _margin(pressure / MPA, pressure_limit, sf) >= 1.0
-            and _margin(turns * p / d2, m.nut_height_ratio_max) >= 1.0
-            and _margin(turns, turns_limit) >= 1.0
+        max_speed = _max_speed_rpm(g.d3_m, span_m, end_fixity, material)
+        if not _holds_the_load(
+            g, force_N, span_m, end_fixity, buckling_safety_factor, material, service_factor
         ):
             nan = math.nan
             out.extend(
@@ -504,35 +583,76 @@ def screen_threads(
                 for z in starts_options
             )
             continue
-        for z in starts_options:
-            psi = screw.lead_angle(p, d2, z)
-            torque = screw.torque_from_angles(
-                force_N, d2, psi, screw.friction_angle(f, friction_model, psi)
+        out.extend(
+            _screen_lead(
+                g,
+                z,
+                force_N,
+                stroke_m,
+                travel_time_s,
+                friction_model,
+                material,
+                thrust,
+                service_factor,
+                max_speed,
             )
-            core = screw.core_equivalent_stress(force_N, torque, d3)
-            passed = _margin(core / MPA, stress_limit, sf) >= 1.0
-            revs = screw.revolutions(stroke_m, p, z)
-            speed = screw.screw_speed_rpm(revs, travel_time_s)
-            out.append(
-                ThreadScreen(
-                    g.thread,
-                    g.name,
-                    z,
-                    passed,
-                    torque if passed else math.nan,
-                    revs if passed else math.nan,
-                    speed if passed else math.nan,
-                    passed
-                    and screw.is_self_locking(
-                        psi, screw.friction_angle(m.friction_low, "standard", psi)
-                    ),
-                    thrust_torque_Nm=thrust.torque_Nm(force_N, speed)
-                    if passed and thrust is not None
-                    else 0.0,
-                    max_speed_rpm=max_speed,
-                )
-            )
+            for z in starts_options
+        )
     return out
+
+
+@dataclass(frozen=True, slots=True)
+class ScrewDemand:
+    """What one requirement asks of every thread: the load, the stroke and its time, the
+    supports, the friction and the factors. The joint choice screens every thread under it
+    and evaluates the few it reports."""
+
+    force_N: float
+    stroke_m: float
+    travel_time_s: float
+    span_m: float
+    end_fixity: str
+    buckling_safety_factor: float
+    friction_model: screw.FrictionModel
+    material: ScrewMaterial
+    thrust: ThrustFace | None = None
+    service_factor: float = 1.0
+
+    def evaluate(self, thread: ThreadProfile, starts: int) -> ThreadEvaluation:
+        """:func:`evaluate_thread` of one thread with ``starts`` starts under this demand."""
+        return evaluate_thread(
+            thread,
+            force_N=self.force_N,
+            stroke_m=self.stroke_m,
+            travel_time_s=self.travel_time_s,
+            span_m=self.span_m,
+            end_fixity=self.end_fixity,
+            buckling_safety_factor=self.buckling_safety_factor,
+            starts=starts,
+            friction_model=self.friction_model,
+            material=self.material,
+            thrust=self.thrust,
+            service_factor=self.service_factor,
+        )
+
+    def screen(
+        self, geometries: list[ThreadGeometry], starts_options: tuple[int, ...]
+    ) -> list[ThreadScreen]:
+        """:func:`screen_threads` of every thread under this demand."""
+        return screen_threads(
+            geometries,
+            starts_options,
+            force_N=self.force_N,
+            stroke_m=self.stroke_m,
+            travel_time_s=self.travel_time_s,
+            span_m=self.span_m,
+            end_fixity=self.end_fixity,
+            buckling_safety_factor=self.buckling_safety_factor,
+            friction_model=self.friction_model,
+            material=self.material,
+            thrust=self.thrust,
+            service_factor=self.service_factor,
+        )
 
 
 class MotorRow(Protocol):

@@ -5,7 +5,7 @@ Orchestration only: the rules in ``rules/`` choose, the functions in ``advisor/c
 
 import math
 from bisect import bisect_left
-from collections.abc import Callable
+from collections.abc import Callable, Iterable
 from typing import NamedTuple
 
 from advisor.applications.linear.report import (
@@ -22,7 +22,7 @@ from advisor.applications.linear.report import (
 from advisor.calc import one_way as one_way_calc
 from advisor.calc import screw as screw_calc
 from advisor.calc.induction import synchronous_speed_rpm
-from advisor.calc.one_way import NO_DEVICE
+from advisor.calc.one_way import NO_DEVICE, Passage
 from advisor.calc.screw import (
     END_FIXITY_FACTOR,
     NUT_ALLOWED_RISE_K,
@@ -37,6 +37,7 @@ from advisor.calc.sizing import (
     Check,
     MotorEvaluation,
     MotorFit,
+    ScrewDemand,
     ScrewMaterial,
     ThreadEvaluation,
     ThreadGeometry,
@@ -44,15 +45,14 @@ from advisor.calc.sizing import (
     ThrustFace,
     drive_working_speed,
     evaluate_motor,
-    evaluate_thread,
     fit_motor,
-    screen_threads,
     thread_geometry,
 )
 from advisor.core.cite import cite, text
 from advisor.core.errors import InfeasibleError, InputError
 from advisor.core.reading import Requirements
 from advisor.core.rulebook import Trace
+from advisor.duty.report import DutyOut
 from catalogs import Catalogs
 from catalogs.rows import InductionMotor
 from catalogs.threads import ThreadProfile
@@ -381,214 +381,258 @@ def _one_way(req, trace: Trace, ev, thread: str, friction_low: float, drive_torq
     return device.replace(output_side=None), warnings
 
 
-def advise_linear(
+def screw_demand(
     req: Requirements, cat: Catalogs, trace: Trace
-) -> tuple[LinearDesignOut, list[Check], list[str]]:
-    lin = req.linear
-    assert lin is not None  # guaranteed by Requirements validation
-    s = req.screw
+) -> tuple[ScrewDemand, tuple[float, float]]:
+    """What the requirement asks of every thread (rules SCR-01 to SCR-03 decide the
+    transmission, the friction coefficient and its model) and the pair's friction range."""
+    lin, s = req.linear, req.screw
     trace.apply(screw_rules.transmission_type, lin.force_N)
     material, f_range = _material(req, cat, trace)
     model = trace.apply(screw_rules.friction_model, s.friction_model)
-    thrust = thrust_face(req, cat)
-    sf = service_factor(getattr(req, "design", None))
-
-    if s.thread is not None and cat.thread(s.thread) is None:
-        d = float(s.thread[2:].split("x")[0])
-        near = sorted({t.d_mm for t in cat.threads}, key=lambda x: abs(x - d))[:2]
-        nearest = ", ".join(t.name for t in cat.threads if t.d_mm in near)
-        raise InputError(
-            f"screw.thread = {s.thread!r}: not a thread of GOST 24738-81 "
-            f"(Tr8 … Tr100 with the pitches the standard gives); nearest: {nearest}"
-        )
-
-    lean = {
-        "force_N": lin.force_N,
-        "stroke_m": lin.stroke_m,
-        "travel_time_s": lin.travel_time_s,
-        "span_m": lin.support_span_m,
-        "end_fixity": lin.end_fixity,
-        "buckling_safety_factor": lin.buckling_safety_factor,
-        "friction_model": model,
-        "material": material,
-        "thrust": thrust,
-        "service_factor": sf.value,
-    }
-
-    def evaluate(t, starts: int) -> ThreadEvaluation:
-        return evaluate_thread(
-            t,
-            force_N=lin.force_N,
-            stroke_m=lin.stroke_m,
-            travel_time_s=lin.travel_time_s,
-            span_m=lin.support_span_m,
-            end_fixity=lin.end_fixity,
-            buckling_safety_factor=lin.buckling_safety_factor,
-            starts=starts,
-            friction_model=model,
-            material=material,
-            thrust=thrust,
-            service_factor=sf.value,
-        )
-
-    freq = req.motor.supply_frequency_Hz
-    starts_options = (s.starts,) if s.starts is not None else STARTS_FREE
-    parts = _catalog_parts(cat)
-    hold = req.application.hold_without_power
-    device_eta = _device_efficiency(req) if hold else 1.0
-    screens = _through_device(screen_threads(parts.threads, starts_options, **lean), device_eta)
-    fits = parts.fits
-    options = choice_options(screens, parts.lines, s.thread, hold)
-    if s.thread is not None:
-        imposed = [screen for screen in screens if screen.name == s.thread]
-        if not any(screen.passed for screen in imposed):
-            ev = min(
-                (evaluate(screen.thread, screen.starts) for screen in imposed),
-                key=lambda e: len(e.failed),
-            )
-            raise InfeasibleError(
-                f"no feasible design: the imposed thread {s.thread} fails its checks",
-                [_describe(c) for c in ev.failed],
-            )
-    chosen = trace.apply(
-        screw_rules.choose_drive, options, req.application.hold_without_power, s.thread, s.starts
+    demand = ScrewDemand(
+        force_N=lin.force_N,
+        stroke_m=lin.stroke_m,
+        travel_time_s=lin.travel_time_s,
+        span_m=lin.support_span_m,
+        end_fixity=lin.end_fixity,
+        buckling_safety_factor=lin.buckling_safety_factor,
+        friction_model=model,
+        material=material,
+        thrust=thrust_face(req, cat),
+        service_factor=service_factor(getattr(req, "design", None)).value,
     )
-    if chosen is None:
-        raise _no_drive(screens, s.thread, cat, lin.force_N, evaluate)
-    ev = evaluate(
-        next(
-            screen.thread
-            for screen in screens
-            if screen.name == chosen.thread and screen.starts == chosen.starts
-        ),
-        chosen.starts,
+    return demand, f_range
+
+
+def _thread_in_catalog(thread: str | None, cat: Catalogs) -> None:
+    """An imposed thread must be one of the standard's; the nearest two are named."""
+    if thread is None or cat.thread(thread) is not None:
+        return
+    d = float(thread[2:].split("x")[0])
+    near = sorted({t.d_mm for t in cat.threads}, key=lambda x: abs(x - d))[:2]
+    nearest = ", ".join(t.name for t in cat.threads if t.d_mm in near)
+    raise InputError(
+        f"screw.thread = {thread!r}: not a thread of GOST 24738-81 "
+        f"(Tr8 … Tr100 with the pitches the standard gives); nearest: {nearest}"
     )
-    trace.apply(
-        screw_rules.holding,
-        req.application.hold_without_power,
-        ev.self_locking,
-        ev.self_locking_at_low_friction,
-        chosen.label,
+
+
+def _imposed_thread_passes(
+    screens: list[ThreadScreen], imposed: str | None, demand: ScrewDemand
+) -> None:
+    """An imposed thread that fails its checks with every number of starts ends the advice
+    with the failed checks of the starts that fail fewest."""
+    if imposed is None:
+        return
+    mine = [screen for screen in screens if screen.name == imposed]
+    if any(screen.passed for screen in mine):
+        return
+    ev = min((demand.evaluate(x.thread, x.starts) for x in mine), key=lambda e: len(e.failed))
+    raise InfeasibleError(
+        f"no feasible design: the imposed thread {imposed} fails its checks",
+        [_describe(c) for c in ev.failed],
     )
-    pool = [o for o in options if s.thread is None or o.thread == s.thread]
-    pole_options = []
-    for pp in fits:
+
+
+def _pole_options(
+    options: list[screw_rules.DriveOption],
+    pole_pairs: Iterable[int],
+    imposed: str | None,
+    hold: bool,
+    frequency_Hz: float,
+) -> list[induction_rules.PoleOption]:
+    """The best drive option of each pole count (of the imposed thread, if one is), as rule
+    IM-01 compares them."""
+    pool = [o for o in options if imposed is None or o.thread == imposed]
+    out = []
+    for pp in pole_pairs:
         best = min(
             (o for o in pool if o.pole_pairs == pp),
             key=lambda o: screw_rules.drive_order(o, hold),
             default=None,
         )
-        pole_options.append(
+        out.append(
             induction_rules.PoleOption(
                 pp,
-                synchronous_speed_rpm(freq, pp),
+                synchronous_speed_rpm(frequency_Hz, pp),
                 best.label if best else None,
                 best.motor_model if best else None,
                 best.rated_power_kW if best else None,
                 best.travel_time_s if best else None,
             )
         )
-    trace.apply(induction_rules.choose_pole_pairs, chosen.pole_pairs, ev.speed_rpm, pole_options)
-    motor = next(m for m in cat.motors if m.model == chosen.motor_model)
+    return out
+
+
+class Drive(NamedTuple):
+    """The chosen screw as the motor sees it: the torque that moves the load (thread and
+    thrust face), the same at the motor (through the one-way device's η), the device in
+    the chain where one holds the load, and the motor's plan."""
+
+    screw: ThreadEvaluation
+    at_motor: ThreadEvaluation
+    passage: Passage | None
+    plan: MotorPlan
+
+
+def _drive(
+    req: Requirements, ev: ThreadEvaluation, motor_model: str, cat: Catalogs, trace: Trace
+) -> Drive:
+    """The torque the chosen motor gives, and its plan (rules IM-02, IM-03)."""
     passage = None  # the one-way device in the chain, where one holds the load
-    if hold and not ev.self_locking_at_low_friction:
+    if req.application.hold_without_power and not ev.self_locking_at_low_friction:
         from advisor.one_way.advice import device_passage
 
         passage = device_passage(req.one_way, ev.torque_Nm, ev.torque_Nm)
-    # the torque that moves the load: the thread's and the thrust face's; the
-    # motor drives the screw through the device: it gives that torque over the device's η
+    # the torque that moves the load: the thread's and the thrust face's; the motor drives
+    # the screw through the device: it gives that torque over the device's η
     drive = ev._replace(torque_Nm=ev.drive_torque_Nm, thrust_torque_Nm=0.0)
     at_motor = (
         drive if passage is None else drive._replace(torque_Nm=drive.torque_Nm / passage.efficiency)
     )
-    plan = plan_motor(at_motor, motor, cat, freq, trace)
-    chosen_name = chosen.label
+    motor = next(m for m in cat.motors if m.model == motor_model)
+    plan = plan_motor(at_motor, motor, cat, req.motor.supply_frequency_Hz, trace)
+    return Drive(drive, at_motor, passage, plan)
 
-    warnings: list[str] = []
-    duty = None
-    if req.duty is not None:  # the motor sized for the cycle
-        from advisor.applications.linear.duty import advise_duty
 
-        holder = "screw" if ev.self_locking_at_low_friction else None
-        holder = holder or ("one_way" if req.application.hold_without_power else None)
-        duty, motor, duty_checks, duty_warnings = advise_duty(
-            req, drive, plan.selected, cat, holder, trace, passage or NO_DEVICE
-        )
-        warnings += duty_warnings
-        if motor is not plan.selected:
-            power = motor.rated_power_kW
-            evaluations = {**plan.evaluations, power: _eval_motor(motor, at_motor)}
-            plan = plan._replace(selected=motor, evaluations=evaluations)
-    one_way = None
-    if req.application.hold_without_power:
-        # the torque that passes the device: the screw's (thread and thrust face), the motor's
-        # before the device's own loss
-        eta_d = passage.efficiency if passage is not None else 1.0
-        one_way, dev_warnings = _one_way(
-            req, trace, ev, chosen_name, material.friction_low, at_motor.torque_Nm * eta_d
-        )
-        warnings += dev_warnings
-    if s.friction_model == "paper":
-        warnings.append(
-            "friction_model = 'paper' uses seed 001's f/cos(ψ/2); the standard f/cos(α/2) "
-            f"gives {ev.torque_standard_Nm:.4g} N·m instead of {ev.torque_paper_Nm:.4g} N·m."
-        )
-    advisor_choice = trace.find("SCR-04").inputs.get("advisor_choice")
-    sel = plan.evaluations[plan.selected.rated_power_kW]
-    assert sel is not None
-    design = LinearDesignOut.make(
-        screw=_screw_out(ev, req, material, f_range, advisor_choice, sel, cat),
-        motor=_motor_out(plan, at_motor, cat, freq),
-        one_way=one_way,
-        duty=duty,
+def _size_for_duty(
+    req: Requirements, ev: ThreadEvaluation, chain: Drive, cat: Catalogs, trace: Trace
+) -> tuple[Drive, DutyOut | None, list[Check], list[str]]:
+    """The motor sized for the duty cycle, where one is given: the drive with the cycle's
+    motor, the duty table, its checks and its warnings."""
+    if req.duty is None:
+        return chain, None, [], []
+    from advisor.applications.linear.duty import advise_duty
+
+    holder = "screw" if ev.self_locking_at_low_friction else None
+    holder = holder or ("one_way" if req.application.hold_without_power else None)
+    plan = chain.plan
+    duty, motor, checks, warnings = advise_duty(
+        req, chain.screw, plan.selected, cat, holder, trace, chain.passage or NO_DEVICE
     )
+    if motor is not plan.selected:
+        power = motor.rated_power_kW
+        evaluations = {**plan.evaluations, power: _eval_motor(motor, chain.at_motor)}
+        chain = chain._replace(plan=plan._replace(selected=motor, evaluations=evaluations))
+    return chain, duty, checks, warnings
+
+
+def _motor_checks(
+    chain: Drive, sel: MotorEvaluation, thrust: ThrustFace | None, cat: Catalogs, time_s: float
+) -> list[Check]:
+    """The motor's rated and starting torque against the torque it gives, and the travel
+    time at its working speed."""
     screw_load = "the screw torque" if thrust is None else "the screw and thrust-face torque"
+    passage, torque = chain.passage, chain.at_motor.torque_Nm
     demand = (
         screw_load
         if passage is None or passage.efficiency == 1.0
         else f"{screw_load} through the {passage.type.replace('_', ' ')} "
         f"(η {passage.efficiency:.3g})"
     )
-    checks = [
-        *ev.checks,
+    rated = cite("gost-12139-84", "rated powers") + screw_rules.SEED_001
+    starting = cat.cite_rows(cat.motor_sources, chain.plan.selected.source)
+    return [
         Check(
             "motor_rated_torque",
             f"motor rated torque against {demand}",
-            at_motor.torque_Nm,
+            torque,
             sel.rated_torque_Nm,
             "N·m",
             sel.rated_torque_margin,
-            cite("gost-12139-84", "rated powers") + screw_rules.SEED_001,
+            rated,
         ),
         Check(
             "motor_starting_torque",
             f"motor starting torque against {demand}",
-            at_motor.torque_Nm,
+            torque,
             sel.starting_torque_Nm,
             "N·m",
             sel.starting_torque_margin,
-            cat.cite_rows(cat.motor_sources, plan.selected.source).with_note(
-                "catalog starting torque ratio"
-            ),
+            starting.with_note("catalog starting torque ratio"),
         ),
         Check(
             "travel_time",
             "travel time at the motor's working speed",
             sel.travel_time_s or math.inf,
-            lin.travel_time_s,
+            time_s,
             "s",
-            lin.travel_time_s / (sel.travel_time_s or math.inf),
+            time_s / (sel.travel_time_s or math.inf),
             screw_rules.SEED_001,
         ),
     ]
+
+
+def _choose_drive(
+    req: Requirements, cat: Catalogs, demand: ScrewDemand, trace: Trace
+) -> tuple[screw_rules.DriveOption, list[ThreadScreen], list[screw_rules.DriveOption]]:
+    """The joint choice of thread, starts and motor (rule SCR-04) from the screen of every
+    thread; the screens and the options it read."""
+    s, hold = req.screw, req.application.hold_without_power
+    parts = _catalog_parts(cat)
+    starts_options = (s.starts,) if s.starts is not None else STARTS_FREE
+    device_eta = _device_efficiency(req) if hold else 1.0
+    screens = _through_device(demand.screen(parts.threads, starts_options), device_eta)
+    options = choice_options(screens, parts.lines, s.thread, hold)
+    _imposed_thread_passes(screens, s.thread, demand)
+    chosen = trace.apply(screw_rules.choose_drive, options, hold, s.thread, s.starts)
+    if chosen is None:
+        raise _no_drive(screens, s.thread, cat, demand.force_N, demand.evaluate)
+    return chosen, screens, options
+
+
+def advise_linear(
+    req: Requirements, cat: Catalogs, trace: Trace
+) -> tuple[LinearDesignOut, list[Check], list[str]]:
+    """Seed 001's linear actuator: the thread and motor chosen together, the motor sized for
+    the duty, the one-way device where the load must hold; the design, checks, warnings."""
+    lin, s = req.linear, req.screw
+    assert lin is not None  # guaranteed by Requirements validation
+    hold = req.application.hold_without_power
+    demand, f_range = screw_demand(req, cat, trace)
+    _thread_in_catalog(s.thread, cat)
+    chosen, screens, options = _choose_drive(req, cat, demand, trace)
+    screen = next(x for x in screens if x.name == chosen.thread and x.starts == chosen.starts)
+    ev = demand.evaluate(screen.thread, chosen.starts)
+    trace.apply(
+        screw_rules.holding, hold, ev.self_locking, ev.self_locking_at_low_friction, chosen.label
+    )
+    freq = req.motor.supply_frequency_Hz
+    poles = _pole_options(options, _catalog_parts(cat).fits, s.thread, hold, freq)
+    trace.apply(induction_rules.choose_pole_pairs, chosen.pole_pairs, ev.speed_rpm, poles)
+    chain = _drive(req, ev, chosen.motor_model, cat, trace)
+    chain, duty, duty_checks, warnings = _size_for_duty(req, ev, chain, cat, trace)
+    one_way = None
+    if hold:
+        # the torque that passes the device: the screw's (thread and thrust face), the
+        # motor's before the device's own loss
+        eta_d = chain.passage.efficiency if chain.passage is not None else 1.0
+        low = demand.material.friction_low
+        torque = chain.at_motor.torque_Nm * eta_d
+        one_way, device_warnings = _one_way(req, trace, ev, chosen.label, low, torque)
+        warnings += device_warnings
+    if s.friction_model == "paper":
+        warnings.append(
+            "friction_model = 'paper' uses seed 001's f/cos(ψ/2); the standard f/cos(α/2) "
+            f"gives {ev.torque_standard_Nm:.4g} N·m instead of {ev.torque_paper_Nm:.4g} N·m."
+        )
+    advisor_choice = trace.find("SCR-04").inputs.get("advisor_choice")
+    plan = chain.plan
+    sel = plan.evaluations[plan.selected.rated_power_kW]
+    assert sel is not None
+    design = LinearDesignOut.make(
+        screw=_screw_out(ev, req, demand.material, f_range, advisor_choice, sel, cat),
+        motor=_motor_out(plan, chain.at_motor, cat, freq),
+        one_way=one_way,
+        duty=duty,
+    )
+    checks = [*ev.checks, *_motor_checks(chain, sel, demand.thrust, cat, lin.travel_time_s)]
     if sel.travel_time_s and sel.travel_time_s < FAST_SHARE * lin.travel_time_s:
-        warnings.append(_too_fast(at_motor, sel, plan, screens, cat, lin.travel_time_s))
-    screw_checks, screw_warnings = _screw_checks(req, ev, sel, thrust, sf, cat)
-    checks += screw_checks
-    warnings += screw_warnings
-    if duty is not None:
-        checks += duty_checks
-    return design, checks, warnings
+        warnings.append(_too_fast(chain.at_motor, sel, plan, screens, cat, lin.travel_time_s))
+    sf = service_factor(getattr(req, "design", None))
+    screw_checks, screw_warnings = _screw_checks(req, ev, sel, demand.thrust, sf, cat)
+    return design, checks + screw_checks + duty_checks, warnings + screw_warnings
 
 
 class NutHeat(NamedTuple):
@@ -661,73 +705,80 @@ def nut_heat(req: Requirements, ev: ThreadEvaluation, speed_rpm: float) -> NutHe
     )
 
 
-def _screw_checks(
-    req: Requirements,
-    ev: ThreadEvaluation,
-    sel: MotorEvaluation,
-    thrust: ThrustFace | None,
-    sf: ServiceFactor,
-    cat: Catalogs,
-) -> tuple[list[Check], list[str]]:
-    """The whirling speed and the thrust bearing's static load as checks; the thrust face
-    left out, and the nut's wear and heat, as warnings where they need a word."""
+def _whirling_speed_rpm(req: Requirements, thread: ThreadProfile, cat: Catalogs) -> float:
+    """The first whirling speed of the screw's core between its supports  [rpm]."""
     lin = req.linear
-    checks, warnings = [], []
-    n_work = sel.working_speed_rpm or ev.speed_rpm
     steel = cat.steel(req.screw.screw_steel)
-    n_cr = screw_calc.critical_speed_rpm(
-        ev.thread.d3_mm * 1e-3,
+    return screw_calc.critical_speed_rpm(
+        thread.d3_mm * 1e-3,
         lin.support_span_m,
         lin.end_fixity,
         steel.elastic_modulus_MPa * 1e6,
         STEEL_DENSITY_KG_M3,
     )
+
+
+def _whirl_check(req: Requirements, ev: ThreadEvaluation, n_work: float, cat: Catalogs) -> Check:
+    """The screw's working speed against the allowed share of its whirling speed."""
+    lin = req.linear
+    n_cr = _whirling_speed_rpm(req, ev.thread, cat)
     allowed = WHIRL_ALLOWED_SHARE * n_cr
-    checks.append(
-        Check(
-            "critical_speed",
-            f"screw speed against {WHIRL_ALLOWED_SHARE:g} of its whirling speed "
-            f"({lin.end_fixity}, βL = {WHIRL_EIGENVALUE[lin.end_fixity]:.5g}, core d3)",
-            n_work,
-            allowed,
-            "rpm",
-            allowed / n_work,
-            cite("blevins", "table 8-1").with_note(
-                f"n_cr = {n_cr:.5g} rpm; {WHIRL_ALLOWED_SHARE:g}·n_cr, screw makers' rule"
-            ),
-        )
+    return Check(
+        "critical_speed",
+        f"screw speed against {WHIRL_ALLOWED_SHARE:g} of its whirling speed "
+        f"({lin.end_fixity}, βL = {WHIRL_EIGENVALUE[lin.end_fixity]:.5g}, core d3)",
+        n_work,
+        allowed,
+        "rpm",
+        allowed / n_work,
+        cite("blevins", "table 8-1").with_note(
+            f"n_cr = {n_cr:.5g} rpm; {WHIRL_ALLOWED_SHARE:g}·n_cr, screw makers' rule"
+        ),
     )
+
+
+def _thrust_checks(
+    ev: ThreadEvaluation, thrust: ThrustFace | None, force_N: float, sf: ServiceFactor
+) -> tuple[list[Check], list[str]]:
+    """The thrust bearing's static load against C0 as a check; the thrust face left out, or
+    a bearing wider than the core, as warnings."""
     if thrust is None:
-        warnings.append(
+        return [], [
             "the motor margin excludes thrust friction: no [screw.thrust] face is given, so "
             "the torque is the thread's alone; a collar adds F·f_c·d_c/2 (Shigley, eq. (8-6))"
-        )
-    elif thrust.kind == "bearing":
-        from advisor.calc.bearing_life import static_safety
+        ]
+    if thrust.kind != "bearing":
+        return [], []
+    from advisor.calc.bearing_life import static_safety
 
-        b = thrust.bearing
-        c0 = b.C0_kN * 1e3
-        p0 = c0 / static_safety(b, 0.0, lin.force_N)
-        factor = sf.value if sf.value != 1.0 else None
-        checks.append(
-            Check(
-                "thrust_bearing_static",
-                f"thrust bearing {b.designation}: static equivalent load against C0",
-                p0,
-                c0,
-                "N",
-                c0 / ((factor or 1.0) * p0),
-                cite("iso-76").with_note("P0 = max(F_r, X0·F_r + Y0·F_a)"),
-                factor,
-            )
+    b = thrust.bearing
+    c0 = b.C0_kN * 1e3
+    p0 = c0 / static_safety(b, 0.0, force_N)
+    factor = sf.value if sf.value != 1.0 else None
+    check = Check(
+        "thrust_bearing_static",
+        f"thrust bearing {b.designation}: static equivalent load against C0",
+        p0,
+        c0,
+        "N",
+        c0 / ((factor or 1.0) * p0),
+        cite("iso-76").with_note("P0 = max(F_r, X0·F_r + Y0·F_a)"),
+        factor,
+    )
+    warnings = []
+    if b.d_mm > ev.thread.d3_mm:
+        warnings.append(
+            f"the thrust bearing {b.designation} (bore {b.d_mm:g} mm) needs a journal "
+            f"wider than the core of {ev.thread.name} (d3 = {ev.thread.d3_mm:g} mm): "
+            "the screw end must be upset or the bearing smaller"
         )
-        if b.d_mm > ev.thread.d3_mm:
-            warnings.append(
-                f"the thrust bearing {b.designation} (bore {b.d_mm:g} mm) needs a journal "
-                f"wider than the core of {ev.thread.name} (d3 = {ev.thread.d3_mm:g} mm): "
-                "the screw end must be upset or the bearing smaller"
-            )
-    heat = nut_heat(req, ev, n_work)
+    return [check], warnings
+
+
+def _nut_warnings(ev: ThreadEvaluation, heat: NutHeat) -> list[str]:
+    """The nut's wear (flank pressure above Shigley's safe one at its sliding speed) and
+    heat (steady rise above the allowed one), where they need a word."""
+    warnings = []
     pressure_MPa = ev.nut_pressure_Pa / 1e6
     if pressure_MPa > heat.safe_pressure_Pa / 1e6:
         warnings.append(
@@ -747,7 +798,23 @@ def _screw_checks(
             f"h = {NUT_FILM_COEFFICIENT:g} W/(m²·K), nut body "
             f"{NUT_OUTER_DIAMETER_RATIO:g}·d; the screw's own cooling neglected)"
         )
-    return checks, warnings
+    return warnings
+
+
+def _screw_checks(
+    req: Requirements,
+    ev: ThreadEvaluation,
+    sel: MotorEvaluation,
+    thrust: ThrustFace | None,
+    sf: ServiceFactor,
+    cat: Catalogs,
+) -> tuple[list[Check], list[str]]:
+    """The whirling speed and the thrust bearing's static load as checks; the thrust face
+    left out, and the nut's wear and heat, as warnings where they need a word."""
+    n_work = sel.working_speed_rpm or ev.speed_rpm
+    checks, warnings = _thrust_checks(ev, thrust, req.linear.force_N, sf)
+    warnings += _nut_warnings(ev, nut_heat(req, ev, n_work))
+    return [_whirl_check(req, ev, n_work, cat), *checks], warnings
 
 
 def _eval_motor(motor: InductionMotor, ev: ThreadEvaluation) -> MotorEvaluation:
@@ -877,18 +944,10 @@ def _no_drive(
     )
 
 
-def _screw_out(
-    ev: ThreadEvaluation,
-    req: Requirements,
-    material: ScrewMaterial,
-    f_range: tuple[float, float],
-    advisor_choice: str | None,
-    sel: MotorEvaluation,
-    cat: Catalogs,
-) -> ScrewOut:
-    t = ev.thread
-    n_work = sel.working_speed_rpm or ev.speed_rpm
-    heat = nut_heat(req, ev, n_work)
+def _buckling_out(ev: ThreadEvaluation, req: Requirements, cat: Catalogs) -> BucklingOut:
+    """The buckling table: the formula used and why (the slenderness against Johnson's
+    transition), the end fixity and the critical load."""
+    lin = req.linear
     steel = cat.steel(req.screw.screw_steel)
     transition = math.pi * math.sqrt(2.0 * steel.elastic_modulus_MPa / steel.yield_strength_MPa)
     why = (
@@ -901,24 +960,74 @@ def _screw_out(
             else "an intermediate column yields before it buckles elastically (Johnson's parabola)"
         )
     )
-    thrust = None
-    if ev.thrust is not None:
-        lead = t.pitch_mm * 1e-3 * ev.starts
-        thrust = ThrustOut.make(
-            kind=ev.thrust.kind,
-            model=ev.thrust.describe(),
-            torque_Nm=ev.thrust_torque_Nm,
-            drive_torque_Nm=ev.drive_torque_Nm,
-            efficiency=screw_calc.thread_efficiency_with_thrust(
-                req.linear.force_N, lead, ev.torque_Nm, ev.thrust_torque_Nm
-            ),
-        )
-    lin = req.linear
+    return BucklingOut.make(
+        formula=ev.buckling_formula,
+        why=why,
+        end_fixity=lin.end_fixity,
+        effective_length_factor=END_FIXITY_FACTOR[lin.end_fixity],
+        slenderness=ev.slenderness,
+        critical_load_N=ev.critical_load_N,
+        safety_factor_required=lin.buckling_safety_factor,
+    )
+
+
+def _thrust_out(ev: ThreadEvaluation, force_N: float) -> ThrustOut | None:
+    """The thrust face's table: its friction torque and the efficiency with it."""
+    if ev.thrust is None:
+        return None
+    lead = ev.thread.pitch_mm * 1e-3 * ev.starts
+    return ThrustOut.make(
+        kind=ev.thrust.kind,
+        model=ev.thrust.describe(),
+        torque_Nm=ev.thrust_torque_Nm,
+        drive_torque_Nm=ev.drive_torque_Nm,
+        efficiency=screw_calc.thread_efficiency_with_thrust(
+            force_N, lead, ev.torque_Nm, ev.thrust_torque_Nm
+        ),
+    )
+
+
+def _nut_out(ev: ThreadEvaluation, material: ScrewMaterial, heat: NutHeat) -> NutOut:
+    """The nut's table: its proportions, flank pressure, wear and heat."""
+    return NutOut.make(
+        height_mm=ev.nut_height_mm,
+        turns=ev.nut_turns,
+        height_ratio=ev.nut_height_mm / ev.thread.d2_mm,
+        bearing_pressure_MPa=ev.nut_pressure_Pa / 1e6,
+        allowable_pressure_MPa=material.allowable_pressure_Pa / 1e6,
+        sliding_speed_m_s=heat.sliding_speed_m_s,
+        safe_pressure_MPa=heat.safe_pressure_Pa / 1e6,
+        safe_pressure_basis=f"Shigley, Table 8-4 (as recalled, not verified online): "
+        f"{heat.safe_pressure_row}",
+        pv_MPa_m_s=heat.pv_MPa_m_s,
+        friction_power_W=heat.friction_power_W,
+        mean_friction_power_W=heat.mean_friction_power_W,
+        mean_friction_basis=heat.mean_basis,
+        temperature_rise_K=heat.temperature_rise_K,
+        allowed_temperature_rise_K=NUT_ALLOWED_RISE_K,
+        heat_model=f"ΔT = P̄_f/(h·A), h = {NUT_FILM_COEFFICIENT:g} W/(m²·K) natural "
+        f"convection, A = nut body of {NUT_OUTER_DIAMETER_RATIO:g}·d over its length "
+        "and end faces; the screw's cooling neglected",
+    )
+
+
+def _screw_out(
+    ev: ThreadEvaluation,
+    req: Requirements,
+    material: ScrewMaterial,
+    f_range: tuple[float, float],
+    advisor_choice: str | None,
+    sel: MotorEvaluation,
+    cat: Catalogs,
+) -> ScrewOut:
+    """The screw's table, from its evaluation at the motor's working speed."""
+    t, lin, s = ev.thread, req.linear, req.screw
     assert lin is not None
+    heat = nut_heat(req, ev, sel.working_speed_rpm or ev.speed_rpm)
     v = screw_calc.linear_speed(lin.stroke_m, lin.travel_time_s)
     return ScrewOut.make(
         thread=t.name,
-        imposed=req.screw.thread is not None,
+        imposed=s.thread is not None,
         advisor_choice=advisor_choice,
         nominal_diameter_mm=t.d_mm,
         pitch_mm=t.pitch_mm,
@@ -933,9 +1042,9 @@ def _screw_out(
         ac_mm=t.ac_mm,
         H1_mm=t.H1_mm,
         h3_mm=t.h3_mm,
-        material_pair=req.screw.material_pair,
-        lubrication=req.screw.lubrication,
-        screw_steel=req.screw.screw_steel,
+        material_pair=s.material_pair,
+        lubrication=s.lubrication,
+        screw_steel=s.screw_steel,
         friction_model=ev.friction_model,
         friction_coefficient=material.friction_coefficient,
         friction_range=list(f_range),
@@ -955,43 +1064,10 @@ def _screw_out(
         revolutions=ev.revolutions,
         speed_rpm=ev.speed_rpm,
         output_power_W=lin.force_N * v,
-        nut=NutOut.make(
-            height_mm=ev.nut_height_mm,
-            turns=ev.nut_turns,
-            height_ratio=ev.nut_height_mm / t.d2_mm,
-            bearing_pressure_MPa=ev.nut_pressure_Pa / 1e6,
-            allowable_pressure_MPa=material.allowable_pressure_Pa / 1e6,
-            sliding_speed_m_s=heat.sliding_speed_m_s,
-            safe_pressure_MPa=heat.safe_pressure_Pa / 1e6,
-            safe_pressure_basis=f"Shigley, Table 8-4 (as recalled, not verified online): "
-            f"{heat.safe_pressure_row}",
-            pv_MPa_m_s=heat.pv_MPa_m_s,
-            friction_power_W=heat.friction_power_W,
-            mean_friction_power_W=heat.mean_friction_power_W,
-            mean_friction_basis=heat.mean_basis,
-            temperature_rise_K=heat.temperature_rise_K,
-            allowed_temperature_rise_K=NUT_ALLOWED_RISE_K,
-            heat_model=f"ΔT = P̄_f/(h·A), h = {NUT_FILM_COEFFICIENT:g} W/(m²·K) natural "
-            f"convection, A = nut body of {NUT_OUTER_DIAMETER_RATIO:g}·d over its length "
-            "and end faces; the screw's cooling neglected",
-        ),
-        buckling=BucklingOut.make(
-            formula=ev.buckling_formula,
-            why=why,
-            end_fixity=lin.end_fixity,
-            effective_length_factor=END_FIXITY_FACTOR[lin.end_fixity],
-            slenderness=ev.slenderness,
-            critical_load_N=ev.critical_load_N,
-            safety_factor_required=lin.buckling_safety_factor,
-        ),
-        thrust=thrust,
-        critical_speed_rpm=screw_calc.critical_speed_rpm(
-            t.d3_mm * 1e-3,
-            lin.support_span_m,
-            lin.end_fixity,
-            steel.elastic_modulus_MPa * 1e6,
-            STEEL_DENSITY_KG_M3,
-        ),
+        nut=_nut_out(ev, material, heat),
+        buckling=_buckling_out(ev, req, cat),
+        thrust=_thrust_out(ev, lin.force_N),
+        critical_speed_rpm=_whirling_speed_rpm(req, t, cat),
         service_factor=ev.service_factor if ev.service_factor != 1.0 else None,
     )
 
