@@ -46,8 +46,8 @@ def mark(chosen: bool, text: str) -> Any:
 
 def one_way(report) -> list[Section]:
     """The one-way device types where the device sits, and the chosen type at the other
-    side (seed 004). "Use" imposes the type and, where the application asks it
-    (``one_way.location``, the rotary actuator), the place."""
+    side (seed 004). "Use" imposes the type and, where the application's requirement has
+    it (``one_way.location``), the place."""
     ow = getattr(report.design, "one_way", None)
     if ow is None or ow.type == "none":
         return []

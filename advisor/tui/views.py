@@ -301,9 +301,8 @@ def drivers_plot(report) -> PlotData | None:
 
 
 def plots(report) -> list[PlotData]:
-    """Every plot of an application, as its registered views draw them (the rotary
-    actuator adds the seed's fig. 1: reducer volume per unit torque against q), then the
-    drivers of the least probable check where the report has an ``[uncertainty]`` table."""
+    """Every plot of an application, as its registered views draw them, then the drivers of
+    the least probable check where the report has an ``[uncertainty]`` table."""
     app_views = registry.views(report.report.application)
     out = list(app_views.plots(report)) if app_views is not None else []
     drivers = drivers_plot(report)
