@@ -369,18 +369,10 @@ def passing_speeds(req, cands: list, frame_for, holder_for, limit_W: float) -> l
     return ok
 
 
-def advise_duty(
-    req, q: float, eta: float, speed_rpm: float, frame: Frame, holder: Holder, trace: Trace
-):
-    """The duty of the adopted design: the table, the checks and the warnings."""
-    segment_loads_within_rating(req)
+def _decisions(req, e: dict, frame: Frame, q: float, eta: float, speed_rpm: float, trace):
+    """DU-01 (the IEC duty type, if given), the thermal and the peak decisions and the
+    inertia ratio; returns the inertia ratio and whether it is within the guideline."""
     duty = req.duty
-    e = evaluate(req, q, eta, speed_rpm, frame, holder)
-    if e["problems"]:
-        raise InfeasibleError(
-            "no feasible design: the adopted drive fails the duty cycle", e["problems"]
-        )
-    phases = e["phases"]
     if duty.duty_type:
         trace.apply(
             du_rules.duty_type,
@@ -390,12 +382,10 @@ def advise_duty(
             "S5 and S7 start (and brake) at the peak torque; S9, S10 as shares of the rated "
             "output torque.",
         )
-    t_cycle = du.cycle_time(phases)
-    util = e["total"] / frame.limit_W
-    rms = du.rms_torque(phases)
+    rms = du.rms_torque(e["phases"])
     trace.apply(
         du_rules.thermal,
-        util,
+        e["total"] / frame.limit_W,
         f"Cycle-averaged losses {e['total']:.4g} W (copper {e['copper']:.4g} W from the "
         f"phases' torques, i.e. from the RMS torque {rms:.4g} N·m; iron and magnets "
         f"{e['core']:.4g} W from the speed profile) against the frame's limit "
@@ -410,30 +400,46 @@ def advise_duty(
         f"{frame.continuous_torque():.4g} N·m (duty.peak_torque_factor).",
     )
     ir = duty.load_inertia_kgm2 / (q * q * eta) / frame.data.inertia_kgm2
-    within = trace.apply(du_rules.inertia_ratio, ir)
+    return ir, trace.apply(du_rules.inertia_ratio, ir)
+
+
+class _Thermal(NamedTuple):
+    resistance_K_W: float
+    history: list
+    peak_rise_K: float
+
+
+def _thermal(e: dict, frame: Frame, t_cycle: float) -> _Thermal:
+    """First-order thermal model over repeated cycles, R from the limit and class F."""
+    tau = frame.data.time_constant_s
+    r_th = CLASS_F_RISE_K / frame.limit_W
+    n = max(1, min(2000, math.ceil(5.0 * tau / t_cycle)))
+    hist = du.thermal_history(e["losses"], r_th, tau, n, max_points=400)
+    return _Thermal(r_th, hist, du.periodic_peak_rise(e["losses"], r_th, tau))
+
+
+def _duty_warnings(ir: float, within: bool, thermal: _Thermal, tau: float) -> list[str]:
     warnings = []
     if not within:
         warnings.append(
             f"duty: the load's inertia at the motor is {ir:.3g} times the motor's (guideline "
             f"{du_rules.INERTIA_RATIO_GUIDELINE:g})"
         )
-    # first-order thermal model over repeated cycles, R from the limit and class F
-    tau = frame.data.time_constant_s
-    r_th = CLASS_F_RISE_K / frame.limit_W
-    n = max(1, min(2000, math.ceil(5.0 * tau / t_cycle)))
-    hist = du.thermal_history(e["losses"], r_th, tau, n, max_points=400)
-    peak_rise = du.periodic_peak_rise(e["losses"], r_th, tau)
+    peak_rise = thermal.peak_rise_K
     if peak_rise > CLASS_F_RISE_K * (1 + 1e-9):
         warnings.append(
             f"duty: within a cycle the winding peaks at {peak_rise:.4g} K rise (first-order "
             f"model, τ = {tau:g} s), above the {CLASS_F_RISE_K:g} K of class F, although the "
             "cycle's mean losses pass: the cycle is long against the motor's time constant"
         )
-    out_J, back_J = du.energies(phases)
-    from advisor.applications.rotary import motor as bm
+    return warnings
 
-    checks = [
-        bm.losses_check(
+
+def _duty_checks(e: dict, frame: Frame) -> list[Check]:
+    from advisor.applications.rotary.motor import losses_check
+
+    return [
+        losses_check(
             "duty_losses",
             "cycle-averaged losses of the motor within the frame's limit",
             e["total"],
@@ -452,6 +458,26 @@ def advise_duty(
             note("issue 15; duty.peak_torque_factor"),
         ),
     ]
+
+
+def advise_duty(
+    req, q: float, eta: float, speed_rpm: float, frame: Frame, holder: Holder, trace: Trace
+):
+    """The duty of the adopted design: the table, the checks and the warnings."""
+    segment_loads_within_rating(req)
+    duty = req.duty
+    e = evaluate(req, q, eta, speed_rpm, frame, holder)
+    if e["problems"]:
+        raise InfeasibleError(
+            "no feasible design: the adopted drive fails the duty cycle", e["problems"]
+        )
+    phases = e["phases"]
+    ir, within = _decisions(req, e, frame, q, eta, speed_rpm, trace)
+    t_cycle = du.cycle_time(phases)
+    tau = frame.data.time_constant_s
+    thermal = _thermal(e, frame, t_cycle)
+    warnings = _duty_warnings(ir, within, thermal, tau)
+    out_J, back_J = du.energies(phases)
     out = DutyOut.make(
         motor=f"{speed_rpm:g} rpm",
         ratio=q,
@@ -459,8 +485,8 @@ def advise_duty(
         move_time_s=sum(p.time_s for p in phases if p.speed_start_rad_s or p.speed_end_rad_s),
         peak_torque_Nm=e["peak"],
         peak_torque_limit_Nm=e["peak_limit"],
-        rms_torque_Nm=rms,
-        thermal_utilisation=util,
+        rms_torque_Nm=du.rms_torque(phases),
+        thermal_utilisation=e["total"] / frame.limit_W,
         thermal_basis="cycle-averaged losses over the frame's limit",
         inertia_ratio=ir,
         motor_inertia_kgm2=frame.data.inertia_kgm2,
@@ -477,16 +503,16 @@ def advise_duty(
         thermal=ThermalOut.make(
             time_constant_s=tau,
             time_constant_basis=frame.data.time_constant_basis,
-            resistance_K_W=r_th,
-            steady_rise_K=e["total"] * r_th,
-            peak_rise_K=peak_rise,
+            resistance_K_W=thermal.resistance_K_W,
+            steady_rise_K=e["total"] * thermal.resistance_K_W,
+            peak_rise_K=thermal.peak_rise_K,
             limit_rise_K=CLASS_F_RISE_K,
-            time_s=[h[0] for h in hist],
-            rise_K=[h[1] for h in hist],
+            time_s=[h[0] for h in thermal.history],
+            rise_K=[h[1] for h in thermal.history],
         ),
         phases=phases_out(phases),
     )
-    return out, checks, warnings
+    return out, _duty_checks(e, frame), warnings
 
 
 def frames(ref, steel, steel_mass: float, terms, limit_W: float, data: MotorData | None = None):

@@ -1,4 +1,4 @@
-"""The checks a reviewer of a rotary drive asks for first (issue 26): the reducer under its
+"""The checks a reviewer of a rotary drive asks for first: the reducer under its
 load spectrum, the output bearing under an external load, and where the energy the motor
 gives back goes. Orchestration only: :mod:`advisor.calc.load_spectrum`,
 :mod:`advisor.calc.bearing_life` and :mod:`advisor.calc.regen` compute.
@@ -19,6 +19,7 @@ life), scaled by ISO 281's exponent p (3 balls, 10/3 rollers): L50 = 35 000·(20
 """
 
 import math
+from typing import NamedTuple
 
 from advisor.applications.rotary.report import (
     OutputBearingOut,
@@ -26,12 +27,10 @@ from advisor.applications.rotary.report import (
     RegenerationOut,
     StageLifeOut,
 )
-from advisor.calc import bearing_life as bl
-from advisor.calc import load_spectrum as ls
-from advisor.calc import reducer as rd
-from advisor.calc import regen as rg
+from advisor.calc import bearing_life, load_spectrum, reducer, regen
 from advisor.calc.checks import Check
 from advisor.calc.duty import Phase
+from advisor.calc.load_spectrum import Load
 from advisor.calc.service_factor import ServiceFactor
 from advisor.core.cite import cite
 from advisor.core.errors import InputError
@@ -51,39 +50,63 @@ def momentary_torque(req) -> tuple[float, str]:
     return req.rotary.torque_Nm, "not given: rotary.torque_Nm taken as the momentary peak"
 
 
-def reducer_load(
-    req, design: rd.Reducer, loads: list[ls.Load], basis: str, sf: ServiceFactor, k_rb: str
-) -> tuple[ReducerLoadOut, list[Check], list[str]]:
-    """The spectrum's figures at the output, the stages' lives, the checks of item 2."""
-    f = sf.value
-    out_stage = design.stages[-1]
-    rated = out_stage.torque_Nm
-    t_av = ls.cube_mean_torque(loads)
-    t_rep = ls.repeated_peak_torque(loads)
+class SpectrumFigures(NamedTuple):
+    """The load spectrum's figures at the output and the output stage's limits [N·m, rpm]."""
+
+    mean_torque_Nm: float
+    repeated_peak_Nm: float
+    momentary_peak_Nm: float
+    momentary_basis: str
+    mean_speed_rpm: float
+    max_speed_rpm: float
+    rated_Nm: float  # the output stage's T_N by eq. (16)
+
+
+def spectrum_figures(req, design: reducer.Reducer, loads: list[Load]) -> SpectrumFigures:
+    """Cube-mean, repeated and momentary peak torques and the speeds of the spectrum."""
     t_mom, mom_basis = momentary_torque(req)
-    n_av, n_max = ls.mean_speed_rpm(loads), ls.max_speed_rpm(loads)
-    p = ls.LIFE_EXPONENT[k_rb]
+    return SpectrumFigures(
+        load_spectrum.cube_mean_torque(loads),
+        load_spectrum.repeated_peak_torque(loads),
+        t_mom,
+        mom_basis,
+        load_spectrum.mean_speed_rpm(loads),
+        load_spectrum.max_speed_rpm(loads),
+        design.stages[-1].torque_Nm,
+    )
+
+
+def stage_lives(
+    design: reducer.Reducer, figures: SpectrumFigures, f: float, p: float
+) -> list[StageLifeOut]:
+    """Each stage's L50 and L10 (output first): its share of the output torque (each sized
+    for its share by eq. (16)) at its own mean input speed."""
     stages, ratio_to_output = [], 1.0
     for s in reversed(design.stages):  # output first
         ratio_to_output *= s.ratio
-        share = s.torque_Nm / rated  # this stage's share of the output torque (eq. (16))
-        n_in = n_av * ratio_to_output
-        l50 = ls.rolling_life_h(s.torque_Nm, f * t_av * share, n_in, p)
+        share = s.torque_Nm / figures.rated_Nm  # this stage's share of the output torque
+        n_in = figures.mean_speed_rpm * ratio_to_output
+        l50 = load_spectrum.rolling_life_h(s.torque_Nm, f * figures.mean_torque_Nm * share, n_in, p)
         stages.append(
             StageLifeOut.make(
                 position=s.position,
                 rated_torque_Nm=s.torque_Nm,
                 mean_input_speed_rpm=n_in,
-                max_input_speed_rpm=n_max * ratio_to_output,
+                max_input_speed_rpm=figures.max_speed_rpm * ratio_to_output,
                 life_L50_h=l50,
-                life_L10_h=l50 * ls.L10_PER_L50,
+                life_L10_h=l50 * load_spectrum.L10_PER_L50,
             )
         )
-    motor_speed = n_max * ratio_to_output  # the input stage's top speed: the motor's
-    stops_allowed = ls.momentary_peak_count_allowed(motor_speed, req.rotary.emergency_stop_time_s)
-    avg_limit = rated
-    rep_limit = ls.REPEATED_PEAK_FACTOR * rated
-    mom_limit = ls.MOMENTARY_PEAK_FACTOR * rated
+    return stages
+
+
+def torque_checks(figures: SpectrumFigures, f: float, basis: str) -> list[Check]:
+    """The cube-mean torque (over a cycle), the repeated and the momentary peak, each × f_B,
+    against the output stage's T_N and its peak ratios."""
+    rated = figures.rated_Nm
+    t_av, t_rep, t_mom = figures.mean_torque_Nm, figures.repeated_peak_Nm, figures.momentary_peak_Nm
+    rep_limit = load_spectrum.REPEATED_PEAK_FACTOR * rated
+    mom_limit = load_spectrum.MOMENTARY_PEAK_FACTOR * rated
     where = f"output stage, T_N = {rated:.4g} N·m by eq. (16); f_B = {f:g}"
     checks = []
     if basis == "duty cycle":  # at the working point T_av is the sizing torque itself
@@ -92,9 +115,9 @@ def reducer_load(
                 "stage_average_torque",
                 f"cube-mean torque T_av × f_B within the rated torque ({where})",
                 t_av,
-                avg_limit,
+                rated,
                 "N·m",
-                avg_limit / (f * t_av) if t_av > 0 else math.inf,
+                rated / (f * t_av) if t_av > 0 else math.inf,
                 HONPINE + SEED_16,
                 f,
             )
@@ -117,50 +140,75 @@ def reducer_load(
             mom_limit,
             "N·m",
             mom_limit / (f * t_mom),
-            (HD_RATIOS + SEED_16).with_note(mom_basis),
+            (HD_RATIOS + SEED_16).with_note(figures.momentary_basis),
             f,
         ),
     ]
-    life_h = req.design.life_h
-    warnings = []
-    if life_h is not None:
-        worst = min(stages, key=lambda s: s.life_L10_h)
-        checks.append(
-            Check(
-                "stage_life",
-                f"L10 life of the {worst.position} stage's rolling elements (the shortest) "
-                "within the required life",
-                worst.life_L10_h,
-                life_h,
-                "h",
-                worst.life_L10_h / life_h,
-                HD_LIFE + cite("iso-281", "eq. (1)"),
-            )
-        )
+    return checks
+
+
+def life_check(stages: list[StageLifeOut], life_h: float) -> Check:
+    """The shortest L10 of the stages' rolling elements against the required life."""
+    worst = min(stages, key=lambda s: s.life_L10_h)
+    return Check(
+        "stage_life",
+        f"L10 life of the {worst.position} stage's rolling elements (the shortest) "
+        "within the required life",
+        worst.life_L10_h,
+        life_h,
+        "h",
+        worst.life_L10_h / life_h,
+        HD_LIFE + cite("iso-281", "eq. (1)"),
+    )
+
+
+def _stops_warning(req, stops_allowed: float, motor_speed: float) -> list[str]:
     stops = req.rotary.emergency_stops
-    if stops is not None and stops > stops_allowed:
-        warnings.append(
-            f"reducer: {stops} emergency stops over the life against about "
-            f"{stops_allowed:.3g} a strain-wave gear's momentary peak allows at "
-            f"{motor_speed:.4g} rpm input for {req.rotary.emergency_stop_time_s:g} s each "
-            "(10⁴ flexings; Harmonic Drive's form as quoted, not verified in its own text)"
-        )
+    if stops is None or stops <= stops_allowed:
+        return []
+    return [
+        f"reducer: {stops} emergency stops over the life against about "
+        f"{stops_allowed:.3g} a strain-wave gear's momentary peak allows at "
+        f"{motor_speed:.4g} rpm input for {req.rotary.emergency_stop_time_s:g} s each "
+        "(10⁴ flexings; Harmonic Drive's form as quoted, not verified in its own text)"
+    ]
+
+
+def reducer_load(
+    req, design: reducer.Reducer, loads: list[Load], basis: str, sf: ServiceFactor, k_rb: str
+) -> tuple[ReducerLoadOut, list[Check], list[str]]:
+    """The spectrum's figures at the output, the stages' lives, their checks and warnings."""
+    f = sf.value
+    p = load_spectrum.LIFE_EXPONENT[k_rb]
+    figures = spectrum_figures(req, design, loads)
+    stages = stage_lives(design, figures, f, p)
+    ratio = math.prod(s.ratio for s in reversed(design.stages))
+    motor_speed = figures.max_speed_rpm * ratio  # the input stage's top speed: the motor's
+    stops_allowed = load_spectrum.momentary_peak_count_allowed(
+        motor_speed, req.rotary.emergency_stop_time_s
+    )
+    checks = torque_checks(figures, f, basis)
+    life_h = req.design.life_h
+    if life_h is not None:
+        checks.append(life_check(stages, life_h))
+    warnings = _stops_warning(req, stops_allowed, motor_speed)
+    rated = figures.rated_Nm
     out = ReducerLoadOut.make(
         basis=basis,
         service_factor=f,
         service_factor_basis=sf.basis,
-        mean_torque_Nm=t_av,
-        mean_output_speed_rpm=n_av,
-        max_output_speed_rpm=n_max,
-        repeated_peak_torque_Nm=t_rep,
-        momentary_peak_torque_Nm=t_mom,
-        momentary_peak_basis=mom_basis,
+        mean_torque_Nm=figures.mean_torque_Nm,
+        mean_output_speed_rpm=figures.mean_speed_rpm,
+        max_output_speed_rpm=figures.max_speed_rpm,
+        repeated_peak_torque_Nm=figures.repeated_peak_Nm,
+        momentary_peak_torque_Nm=figures.momentary_peak_Nm,
+        momentary_peak_basis=figures.momentary_basis,
         rated_torque_Nm=rated,
-        average_torque_limit_Nm=avg_limit,
-        repeated_peak_limit_Nm=rep_limit,
-        momentary_peak_limit_Nm=mom_limit,
+        average_torque_limit_Nm=rated,
+        repeated_peak_limit_Nm=load_spectrum.REPEATED_PEAK_FACTOR * rated,
+        momentary_peak_limit_Nm=load_spectrum.MOMENTARY_PEAK_FACTOR * rated,
         emergency_stop_time_s=req.rotary.emergency_stop_time_s,
-        emergency_stops=stops,
+        emergency_stops=req.rotary.emergency_stops,
         emergency_stops_allowed=stops_allowed,
         life_model=(
             f"L50 = 35 000 h·(2000 rpm/n_in,av)·(T_N/(f_B·T_av))^{p:.4g}, L10 = L50/5: "
@@ -176,36 +224,22 @@ def reducer_load(
     return out, checks, warnings
 
 
-def output_bearing(
-    req, cat, design: rd.Reducer, speed_rpm: float, sf: ServiceFactor
-) -> tuple[OutputBearingOut, list[Check]]:
-    """The output bearing under ``[output_load]`` by ISO 281 (item 3), the given one or the
-    lightest deep-groove bearing of the catalog that fits within the reducer's outer
-    diameter and gives design.life_h."""
+def _given_or_auto(req, cat, radial: float, axial: float, n: float, d_max: float):
+    """The bearing ``output_load.bearing`` names, or the automatic choice, and which."""
     ol = req.output_load
-    f = sf.value
-    radial, axial = bl.pair_loads(
-        ol.radial_N, ol.axial_N, ol.tilting_moment_Nm, ol.bearing_spacing_mm
-    )
-    radial, axial = f * radial, f * axial
-    n = ol.speed_rpm or speed_rpm
-    life_h = req.design.life_h
     if ol.bearing == "auto":
-        b = _auto_bearing(cat, radial, axial, n, life_h, design.outer_diameter_mm)
-        chosen = "automatic"
-    else:
-        found = [x for x in cat.bearings if x.designation == ol.bearing]
-        if not found:
-            known = ", ".join(x.designation for x in cat.bearings)
-            raise InputError(
-                f"output_load.bearing = {ol.bearing!r}: not in the bearing catalog ({known})"
-            )
-        b, chosen = found[0], "given"
-    eq = bl.equivalent_load(b, radial, axial)
-    l10 = bl.rating_life_Mrev(b.C_kN * 1e3, eq.load_N)
-    l10h = bl.hours_from_Mrev(l10, n)
-    s0 = bl.static_safety(b, radial, axial)
-    src = cat.cite_rows(cat.bearing_sources, b.source)
+        return _auto_bearing(cat, radial, axial, n, req.design.life_h, d_max), "automatic"
+    found = [x for x in cat.bearings if x.designation == ol.bearing]
+    if not found:
+        known = ", ".join(x.designation for x in cat.bearings)
+        raise InputError(
+            f"output_load.bearing = {ol.bearing!r}: not in the bearing catalog ({known})"
+        )
+    return found[0], "given"
+
+
+def _bearing_checks(b, s0: float, n: float, l10h: float, life_h, src) -> list[Check]:
+    """Static safety (ISO 76), speed, and, with a required life, L10h (ISO 281)."""
     checks = [
         Check(
             "output_bearing_static",
@@ -238,6 +272,30 @@ def output_bearing(
                 cite("iso-281", "eq. (1)") + src,
             )
         )
+    return checks
+
+
+def output_bearing(
+    req, cat, design: reducer.Reducer, speed_rpm: float, sf: ServiceFactor
+) -> tuple[OutputBearingOut, list[Check]]:
+    """The output bearing under ``[output_load]`` by ISO 281, the given one or the lightest
+    deep-groove bearing of the catalog that fits within the reducer's outer diameter and
+    gives design.life_h."""
+    ol = req.output_load
+    f = sf.value
+    radial, axial = bearing_life.pair_loads(
+        ol.radial_N, ol.axial_N, ol.tilting_moment_Nm, ol.bearing_spacing_mm
+    )
+    radial, axial = f * radial, f * axial
+    n = ol.speed_rpm or speed_rpm
+    life_h = req.design.life_h
+    b, chosen = _given_or_auto(req, cat, radial, axial, n, design.outer_diameter_mm)
+    eq = bearing_life.equivalent_load(b, radial, axial)
+    l10 = bearing_life.rating_life_Mrev(b.C_kN * 1e3, eq.load_N)
+    l10h = bearing_life.hours_from_Mrev(l10, n)
+    s0 = bearing_life.static_safety(b, radial, axial)
+    src = cat.cite_rows(cat.bearing_sources, b.source)
+    checks = _bearing_checks(b, s0, n, l10h, life_h, src)
     out = OutputBearingOut.make(
         designation=b.designation,
         chosen=chosen,
@@ -272,11 +330,13 @@ def _auto_bearing(cat, radial: float, axial: float, n: float, life_h, d_max: flo
     for b in cat.bearings:
         if b.type != "deep_groove" or b.D_mm > d_max:
             continue
-        eq = bl.equivalent_load(b, radial, axial)
-        life = bl.hours_from_Mrev(bl.rating_life_Mrev(b.C_kN * 1e3, eq.load_N), n)
+        eq = bearing_life.equivalent_load(b, radial, axial)
+        life = bearing_life.hours_from_Mrev(
+            bearing_life.rating_life_Mrev(b.C_kN * 1e3, eq.load_N), n
+        )
         if (
             life >= life_h
-            and bl.static_safety(b, radial, axial) >= 1.0
+            and bearing_life.static_safety(b, radial, axial) >= 1.0
             and n <= b.limiting_speed_rpm
         ):
             fits.append(b)
@@ -296,16 +356,16 @@ def _auto_bearing(cat, radial: float, axial: float, n: float, life_h, d_max: flo
 
 
 def regeneration(phases: list[Phase], drive) -> RegenerationOut | None:
-    """What absorbs the energy the motor gives back (item 6); None if it gives none."""
-    events = rg.brakings(phases)
+    """What absorbs the energy the motor gives back; None if it gives none."""
+    events = regen.brakings(phases)
     if not events:
         return None
     t_cycle = sum(p.time_s for p in phases)
     u0, u1 = drive.bus_voltage_V, drive.bus_max_voltage_V
     largest = max(b.energy_J for b in events)
     c_given = drive.bus_capacitance_uF
-    bus_J = rg.bus_energy_J(c_given * 1e-6, u0, u1) if c_given is not None else 0.0
-    res = rg.braking_resistor(events, t_cycle, bus_J, u1)
+    bus_J = regen.bus_energy_J(c_given * 1e-6, u0, u1) if c_given is not None else 0.0
+    res = regen.braking_resistor(events, t_cycle, bus_J, u1)
     return RegenerationOut.make(
         regenerated_per_cycle_J=sum(b.energy_J for b in events),
         brakings_per_cycle=len(events),
@@ -313,7 +373,7 @@ def regeneration(phases: list[Phase], drive) -> RegenerationOut | None:
         peak_power_W=max(b.peak_power_W for b in events),
         bus_voltage_V=u0,
         bus_max_voltage_V=u1,
-        capacitance_for_largest_uF=rg.capacitance_for_F(largest, u0, u1) * 1e6,
+        capacitance_for_largest_uF=regen.capacitance_for_F(largest, u0, u1) * 1e6,
         bus_capacitance_uF=c_given,
         bus_energy_J=bus_J,
         resistor_needed=res.needed,
