@@ -157,7 +157,6 @@ def probability(u: dict | None, labels: Labels) -> Probability | None:
     )
     if u.get("method"):
         statement += f" Method: {u['method']}."
-    names = [i["name"] for i in u.get("inputs", [])]
     inputs = Table(
         "Uncertain inputs",
         ["input", "field", "nominal", "law", "basis"],
@@ -166,6 +165,15 @@ def probability(u: dict | None, labels: Labels) -> Probability | None:
             for i in u.get("inputs", [])
         ],
     )
+    checks = _probability_checks(u, labels, conf)
+    return Probability(statement, inputs, checks, charted(u, labels), _probability_notes(u))
+
+
+def _probability_checks(u: dict, labels: Labels, conf: str) -> Table:
+    """Each check's P(pass), its interval, its margin's 5th percentile and its ρ per input."""
+    from advisor.uncertainty.drivers import input_label
+
+    names = [i["name"] for i in u.get("inputs", [])]
     rows = []
     for c in u.get("checks", []):
         rho = {d["input"]: d["rank_correlation"] for d in c.get("drivers", [])}
@@ -180,7 +188,7 @@ def probability(u: dict | None, labels: Labels) -> Probability | None:
                 *[f"{rho[n]:+.2f}" if modelled and n in rho else "—" for n in names],
             ]
         )
-    checks = Table(
+    return Table(
         "P(pass) and drivers of each check",
         [
             "check",
@@ -192,6 +200,10 @@ def probability(u: dict | None, labels: Labels) -> Probability | None:
         ],
         rows,
     )
+
+
+def _probability_notes(u: dict) -> list[str]:
+    """What ρ means, what is not modelled and the robust choice, when there is one."""
     notes = [
         "ρ is Spearman's rank correlation of the input with the check's margin: −1, the "
         "margin falls whenever the input rises; 0, the input does not move it; — the model "
@@ -206,7 +218,7 @@ def probability(u: dict | None, labels: Labels) -> Probability | None:
             f"(P = {r['chosen_p_pass']:.4f}); the nominal rule would have chosen "
             f"{r['nominal_choice']} (P = {r['nominal_p_pass']:.4f})."
         )
-    return Probability(statement, inputs, checks, charted(u, labels), notes)
+    return notes
 
 
 def _scalar(v: Any) -> bool:
@@ -286,6 +298,32 @@ def _inputs(inputs: dict) -> str:
     )
 
 
+def _check(c: dict[str, Any]) -> Check:
+    """A check of the report as the datasheet shows it."""
+    return Check(
+        id=c["id"],
+        name=c["name"],
+        value=number(c["value"]),
+        limit=number(c["limit"]),
+        unit=c["unit"],
+        margin=f"{c['margin']:.3f}",
+        status=_status(c),
+        source=readable(c["source"]),
+    )
+
+
+def _decision(d: dict[str, Any]) -> Decision:
+    """A decision of the report as the datasheet shows it."""
+    return Decision(
+        id=d["id"],
+        title=d["title"],
+        decision=d["decision"],
+        rationale=d["rationale"],
+        source=readable(d["source"]),
+        inputs=_inputs(d.get("inputs", {})),
+    )
+
+
 def sheet(
     doc: dict[str, Any],
     headline: str,
@@ -300,30 +338,8 @@ def sheet(
     labels = labels or {}
     required = required_vs_achieved(doc, labels, covers or {}, defaults)
     head = doc["report"]
-    checks = [
-        Check(
-            id=c["id"],
-            name=c["name"],
-            value=number(c["value"]),
-            limit=number(c["limit"]),
-            unit=c["unit"],
-            margin=f"{c['margin']:.3f}",
-            status=_status(c),
-            source=readable(c["source"]),
-        )
-        for c in doc.get("checks", [])
-    ]
-    decisions = [
-        Decision(
-            id=d["id"],
-            title=d["title"],
-            decision=d["decision"],
-            rationale=d["rationale"],
-            source=readable(d["source"]),
-            inputs=_inputs(d.get("inputs", {})),
-        )
-        for d in doc.get("decisions", [])
-    ]
+    checks = [_check(c) for c in doc.get("checks", [])]
+    decisions = [_decision(d) for d in doc.get("decisions", [])]
     lowest = min(doc.get("checks", []), key=lambda c: c["margin"], default=None)
     rows = list(summary)
     if lowest is not None:
