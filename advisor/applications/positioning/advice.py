@@ -15,7 +15,15 @@ from advisor.core.errors import InfeasibleError
 from advisor.core.reading import Requirements
 from advisor.core.rulebook import Trace
 from catalogs import Catalogs
-from rules import motion as motion_rules
+from rules.motion import (
+    INERTIA_BAND,
+    SEED_003,
+    Sized,
+    fastest_motor,
+    profile_check,
+    ratio_per_motor,
+    smallest_meeting,
+)
 
 
 def required_time(req: Requirements) -> tuple[float, str] | None:
@@ -50,9 +58,9 @@ def _smallest_meeting(
     """MO-05: the smallest candidate whose move meets the required time (an estimated inertia
     at the top of its band); none: no feasible design, with the fastest named."""
     t_req, field = required
-    band = motion_rules.INERTIA_BAND
+    band = INERTIA_BAND
     rows = {
-        s.name: motion_rules.Sized(
+        s.name: Sized(
             s.candidate.power_W,
             s.drive.inertia_kgm2,
             s.solution.move_time_s,
@@ -74,7 +82,7 @@ def _smallest_meeting(
                 "[[positioning.motors]]",
             ],
         )
-    return trace.apply(motion_rules.smallest_meeting, t_req, rows, cands.power_basis, band)
+    return trace.apply(smallest_meeting, t_req, rows, cands.power_basis, band)
 
 
 def _choose_motor(
@@ -89,7 +97,7 @@ def _choose_motor(
     move (MO-02); with a required time, the smallest that meets it (MO-05)."""
     if required is None:
         times = {s.name: s.solution.move_time_s for s in solved}
-        best = trace.apply(motion_rules.fastest_motor, times)
+        best = trace.apply(fastest_motor, times)
     else:
         best = _smallest_meeting(solved, cands, required, path, profile, trace)
     return next(s for s in solved if s.name == best)
@@ -99,7 +107,7 @@ def _explain_ratio(best: Solved, profile: str, path: float, trace: Trace) -> Non
     """MO-01 and MO-03: the chosen motor's ratio, and the speed graph that happens at it."""
     d, s = best.drive, best.solution
     trace.apply(
-        motion_rules.ratio_per_motor,
+        ratio_per_motor,
         best.name,
         s.ratio,
         s.estimated_ratio,
@@ -108,9 +116,7 @@ def _explain_ratio(best: Solved, profile: str, path: float, trace: Trace) -> Non
         s.profile,
         profile,
     )
-    trace.apply(
-        motion_rules.profile_check, profile, s.profile, path, motion.transient_path(d, s.ratio)
-    )
+    trace.apply(profile_check, profile, s.profile, path, motion.transient_path(d, s.ratio))
 
 
 def _ratio_warnings(best: Solved, solved: list[Solved], profile: str) -> list[str]:
@@ -216,7 +222,7 @@ def _ratio_checks(best: Solved) -> list[Check]:
             d.torque_ratio,
             "",
             i / d.torque_ratio,
-            motion_rules.SEED_003.at("eq. (3)"),
+            SEED_003.at("eq. (3)"),
         )
     ]
 

@@ -37,7 +37,7 @@ class MotionOut(ReportTable):
     profile_actual: str
     inertia_ratio: float
     torque_ratio: float
-    #: with a required move time (issue 25): the time, and the fastest motor beside the
+    #: with a required move time: the time, and the fastest motor beside the
     #: smallest that meets it (decision MO-05)
     required_move_time_s: float | None = None
     fastest_motor: str | None = None
@@ -54,27 +54,27 @@ class PositioningDesignOut(ReportTable):
 def design_ratio(report) -> tuple[str, float, float]:
     """The motor, ratio and move time of the drive to build: the duty cycle's where the
     requirement has one (the fastest ratio may fail the cycle), else the fastest move's."""
-    mo, duty = report.design.motion, report.design.duty
+    motion, duty = report.design.motion, report.design.duty
     if duty is not None:
         return duty.motor, duty.ratio, duty.move_time_s
-    return mo.motor, mo.optimal_ratio, mo.move_time_s
+    return motion.motor, motion.optimal_ratio, motion.move_time_s
 
 
 def headline(report) -> str:
     """The design in a few words: motor, ratio, move time; with a required move time, that
     time and the fastest motor beside the chosen one (MO-05); with a duty cycle, the cycle's
     ratio, the single move's beside it, labelled so."""
-    mo = report.design.motion
+    motion = report.design.motion
     motor, ratio, time_s = design_ratio(report)
-    text = f"motor {motor}, i = {ratio:.4g}, {time_s:.4g} s ({mo.profile_actual})"
-    if mo.required_move_time_s is not None:
-        text += f", required ≤ {mo.required_move_time_s:.4g} s"
-        if mo.fastest_motor is not None and mo.fastest_motor != motor:
-            text += f" (fastest: motor {mo.fastest_motor}, {mo.fastest_move_time_s:.4g} s)"
-    if report.design.duty is not None and (motor, ratio) != (mo.motor, mo.optimal_ratio):
-        single = "fastest move" if mo.required_move_time_s is None else "the move's choice"
+    text = f"motor {motor}, i = {ratio:.4g}, {time_s:.4g} s ({motion.profile_actual})"
+    if motion.required_move_time_s is not None:
+        text += f", required ≤ {motion.required_move_time_s:.4g} s"
+        if motion.fastest_motor is not None and motion.fastest_motor != motor:
+            text += f" (fastest: motor {motion.fastest_motor}, {motion.fastest_move_time_s:.4g} s)"
+    if report.design.duty is not None and (motor, ratio) != (motion.motor, motion.optimal_ratio):
+        single = "fastest move" if motion.required_move_time_s is None else "the move's choice"
         text += (
-            f" for the duty cycle; {single} without the cycle: motor {mo.motor}, "
-            f"i = {mo.optimal_ratio:.4g}, {mo.move_time_s:.4g} s"
+            f" for the duty cycle; {single} without the cycle: motor {motion.motor}, "
+            f"i = {motion.optimal_ratio:.4g}, {motion.move_time_s:.4g} s"
         )
     return text

@@ -45,7 +45,7 @@ def rated_for_duty(req: Any) -> None:
 
 def time_or_motors(req: Any) -> None:
     """Without listed motors the catalog is searched for the smallest motor that meets a
-    required time (issue 25): a required time is needed, the move's own or the duty cycle's,
+    required time (MO-05): a required time is needed, the move's own or the duty cycle's,
     else "the fastest move wins" would crown the largest motor of the catalog."""
     pos = req.positioning
     if not pos.motors and pos.move_time_s is None and req.duty is None:

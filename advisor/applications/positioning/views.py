@@ -11,12 +11,12 @@ from advisor.tui.views import PlotData
 def components(report) -> list[Any]:
     d = report.design
     parts: list[Any] = []
-    mo = d.motion
+    motion = d.motion
     t = Table(title="Candidate motors", title_justify="left")
     cols = ("motor", "optimal ratio", "estimate", "first step", "move time s", "profile")
     for col in cols:
         t.add_column(col, justify="right")
-    for c in mo.candidates:
+    for c in motion.candidates:
         t.add_row(
             plain(c.name),  # named by the user: data, never markup
             f"{c.optimal_ratio:.4g}",
@@ -51,10 +51,10 @@ def plots(report) -> list[PlotData]:
 def _curve(report, c) -> tuple[list[float], list[float]]:
     """The move time of candidate ``c`` over the ratios of the chosen motor's curve widened
     to take in ``c``'s own optimum (ratios the motor cannot move the load at left out)."""
-    from advisor.calc import motion as mo
+    from advisor.calc.motion import Drive, move_time
 
     pos = report.requirements["positioning"]
-    drive = mo.Drive(
+    drive = Drive(
         c.speed_rad_s,
         c.inertia_kgm2,
         c.accel_torque_Nm,
@@ -71,7 +71,7 @@ def _curve(report, c) -> tuple[list[float], list[float]]:
         if i <= drive.torque_ratio * 1.001:
             continue
         xs.append(i)
-        ys.append(mo.move_time(drive, pos["travel_rad"], i)[0])
+        ys.append(move_time(drive, pos["travel_rad"], i)[0])
     return xs, ys
 
 
@@ -79,12 +79,12 @@ def compare(report) -> list[Any]:
     """The candidate motors, each at its own optimal ratio (seed 003)."""
     from advisor.tui.compare import Option, Section, decision, mark, table
 
-    mo = report.design.motion
+    motion = report.design.motion
     t = table("motor", "ω0 rad/s", "J0 kg·m²", "M_λ N·m", "ratio", "move time s", "graph")
     rows = report.requirements["positioning"].get("motors", [])
     options = []
-    for c in sorted(mo.candidates, key=lambda c: c.move_time_s):
-        chosen = c.name == mo.motor
+    for c in sorted(motion.candidates, key=lambda c: c.move_time_s):
+        chosen = c.name == motion.motor
         t.add_row(
             mark(chosen, c.name),
             f"{c.speed_rad_s:.4g}",
