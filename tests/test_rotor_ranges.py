@@ -18,6 +18,7 @@ from advisor.applications.spinning_rotor.requirements import (
     RotorReq,
 )
 from advisor.cli import main
+from advisor.core.requirements import range_in_words
 
 
 def _bounds(model, name: str) -> tuple[float, float]:
@@ -29,7 +30,8 @@ def _bounds(model, name: str) -> tuple[float, float]:
             hi = m.le
     assert lo is not None and hi is not None, f"{name} has no documented range"
     desc = model.model_fields[name].description
-    assert f"{hi:g}" in desc, f"{name}: the range is not in the description {desc!r}"
+    words = range_in_words(name, model.model_fields[name]).split(" … ")[-1]  # 0 or 1e-6 … 100
+    assert words in desc, f"{name}: the range {words!r} is not in the description {desc!r}"
     return float(lo), float(hi)
 
 

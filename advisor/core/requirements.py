@@ -30,6 +30,36 @@ MAX_PROBLEMS_SHOWN = 5
 
 #: Stands for the registered kinds in a description (filled in when a message is written).
 _KINDS = "{kinds}"
+#: Stands for a number's valid range in its description: filled in when the model is defined,
+#: from the field's constraint in the unit its key names (``1 … 10⁵ N·m``), so that the range
+#: is declared once, in the constraint.
+RANGE = "{range}"
+
+
+def _bounds(metadata: Any) -> dict[str, float]:
+    """The numeric bounds among a field's constraints (a nested FieldInfo's too)."""
+    out: dict[str, float] = {}
+    for m in metadata:
+        out.update(_bounds(m.metadata) if hasattr(m, "metadata") else {})
+        out.update({k: getattr(m, k) for k in ("ge", "gt", "le", "lt") if hasattr(m, k)})
+    return {k: v for k, v in out.items() if v is not None}
+
+
+def range_in_words(name: str, info: Any) -> str:
+    """The range a field's constraint allows, in the words of
+    :func:`advisor.core.ranges.range_prose`; for a list
+    of numbers, the range of each item."""
+    from typing import get_args
+
+    from advisor.core.questions import field_extra, strip_optional, unit_of
+    from advisor.core.ranges import range_prose
+
+    bounds = _bounds(info.metadata)
+    if not bounds:  # list[Annotated[float, Field(ge=…)]]: the items' own constraint
+        items = get_args(strip_optional(info.annotation))
+        bounds = _bounds(getattr(items[0], "__metadata__", ())) if items else {}
+    unit = field_extra(info).get("x-unit") or unit_of(name)
+    return range_prose(unit, **bounds)
 
 
 class StrictModel(BaseModel):
@@ -39,6 +69,13 @@ class StrictModel(BaseModel):
     model_config = ConfigDict(
         extra="forbid", strict=True, frozen=True, allow_inf_nan=False, defer_build=True
     )
+
+    @classmethod
+    def __pydantic_init_subclass__(cls, **kwargs: Any) -> None:
+        super().__pydantic_init_subclass__(**kwargs)
+        for name, info in cls.model_fields.items():
+            if info.description and RANGE in info.description:
+                info.description = info.description.replace(RANGE, range_in_words(name, info))
 
 
 def _extra(
@@ -174,7 +211,7 @@ class OneWayReq(StrictModel):
         ask("one-way device type", label="One-way device", step=2),
     ] = "auto"
     rollers: Annotated[
-        int, Field(ge=3, le=12, description="rollers of a roller clutch, 3 … 12")
+        int, Field(ge=3, le=12, description="rollers of a roller clutch, {range}")
     ] = 6
     priority: Annotated[
         Literal["mass", "inertia", "power"],
@@ -218,7 +255,7 @@ class DesignReq(StrictModel):
         number_field(
             ge=1,
             le=5,
-            desc="service factor f_B multiplying the load of every strength check; 1 … 5; "
+            desc="service factor f_B multiplying the load of every strength check; {range}; "
             "left out: 1",
             label="Service factor f_B (empty: 1)",
             step=1,

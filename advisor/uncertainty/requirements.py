@@ -41,7 +41,7 @@ class InputDistribution(StrictModel):
     ] = None
     sd: Annotated[
         float | None,
-        number_field(gt=0, desc="standard deviation of a normal law, > 0", label="Std. dev."),
+        number_field(gt=0, desc="standard deviation of a normal law, {range}", label="Std. dev."),
     ] = None
     mean: Annotated[
         float | None,
@@ -60,7 +60,7 @@ class UncertaintyReq(StrictModel):
     over samples of the uncertain inputs; ``target`` makes the choice robust."""
 
     samples: Annotated[
-        int, ask("Latin hypercube samples, 100 … 10⁶", label="Samples", ge=100, le=1_000_000)
+        int, ask("Latin hypercube samples, {range}", label="Samples", ge=100, le=1_000_000)
     ] = 10_000
     seed: Annotated[
         int, ask("random seed (same seed, same numbers), 0 … 2³²−1", ge=0, le=2**32 - 1)
@@ -71,7 +71,7 @@ class UncertaintyReq(StrictModel):
             gt=0,
             lt=1,
             allow_inf_nan=False,
-            desc="required probability of passing every check, 0 … 1: the lightest candidate "
+            desc="required probability of passing every check, {range}: the lightest candidate "
             "that reaches it is chosen; left out: the nominal choice, with its probability",
             label="Target P(pass)",
         ),

@@ -27,18 +27,18 @@ class LinearReq(StrictModel):
     force_N: Annotated[
         float,
         number_field(
-            ge=1, le=5e6, desc="rated axial force, N; 1 N … 5 MN", label="Axial force", step=1
+            ge=1, le=5e6, desc="rated axial force, N; {range}", label="Axial force", step=1
         ),
     ]
     stroke_m: Annotated[
-        float, number_field(ge=1e-3, le=20, desc="stroke, m; 1 mm … 20 m", label="Stroke", step=1)
+        float, number_field(ge=1e-3, le=20, desc="stroke, m; {range}", label="Stroke", step=1)
     ]
     travel_time_s: Annotated[
         float,
         number_field(
             ge=0.01,
             le=1e5,
-            desc="time for the full stroke, s; 0.01 … 100000 s",
+            desc="time for the full stroke, s; {range}",
             label="Time for the stroke",
             step=1,
         ),
@@ -48,7 +48,7 @@ class LinearReq(StrictModel):
         number_field(
             ge=1e-3,
             le=20,
-            desc="distance between the screw supports, m; 1 mm … 20 m",
+            desc="distance between the screw supports, m; {range}",
             label="Unsupported screw length",
             step=1,
         ),
@@ -62,14 +62,14 @@ class LinearReq(StrictModel):
         ),
     ] = "pinned-pinned"
     buckling_safety_factor: Annotated[
-        float, number_field(ge=1, le=20, desc="required margin against buckling; 1 … 20")
+        float, number_field(ge=1, le=20, desc="required margin against buckling; {range}")
     ] = 3.0
     emergency_stop_force_N: Annotated[
         float | None,
         number_field(
             ge=1,
             le=5e6,
-            desc="momentary peak axial force in an emergency stop or a collision, 1 N … 5 MN; "
+            desc="momentary peak axial force in an emergency stop or a collision, {range}; "
             "left out: the rated force (the holding device is sized for the larger)",
             label="Emergency-stop force",
             step=1,
@@ -108,7 +108,7 @@ class ScrewThrustReq(StrictModel):
         number_field(
             gt=0,
             le=2000,
-            desc="mean diameter of the thrust collar, mm (outer + inner)/2; > 0 … 2000 mm",
+            desc="mean diameter of the thrust collar, mm (outer + inner)/2; {range}",
             label="Collar mean diameter (collar only)",
             step=2,
         ),
@@ -118,7 +118,7 @@ class ScrewThrustReq(StrictModel):
         number_field(
             ge=0.01,
             le=0.6,
-            desc="collar friction coefficient f_c; 0.01 … 0.6 (Shigley Table 8-6: 0.06 … 0.12 "
+            desc="collar friction coefficient f_c; {range} (Shigley Table 8-6: 0.06 … 0.12 "
             "running)",
             label="Collar friction coefficient (collar only)",
             step=2,
@@ -140,7 +140,7 @@ class ScrewThrustReq(StrictModel):
             ge=0.5,
             le=5000,
             desc="kinematic viscosity of the bearing's lubricant at its temperature, mm²/s; "
-            "0.5 … 5000",
+            "{range}",
         ),
     ] = 68.0
 
@@ -153,7 +153,7 @@ class ScrewReq(StrictModel):
         number_field(
             ge=0.01,
             le=0.6,
-            desc="thread friction coefficient f; 0.01 … 0.6",
+            desc="thread friction coefficient f; {range}",
             label="Thread friction coefficient f",
             step=3,
         ),
@@ -161,7 +161,7 @@ class ScrewReq(StrictModel):
     starts: Annotated[
         int | None,
         ask(
-            "number of thread starts, 1 … 4; left out, the advisor chooses it",
+            "number of thread starts, {range}; left out, the advisor chooses it",
             label="Thread starts (empty: chosen)",
             step=2,
             ge=1,

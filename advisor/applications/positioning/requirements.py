@@ -31,7 +31,7 @@ class CandidateMotor(StrictModel):
         number_field(
             ge=0.1,
             le=1e4,
-            desc="rated speed ω0, 0.1 … 10⁴ rad/s (about 1 … 95 000 rpm)",
+            desc="rated speed ω0, {range} (about 1 … 95 000 rpm)",
             label="speed ω0",
             step=3,
         ),
@@ -41,7 +41,7 @@ class CandidateMotor(StrictModel):
         number_field(
             ge=1e-9,
             le=1e3,
-            desc="motor and coupling inertia J0, 10⁻⁹ … 10³ kg·m²",
+            desc="motor and coupling inertia J0, {range}",
             label="inertia J0",
             step=3,
         ),
@@ -51,7 +51,7 @@ class CandidateMotor(StrictModel):
         number_field(
             ge=1e-5,
             le=1e6,
-            desc="starting and braking torque M_λ, 10⁻⁵ … 10⁶ N·m",
+            desc="starting and braking torque M_λ, {range}",
             label="start/brake torque M_λ",
             step=3,
         ),
@@ -78,7 +78,7 @@ class PositioningReq(StrictModel):
         number_field(
             ge=1e-4,
             le=1e5,
-            desc="path of the load shaft α, 10⁻⁴ … 10⁵ rad (0.006° to about 16 000 turns)",
+            desc="path of the load shaft α, {range} (0.006° to about 16 000 turns)",
             label="Path of the load shaft",
             step=1,
         ),
@@ -109,7 +109,7 @@ class PositioningReq(StrictModel):
             ge=1e-4,
             le=1e6,
             desc=(
-                "required move time, 10⁻⁴ … 10⁶ s: the smallest motor that moves the load "
+                "required move time, {range}: the smallest motor that moves the load "
                 "within it is chosen; required without candidate motors (or a [duty] cycle)"
             ),
             label="Required move time",

@@ -35,7 +35,7 @@ class RotaryReq(StrictModel):
         number_field(
             ge=1,
             le=1e5,
-            desc="peak output torque, 1 … 10⁵ N·m",
+            desc="peak output torque, {range}",
             label="Output torque",
             step=1,
         ),
@@ -45,7 +45,7 @@ class RotaryReq(StrictModel):
         number_field(
             ge=1e-3,
             le=1e4,
-            desc="maximum output speed, 10⁻³ … 10⁴ rpm",
+            desc="maximum output speed, {range}",
             label="Output speed",
             step=1,
         ),
@@ -56,7 +56,7 @@ class RotaryReq(StrictModel):
             ge=1,
             le=1e6,
             desc="momentary peak torque at the output in an emergency stop or a collision, "
-            "1 … 10⁶ N·m; left out: the output torque (the stages and the holding device are "
+            "{range}; left out: the output torque (the stages and the holding device are "
             "checked against it)",
             label="Emergency-stop torque",
             step=1,
@@ -67,7 +67,7 @@ class RotaryReq(StrictModel):
         number_field(
             ge=1e-3,
             le=10,
-            desc="how long one emergency-stop peak lasts, 1 ms … 10 s",
+            desc="how long one emergency-stop peak lasts, {range}",
         ),
     ] = 0.15
     emergency_stops: Annotated[
@@ -75,7 +75,7 @@ class RotaryReq(StrictModel):
         Field(
             ge=1,
             le=10**7,
-            description="emergency stops over the life, 1 … 10⁷; compared with the count a "
+            description="emergency stops over the life, {range}; compared with the count a "
             "strain-wave gear's momentary peak allows",
         ),
     ] = None
@@ -88,13 +88,13 @@ class OutputLoadReq(StrictModel):
     radial_N: Annotated[
         float,
         number_field(
-            ge=0, le=1e7, desc="radial force on the output, 0 … 10⁷ N", label="Radial load", step=2
+            ge=0, le=1e7, desc="radial force on the output, {range}", label="Radial load", step=2
         ),
     ] = 0.0
     axial_N: Annotated[
         float,
         number_field(
-            ge=0, le=1e7, desc="axial force on the output, 0 … 10⁷ N", label="Axial load", step=2
+            ge=0, le=1e7, desc="axial force on the output, {range}", label="Axial load", step=2
         ),
     ] = 0.0
     tilting_moment_Nm: Annotated[
@@ -102,7 +102,7 @@ class OutputLoadReq(StrictModel):
         number_field(
             ge=0,
             le=1e6,
-            desc="tilting moment on the output, 0 … 10⁶ N·m (taken by a pair of bearings "
+            desc="tilting moment on the output, {range} (taken by a pair of bearings "
             "bearing_spacing_mm apart)",
             label="Tilting moment",
             step=2,
@@ -113,7 +113,7 @@ class OutputLoadReq(StrictModel):
         number_field(
             ge=1e-3,
             le=1e4,
-            desc="output speed the bearing's life is counted at, 10⁻³ … 10⁴ rpm (as "
+            desc="output speed the bearing's life is counted at, {range} (as "
             "rotary.speed_rpm: slower, the life in hours is not finite); left out: "
             "the mean output speed of the duty cycle, or rotary.speed_rpm",
         ),
@@ -134,7 +134,7 @@ class OutputLoadReq(StrictModel):
             ge=1,
             le=1e4,
             desc="distance between the two output bearings that take a tilting moment, "
-            "1 … 10⁴ mm (a bearing is wider than 1 mm); left out: one bearing takes the loads "
+            "{range} (a bearing is wider than 1 mm); left out: one bearing takes the loads "
             "(no tilting moment)",
         ),
     ] = None
@@ -146,14 +146,14 @@ class DriveReq(StrictModel):
     """The servo drive's DC bus ([drive]): where the energy the motor gives back goes."""
 
     bus_voltage_V: Annotated[
-        float, number_field(ge=12, le=2000, desc="nominal DC-bus voltage, 12 … 2000 V")
+        float, number_field(ge=12, le=2000, desc="nominal DC-bus voltage, {range} V")
     ] = 300.0
     bus_max_voltage_V: Annotated[
         float,
         number_field(
             ge=12,
             le=2500,
-            desc="largest DC-bus voltage (the braking chopper's threshold), 12 … 2500 V",
+            desc="largest DC-bus voltage (the braking chopper's threshold), {range} V",
         ),
     ] = 400.0
     bus_capacitance_uF: Annotated[
@@ -161,7 +161,7 @@ class DriveReq(StrictModel):
         number_field(
             gt=0,
             le=1e6,
-            desc="the drive's DC-bus capacitance, > 0 … 10⁶ µF; left out: the resistor is "
+            desc="the drive's DC-bus capacitance, {range} µF; left out: the resistor is "
             "sized as if the bus took nothing",
         ),
     ] = None
@@ -178,7 +178,7 @@ class RotaryDesignReq(DesignReq):
             ge=1,
             le=1e7,
             desc="required L10 life of the reducer's rolling elements and of the output "
-            "bearing, 1 … 10⁷ h; left out: the lives are reported, not checked",
+            "bearing, {range}; left out: the lives are reported, not checked",
             label="Required life L10",
             step=1,
         ),
@@ -191,7 +191,7 @@ class EnvelopeReq(StrictModel):
         number_field(
             ge=1,
             le=1e4,
-            desc="largest outer diameter of the reducer, 1 … 10⁴ mm",
+            desc="largest outer diameter of the reducer, {range}",
             label="Largest reducer diameter",
             step=2,
         ),
@@ -201,7 +201,7 @@ class EnvelopeReq(StrictModel):
         number_field(
             ge=1,
             le=1e4,
-            desc="largest length of the reducer, 1 … 10⁴ mm",
+            desc="largest length of the reducer, {range}",
             label="Largest reducer length",
             step=2,
         ),
@@ -209,7 +209,7 @@ class EnvelopeReq(StrictModel):
 
 
 class MagnetLossPoint(StrictModel):
-    speed_rpm: Annotated[float, number_field(ge=1, le=2e5, desc="motor speed, 1 … 2·10⁵ rpm")]
+    speed_rpm: Annotated[float, number_field(ge=1, le=2e5, desc="motor speed, {range}")]
     loss_W: Annotated[
         float,
         number_field(
@@ -227,39 +227,39 @@ class ReferenceMotor(StrictModel):
     """The design the loss model scales from; the defaults are the seed 000 motor."""
 
     speed_rpm: Annotated[
-        float, number_field(ge=100, le=2e5, desc="speed of the reference design, 100 … 2·10⁵ rpm")
+        float, number_field(ge=100, le=2e5, desc="speed of the reference design, {range}")
     ] = 5000.0
     pole_pairs: Annotated[
-        int, Field(ge=1, le=50, description="electrical reduction p, 1 … 50 pole pairs")
+        int, Field(ge=1, le=50, description="electrical reduction p, {range} pole pairs")
     ] = 6
     phase_resistance_ohm: Annotated[
-        float, number_field(ge=1e-4, le=1e3, desc="phase resistance, 10⁻⁴ … 10³ Ω")
+        float, number_field(ge=1e-4, le=1e3, desc="phase resistance, {range}")
     ] = 1.14
-    current_A: Annotated[
-        float, number_field(ge=0.01, le=1e4, desc="phase current, 0.01 … 10⁴ A")
-    ] = 5.5
-    conducting_phases: Annotated[int, Field(ge=1, le=3, description="phases in series, 1 … 3")] = 2
+    current_A: Annotated[float, number_field(ge=0.01, le=1e4, desc="phase current, {range}")] = 5.5
+    conducting_phases: Annotated[
+        int, Field(ge=1, le=3, description="phases in series, {range}")
+    ] = 2
     torque_Nm: Annotated[
-        float, number_field(ge=1e-3, le=1e4, desc="torque at that current, 10⁻³ … 10⁴ N·m")
+        float, number_field(ge=1e-3, le=1e4, desc="torque at that current, {range}")
     ] = 2.0
     stator_steel_area_mm2: Annotated[
-        float, number_field(ge=1, le=1e7, desc="stator steel area, 1 … 10⁷ mm²")
+        float, number_field(ge=1, le=1e7, desc="stator steel area, {range}")
     ] = 1200.0
-    stack_length_mm: Annotated[
-        float, number_field(ge=1, le=1e4, desc="stack length, 1 … 10⁴ mm")
-    ] = 50.0
+    stack_length_mm: Annotated[float, number_field(ge=1, le=1e4, desc="stack length, {range}")] = (
+        50.0
+    )
     stacking_factor: Annotated[
-        float, number_field(ge=0.5, le=1, desc="steel fill of the stack, 0.5 … 1")
+        float, number_field(ge=0.5, le=1, desc="steel fill of the stack, {range}")
     ] = 0.85
     steel_density_kg_m3: Annotated[
-        float, number_field(ge=6000, le=9000, desc="steel density, 6000 … 9000 kg/m³")
+        float, number_field(ge=6000, le=9000, desc="steel density, {range}")
     ] = 7800.0
     steel_grade: Annotated[str, Field(description="GOST 21427.2-83 grade, e.g. 2413")] = "2413"
     steel_thickness_mm: Annotated[
-        float, number_field(ge=0.05, le=2, desc="lamination thickness, 0.05 … 2 mm")
+        float, number_field(ge=0.05, le=2, desc="lamination thickness, {range}")
     ] = 0.35
     induction_T: Annotated[
-        float, number_field(ge=0.1, le=2.5, desc="peak flux density, 0.1 … 2.5 T")
+        float, number_field(ge=0.1, le=2.5, desc="peak flux density, {range}")
     ] = 1.5
     iron_loss_model: Annotated[
         Literal["quadratic", "three_term"], Field(description="form of eq. (5) used")
@@ -292,7 +292,7 @@ class BldcMotorReq(StrictModel):
     candidate_speeds_rpm: Annotated[
         list[Annotated[float, number_field(ge=100, le=2e5, desc="a motor speed, 100 … 2·10⁵ rpm")]],
         ask(
-            "motor speeds to compare, 100 … 2·10⁵ rpm each, each once, at most 20",
+            "motor speeds to compare, {range} each, each once, at most 20",
             label="Motor speeds to compare",
             step=3,
             unique_items=True,
@@ -306,7 +306,7 @@ class BldcMotorReq(StrictModel):
         number_field(
             ge=0.1,
             le=1e6,
-            desc="total losses the motor's cooling carries away, 0.1 … 10⁶ W; by default the "
+            desc="total losses the motor's cooling carries away, {range}; by default the "
             "reference motor's own total losses at its rated point (same frame, same cooling)",
         ),
     ] = None
@@ -324,15 +324,15 @@ class GearboxReq(StrictModel):
         number_field(
             ge=0.3,
             le=1,
-            desc="efficiency of one stage, 0.3 … 1",
+            desc="efficiency of one stage, {range}",
             label="Efficiency of one stage",
             step=3,
         ),
     ] = 0.9
     density_kg_m3: Annotated[
-        float, number_field(ge=1000, le=2e4, desc="material density, 1000 … 2·10⁴ kg/m³")
+        float, number_field(ge=1000, le=2e4, desc="material density, {range}")
     ] = 7800.0
-    fill_factor: Annotated[float, number_field(ge=0.1, le=1, desc="k_з of eq. (19), 0.1 … 1")] = (
+    fill_factor: Annotated[float, number_field(ge=0.1, le=1, desc="k_з of eq. (19), {range}")] = (
         0.75
     )
     choice: Annotated[

@@ -10,7 +10,9 @@ from advisor.applications.spinning_rotor.requirement_checks import (
     MIN_SLEW_RATE_rad_s,
     RotorDerived,
 )
+from advisor.core.ranges import range_prose
 from advisor.core.requirements import (
+    RANGE,
     ApplicationReq,
     ProjectField,
     StrictModel,
@@ -21,14 +23,16 @@ from advisor.core.requirements import (
 )
 
 
-def _rng(lo: float, hi: float, desc: str, *, open_lo: bool = False, **question: Any) -> Any:
-    """A number in [lo, hi] (or (lo, hi] with ``open_lo``), the range stated in the description
-    so that an error names it: the ranges bound what the advisor treats as a physical rotor.
-    ``question``: the wizard's metadata, as for :func:`advisor.core.requirements.ask`."""
-    low = f"above {lo:g}" if open_lo else f"from {lo:g}"
-    if open_lo:
-        return number_field(gt=lo, le=hi, desc=f"{desc}; {low} to {hi:g}", **question)
-    return number_field(ge=lo, le=hi, desc=f"{desc}; {low} to {hi:g}", **question)
+def _rng(lo: float, hi: float, desc: str, **question: Any) -> Any:
+    """A number in [lo, hi], the range stated in the description (in the words of its
+    constraint, :data:`advisor.core.requirements.RANGE`) so that an error names it: the ranges
+    bound what the advisor treats as a physical rotor. ``question``: the wizard's metadata, as
+    for :func:`advisor.core.requirements.ask`."""
+    return number_field(ge=lo, le=hi, desc=f"{desc}; {RANGE}", **question)
+
+
+#: The fastest slew of the housing, rad/s (its slowest but none: MIN_SLEW_RATE_rad_s).
+MAX_SLEW_RATE_rad_s = 100.0
 
 
 class AeroReq(StrictModel):
@@ -100,7 +104,7 @@ class RotorReq(RotorDerived, StrictModel):
     ]
     bearing_count: Annotated[
         int,
-        ask("bearings carrying the rotor; from 2 to 8", label="Bearings", step=3, ge=2, le=8),
+        ask(f"bearings carrying the rotor; {RANGE}", label="Bearings", step=3, ge=2, le=8),
     ] = 2
     ball_plane_to_cg_mm: Annotated[
         float,
@@ -116,9 +120,9 @@ class RotorReq(RotorDerived, StrictModel):
         float,
         number_field(
             ge=0,
-            le=100,
-            desc="external angular velocity Ω of the housing, rad/s; 0 (no slew) or from "
-            f"{MIN_SLEW_RATE_rad_s:g} to 100",
+            le=MAX_SLEW_RATE_rad_s,
+            desc="external angular velocity Ω of the housing, rad/s; 0 (no slew) or "
+            + range_prose("rad/s", ge=MIN_SLEW_RATE_rad_s, le=MAX_SLEW_RATE_rad_s),
             label="Slew rate of the housing Ω",
             step=1,
         ),
