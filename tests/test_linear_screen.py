@@ -10,7 +10,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from advisor.applications.linear.advice import (
-    _catalog_parts,
+    catalog_parts,
     choice_options,
     drive_options,
     first_drive_option,
@@ -107,7 +107,7 @@ def _compare(cat, material, model, force_N, stroke_m, travel_time_s, span_m, fix
                 e.speed_rpm,
             )
             assert s.self_locking_at_low_friction == e.self_locking_at_low_friction
-    lines = _catalog_parts(cat).lines
+    lines = catalog_parts(cat).lines
     options = drive_options(screens, lines)
     assert options == _reference_options(full, cat)
     for hold in (False, True):
@@ -171,8 +171,8 @@ def test_the_screen_agrees_with_the_full_evaluation(
 def test_catalog_parts_belong_to_their_catalog():
     shipped = load_catalogs()
     user = _load_and_validate(EXAMPLES / "catalogs")  # one more motor, more threads
-    a, b = _catalog_parts(shipped), _catalog_parts(user)
-    assert _catalog_parts(shipped) is a  # computed once per catalog
+    a, b = catalog_parts(shipped), catalog_parts(user)
+    assert catalog_parts(shipped) is a  # computed once per catalog
     assert [g.thread for g in a.threads] == list(shipped.threads)
     assert [g.thread for g in b.threads] == list(user.threads)
     assert any(g.name == "Tr110x12" for g in b.threads)
@@ -182,8 +182,8 @@ def test_catalog_parts_belong_to_their_catalog():
     assert models == {m.model for m in user.motors}
     # an equal catalog that is another object gets parts of its own
     again = _load_and_validate(None)
-    assert _catalog_parts(again) is not a
-    assert [g.name for g in _catalog_parts(again).threads] == [g.name for g in a.threads]
+    assert catalog_parts(again) is not a
+    assert [g.name for g in catalog_parts(again).threads] == [g.name for g in a.threads]
 
 
 @settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow])
@@ -207,7 +207,7 @@ def test_the_options_read_with_a_thread_imposed_give_the_same_choice(
     advisor's own best, not every option: its finding (choice, words, counts, runners-up,
     the advisor's own choice) and the options per pole count are the same as from all."""
     cat = load_catalogs()
-    parts = _catalog_parts(cat)
+    parts = catalog_parts(cat)
     starts_options = STARTS if starts is None else (starts,)
     screens = screen_threads(
         parts.threads,

@@ -92,7 +92,7 @@ _PARTS: dict[int, tuple[Catalogs, CatalogParts]] = {}
 _PARTS_MAX = 8
 
 
-def _catalog_parts(cat: Catalogs) -> CatalogParts:
+def catalog_parts(cat: Catalogs) -> CatalogParts:
     """The thread geometries and fitted motor lines of ``cat``, computed once per catalog:
     they do not depend on the requirement."""
     held = _PARTS.get(id(cat))
@@ -564,17 +564,24 @@ def _motor_checks(
     ]
 
 
+def thread_screens(req: Requirements, cat: Catalogs, demand: ScrewDemand) -> list[ThreadScreen]:
+    """Every thread of the catalog with every number of starts allowed, screened under the
+    demand; where the load must hold, through the one-way device on every thread that needs
+    one."""
+    s = req.screw
+    starts_options = (s.starts,) if s.starts is not None else STARTS_FREE
+    device_eta = _device_efficiency(req) if req.application.hold_without_power else 1.0
+    return _through_device(demand.screen(catalog_parts(cat).threads, starts_options), device_eta)
+
+
 def _choose_drive(
     req: Requirements, cat: Catalogs, demand: ScrewDemand, trace: Trace
 ) -> tuple[screw_rules.DriveOption, list[ThreadScreen], list[screw_rules.DriveOption]]:
     """The joint choice of thread, starts and motor (rule SCR-04) from the screen of every
     thread; the screens and the options it read."""
     s, hold = req.screw, req.application.hold_without_power
-    parts = _catalog_parts(cat)
-    starts_options = (s.starts,) if s.starts is not None else STARTS_FREE
-    device_eta = _device_efficiency(req) if hold else 1.0
-    screens = _through_device(demand.screen(parts.threads, starts_options), device_eta)
-    options = choice_options(screens, parts.lines, s.thread, hold)
+    screens = thread_screens(req, cat, demand)
+    options = choice_options(screens, catalog_parts(cat).lines, s.thread, hold)
     _imposed_thread_passes(screens, s.thread, demand)
     chosen = trace.apply(screw_rules.choose_drive, options, hold, s.thread, s.starts)
     if chosen is None:
@@ -599,7 +606,7 @@ def advise_linear(
         screw_rules.holding, hold, ev.self_locking, ev.self_locking_at_low_friction, chosen.label
     )
     freq = req.motor.supply_frequency_Hz
-    poles = _pole_options(options, _catalog_parts(cat).fits, s.thread, hold, freq)
+    poles = _pole_options(options, catalog_parts(cat).fits, s.thread, hold, freq)
     trace.apply(induction_rules.choose_pole_pairs, chosen.pole_pairs, ev.speed_rpm, poles)
     chain = _drive(req, ev, chosen.motor_model, cat, trace)
     chain, duty, duty_checks, warnings = _size_for_duty(req, ev, chain, cat, trace)

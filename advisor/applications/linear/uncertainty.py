@@ -19,7 +19,8 @@ verdict only.
 
 import math
 from collections.abc import Callable
-from typing import Any
+from dataclasses import dataclass, replace
+from typing import Any, NamedTuple
 
 import numpy as np
 
@@ -76,19 +77,116 @@ def _check(report: Any, cid: str) -> Any:
     return next((c for c in report.checks if c.id == cid), None)
 
 
-def margin_model(req: Any, report: Any, cat: Any) -> tuple[Margins, dict[str, float]]:
-    """The margins of the design in ``report`` as functions of the uncertain inputs, and the
-    nominal value of every input."""
-    from advisor.applications.linear.advice import thrust_face
-    from advisor.calc import screw as screw_calc
+class DemandArrays(NamedTuple):
+    """The demands and limits the margins scale with, over samples of the inputs."""
+
+    force: np.ndarray  # axial force  [N]
+    core: np.ndarray  # von Mises stress of the core  [Pa]
+    pcr: np.ndarray  # critical buckling load  [N]
+    drive: np.ndarray  # thread + thrust-face torque  [N·m]
+    n_work: np.ndarray  # the motor's working speed  [rpm]; NaN: it stalls
+    whirl: np.ndarray  # ∝ the whirling speed: 1/L²  [1/m²]
+
+
+@dataclass(frozen=True, slots=True)
+class DemandModel:
+    """One design's demands as numpy functions of the uncertain inputs: the thread, the
+    thrust face, the steel, the end fixity and the motor's fitted curve held fixed."""
+
+    d2_m: float
+    d3_m: float
+    lead_angle_rad: float
+    friction_model: str
+    thrust: Any  # advisor.calc.sizing.ThrustFace | None
+    speed_rpm: float
+    fixity_factor: float
+    elastic_modulus_Pa: float
+    yield_strength_Pa: float
+    curve: Any  # advisor.calc.induction.KlossCurve
+    synchronous_speed_rpm: float
+    #: the motor's torque over the drive torque: the one-way device's 1/η, if any
+    at_motor_ratio: float = 1.0
+
+    def thrust_torque(self, force, fc):
+        """The thrust face's friction torque: a collar's F·f_c·d_c/2, or a rolling bearing's
+        SKF moment on a grid of forces, interpolated; none without a face."""
+        thrust = self.thrust
+        if thrust is None:
+            return np.zeros_like(force)
+        if thrust.kind == "collar":
+            return np.abs(force) * fc * thrust.mean_diameter_m / 2.0
+        grid = np.linspace(float(force.min()), float(force.max()), 33)
+        torques = [thrust.torque_Nm(float(f), self.speed_rpm) for f in grid]
+        return np.interp(force, grid, torques)
+
+    def __call__(self, x: dict[str, np.ndarray]) -> DemandArrays:
+        f_n = x["linear.force_N"]
+        psi, model = self.lead_angle_rad, self.friction_model
+        m_thread = thread_torque(f_n, self.d2_m, psi, x["screw.friction_coefficient"], model)
+        fc = x.get("screw.thrust.friction_coefficient", 0.0)
+        drive = m_thread + self.thrust_torque(f_n, fc)
+        slip = working_slip(self.curve, drive * self.at_motor_ratio)
+        span = x["linear.support_span_m"]
+        return DemandArrays(
+            force=f_n,
+            core=core_stress(f_n, m_thread, self.d3_m),
+            pcr=critical_load(
+                self.d3_m, span, self.fixity_factor, self.elastic_modulus_Pa, self.yield_strength_Pa
+            ),
+            drive=drive,
+            n_work=self.synchronous_speed_rpm * (1.0 - slip),
+            whirl=1.0 / span**2,
+        )
+
+
+def _demand_model(req: Any, report: Any, cat: Any, thrust: Any) -> DemandModel:
+    """The demand model of the design in ``report``, the motor's ratio still 1."""
+    from advisor.calc.screw import END_FIXITY_FACTOR, lead_angle
     from advisor.calc.sizing import fit_motor
 
     s = report.design.screw
     thread = cat.thread(s.thread)
-    d2, d3 = thread.d2_mm * 1e-3, thread.d3_mm * 1e-3
-    psi = screw_calc.lead_angle(thread.pitch_mm * 1e-3, d2, s.starts)
-    model = s.friction_model
-    lin = req.linear
+    d2 = thread.d2_mm * 1e-3
+    steel = cat.steel(req.screw.screw_steel)
+    motor = next(m for m in cat.motors if m.model == report.design.motor.model)
+    return DemandModel(
+        d2_m=d2,
+        d3_m=thread.d3_mm * 1e-3,
+        lead_angle_rad=lead_angle(thread.pitch_mm * 1e-3, d2, s.starts),
+        friction_model=s.friction_model,
+        thrust=thrust,
+        speed_rpm=s.speed_rpm,
+        fixity_factor=END_FIXITY_FACTOR[req.linear.end_fixity],
+        elastic_modulus_Pa=steel.elastic_modulus_MPa * 1e6,
+        yield_strength_Pa=steel.yield_strength_MPa * 1e6,
+        curve=fit_motor(motor).curve,
+        synchronous_speed_rpm=motor.synchronous_speed_rpm,
+    )
+
+
+#: How each modelled check's margin scales from its nominal one: f(demands, nominal demands).
+SCALE: dict[str, Callable[[DemandArrays, DemandArrays], np.ndarray]] = {
+    "core_stress": lambda d, d0: d0.core / d.core,
+    "buckling": lambda d, d0: (d.pcr / d0.pcr) * (d0.force / d.force),
+    "nut_pressure": lambda d, d0: d0.force / d.force,
+    "thrust_bearing_static": lambda d, d0: d0.force / d.force,
+    "motor_rated_torque": lambda d, d0: d0.drive / d.drive,
+    "motor_starting_torque": lambda d, d0: d0.drive / d.drive,
+    "travel_time": lambda d, d0: np.nan_to_num(d.n_work / d0.n_work, nan=0.0),
+    "critical_speed": lambda d, d0: np.nan_to_num(
+        (d.whirl / d0.whirl) * (d0.n_work / d.n_work), nan=np.inf
+    ),
+}
+#: Checks whose margin does not move with the inputs: the nut is built, its proportions fixed.
+CONSTANT = {"nut_height", "nut_turns"}
+
+
+def margin_model(req: Any, report: Any, cat: Any) -> tuple[Margins, dict[str, float]]:
+    """The margins of the design in ``report`` as functions of the uncertain inputs, and the
+    nominal value of every input."""
+    from advisor.applications.linear.advice import thrust_face
+
+    s, lin = report.design.screw, req.linear
     thrust = thrust_face(req, cat)
     nominal = {
         "linear.force_N": lin.force_N,
@@ -97,59 +195,14 @@ def margin_model(req: Any, report: Any, cat: Any) -> tuple[Margins, dict[str, fl
     }
     if thrust is not None and thrust.kind == "collar":
         nominal["screw.thrust.friction_coefficient"] = thrust.friction_coefficient
-    steel = cat.steel(req.screw.screw_steel)
-    e_pa, sy_pa = steel.elastic_modulus_MPa * 1e6, steel.yield_strength_MPa * 1e6
-    mu = screw_calc.END_FIXITY_FACTOR[lin.end_fixity]
-    motor = next(m for m in cat.motors if m.model == report.design.motor.model)
-    curve = fit_motor(motor).curve
-    n0 = motor.synchronous_speed_rpm
-    speed = s.speed_rpm
-
-    def thrust_torque(force, fc):
-        if thrust is None:
-            return np.zeros_like(force)
-        if thrust.kind == "collar":
-            return np.abs(force) * fc * thrust.mean_diameter_m / 2.0
-        # a rolling bearing: its SKF moment on a grid of forces, interpolated
-        grid = np.linspace(float(force.min()), float(force.max()), 33)
-        torques = [thrust.torque_Nm(float(f), speed) for f in grid]
-        return np.interp(force, grid, torques)
-
-    def demands(x: dict[str, np.ndarray]) -> dict[str, np.ndarray]:
-        f_n = x["linear.force_N"]
-        m_thread = thread_torque(f_n, d2, psi, x["screw.friction_coefficient"], model)
-        drive = m_thread + thrust_torque(f_n, x.get("screw.thrust.friction_coefficient", 0.0))
-        slip = working_slip(curve, drive * at_motor_ratio)
-        return {
-            "force": f_n,
-            "core": core_stress(f_n, m_thread, d3),
-            "pcr": critical_load(d3, x["linear.support_span_m"], mu, e_pa, sy_pa),
-            "drive": drive,
-            "n_work": n0 * (1.0 - slip),  # NaN: the motor stalls
-            "whirl": 1.0 / x["linear.support_span_m"] ** 2,
-        }
-
     # the motor sees the drive torque over the one-way device's efficiency (if any)
+    model = _demand_model(req, report, cat, thrust)
     rated = _check(report, "motor_rated_torque")
     at_nominal = {k: np.array([v], dtype=float) for k, v in nominal.items()}
-    at_motor_ratio = 1.0
-    d0_drive = demands(at_nominal)["drive"][0]
-    at_motor_ratio = rated.value / d0_drive if rated is not None and d0_drive > 0 else 1.0
-    d0 = demands(at_nominal)
-
-    scale: dict[str, Callable[[dict[str, np.ndarray]], np.ndarray]] = {
-        "core_stress": lambda d: d0["core"] / d["core"],
-        "buckling": lambda d: (d["pcr"] / d0["pcr"]) * (d0["force"] / d["force"]),
-        "nut_pressure": lambda d: d0["force"] / d["force"],
-        "thrust_bearing_static": lambda d: d0["force"] / d["force"],
-        "motor_rated_torque": lambda d: d0["drive"] / d["drive"],
-        "motor_starting_torque": lambda d: d0["drive"] / d["drive"],
-        "travel_time": lambda d: np.nan_to_num(d["n_work"] / d0["n_work"], nan=0.0),
-        "critical_speed": lambda d: np.nan_to_num(
-            (d["whirl"] / d0["whirl"]) * (d0["n_work"] / d["n_work"]), nan=np.inf
-        ),
-    }
-    constant = {"nut_height", "nut_turns"}  # the nut is built: its proportions are fixed
+    d0_drive = model(at_nominal).drive[0]
+    ratio = rated.value / d0_drive if rated is not None and d0_drive > 0 else 1.0
+    model = replace(model, at_motor_ratio=ratio)
+    d0 = model(at_nominal)
 
     def margins(x: dict[str, np.ndarray]) -> dict[str, np.ndarray]:
         n = len(next(iter(x.values())))
@@ -157,12 +210,12 @@ def margin_model(req: Any, report: Any, cat: Any) -> tuple[Margins, dict[str, fl
             k: np.broadcast_to(np.asarray(x.get(k, v), dtype=float), (n,))
             for k, v in nominal.items()
         }
-        d = demands(full)
+        d = model(full)
         out = {}
         for c in report.checks:
-            if c.id in scale:
-                out[c.id] = c.margin * scale[c.id](d)
-            elif c.id in constant:
+            if c.id in SCALE:
+                out[c.id] = c.margin * SCALE[c.id](d, d0)
+            elif c.id in CONSTANT:
                 out[c.id] = np.full(n, c.margin)
         return out
 
@@ -175,33 +228,15 @@ def candidates(req: Any, cat: Any) -> list[tuple[str, int, int]]:
     the smallest motor of that pole count that drives it. Built by the linear advice's own
     functions, so the robust choice looks at exactly the advisor's candidates."""
     from advisor.applications.linear import advice
-    from advisor.calc.service_factor import service_factor
-    from advisor.calc.sizing import screen_threads
     from advisor.core.rulebook import Trace
     from rules import screw as screw_rules
 
-    lin, s, trace = req.linear, req.screw, Trace()
-    material, _ = advice._material(req, cat, trace)
-    hold = req.application.hold_without_power
-    parts = advice._catalog_parts(cat)
-    screens = screen_threads(
-        parts.threads,
-        (s.starts,) if s.starts is not None else advice.STARTS_FREE,
-        force_N=lin.force_N,
-        stroke_m=lin.stroke_m,
-        travel_time_s=lin.travel_time_s,
-        span_m=lin.support_span_m,
-        end_fixity=lin.end_fixity,
-        buckling_safety_factor=lin.buckling_safety_factor,
-        friction_model=s.friction_model,
-        material=material,
-        thrust=advice.thrust_face(req, cat),
-        service_factor=service_factor(getattr(req, "design", None)).value,
-    )
-    screens = advice._through_device(screens, advice._device_efficiency(req) if hold else 1.0)
+    s, hold = req.screw, req.application.hold_without_power
+    demand, _ = advice.screw_demand(req, cat, Trace())
+    screens = advice.thread_screens(req, cat, demand)
     options = [
         o
-        for o in advice.drive_options(screens, parts.lines)
+        for o in advice.drive_options(screens, advice.catalog_parts(cat).lines)
         if s.thread is None or o.thread == s.thread
     ]
     options.sort(key=lambda o: screw_rules.drive_order(o, hold))
