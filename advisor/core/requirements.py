@@ -138,7 +138,7 @@ def number_field(
     return ask(desc, gt=gt, le=le, ge=ge, allow_inf_nan=False, **question)
 
 
-def light_name(fn: Any) -> str:
+def import_path(fn: Any) -> str:
     """``module:qualname`` of a pydantic-free function (what the compiled spec names)."""
     return f"{fn.__module__}:{fn.__qualname__}"
 
@@ -152,7 +152,7 @@ def after_check(check: Any) -> Any:
         check(self)
         return self
 
-    run.__light__ = light_name(check)  # type: ignore[attr-defined]
+    run.__compiled_twin__ = import_path(check)  # type: ignore[attr-defined]
     return model_validator(mode="after")(run)
 
 
@@ -163,7 +163,7 @@ def field_check(field: str, check: Any) -> Any:
     def run(cls: Any, v: Any) -> Any:
         return check(v)
 
-    run.__light__ = light_name(check)  # type: ignore[attr-defined]
+    run.__compiled_twin__ = import_path(check)  # type: ignore[attr-defined]
     return field_validator(field)(classmethod(run))
 
 
@@ -199,7 +199,7 @@ class ApplicationReq(StrictModel):
 
     # the compiled validator's twin, advisor.core.registry.registered (the message stays
     # pydantic's: a document the compiled validator refuses is validated again by this model)
-    _registered.__light__ = "advisor.core.registry:registered"  # type: ignore[attr-defined]
+    _registered.__compiled_twin__ = "advisor.core.registry:registered"  # type: ignore[attr-defined]
     _registered = field_validator("kind")(classmethod(_registered))  # type: ignore[assignment]
 
 

@@ -1,14 +1,34 @@
 """Compile the requirement models into plain data: the spec the batch path validates with.
 
 The pydantic models (``advisor/applications/*/requirements.py``) stay the one source of
-truth for every field: this module walks them and writes what :mod:`advisor.core.compiled_validator`
-needs — each field's type, range, default, and the model's own checks (pure functions,
-named by import path) — into :mod:`advisor.core.requirement_spec`. The batch path then reads
-a requirement file without importing pydantic, whose model machinery alone costs more than
-the advice (issue 16). ``tests/test_compiled_validator.py`` regenerates the spec and fails
-when the committed file differs, so a changed model cannot go unnoticed.
+truth for every field: this module walks them and writes what
+:mod:`advisor.core.compiled_validator` needs — each field's type, range, default, and the
+model's own checks (pure functions, named by import path) — into
+:mod:`advisor.core.requirement_spec`. The batch path then reads a requirement file without
+importing pydantic, whose model machinery alone costs more than the advice.
+``tests/test_compiled_validator.py`` regenerates the spec and fails when the committed file
+differs, so a changed model cannot go unnoticed. After changing a model::
 
-    python -m advisor.core.spec_gen        # rewrites advisor/core/requirement_spec.py
+    .venv/bin/python -m advisor.core.spec_gen        # rewrites advisor/core/requirement_spec.py
+
+What it compiles (the generator's limits, in one place): anything else stops it with a
+ValueError naming the model and the field, never a validator that accepts or builds otherwise
+than pydantic.
+
+- models: ``extra="forbid"``, ``strict=True``, ``allow_inf_nan=False`` (with ``frozen``,
+  ``defer_build``, ``title``; no other setting); no serializers, computed fields or
+  ``model_post_init``; methods and properties only in a mixin with ``__slots__ = ()``;
+- fields: ``float``, ``int``, ``str``, ``bool``, a ``Literal`` of strings, ``X | None``, a
+  ``list`` of those or of models, a nested model; constraints ``ge``, ``gt``, ``le``, ``lt``,
+  ``min_length``, ``max_length`` (none on a bool, a literal or a table); a default that is
+  plain data or a model instance; no aliases, default factories, ``exclude``,
+  ``validate_default`` or discriminators;
+- validators: ``after`` field and model validators only, each attached with
+  :func:`advisor.core.requirements.after_check` / ``field_check`` (or marked with
+  ``__compiled_twin__``), so that the compiled validator runs the same pure function.
+
+A model of an application registered outside ``advisor.`` (a test, a plug-in) is not compiled:
+pydantic validates its files.
 """
 
 import types
@@ -105,9 +125,11 @@ def _default(value: Any) -> Any:
     raise ValueError(f"unsupported default {value!r}")
 
 
-def _light(fn: Any) -> str:
+def _twin(fn: Any) -> str:
+    """The import path of the pydantic-free function a validator runs (its twin, which the
+    compiled validator runs in its place)."""
     for f in (fn, getattr(fn, "__func__", None), getattr(fn, "__wrapped__", None)):
-        name = getattr(f, "__light__", None)
+        name = getattr(f, "__compiled_twin__", None)
         if name:
             return name
     raise ValueError(f"validator {fn!r} has no pydantic-free twin (see after_check)")
@@ -144,11 +166,8 @@ def _refuse_what_changes_values(model: type[BaseModel], name: str) -> None:
             raise ValueError(f"{name}: mixin {cls.__qualname__} needs __slots__ = ()")
 
 
-def _compile(model: type[BaseModel], models: dict[str, Any]) -> None:
-    name = model_name(model)
-    if name in models:
-        return
-    models[name] = None  # a model met again while compiling is not compiled twice
+def _check_config(model: type[BaseModel], name: str) -> None:
+    """A strict, closed, finite model with no setting the compiled validator does not follow."""
     cfg = model.model_config
     if cfg.get("extra") != "forbid" or not cfg.get("strict") or cfg.get("allow_inf_nan", True):
         raise ValueError(f"{name}: the compiled validator knows strict, closed, finite models")
@@ -156,6 +175,10 @@ def _compile(model: type[BaseModel], models: dict[str, Any]) -> None:
     if unknown_cfg:
         raise ValueError(f"{name}: model_config {sorted(unknown_cfg)} is not compiled")
     _refuse_what_changes_values(model, name)
+
+
+def _fields(model: type[BaseModel], name: str, models: dict[str, Any]) -> tuple:
+    """``(key, type, required, default)`` of every field, in the model's order."""
     fields = []
     for key, info in model.model_fields.items():
         if (
@@ -172,14 +195,13 @@ def _compile(model: type[BaseModel], models: dict[str, Any]) -> None:
                 "discriminators are not compiled"
             )
         required = info.is_required()
-        fields.append(
-            (
-                key,
-                _type(info.annotation, list(info.metadata), models),
-                required,
-                None if required else _default(info.default),
-            )
-        )
+        default = None if required else _default(info.default)
+        fields.append((key, _type(info.annotation, list(info.metadata), models), required, default))
+    return tuple(fields)
+
+
+def _validators(model: type[BaseModel], name: str) -> tuple[dict[str, list[str]], tuple]:
+    """The twins of the model's field validators (by field) and of its model validators."""
     decs = model.__pydantic_decorators__
     checks: dict[str, list[str]] = {}
     for dec in decs.field_validators.values():
@@ -188,23 +210,31 @@ def _compile(model: type[BaseModel], models: dict[str, Any]) -> None:
         for f in dec.info.fields:
             if f not in model.model_fields:  # "*" or a name not declared
                 raise ValueError(f"{name}: a validator of {f!r} is not compiled")
-            checks.setdefault(f, []).append(_light(dec.func))
+            checks.setdefault(f, []).append(_twin(dec.func))
     after = []
     for dec in decs.model_validators.values():
         if dec.info.mode != "after":
             raise ValueError(f"{name}: only 'after' model validators are compiled")
-        after.append(_light(dec.func))
+        after.append(_twin(dec.func))
+    return checks, tuple(after)
+
+
+def _compile(model: type[BaseModel], models: dict[str, Any]) -> None:
+    """Compile ``model`` (and the models its fields hold) into ``models``, or refuse it with a
+    ValueError naming what the compiled validator would not do as pydantic does."""
+    name = model_name(model)
+    if name in models:
+        return
+    models[name] = None  # a model met again while compiling is not compiled twice
+    _check_config(model, name)
+    fields = _fields(model, name, models)
+    checks, after = _validators(model, name)
     mixins = tuple(
         model_name(b)
         for b in model.__mro__[1:]
         if not issubclass(b, BaseModel) and b is not object and vars(b).get("__slots__") == ()
     )
-    models[name] = {
-        "fields": tuple(fields),
-        "field_checks": checks,
-        "after": tuple(after),
-        "mixins": mixins,
-    }
+    models[name] = {"fields": fields, "field_checks": checks, "after": after, "mixins": mixins}
 
 
 def compile_spec() -> dict[str, Any]:
@@ -238,8 +268,13 @@ def spec_source(spec: dict[str, Any] | None = None) -> str:
     spec = compile_spec() if spec is None else spec
     out = [
         '"""The requirement models compiled to data: generated by ``python -m '
-        "advisor.core.spec_gen``.\n\nDo not edit: change the models "
-        '(advisor/applications/*/requirements.py) and regenerate."""',
+        "advisor.core.spec_gen``.\n\nDo not edit: change the models (advisor/core/requirements.py, "
+        "advisor/applications/*/requirements.py,\nadvisor/duty/requirements.py, "
+        "advisor/uncertainty/requirements.py) and regenerate this file from the\n"
+        "repository's root:\n\n    .venv/bin/python -m advisor.core.spec_gen\n\n"
+        "tests/test_compiled_validator.py fails while it differs from the models. What the "
+        "generator\ncompiles and what it refuses: the docstring of "
+        'advisor/core/spec_gen.py."""',
         "",
         "# fmt: off",
         "# ruff: noqa: E501",
