@@ -1,11 +1,14 @@
-"""One package per application (requirements.py, advice.py, report.py, views.py), each
-registered here once. Import paths only: nothing of an application is imported until a
-requirement file of its kind is read (the linear batch path stays free of numpy)."""
+"""One package per application (requirements.py, advice.py, report.py, views.py, …), each
+named here once by its registry entry: import paths only, so nothing of an application is
+imported until a requirement file of its kind is read (the linear batch path stays free of
+numpy). Plain data: :mod:`advisor.core.registry` reads :data:`SHIPPED` and registers each
+entry as an :class:`advisor.core.registry.Application` (this module imports nothing, so the
+registry and the applications do not import each other)."""
 
-from advisor.core.registry import Application, register
-
-register(
-    Application(
+#: The shipped applications' registry entries (the fields of ``Application``), in the
+#: wizard's order.
+SHIPPED = (
+    dict(
         kind="linear",
         title="Linear actuator — induction motor + sliding screw–nut (seed 001)",
         requirements="advisor.applications.linear.requirements:LinearRequirements",
@@ -18,10 +21,8 @@ register(
         family="advisor.applications.linear.family",
         uncertainty="advisor.applications.linear.uncertainty",
         steps=("Load and stroke", "Screw and holding", "Motor and friction", "Duty cycle"),
-    )
-)
-register(
-    Application(
+    ),
+    dict(
         kind="rotary",
         title="Rotary actuator — PM brushless motor + wave-gear reducer (seed 000)",
         requirements="advisor.applications.rotary.requirements:RotaryRequirements",
@@ -33,10 +34,8 @@ register(
         family="advisor.applications.rotary.family",
         duty_uses={"cycle_time_s": ("S2",)},  # its S2 runs as S1 over cycle_time_s
         steps=("Torque and speed", "Envelope and holding", "Motor and reducer", "Duty cycle"),
-    )
-)
-register(
-    Application(
+    ),
+    dict(
         kind="positioning",
         title="Positioning drive — ratio for the fastest move (seed 003)",
         requirements="advisor.applications.positioning.requirements:PositioningRequirements",
@@ -47,10 +46,8 @@ register(
         plots="advisor.applications.positioning.plots:DATASHEET_PLOTS",
         family="advisor.applications.positioning.family",
         steps=("Move and load", "", "Candidate motors", "Duty cycle"),
-    )
-)
-register(
-    Application(
+    ),
+    dict(
         kind="spinning_rotor",
         title="High-speed rotor under gyroscopic load (seed 002)",
         requirements="advisor.applications.spinning_rotor.requirements:SpinningRotorRequirements",
@@ -61,5 +58,5 @@ register(
         plots="advisor.applications.spinning_rotor.plots:DATASHEET_PLOTS",
         family="advisor.applications.spinning_rotor.family",
         steps=("Rotor and manoeuvre", "Aerodynamic drag", "Bearings", "Duty cycle"),
-    )
+    ),
 )

@@ -3,8 +3,9 @@ many-file runner, the summaries and the wizard look it up by ``application.kind`
 
 An entry holds *import paths* (``"package.module:name"``), not imported objects: the batch
 path then imports only the application it runs (the linear path no numpy, no path textual),
-and listing the applications costs nothing. The four shipped applications are registered in
-:mod:`advisor.applications`; a new one is one package plus one :func:`register` call.
+and listing the applications costs nothing. The shipped applications' entries are plain data
+in :mod:`advisor.applications` (``SHIPPED``), read on first use; a new one is one package plus
+one :func:`register` call.
 """
 
 from importlib import import_module
@@ -63,7 +64,14 @@ def _shipped() -> dict[str, Application]:
     global _loaded
     if not _loaded:
         _loaded = True
-        import_module("advisor.applications")  # registers the shipped applications
+        shipped = import_module("advisor.applications").SHIPPED
+        # the shipped ones first, in their order; one registered before this (a test's)
+        # comes after them, or replaces the shipped one of its kind
+        added = dict(_APPLICATIONS)
+        _APPLICATIONS.clear()
+        for entry in shipped:
+            register(Application(**entry))
+        _APPLICATIONS.update(added)
     return _APPLICATIONS
 
 
