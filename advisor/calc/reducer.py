@@ -258,43 +258,33 @@ def sweep(
     rows: np.ndarray | None = None,
     stage_counts: range | list[int] | None = None,
 ) -> SweepResult:
-    """Every reducer of the design space that realises a total ratio, in flat arrays.
+    """Every reducer of the design space that realises q_Σ = Π q_k, in flat arrays.
 
-    Every stage count (1…``max_stages``), split (intermediate ratios from ``mid_grid``),
-    output ratio (``out_grid``, 6.5…40) and output row count (2…12) that realises
-    q_Σ = Π q_k with every stage ratio within limits, plus the constraint boundaries (a
-    stage ratio at its limit). Only combinations within the ratio limits are built; each is
-    then checked for the other stages fitting the common diameter. Every figure is computed
-    by eqs. (12)–(19) through :mod:`advisor.calc.wavegear`, as :func:`evaluate` computes it.
+    Every stage count (1…``max_stages``), split (``mid_grid``), output ratio (``out_grid``)
+    and output row count (``rows``) with every stage ratio within 6.5…64 (a bore needs
+    q > 6.45, eq. (14)), plus the stage ratios at their limits; only these are built, then
+    checked for every stage fitting the common diameter. Eqs. (12)–(19) are computed by
+    :mod:`advisor.calc.wavegear`, as :func:`evaluate` computes them.
 
     Parameters
     ----------
     total_ratio : float
         Total reduction q_Σ [-]
     p : ReducerParams
-        Output torque [N·m], rolling body factor, stage efficiency, density [kg/m³] and
-        fill factor
+        Output torque [N·m], rolling body, stage efficiency, density [kg/m³], fill factor
     max_stages : int, optional
         Most stages considered [-]
-    out_grid, mid_grid : numpy.ndarray, optional
-        Output and intermediate stage ratios swept [-]
-    rows : numpy.ndarray, optional
-        Output row counts swept [-]
+    out_grid, mid_grid, rows : numpy.ndarray, optional
+        Output and intermediate ratios [-] and output row counts [-] swept
     stage_counts : range or list of int, optional
         Stage counts swept instead of all that can realise ``total_ratio``
 
     Returns
     -------
     SweepResult
-        One entry per feasible configuration: diameters and lengths [mm], masses [kg]
+        One entry per feasible configuration: lengths [mm], masses [kg]
 
-    Notes
-    -----
-    Valid for stage ratios 6.5…64 (a bore needs q > 6.45, eq. (14)).
-
-    References
-    ----------
-    Seed 000, eqs. (12)–(19) and the equal-diameter layout after eq. (19).
+    References: seed 000, eqs. (12)–(19) and the equal-diameter layout after eq. (19).
     """
     out_grid = OUTPUT_RATIO_GRID if out_grid is None else out_grid
     mid_grid = INTERMEDIATE_RATIO_GRID if mid_grid is None else mid_grid
@@ -347,6 +337,68 @@ _MID_STEP = float(INTERMEDIATE_RATIO_GRID[1] / INTERMEDIATE_RATIO_GRID[0])
 _OUT_STEP = float(OUTPUT_RATIO_GRID[1] - OUTPUT_RATIO_GRID[0])
 
 
+class _Point(NamedTuple):
+    """A configuration as :func:`refine` ranks it: envelope violation, objective, tie-break."""
+
+    violation: float
+    key: float
+    tie: float
+    ratios: list[float]
+    rows: int
+
+
+def _point(result: SweepResult, i: int, violation, key, tie) -> _Point:
+    return _Point(
+        float(violation[i]),
+        float(key[i]),
+        float(tie[i]),
+        result.ratios_out_to_in(i),
+        int(result.rows_out[i]),
+    )
+
+
+def _polish(
+    total_ratio: float,
+    p: ReducerParams,
+    start: _Point,
+    objective: str,
+    envelope: tuple[float | None, float | None],
+    points: int,
+    passes: int,
+) -> _Point:
+    """``passes`` local sweeps of one stage count around ``start``: ``points`` ratios over a
+    grid step on either side and the neighbouring row counts, the span shrinking fivefold
+    each pass; the best point found."""
+    best_point = start
+    span_out, span_mid = _OUT_STEP, _MID_STEP
+    for _ in range(passes if len(start.ratios) > 1 else 0):
+        ratios, rows = best_point.ratios, best_point.rows
+        mids = ratios[1:-1]
+        mid_grid = (
+            _unique(
+                np.concatenate([np.geomspace(m / span_mid, m * span_mid, points) for m in mids])
+            )
+            if mids
+            else INTERMEDIATE_RATIO_GRID[:0]
+        )
+        local = sweep(
+            total_ratio,
+            p,
+            out_grid=np.linspace(ratios[0] - span_out, ratios[0] + span_out, points),
+            mid_grid=mid_grid,
+            rows=np.arange(max(2, rows - 1), min(int(ROW_GRID.max()), rows + 1) + 1),
+            stage_counts=[len(ratios)],
+        )
+        if local.mass_kg.size:
+            lv = _violation(local, *envelope)
+            lk, lt = _keys(local, objective)
+            candidate = _point(local, _first(lv, lk, lt), lv, lk, lt)
+            if candidate[:3] < best_point[:3]:
+                best_point = candidate
+        span_out, span_mid = span_out / 5.0, span_mid ** (1.0 / 5.0)
+    return best_point
+
+
 def refine(
     total_ratio: float,
     p: ReducerParams,
@@ -358,68 +410,25 @@ def refine(
     passes: int = 3,
 ) -> tuple[list[float], int] | None:
     """The best configuration, polished: for each stage count, its best grid point is swept
-    again with ``points`` ratios over a grid step on either side (plus the constraint
-    boundaries, which the sweep always adds) and the neighbouring row counts, ``passes``
-    times with a span shrinking fivefold. Within an envelope the optimum lies between grid
-    points (on the envelope); without one, the mass optimum sits on a ratio limit, which
-    the boundary points already hold. A stage count with no grid point within the envelope
-    is polished from its least violating point: the envelope and the common-diameter check
-    may leave room only between grid points (q = 20 758 under 0.8 of the free optimum's
-    diameter: a 3-stage design of 9.01 kg that no grid point reaches, where the best
-    4-stage one is 9.39 kg). Returns the ratios (output first) and output rows, or
-    ``None`` if nothing fits."""
-    viol = _violation(result, max_outer_diameter_mm, max_length_mm)
+    again (:func:`_polish`; the sweep always adds the constraint boundaries). Within an
+    envelope the optimum lies between grid points (on the envelope); without one, the mass
+    optimum sits on a ratio limit, which the boundary points already hold. A stage count
+    with no grid point within the envelope is polished from its least violating point: the
+    envelope and the common-diameter check may leave room only between grid points
+    (q = 20 758 under 0.8 of the free optimum's diameter: a 3-stage design of 9.01 kg that
+    no grid point reaches, where the best 4-stage one is 9.39 kg). Returns the ratios
+    (output first) and output rows, or ``None`` if nothing fits."""
+    envelope = (max_outer_diameter_mm, max_length_mm)
+    viol = _violation(result, *envelope)
     key, tie = _keys(result, objective)
-    found: tuple[float, float, float, list[float], int] | None = None
+    found: _Point | None = None
     for n in _unique(result.stages):
-        # a stage count none of whose grid points fits the envelope may still fit between
-        # them (a sliver where the common-diameter check and the envelope both nearly hold):
-        # it is polished from its least violating point, and counts once a point fits
-        this = result.stages == n
-        i = _first(viol, key, tie, this)
-        cand = (
-            float(viol[i]),
-            float(key[i]),
-            float(tie[i]),
-            result.ratios_out_to_in(i),
-            int(result.rows_out[i]),
-        )
-        span_out, span_mid = _OUT_STEP, _MID_STEP
-        for _ in range(passes if n > 1 else 0):
-            ratios, rows = cand[3], cand[4]
-            out_grid = np.linspace(ratios[0] - span_out, ratios[0] + span_out, points)
-            mids = ratios[1:-1]
-            mid_grid = (
-                _unique(
-                    np.concatenate([np.geomspace(m / span_mid, m * span_mid, points) for m in mids])
-                )
-                if mids
-                else INTERMEDIATE_RATIO_GRID[:0]
-            )
-            local = sweep(
-                total_ratio,
-                p,
-                out_grid=out_grid,
-                mid_grid=mid_grid,
-                rows=np.arange(max(2, rows - 1), min(int(ROW_GRID.max()), rows + 1) + 1),
-                stage_counts=[int(n)],
-            )
-            if local.mass_kg.size:
-                lv = _violation(local, max_outer_diameter_mm, max_length_mm)
-                lk, lt = _keys(local, objective)
-                j = _first(lv, lk, lt)
-                if (float(lv[j]), float(lk[j]), float(lt[j])) < cand[:3]:
-                    cand = (
-                        float(lv[j]),
-                        float(lk[j]),
-                        float(lt[j]),
-                        local.ratios_out_to_in(j),
-                        int(local.rows_out[j]),
-                    )
-            span_out, span_mid = span_out / 5.0, span_mid ** (1.0 / 5.0)
-        if cand[0] == 0.0 and (found is None or cand[1:3] < found[1:3]):
+        start = _point(result, _first(viol, key, tie, result.stages == n), viol, key, tie)
+        cand = _polish(total_ratio, p, start, objective, envelope, points, passes)
+        # a stage count counts once a polished point fits the envelope
+        if cand.violation == 0.0 and (found is None or cand[1:3] < found[1:3]):
             found = cand
-    return None if found is None else (found[3], found[4])
+    return None if found is None else (found.ratios, found.rows)
 
 
 def _violation(
@@ -462,20 +471,9 @@ def _within(
 _BLOCK = 64
 
 
-def pareto(
-    result: SweepResult,
-    stage_efficiency: float,
-    max_outer_diameter_mm: float | None = None,
-    max_length_mm: float | None = None,
-) -> np.ndarray:
-    """Indices of the non-dominated configurations within the envelope, by least mass, least
-    outer diameter, least length and highest efficiency (η^n; the losses follow it), sorted
-    by mass. Of configurations with the same stage count, output ratio and rows (the same
-    diameters and efficiency) only the shortest can be non-dominated; duplicates are kept
-    once."""
-    ok = np.nonzero(_within(result, max_outer_diameter_mm, max_length_mm))[0]
-    if ok.size == 0:
-        return ok
+def _shortest_of_groups(result: SweepResult, ok: np.ndarray) -> np.ndarray:
+    """Of configurations with the same stage count, output ratio and rows (the same
+    diameters and efficiency) only the shortest can be non-dominated: the first of each."""
     # the sweep lists configurations by stage count, then chain (chains of one q_out are
     # contiguous), then rows: a run id per (stage count, q_out) and the rows make the group
     n, qo = result.stages[ok], result.q_out[ok]
@@ -487,7 +485,6 @@ def pareto(
     starts = np.nonzero(np.r_[True, g[1:] != g[:-1]])[0]
     length = result.length_mm[ok][order]
     shortest = np.minimum.reduceat(length, starts)
-    # the first of each group that is the shortest
     ends = np.r_[starts[1:], g.size]
     is_min = length == np.repeat(shortest, ends - starts)
     pick = np.zeros(g.size, bool)
@@ -495,34 +492,41 @@ def pareto(
     grp_of = np.searchsorted(starts, cand_pos, "right") - 1
     first_in_group = np.r_[True, grp_of[1:] != grp_of[:-1]]
     pick[cand_pos[first_in_group]] = True
-    cand = ok[order[pick]]
-    # the same output stage (q_out, rows: the same diameters) with fewer stages is shorter,
-    # lighter and more efficient: keep the fewest stages of each
+    return ok[order[pick]]
+
+
+def _fewest_stages(result: SweepResult, cand: np.ndarray) -> np.ndarray:
+    """The same output stage (q_out, rows: the same diameters) with fewer stages is shorter,
+    lighter and more efficient: the fewest stages of each, sorted by mass, then diameter,
+    length and stages (a point can only be dominated by earlier ones)."""
     by_stage = cand[np.lexsort((result.stages[cand], result.rows_out[cand], result.q_out[cand]))]
     qo, rw = result.q_out[by_stage], result.rows_out[by_stage]
     cand = by_stage[np.r_[True, (qo[1:] != qo[:-1]) | (rw[1:] != rw[:-1])]]
-    # by mass, ties by diameter, length, stages: a point can only be dominated by earlier ones
-    cand = cand[
-        np.lexsort(
-            (
-                result.stages[cand],
-                result.length_mm[cand],
-                result.outer_diameter_mm[cand],
-                result.mass_kg[cand],
-            )
+    order = np.lexsort(
+        (
+            result.stages[cand],
+            result.length_mm[cand],
+            result.outer_diameter_mm[cand],
+            result.mass_kg[cand],
         )
-    ]
-    # mass, diameter, length, stages (fewer: higher efficiency η^n, lower losses)
+    )
+    return cand[order]
+
+
+def _non_dominated(result: SweepResult, cand: np.ndarray) -> np.ndarray:
+    """The non-dominated of ``cand`` (sorted as :func:`_fewest_stages` sorts) by mass,
+    diameter, length and stages (fewer: higher efficiency η^n, lower losses).
+
+    In this order whatever dominates a point comes before it, and (dominance being
+    transitive) so does a non-dominated point that dominates it: each block is checked
+    against the front so far and against the points before it within the block. A point
+    equal in every objective to an earlier one goes too (duplicates are kept once)."""
     obj = [
         result.mass_kg[cand],
         result.outer_diameter_mm[cand],
         result.length_mm[cand],
         result.stages[cand].astype(float),
     ]
-    # in this order whatever dominates a point comes before it, and (dominance being
-    # transitive) so does a non-dominated point that dominates it: each block is checked
-    # against the front so far and against the points before it within the block. A point
-    # equal in every objective to an earlier one goes too (duplicates are kept once).
     front_obj = [x[:0] for x in obj]
     front = []
     before = np.triu(np.ones((_BLOCK, _BLOCK), bool), 1)  # [i, j]: i before j
@@ -542,6 +546,42 @@ def pareto(
         front_obj = [np.concatenate([f, x[keep]]) for f, x in zip(front_obj, blk, strict=True)]
         front.append(cand[start : start + _BLOCK][keep])
     return np.concatenate(front) if front else cand[:0]
+
+
+def pareto(
+    result: SweepResult,
+    stage_efficiency: float,
+    max_outer_diameter_mm: float | None = None,
+    max_length_mm: float | None = None,
+) -> np.ndarray:
+    """Indices of the non-dominated configurations within the envelope, sorted by mass.
+
+    Objectives: least mass, least outer diameter, least length and highest efficiency
+    (η^n with ``stage_efficiency`` η; the losses follow it). Of configurations with the
+    same stage count, output ratio and rows only the shortest can be non-dominated;
+    duplicates are kept once.
+
+    Parameters
+    ----------
+    result : SweepResult
+        The design space (:func:`sweep`)
+    stage_efficiency : float
+        Efficiency of one stage η [-]
+    max_outer_diameter_mm, max_length_mm : float, optional
+        Envelope [mm]; None: no limit
+
+    Returns
+    -------
+    numpy.ndarray
+        Indices into ``result``, lightest first
+
+    References: seed 000, eqs. (13)–(19) give the objectives.
+    """
+    ok = np.nonzero(_within(result, max_outer_diameter_mm, max_length_mm))[0]
+    if ok.size == 0:
+        return ok
+    cand = _fewest_stages(result, _shortest_of_groups(result, ok))
+    return _non_dominated(result, cand)
 
 
 def _unique(a: np.ndarray) -> np.ndarray:
