@@ -18,30 +18,95 @@ from advisor.calc.roots import bisect
 
 
 def synchronous_speed_rpm(supply_frequency_Hz: float, pole_pairs: int) -> float:
-    """n₀ = 60·f / p  [rpm].
+    """Synchronous speed of an induction motor.
 
+    n₀ = 60·f / p
+
+    Parameters
+    ----------
+    supply_frequency_Hz : float
+        Supply frequency f [Hz]
+    pole_pairs : int
+        Number of pole pairs p [-]
+
+    Returns
+    -------
+    speed_rpm : float
+        Synchronous speed n₀ [rpm]
+
+    Examples
+    --------
     >>> synchronous_speed_rpm(50, 2)
     1500.0
+
+    References
+    ----------
+    Seed 001: the screw speed fixes the pole pairs, n₀ > n [1].
     """
     return 60.0 * supply_frequency_Hz / pole_pairs
 
 
 def rated_torque(rated_power_W: float, rated_speed_rpm: float) -> float:
-    """M_n = P / ω  [N·m].
+    """Rated torque of a motor from its rated power and speed.
+
+    M_n = P / ω,  ω = π·n/30
+
+    Parameters
+    ----------
+    rated_power_W : float
+        Rated (shaft) power P [W]
+    rated_speed_rpm : float
+        Rated speed n [rpm]
+
+    Returns
+    -------
+    torque_Nm : float
+        Rated torque M_n [N·m]
+
+    Examples
+    --------
+    The 4A71B4 of seed 001 (0.75 kW, 1390 rpm):
 
     >>> round(rated_torque(750, 1390), 3)
     5.152
+
+    References
+    ----------
+    Seed 001, the motor choice by rated power [1].
     """
     return rated_power_W / (rated_speed_rpm * math.pi / 30.0)
 
 
 def kloss_simple_critical_slip(rated_slip: float, overload_ratio: float) -> float:
-    """s_k of the simple Kloss formula, s_k = s_n·(λ + √(λ² − 1)) [2].
+    """Critical slip of the simple Kloss formula.
 
-    (Code on the web often writes λ − √…; that root is the slip *below* s_n on the same curve.)
+    s_k = s_n·(λ + √(λ² − 1)),  λ = M_k/M_n
 
+    Parameters
+    ----------
+    rated_slip : float
+        Rated slip s_n [-]
+    overload_ratio : float
+        Breakdown torque over rated torque λ [-], above 1
+
+    Returns
+    -------
+    slip : float
+        Critical slip s_k [-]
+
+    Notes
+    -----
+    Code on the web often writes λ − √…; that root is the slip *below* s_n on the same
+    curve. The simple form misses a cage motor's starting torque; see :func:`fit_kloss`.
+
+    Examples
+    --------
     >>> round(kloss_simple_critical_slip(0.05, 2.2), 4)
     0.208
+
+    References
+    ----------
+    Kloss formula [2].
     """
     return rated_slip * (overload_ratio + math.sqrt(overload_ratio**2 - 1.0))
 
@@ -57,10 +122,34 @@ class KlossCurve(NamedTuple):
     epsilon: float
 
     def torque(self, slip: float) -> float:
-        """M(s) = 2·M_k·(1 + ε) / (s/s_k + s_k/s + 2ε); M(0) = 0 [3].
+        """Torque of the refined Kloss characteristic at a slip.
 
-        Scalar on purpose: a characteristic is 41 points, and the linear batch path stays
-        free of numpy's import time.
+        M(s) = 2·M_k·(1 + ε) / (s/s_k + s_k/s + 2ε),  M(0) = 0
+
+        Parameters
+        ----------
+        slip : float
+            Slip s [-], 0 at synchronous speed, 1 at standstill
+
+        Returns
+        -------
+        torque_Nm : float
+            Motor torque M(s) [N·m]
+
+        Notes
+        -----
+        Scalar on purpose: a characteristic is 41 points, and the linear batch path stays free
+        of numpy's import time. Valid for 0 ≤ s ≤ 1 (motoring).
+
+        Examples
+        --------
+        >>> c = KlossCurve(22.27, 0.2, 0.1)
+        >>> round(c.torque(0.2), 2)
+        22.27
+
+        References
+        ----------
+        Refined Kloss formula [3].
         """
         if slip <= 0.0:
             return 0.0
@@ -73,11 +162,30 @@ class KlossCurve(NamedTuple):
         )
 
     def stable_slip(self, load_torque_Nm: float) -> float | None:
-        """Slip of the steady working point under a load torque, on the stable branch
-        (s < s_k); ``None`` when the load exceeds the maximum torque (the motor stalls).
+        """Slip of the steady working point under a load torque, on the stable branch.
 
-        With x = s/s_k the curve gives x + 1/x = C, C = 2·M_k(1+ε)/M − 2ε, a quadratic whose
-        smaller root is the stable point.
+        x + 1/x = C,  C = 2·M_k·(1 + ε)/M − 2ε,  s = x·s_k (the smaller root)
+
+        Parameters
+        ----------
+        load_torque_Nm : float
+            Load torque at the motor M [N·m]
+
+        Returns
+        -------
+        slip : float or None
+            Working slip s < s_k [-]; 0 for no load; ``None`` when the load exceeds the maximum
+            torque (the motor stalls)
+
+        Examples
+        --------
+        >>> c = KlossCurve(22.27, 0.2, 0.1)
+        >>> round(c.stable_slip(c.torque(0.05)), 6)
+        0.05
+
+        References
+        ----------
+        Refined Kloss formula [3], solved for s.
         """
         if load_torque_Nm <= 0:
             return 0.0
@@ -94,18 +202,45 @@ def fit_kloss(
     overload_ratio: float,
     starting_ratio: float,
 ) -> KlossCurve:
-    """Fit the refined Kloss curve to the catalog's M_n, s_n, λ = M_k/M_n and μ = M_st/M_n.
+    """Fit the refined Kloss curve to a motor's catalog ratings.
 
-    From M(s_n) = M_n: s_n/s_k + s_k/s_n = 2λ(1+ε) − 2ε, which gives s_k(ε) in closed form;
-    M(1) = M_st then fixes ε (one monotone equation, solved by bisection). When μ = λ the
-    maximum is at standstill: s_k = 1 and ε follows in closed form.
+    M(s_n) = M_n:  s_n/s_k + s_k/s_n = 2λ(1 + ε) − 2ε  → s_k(ε) in closed form
+    M(1) = M_st:   fixes ε (one monotone equation, solved by bisection)
 
-    Hand check with the 4A80B4 row (1.5 kW, 1415 rpm, λ = 2.2, μ = 2.0): the fitted curve
-    passes through its three points.
+    Parameters
+    ----------
+    rated_torque_Nm : float
+        Rated torque M_n [N·m]
+    rated_slip : float
+        Rated slip s_n [-], in (0, 1)
+    overload_ratio : float
+        Breakdown torque over rated torque λ = M_k/M_n [-], above 1
+    starting_ratio : float
+        Starting torque over rated torque μ = M_st/M_n [-], in (0, λ]
+
+    Returns
+    -------
+    curve : KlossCurve
+        Maximum torque M_k [N·m], critical slip s_k [-] and ε [-]
+
+    Notes
+    -----
+    When μ = λ the maximum is at standstill: s_k = 1 and ε follows in closed form. Raises
+    ValueError for ratings no such curve passes through (or that put the maximum beyond
+    standstill).
+
+    Examples
+    --------
+    The 4A80B4 row (1.5 kW, 1415 rpm, λ = 2.2, μ = 2.0): the fitted curve passes through
+    its three points.
 
     >>> c = fit_kloss(10.123, 1 - 1415 / 1500, 2.2, 2.0)
     >>> round(c.torque(1 - 1415 / 1500), 3), round(c.torque(1.0), 3)
     (10.123, 20.246)
+
+    References
+    ----------
+    Refined Kloss formula [3]; seed 001's M(s) characteristics, fig. 4 [1].
     """
     lam, mu, sn = overload_ratio, starting_ratio, rated_slip
     if not (0.0 < sn < 1.0):
@@ -148,6 +283,27 @@ def fit_kloss(
 
 
 def curve_slips(points: int = 41) -> list[float]:
-    """Slips at which a characteristic is tabulated for the report: denser near s = 0, where
-    the working points lie."""
+    """Slips at which a characteristic is tabulated for the report.
+
+    s_i = (i/(N − 1))^1.5,  i = 0 … N − 1
+
+    Parameters
+    ----------
+    points : int, optional
+        Number of points N [-]
+
+    Returns
+    -------
+    slips : list[float]
+        Slips from 0 to 1 [-], denser near s = 0, where the working points lie
+
+    Examples
+    --------
+    >>> curve_slips(3)[1] == 0.5**1.5
+    True
+
+    References
+    ----------
+    Seed 001, fig. 4: the characteristics of the chosen motor and its neighbours [1].
+    """
     return [(i / (points - 1)) ** 1.5 for i in range(points)]

@@ -40,14 +40,37 @@ SEW_EXAMPLE = ((2.5, 16.0, 300.0), 1.5)
 
 
 def load_classification(mass_acceleration_factor: float) -> LoadClass:
-    """SEW's load classification of a drive from its mass acceleration factor [1].
+    """SEW's load classification of a drive from its mass acceleration factor.
 
+    I: m_a ≤ 0.2,  II: m_a ≤ 3,  III: m_a ≤ 10,  m_a = J_ext / J_motor
+
+    Parameters
+    ----------
+    mass_acceleration_factor : float
+        External inertia at the motor over the motor's inertia m_a [-], 0 to 10
+
+    Returns
+    -------
+    load_class : str
+        'I' (uniform), 'II' (moderate shock) or 'III' (heavy shock)
+
+    Notes
+    -----
+    Raises ValueError below 0 and above 10, where SEW's chart stops (consult the gear
+    maker).
+
+    Examples
+    --------
     The published example's factor 2.5 is class II [2]:
 
     >>> load_classification(2.5)
     'II'
     >>> load_classification(0.2), load_classification(10.0)
     ('I', 'III')
+
+    References
+    ----------
+    SEW-EURODRIVE, «Handbuch – Getriebe und Getriebemotoren», 5.4, Bild 8 [1].
     """
     if mass_acceleration_factor < 0:
         raise ValueError("the mass acceleration factor is a ratio of inertias, ≥ 0")
@@ -72,14 +95,36 @@ NO_SERVICE_FACTOR = ServiceFactor(1.0, "no service factor given: the loads as st
 
 
 def service_factor(design: object | None) -> ServiceFactor:
-    """The service factor of a requirement's ``[design]`` table (``None`` or a table without
-    ``service_factor``: 1, and the report says so).
+    """The service factor of a requirement's ``[design]`` table.
 
+    f_B as given (no factor: 1)
+
+    Parameters
+    ----------
+    design : object or None
+        The ``[design]`` table, with an optional ``service_factor`` f_B [-], at least 1
+
+    Returns
+    -------
+    factor : ServiceFactor
+        The factor f_B [-] and where it comes from, in words
+
+    Notes
+    -----
+    The factor multiplies the load of every strength check, not the thermal ones. Raises
+    ValueError below 1, which would lower the loads.
+
+    Examples
+    --------
     >>> class D: service_factor = 1.5
     >>> service_factor(D())
     ServiceFactor(value=1.5, basis='design.service_factor = 1.5 (given)')
     >>> service_factor(None).value
     1.0
+
+    References
+    ----------
+    SEW-EURODRIVE, project planning for gear units, service factor [2].
     """
     value = getattr(design, "service_factor", None)
     if value is None:
