@@ -40,7 +40,7 @@ def components(report) -> list[Any]:
 
 
 def _frame_lines(m) -> list[tuple[str, str]]:
-    """The frame the design took (issue 25), as the components show it."""
+    """The frame the design took, as the components show it."""
     f = getattr(m, "frame", None)
     if f is None:
         return []
@@ -67,7 +67,7 @@ def loss_curve(report, points: int = 40) -> list[dict]:
     req = parse_requirements(report.requirements)
     ref, gb = req.motor.reference, req.gearbox
     frame = getattr(report.design.motor, "frame", None)
-    if frame is not None and frame.kind != "reference":  # issue 25: the frame taken
+    if frame is not None and frame.kind != "reference":  # the frame taken
         ref = load_catalogs().bldc_frame(frame.name)
         if ref is None:  # a catalog motor of a directory the view does not know
             return []
@@ -76,7 +76,7 @@ def loss_curve(report, points: int = 40) -> list[dict]:
         return []
     from advisor.calc.service_factor import service_factor
 
-    params = rd.ReducerParams(  # sized as the advice sizes it (issue 26: × f_B)
+    params = rd.ReducerParams(  # sized as the advice sizes it (× f_B)
         torque_Nm=req.rotary.torque_Nm * service_factor(req.design).value,
         k_rb=wg.ROLLING_BODY_FACTOR[gb.rolling_body],
         stage_efficiency=gb.stage_efficiency,
@@ -136,10 +136,17 @@ def plots(report) -> list[PlotData]:
 def compare(report) -> list[Any]:
     """Candidate motor speeds, the rule reducer against the lightest and the slimmest of the
     design space, and the one-way device types."""
-    from advisor.tui.compare import Option, Section, decision, mark, one_way, table
+    from advisor.tui.compare import one_way
 
-    d = report.design
-    m, g = d.motor, d.gearbox
+    speeds, reducer = _speeds_section(report), _reducer_section(report)
+    return [*_frames_section(report), speeds, reducer, *one_way(report)]
+
+
+def _speeds_section(report):
+    """The candidate speeds (BL-02), each but the chosen one with “Use …” where it passes."""
+    from advisor.tui.compare import Option, Section, decision, mark, table
+
+    m = report.design.motor
     t = table("speed rpm", "q_Σ", "stages", "η", "torque N·m", "losses W", "within limit")
     options = []
     for c in sorted(m.candidates, key=lambda c: c.speed_rpm):
@@ -156,13 +163,50 @@ def compare(report) -> list[Any]:
         if not chosen and c.within_loss_limit and c.stages:
             patch = ((("motor", "candidate_speeds_rpm"), [c.speed_rpm]),)
             options.append(Option(f"Use {c.speed_rpm:g} rpm", patch))
-    motors = Section(
+    return Section(
         "Motor speed (the reference motor rewound)",
         t,
         decision(report, "BL-02"),
         tuple(options),
         "“Use” keeps that speed alone in motor.candidate_speeds_rpm.",
     )
+
+
+def _reducer_row(key: str, name: str, s, taken: str, wg6: dict | None) -> tuple[str, ...]:
+    """One reducer of the comparison: its figures, or the rule design's as WG-06 states it
+    where the design took another, or none where the envelope asks more rows."""
+    from advisor.tui.compare import mark
+
+    if s is not None:
+        ratios = ", ".join(f"{st.ratio:.4g}" for st in reversed(s.stages))
+        return (
+            mark(key == taken, name),
+            str(len(s.stages)),
+            ratios,
+            f"{s.outer_diameter_mm:.4g}",
+            f"{s.length_mm:.4g}",
+            f"{s.mass_kg:.3g}",
+            f"{s.efficiency:.3g}",
+        )
+    if wg6 is not None and "rule_mass_kg" in wg6:  # not taken: as WG-06 states it
+        return (
+            mark(False, name),
+            str(int(wg6["rule_stages"])),
+            "see WG-02" if wg6["rule_fits"] else "does not fit the envelope",
+            f"{wg6['rule_outer_diameter_mm']:.4g}",
+            f"{wg6['rule_length_mm']:.4g}",
+            f"{wg6['rule_mass_kg']:.3g}",
+            f"{wg6['rule_efficiency']:.3g}",
+        )
+    return (mark(False, name), "—", "none: the envelope asks more rows", "", "", "", "")
+
+
+def _reducer_section(report):
+    """The rules' reducer against the lightest and the slimmest of the space (WG-04/05/06),
+    each not taken nor asked with “Use …”."""
+    from advisor.tui.compare import Option, Section, decision, table
+
+    g = report.design.gearbox
     r = table("reducer", "stages", "q (output first)", "Ø mm", "length mm", "mass kg", "η")
     asked = report.requirements.get("gearbox", {}).get("choice", "rules")
     wg6 = next((d.inputs for d in report.decisions if d.id == "WG-06"), None)
@@ -174,34 +218,12 @@ def compare(report) -> list[Any]:
     ]
     options = []
     for key, name, s in rows:
-        if s is not None:
-            ratios = ", ".join(f"{st.ratio:.4g}" for st in reversed(s.stages))
-            r.add_row(
-                mark(key == taken, name),
-                str(len(s.stages)),
-                ratios,
-                f"{s.outer_diameter_mm:.4g}",
-                f"{s.length_mm:.4g}",
-                f"{s.mass_kg:.3g}",
-                f"{s.efficiency:.3g}",
-            )
-        elif wg6 is not None and "rule_mass_kg" in wg6:  # not taken: as WG-06 states it
-            r.add_row(
-                mark(False, name),
-                str(int(wg6["rule_stages"])),
-                "see WG-02" if wg6["rule_fits"] else "does not fit the envelope",
-                f"{wg6['rule_outer_diameter_mm']:.4g}",
-                f"{wg6['rule_length_mm']:.4g}",
-                f"{wg6['rule_mass_kg']:.3g}",
-                f"{wg6['rule_efficiency']:.3g}",
-            )
-        else:
-            r.add_row(mark(False, name), "—", "none: the envelope asks more rows", "", "", "", "")
+        r.add_row(*_reducer_row(key, name, s, taken, wg6))
         if key not in (taken, asked):  # a button that would change nothing is not offered
             word = "the rules" if key == "rules" else f"the {key}"
             options.append(Option(f"Use {word}", ((("gearbox", "choice"), key),)))
     why = " ".join(x for x in (decision(report, i) for i in ("WG-04", "WG-06", "WG-05")) if x)
-    reducer = Section(
+    return Section(
         "Reducer: the rules against the design space",
         r,
         why,
@@ -209,7 +231,6 @@ def compare(report) -> list[Any]:
         "“Use” sets gearbox.choice: the rules' design, or the lightest or the slimmest of "
         "the design space within the envelope.",
     )
-    return [*_frames_section(report), motors, reducer, *one_way(report)]
 
 
 def _frames_section(report) -> list[Any]:
