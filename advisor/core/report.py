@@ -10,6 +10,7 @@ import inspect
 import math
 from typing import Any, ClassVar
 
+from advisor.calc.checks import Check
 from advisor.core import toml_text
 from advisor.core.io_safety import write_atomic as write_atomic  # re-exported: the report writer
 
@@ -95,19 +96,37 @@ def _as_dict(v: Any) -> Any:
     return v
 
 
+def record_fields(
+    record: type,
+    add: dict[str, dict[str, Any]] | None = None,
+    retype: dict[str, Any] | None = None,
+) -> dict[str, Any]:
+    """The fields of a report table that shows a calculation's record (a NamedTuple), so
+    that they are declared once, in the record: its fields in its order, ``retype`` giving
+    a field the type the report writes it as, ``add`` inserting the table's own fields after
+    a field of the record (``{"margin": {"passed": bool}}``). A table assigns the result to
+    ``__annotations__``, and its defaults as class attributes."""
+    add, retype = add or {}, retype or {}
+    out: dict[str, Any] = {}
+    for name, ann in inspect.get_annotations(record).items():
+        out[name] = retype.get(name, ann)
+        out.update(add.get(name, {}))
+    return out
+
+
 class CheckOut(ReportTable):
-    id: str
-    name: str
-    value: float
-    limit: float
-    unit: str
-    margin: float
-    passed: bool
-    source: str
-    sources: list[str] = []
-    #: the service factor a strength check multiplied its demand by (margin =
-    #: limit / (factor·value)); absent where none applies (issue 26)
-    factor: float | None = None
+    """A check (:class:`advisor.calc.checks.Check`) as the report writes it: the record's
+    fields, the verdict after its margin, its source in words and the source's bibliography
+    ids after it. ``factor``: the service factor a strength check multiplied its demand by
+    (margin = limit / (factor·value)); absent where none applies."""
+
+    __annotations__ = record_fields(
+        Check,
+        add={"margin": {"passed": bool}, "source": {"sources": list[str]}},
+        retype={"source": str},
+    )
+    sources = []  # copied by make, never shared
+    factor = None
 
 
 def check_out(c: Any, short: dict[str, str]) -> CheckOut:

@@ -1,19 +1,14 @@
 """Report tables of the one-way (holding) device, shared by the linear and rotary actuators."""
 
-from advisor.core.report import ReportTable
+from advisor.calc.one_way import Device
+from advisor.core.report import ReportTable, record_fields
 
 
 class DeviceOut(ReportTable):
-    type: str
-    location: str
-    torque_Nm: float
-    outer_diameter_mm: float
-    length_mm: float
-    mass_kg: float
-    inertia_kgm2: float
-    efficiency: float
-    power_W: float
-    basis: str
+    """A sized device (:class:`advisor.calc.one_way.Device`) where it sits: the record's
+    fields, its location ("motor side", "output side") after its type."""
+
+    __annotations__ = record_fields(Device, add={"type": {"location": str}})
 
 
 class OneWayOut(ReportTable):
