@@ -50,6 +50,13 @@ def at(doc: Any, *path: str) -> Any:
     return doc
 
 
+def table_at(doc: Any, *path: str) -> dict:
+    """The table at ``path``, empty where there is none (or a value of another type there:
+    an application's ``design.motor`` may be the motor's name)."""
+    found = at(doc, *path)
+    return found if isinstance(found, dict) else {}
+
+
 def duty(doc: dict) -> Plot | None:
     """Motor torque against time over the duty cycle, where the report has one: its phases
     (each ``time_s`` or ``duration_s`` long at ``torque_Nm``) as steps, or arrays
@@ -136,7 +143,7 @@ def _motor_limits(doc: dict) -> tuple[list[Line], list[Line]] | None:
     """The continuous and peak torque–speed limits of the design's motor, from whichever
     data the report holds: a catalog motor's M(n) with its rated point, a frame's rated
     torque at its speed with the cycle's peak limit, or the listed motor the design chose."""
-    motor = at(doc, "design", "motor") or {}
+    motor = table_at(doc, "design", "motor")
     model = motor.get("model")
     curve = next(
         (
@@ -210,7 +217,7 @@ def envelope(doc: dict) -> Plot | None:
     if pts:
         label = "phases of the cycle (a ramp at its mean speed)"
         lines.append(Line(label, [x for x, _ in pts], [y for _, y in pts], "points"))
-    d = at(doc, "design", "duty") or {}
+    d = table_at(doc, "design", "duty")
     rms, n_mean = d.get("rms_torque_Nm"), d.get("mean_speed_rpm")
     if isinstance(rms, int | float) and isinstance(n_mean, int | float):
         lines.append(Line(f"RMS {rms:.4g} N·m at the mean speed", [n_mean], [rms], "marker"))
@@ -219,7 +226,7 @@ def envelope(doc: dict) -> Plot | None:
         n_pk = max(pts, key=lambda p: p[1])[0]
         lines.append(Line(f"peak {m_pk:.4g} N·m", [n_pk], [m_pk], "marker"))
     if not phases:
-        motor = at(doc, "design", "motor") or {}
+        motor = table_at(doc, "design", "motor")
         n = motor.get("working_speed_rpm", motor.get("speed_rpm"))
         m = at(doc, "design", "screw", "torque_Nm") or motor.get("torque_Nm")
         if isinstance(n, int | float) and isinstance(m, int | float):
