@@ -15,15 +15,14 @@ class MissingExtra(RuntimeError):
 
 
 def _sheet(report: Any) -> tuple[Any, dict]:
-    from advisor.core.registry import covers, headline, requirements_model, summary_rows
+    from advisor.core.registry import covers, headline, summary_rows
     from advisor.core.report import plain
     from advisor.datasheet.content import sheet
-    from advisor.datasheet.labels import requirement_defaults, requirement_labels
+    from advisor.datasheet.labels import for_application
 
     doc = plain(report)
     kind = report.report.application
-    model = requirements_model(kind)
-    labels, defaults = requirement_labels(model), requirement_defaults(model)
+    labels, defaults = for_application(kind)
     if getattr(report.report, "status", "") == "infeasible":  # no design: say why instead
         from advisor.infeasible import summary_rows as why
 

@@ -146,3 +146,64 @@ def requirement_defaults(model: Any) -> dict[tuple[str, ...], Any]:
 
     walk(model, ())
     return out
+
+
+# ------------------------------------------------------------------ compiled for the batch
+#: Where :func:`write_compiled` puts the labels and defaults of the shipped applications.
+COMPILED_FILE = "compiled_labels.py"
+
+
+def literal_default(v: Any) -> bool:
+    """A default written as a Python literal (a model's instance is none: it never equals a
+    report's plain data, so leaving its field out of the table changes nothing)."""
+    if v is None or type(v) in (str, int, float, bool):
+        return True
+    return isinstance(v, list | tuple) and all(literal_default(x) for x in v)
+
+
+def compiled_text() -> str:
+    """The source of :mod:`advisor.datasheet.compiled_labels`: :func:`requirement_labels`
+    and :func:`requirement_defaults` of each shipped application's model, as data."""
+    from advisor.core.registry import requirements_model
+    from advisor.core.requirement_spec import ROOTS
+
+    labels, defaults = {}, {}
+    for kind in ROOTS:
+        model = requirements_model(kind)
+        labels[kind] = requirement_labels(model)
+        defaults[kind] = {
+            k: v for k, v in requirement_defaults(model).items() if literal_default(v)
+        }
+    return (
+        '"""The datasheet\'s labels and defaults of the requirement fields of the shipped\n'
+        "applications, read from their models by ``python -m advisor.datasheet.labels`` (so\n"
+        'that a datasheet imports no pydantic). Do not edit: change the models and regenerate."""\n'
+        "\n# fmt: off\n# ruff: noqa: E501\n"
+        f"LABELS = {labels!r}\n"
+        f"DEFAULTS = {defaults!r}\n"
+    )
+
+
+def for_application(kind: str) -> tuple[dict, dict]:
+    """(labels, defaults) of the requirement fields of ``kind``: compiled for a shipped
+    application (no pydantic), from its model for any other."""
+    from advisor.core.compiled_validator import compiled
+
+    if compiled(kind):
+        from advisor.datasheet.compiled_labels import DEFAULTS, LABELS
+
+        return LABELS[kind], DEFAULTS[kind]
+    from advisor.core.registry import requirements_model
+
+    model = requirements_model(kind)
+    return requirement_labels(model), requirement_defaults(model)
+
+
+def write_compiled() -> None:
+    from pathlib import Path
+
+    (Path(__file__).parent / COMPILED_FILE).write_text(compiled_text(), encoding="utf-8")
+
+
+if __name__ == "__main__":
+    write_compiled()
