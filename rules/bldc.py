@@ -85,7 +85,7 @@ def choose_speed(
 #: (phase resistance, steel loss figures, magnet losses) are known to three significant
 #: figures, so a frame within 0.1 % of its reference losses is at its rating. A frame run at
 #: its own reference point (the seed 000 rudder) is exactly at the limit; without this band a
-#: requirement perturbed by 1e-9 would flip from a design to none (issue 12, item 5).
+#: requirement perturbed by 1e-9 would flip from a design to none (a knife edge).
 LIMIT_REL_TOL = 1e-3
 
 

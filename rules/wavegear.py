@@ -55,7 +55,7 @@ def split_ratio(total_ratio: float, q_min: float, q_max: float) -> Finding[list[
     lo, hi = Q_OUT_RANGE
     # a ratio within RATIO_REL_TOL of a stage limit is at the limit: a speed typed as a round
     # number (6400 rpm to 5 rpm: q = 20 × 64) must not change the stage count when rounding
-    # moves it by 1e-15, nor by a 1e-9 change of the requirement (issue 12, item 5)
+    # moves it by 1e-15, nor by a 1e-9 change of the requirement (a knife edge)
     at_least_min = q_min * (1 - RATIO_REL_TOL)
     at_most_max = q_max * (1 + RATIO_REL_TOL)
     if q < at_least_min:

@@ -1,5 +1,5 @@
 """A reducer under a load spectrum: the makers' selection method for strain-wave and
-rolling-body reducers (issue 26, item 2).
+rolling-body reducers.
 
 A cycle is a list of :class:`Load` phases at the reducer's output: torque T_i, speed n_i,
 time t_i. The method weighs each phase by the revolutions it turns (n·t), because the

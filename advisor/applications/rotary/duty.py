@@ -1,4 +1,4 @@
-"""The rotary actuator's duty (issue 15): the PM brushless motor and its wave-gear reducer
+"""The rotary actuator's duty: the PM brushless motor and its wave-gear reducer
 through a cycle of moves, dwells and holds, or an IEC 60034-1 duty type.
 
 Per phase, the torque the output needs is M_out = J_L·ε_out ± M_L (the load torque against
@@ -19,15 +19,15 @@ temperature rise, class 155 (F) by resistance), shows the rise over repeated cyc
 import math
 from typing import NamedTuple
 
-from advisor.calc import duty as du
-from advisor.calc import one_way as ow
+from advisor.calc import duty as duty_calc
+from advisor.calc import one_way
 from advisor.calc.checks import Check
 from advisor.core.cite import cite, note
 from advisor.core.errors import InfeasibleError, InputError
 from advisor.core.rulebook import Trace
 from advisor.duty.report import DutyOut, ThermalOut, phases_out
-from rules import bldc as bl_rules
-from rules import duty as du_rules
+from rules import bldc as bldc_rules
+from rules import duty as duty_rules
 
 RPM = 30.0 / math.pi
 #: IEC 60034-1: the limit of temperature rise of class 155 (F) insulation, by resistance.
@@ -36,7 +36,7 @@ CLASS_F_RISE_K = 105.0
 
 class MotorData(NamedTuple):
     """The rotor inertia and thermal time constant the cycle uses, and where each came from
-    (issue 25: the chosen frame's or catalog motor's unless the requirement overrides)."""
+    (the chosen frame's or catalog motor's unless the requirement overrides)."""
 
     inertia_kgm2: float
     inertia_basis: str
@@ -71,11 +71,11 @@ class Frame:
     def __init__(
         self, ref, iron_at, speed_rpm: float, limit_W: float, data: MotorData | None = None
     ) -> None:
-        from advisor.applications.rotary import motor as bm
+        from advisor.applications.rotary.motor import losses_at
 
         self.ref, self.iron_at, self.speed_rpm, self.limit_W = ref, iron_at, speed_rpm, limit_W
         self.data = data
-        self._losses_at = bm.losses_at
+        self._losses_at = losses_at
         self.ohmic_ref = ref.conducting_phases * ref.phase_resistance_ohm * ref.current_A**2
 
     def core(self, rpm: float) -> float:
@@ -87,7 +87,7 @@ class Frame:
     def copper(self, torque: float) -> float:
         return self.ohmic_ref * (torque / self.ref.torque_Nm) ** 2
 
-    def phase_losses(self, p: du.Phase) -> tuple[float, float]:
+    def phase_losses(self, p: duty_calc.Phase) -> tuple[float, float]:
         """(copper, iron + magnets) mean over a phase; a ramp by Simpson's rule on 5 points."""
         a, b = abs(p.speed_start_rad_s) * RPM, abs(p.speed_end_rad_s) * RPM
         if a == b:
@@ -107,7 +107,7 @@ class Holder(NamedTuple):
     """What holds the load at rest: a one-way device (its passage of torque and where it
     sits), or nothing (the motor holds with power on)."""
 
-    passage: ow.Passage | None
+    passage: one_way.Passage | None
     at_output: bool = False
 
     @property
@@ -126,16 +126,16 @@ NO_HOLDER = Holder(None)
 
 
 def _rotor_inertia(duty, frame) -> float:
-    """The requirement's duty.motor_inertia_kgm2, or the frame's (issue 25)."""
+    """The requirement's duty.motor_inertia_kgm2, or the frame's."""
     given = getattr(duty, "motor_inertia_kgm2", None)
     return given if given is not None else frame.data.inertia_kgm2
 
 
 def _through_reducer(m_in: float, q: float, eta: float) -> float:
     return (
-        du.reflected_torque(m_in, q, eta, driving=True)
+        duty_calc.reflected_torque(m_in, q, eta, driving=True)
         if m_in >= 0
-        else -(du.reflected_torque(-m_in, q, eta, driving=False))
+        else -(duty_calc.reflected_torque(-m_in, q, eta, driving=False))
     )
 
 
@@ -148,8 +148,8 @@ def _at_motor(m_out: float, q: float, eta: float, holder: Holder = NO_HOLDER) ->
     if p is None:
         return _through_reducer(m_out, q, eta)
     if holder.at_output:
-        return _through_reducer(ow.motor_torque_through(p, m_out), q, eta)
-    return ow.motor_torque_through(p, _through_reducer(m_out, q, eta))
+        return _through_reducer(one_way.motor_torque_through(p, m_out), q, eta)
+    return one_way.motor_torque_through(p, _through_reducer(m_out, q, eta))
 
 
 def _move_phases(
@@ -161,7 +161,7 @@ def _move_phases(
     q: float,
     eta: float,
     holder: Holder = NO_HOLDER,
-) -> list[du.Phase]:
+) -> list[duty_calc.Phase]:
     """Accelerate, run, decelerate over the segment's angle in its time (output side)."""
     theta = math.radians(seg.angle_deg)
     if seg.profile == "triangular":
@@ -187,7 +187,7 @@ def _move_phases(
             # the load drives against a self-locking device: it brakes the whole chain, the
             # rotor included, as soon as the motor eases off; nothing is regenerated
             torque = max(torque, 0.0)
-        out.append(du.Phase(f"{label}: {name}", t, w0, w1, torque))
+        out.append(duty_calc.Phase(f"{label}: {name}", t, w0, w1, torque))
     return out
 
 
@@ -199,7 +199,7 @@ def cycle(req, q: float, eta: float, speed_rpm: float, frame: Frame, holder: Hol
     on through the back-drivable wave gear (M_L·η/q): the cycle's closing rest too."""
     duty, rot = req.duty, req.rotary
     jl, jm = duty.load_inertia_kgm2, _rotor_inertia(duty, frame)
-    phases: list[du.Phase] = []
+    phases: list[duty_calc.Phase] = []
     problems: list[str] = []
     w_max = speed_rpm / RPM
     if duty.segments:
@@ -219,14 +219,16 @@ def cycle(req, q: float, eta: float, speed_rpm: float, frame: Frame, holder: Hol
                 phases += ph
                 standing = load
             elif seg.kind == "hold":
-                phases.append(du.Phase(label, seg.time_s, 0.0, 0.0, _held(load, q, eta, holder)))
+                phases.append(
+                    duty_calc.Phase(label, seg.time_s, 0.0, 0.0, _held(load, q, eta, holder))
+                )
                 standing = load
             else:
-                phases.append(du.Phase(label, seg.time_s, 0.0, 0.0, 0.0))
+                phases.append(duty_calc.Phase(label, seg.time_s, 0.0, 0.0, 0.0))
                 standing = 0.0
         rest = 3600.0 / duty.cycles_per_hour - sum(s.time_s for s in duty.segments)
         if rest > 1e-9:
-            phases.append(du.Phase("rest", rest, 0.0, 0.0, _held(standing, q, eta, holder)))
+            phases.append(duty_calc.Phase("rest", rest, 0.0, 0.0, _held(standing, q, eta, holder)))
         return phases, problems
     return _iec_cycle(req, q, eta, w_max, frame, holder)
 
@@ -248,13 +250,16 @@ def _iec_cycle(req, q: float, eta: float, w: float, frame: Frame, holder: Holder
     period = 3600.0 / duty.starts_per_hour if t in ("S4", "S5", "S7") else duty.cycle_time_s
     on = cdf * period if t != "S7" else period
     if t in ("S1", "S2"):
-        return [du.Phase("run", period, w, w, run_torque)], problems
+        return [duty_calc.Phase("run", period, w, w, run_torque)], problems
     if t == "S3":
-        return [du.Phase("run", on, w, w, run_torque), du.Phase("rest", period - on, 0, 0, 0)], []
+        return [
+            duty_calc.Phase("run", on, w, w, run_torque),
+            duty_calc.Phase("rest", period - on, 0, 0, 0),
+        ], []
     if t == "S6":
         return [
-            du.Phase("run", on, w, w, run_torque),
-            du.Phase("no load", period - on, w, w, 0),
+            duty_calc.Phase("run", on, w, w, run_torque),
+            duty_calc.Phase("no load", period - on, w, w, 0),
         ], []
     if t in ("S4", "S5", "S7"):
         peak = duty.peak_torque_factor * frame.continuous_torque()
@@ -271,18 +276,21 @@ def _iec_cycle(req, q: float, eta: float, w: float, frame: Frame, holder: Holder
                 f"{tb:.3g} s: more than the time under load, {on:.4g} s"
             )
             return [], problems
-        out = [du.Phase("start", ta, 0.0, w, peak), du.Phase("run", on - ta - tb, w, w, run_torque)]
+        out = [
+            duty_calc.Phase("start", ta, 0.0, w, peak),
+            duty_calc.Phase("run", on - ta - tb, w, w, run_torque),
+        ]
         if tb:
             out.append(
-                du.Phase("electric brake", tb, w, 0.0, -peak)
+                duty_calc.Phase("electric brake", tb, w, 0.0, -peak)
                 if back
-                else du.Phase("stop by the self-locking device", tb, w, 0.0, 0.0)
+                else duty_calc.Phase("stop by the self-locking device", tb, w, 0.0, 0.0)
             )
         if period > on:
-            out.append(du.Phase("rest", period - on, 0.0, 0.0, 0.0))
+            out.append(duty_calc.Phase("rest", period - on, 0.0, 0.0, 0.0))
         return out, problems
     return [
-        du.Phase(f"load {k}", x.time_share * period, w, w, x.load_share * run_torque)
+        duty_calc.Phase(f"load {k}", x.time_share * period, w, w, x.load_share * run_torque)
         for k, x in enumerate(duty.loads, 1)
     ], problems
 
@@ -291,18 +299,18 @@ def evaluate(req, q: float, eta: float, speed_rpm: float, frame: Frame, holder: 
     phases, problems = cycle(req, q, eta, speed_rpm, frame, holder)
     if not phases:
         return {"phases": [], "problems": problems}
-    t = du.cycle_time(phases)
+    t = duty_calc.cycle_time(phases)
     parts = [(frame.phase_losses(p), p.time_s) for p in phases]
     copper = sum(c * dt for (c, _), dt in parts) / t
     core = sum(k * dt for (_, k), dt in parts) / t
     total = copper + core
-    peak = du.peak_torque(phases)
+    peak = duty_calc.peak_torque(phases)
     peak_limit = req.duty.peak_torque_factor * frame.continuous_torque()
-    if not bl_rules.within_limit(total, frame.limit_W):
+    if not bldc_rules.within_limit(total, frame.limit_W):
         problems.append(
             f"{speed_rpm:g} rpm: cycle-averaged losses {total:.4g} W (copper {copper:.4g}, "
             f"iron and magnets {core:.4g}) above the frame's limit {frame.limit_W:.4g} W "
-            f"(+ {bl_rules.LIMIT_REL_TOL:.1%} allowance)"
+            f"(+ {bldc_rules.LIMIT_REL_TOL:.1%} allowance)"
         )
     if peak > peak_limit:  # the check's own margin: limit/peak below 1
         problems.append(
@@ -344,10 +352,10 @@ def passing_speeds(req, cands: list, frame_for, holder_for, limit_W: float) -> l
     segment_loads_within_rating(req)
     ok, reasons = [], []
     for c in cands:
-        if not bl_rules.within_limit(c.losses_W.total, limit_W):
+        if not bldc_rules.within_limit(c.losses_W.total, limit_W):
             reasons.append(
                 f"{c.speed_rpm:g} rpm: losses at the rated point {c.losses_W.total:.4g} W "
-                f"above the frame's limit {limit_W:.4g} W (+ {bl_rules.LIMIT_REL_TOL:.1%} "
+                f"above the frame's limit {limit_W:.4g} W (+ {bldc_rules.LIMIT_REL_TOL:.1%} "
                 "allowance)"
             )
             continue
@@ -375,16 +383,16 @@ def _decisions(req, e: dict, frame: Frame, q: float, eta: float, speed_rpm: floa
     duty = req.duty
     if duty.duty_type:
         trace.apply(
-            du_rules.duty_type,
+            duty_rules.duty_type,
             duty.duty_type,
-            du.IEC_DUTY_TYPES[duty.duty_type],
+            duty_calc.IEC_DUTY_TYPES[duty.duty_type],
             "At the rated point (rotary.torque_Nm at rotary.speed_rpm); S2 taken as S1; S4, "
             "S5 and S7 start (and brake) at the peak torque; S9, S10 as shares of the rated "
             "output torque.",
         )
-    rms = du.rms_torque(e["phases"])
+    rms = duty_calc.rms_torque(e["phases"])
     trace.apply(
-        du_rules.thermal,
+        duty_rules.thermal,
         e["total"] / frame.limit_W,
         f"Cycle-averaged losses {e['total']:.4g} W (copper {e['copper']:.4g} W from the "
         f"phases' torques, i.e. from the RMS torque {rms:.4g} N·m; iron and magnets "
@@ -392,7 +400,7 @@ def _decisions(req, e: dict, frame: Frame, q: float, eta: float, speed_rpm: floa
         f"{frame.limit_W:.4g} W, the limit of the point check.",
     )
     trace.apply(
-        du_rules.peak,
+        duty_rules.peak,
         e["peak"],
         e["peak_limit"],
         f"The largest motor torque of the cycle against {duty.peak_torque_factor:g} × the "
@@ -400,7 +408,7 @@ def _decisions(req, e: dict, frame: Frame, q: float, eta: float, speed_rpm: floa
         f"{frame.continuous_torque():.4g} N·m (duty.peak_torque_factor).",
     )
     ir = duty.load_inertia_kgm2 / (q * q * eta) / frame.data.inertia_kgm2
-    return ir, trace.apply(du_rules.inertia_ratio, ir)
+    return ir, trace.apply(duty_rules.inertia_ratio, ir)
 
 
 class _Thermal(NamedTuple):
@@ -414,8 +422,8 @@ def _thermal(e: dict, frame: Frame, t_cycle: float) -> _Thermal:
     tau = frame.data.time_constant_s
     r_th = CLASS_F_RISE_K / frame.limit_W
     n = max(1, min(2000, math.ceil(5.0 * tau / t_cycle)))
-    hist = du.thermal_history(e["losses"], r_th, tau, n, max_points=400)
-    return _Thermal(r_th, hist, du.periodic_peak_rise(e["losses"], r_th, tau))
+    hist = duty_calc.thermal_history(e["losses"], r_th, tau, n, max_points=400)
+    return _Thermal(r_th, hist, duty_calc.periodic_peak_rise(e["losses"], r_th, tau))
 
 
 def _duty_warnings(ir: float, within: bool, thermal: _Thermal, tau: float) -> list[str]:
@@ -423,7 +431,7 @@ def _duty_warnings(ir: float, within: bool, thermal: _Thermal, tau: float) -> li
     if not within:
         warnings.append(
             f"duty: the load's inertia at the motor is {ir:.3g} times the motor's (guideline "
-            f"{du_rules.INERTIA_RATIO_GUIDELINE:g})"
+            f"{duty_rules.INERTIA_RATIO_GUIDELINE:g})"
         )
     peak_rise = thermal.peak_rise_K
     if peak_rise > CLASS_F_RISE_K * (1 + 1e-9):
@@ -473,11 +481,11 @@ def advise_duty(
         )
     phases = e["phases"]
     ir, within = _decisions(req, e, frame, q, eta, speed_rpm, trace)
-    t_cycle = du.cycle_time(phases)
+    t_cycle = duty_calc.cycle_time(phases)
     tau = frame.data.time_constant_s
     thermal = _thermal(e, frame, t_cycle)
     warnings = _duty_warnings(ir, within, thermal, tau)
-    out_J, back_J = du.energies(phases)
+    out_J, back_J = duty_calc.energies(phases)
     out = DutyOut.make(
         motor=f"{speed_rpm:g} rpm",
         ratio=q,
@@ -485,16 +493,16 @@ def advise_duty(
         move_time_s=sum(p.time_s for p in phases if p.speed_start_rad_s or p.speed_end_rad_s),
         peak_torque_Nm=e["peak"],
         peak_torque_limit_Nm=e["peak_limit"],
-        rms_torque_Nm=du.rms_torque(phases),
+        rms_torque_Nm=duty_calc.rms_torque(phases),
         thermal_utilisation=e["total"] / frame.limit_W,
         thermal_basis="cycle-averaged losses over the frame's limit",
         inertia_ratio=ir,
         motor_inertia_kgm2=frame.data.inertia_kgm2,
         motor_inertia_basis=frame.data.inertia_basis,
-        inertia_ratio_guideline=du_rules.INERTIA_RATIO_GUIDELINE,
+        inertia_ratio_guideline=duty_rules.INERTIA_RATIO_GUIDELINE,
         energy_per_cycle_J=out_J,
         regenerated_per_cycle_J=back_J,
-        mean_speed_rpm=du.mean_speed(phases) * RPM,
+        mean_speed_rpm=duty_calc.mean_speed(phases) * RPM,
         cycles_per_hour=3600.0 / t_cycle,
         duty_type=duty.duty_type or "cycle",
         held_by=holder.words(),
@@ -518,18 +526,18 @@ def advise_duty(
 def frames(ref, steel, steel_mass: float, terms, limit_W: float, data: MotorData | None = None):
     """rpm -> the Frame wound for that speed, with the iron loss model of the point check,
     and the rotor inertia and time constant of the cycle (``data``)."""
-    from advisor.applications.rotary import motor as bm
+    from advisor.applications.rotary.motor import specific_iron_loss
     from advisor.calc import bldc
 
     def iron_at(rpm: float) -> float:
         f = bldc.flux_frequency_Hz(rpm, ref.pole_pairs)
-        return steel_mass * bm.specific_iron_loss(ref, steel, terms, f)[0]
+        return steel_mass * specific_iron_loss(ref, steel, terms, f)[0]
 
     return lambda rpm: Frame(ref, iron_at, rpm, limit_W, data)
 
 
 def output_loads(req, q: float, eta: float, speed_rpm: float, frame: Frame, holder: Holder):
-    """The cycle at the reducer's output, for its load spectrum (issue 26, item 2): per phase
+    """The cycle at the reducer's output, for its load spectrum: per phase
     the torque the output carries and its mean |speed| (rpm).
 
     Moves, holds and dwells give the output torque J_L·ε ± M_L themselves (what
@@ -550,7 +558,7 @@ def output_loads(req, q: float, eta: float, speed_rpm: float, frame: Frame, hold
         lowering torque of a self-locking one)."""
         if p_dev is None or not holder.at_output:
             return m_out
-        return ow.motor_torque_through(p_dev, m_out)
+        return one_way.motor_torque_through(p_dev, m_out)
 
     # at standstill a device at the output holds the load itself; elsewhere the reducer does
     held = 0.0 if p_dev is not None and holder.at_output else 1.0

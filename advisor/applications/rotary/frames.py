@@ -1,7 +1,7 @@
-"""Which motor frames the rotary advice tries (issue 25): with ``motor.frame = "auto"`` seed
+"""Which motor frames the rotary advice tries: with ``motor.frame = "auto"`` seed
 000's scaled series and a catalog's PM brushless motors in order of mass (then diameter);
 otherwise the one frame the requirement imposes: ``"reference"`` (the default: the
-``[motor.reference]`` frame, seed 000's unless given, as before issue 25) or a frame's or a
+``[motor.reference]`` frame, seed 000's unless given) or a frame's or a
 catalog motor's name. And what the report says of it."""
 
 from typing import Any, NamedTuple
@@ -31,9 +31,9 @@ def frame_data(req, frame):
     """The rotor inertia and time constant of the cycle on ``frame`` (None without a cycle)."""
     if req.duty is None:
         return None
-    from advisor.applications.rotary import duty as dr
+    from advisor.applications.rotary.duty import motor_data
 
-    return dr.motor_data(
+    return motor_data(
         req.duty, frame.rotor_inertia_kgm2, frame.thermal_time_constant_s, _words(frame)
     )
 
@@ -68,11 +68,11 @@ def imposed_data(req, choice: Choice, cat):
     if req.duty is None:
         return None
     if tag == "reference":
-        from advisor.applications.rotary import duty as dr
+        from advisor.applications.rotary.duty import motor_data
 
         own = "reference" in req.motor.model_fields_set
         seed = None if own else cat.bldc_frame(SEED_FRAME)
-        return dr.motor_data(
+        return motor_data(
             req.duty,
             None if seed is None else seed.rotor_inertia_kgm2,
             None if seed is None else seed.thermal_time_constant_s,

@@ -150,7 +150,7 @@ class StageLifeOut(ReportTable):
 
 
 class ReducerLoadOut(ReportTable):
-    """The reducer under its load spectrum (issue 26, item 2): figures at the output."""
+    """The reducer under its load spectrum: figures at the output."""
 
     basis: str  # "duty cycle" | "working point"
     service_factor: float
@@ -197,7 +197,7 @@ class OutputBearingOut(ReportTable):
 
 
 class RegenerationOut(ReportTable):
-    """Energy the motor gives back per cycle, and what absorbs it (issue 26, item 6)."""
+    """Energy the motor gives back per cycle, and what absorbs it."""
 
     regenerated_per_cycle_J: float
     brakings_per_cycle: int
@@ -246,7 +246,7 @@ class FrameTriedOut(ReportTable):
 
 
 class FrameOut(ReportTable):
-    """The motor frame the design takes (issue 25) and which kind of data decided."""
+    """The motor frame the design takes and which kind of data decided."""
 
     name: str
     kind: str  # "scaled" | "catalog" | "reference"
