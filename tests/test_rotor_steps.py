@@ -1,0 +1,105 @@
+"""The spinning-rotor advice's steps and records (seed 002): the loads, steady torques and
+slew loss of calc agree with the term-by-term resistance, and the report is built from them."""
+
+import math
+
+import pytest
+from helpers import EXAMPLES
+
+from advisor.applications.spinning_rotor.steps import (
+    RPM,
+    bearing_rating,
+    chosen_bearing,
+    rotor_model,
+    run_up,
+    slew_duration,
+)
+from advisor.calc.rotor import (
+    gyroscopic_loads,
+    gyroscopic_moment,
+    resisting_torque,
+    run_up_time,
+    slew_loss,
+    steady_torques,
+)
+from advisor.core.engine import advise
+from advisor.core.reading import read_requirements
+from advisor.core.rulebook import Trace
+from catalogs import load_catalogs
+
+GYRO = EXAMPLES / "gyro_compensator.toml"
+
+
+@pytest.fixture(scope="module")
+def steps():
+    req, cat = read_requirements(GYRO), load_catalogs()
+    r = req.rotor
+    b, angle = chosen_bearing(req, cat)
+    rotor = rotor_model(req, b, angle)
+    moment = gyroscopic_moment(
+        r.angular_momentum, r.slew_rate_rad_s, math.radians(r.axis_angle_deg)
+    )
+    loads = gyroscopic_loads(rotor, moment, r.speed_rad_s)
+    return req, cat, b, angle, rotor, loads
+
+
+def test_the_model_is_the_seeds_rotor(steps):
+    _, _, b, angle, rotor, loads = steps
+    assert (b.designation, angle) == ("7000 CD", 15.0)
+    assert rotor.bearings == 2
+    assert rotor.weight_share_N == pytest.approx(0.56 * 9.80665 / 2)
+    assert rotor.plane_to_cg_m == pytest.approx(0.010)
+    assert loads.moment_Nm == pytest.approx(0.1388, rel=1e-3)
+
+
+def test_preload_is_the_axial_load_less_the_reaction(steps):
+    *_, loads = steps
+    assert loads.preload_N == loads.slewing.axial_N - loads.reaction_axial_N
+    assert loads.calm.radial_N < loads.slewing.radial_N
+    assert loads.friction_calm.total_Nm < loads.friction_slewing.total_Nm
+
+
+def test_steady_torques_are_the_resistance_of_eq_5_at_speed(steps):
+    """With the moment of the slew at speed, J·ω·Ω·sin α = H·Ω·sin α, the steady torques
+    equal the term-by-term resistance of the motion equation."""
+    req, _, _, _, rotor, loads = steps
+    w = req.rotor.speed_rad_s
+    s = steady_torques(rotor, loads, w)
+    assert s.calm_Nm == pytest.approx(resisting_torque(rotor, w, False), rel=1e-12)
+    assert s.slewing_Nm == pytest.approx(resisting_torque(rotor, w, True), rel=1e-9)
+    assert s.aero_Nm * w == pytest.approx(32.15)  # the seed's aerodynamic loss
+
+
+def test_run_up_record_and_its_decision(steps):
+    req, _, _, _, rotor, loads = steps
+    w = req.rotor.speed_rad_s
+    trace = Trace()
+    ru = run_up(req, rotor, steady_torques(rotor, loads, w), trace)
+    assert [d.id for d in trace.decisions] == ["RO-02"]
+    assert ru.required_torque_Nm >= ru.run_up_torque_Nm
+    assert ru.time_s == run_up_time(rotor, ru.required_torque_Nm, w) <= req.rotor.run_up_time_s
+    assert ru.curve_time_s[-1] == pytest.approx(ru.time_s)
+    assert ru.curve_speed_rad_s[-1] == w
+
+
+def test_slew_loss_record(steps):
+    req, _, _, _, rotor, loads = steps
+    w = req.rotor.speed_rad_s
+    calm = steady_torques(rotor, loads, w).calm_Nm
+    duration = slew_duration(req)
+    assert duration == pytest.approx(math.radians(9) / 0.0765)
+    s = slew_loss(rotor, calm, w, duration)
+    assert s.balance_speed_rad_s < s.speed_after_rad_s < w
+    assert s.time_s[0] == 0.0 and s.speed_rad_s[0] == w
+
+
+def test_the_report_is_built_from_the_records(steps):
+    req, cat, b, _, _, loads = steps
+    rating = bearing_rating(req, cat, b, loads)
+    out = advise(req).design.rotor
+    assert out.preload_N == loads.preload_N
+    assert out.bearing_friction_Nm.with_reaction == loads.friction_slewing.total_Nm
+    assert out.bearing_life_h == rating.life_h
+    assert out.bearing.static_safety == rating.static_safety
+    assert out.skf_friction_Nm.without_reaction == rating.skf_calm.total_Nm
+    assert out.speed_rpm == req.rotor.speed_rad_s * RPM
