@@ -138,3 +138,24 @@ async def test_the_wizard_asks_and_advises_a_registered_application():
         console = Console(width=200, record=True, file=open(__import__("os").devnull, "w"))
         console.print(app.query_one("#view-summary", Static).content)
         assert "lever torque 30 N·m" in console.export_text()
+
+
+def test_the_shipped_applications_come_first_and_a_test_may_replace_one():
+    """The shipped entries are plain data the registry reads on first use: one registered
+    before that comes after them, or replaces the shipped one of its kind."""
+    import subprocess
+    import sys
+
+    code = (
+        "from advisor.core import registry\n"
+        "toy = registry.Application('lever', 'toy', None, None, None)\n"
+        "registry.register(toy)\n"
+        "registry.register(toy._replace(kind='rotary', title='toy rotary'))\n"
+        "print(','.join(registry.kinds()))\n"
+        "print(registry.application('rotary').title)\n"
+    )
+    out = subprocess.run(
+        [sys.executable, "-c", code], capture_output=True, text=True, check=True
+    ).stdout.splitlines()
+    assert out[0] == "linear,rotary,positioning,spinning_rotor,lever"
+    assert out[1] == "toy rotary"

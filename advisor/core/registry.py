@@ -18,7 +18,15 @@ DEFAULT_STEPS = ("Loads and motion", "Envelope and holding", "Motor preferences"
 class Application(NamedTuple):
     """One application: what the wizard lists, how its file is read, how it is advised and
     how its report is summed up. The wizard's questions come from the requirement model's
-    field metadata (see :mod:`advisor.core.requirements`)."""
+    field metadata (see :mod:`advisor.core.requirements`).
+
+    Every hook is an import path or the object itself (an application defined in a test).
+    The duty cycle needs no hook of its own: the pipeline evaluates the application's cycle
+    (phases at the motor through :mod:`advisor.calc.duty`, verdicts by :mod:`rules.duty`)
+    and puts an :class:`advisor.duty.report.DutyOut` at ``design.duty``; the datasheet's duty
+    plots and the wizard's (:mod:`advisor.duty.views`) draw it from there, and
+    ``duty_uses`` says which ``[duty]`` keys the application reads beyond the shared ones.
+    A toy application in ``tests/test_toy_application.py`` uses every hook."""
 
     kind: str  # the value of application.kind
     title: str  # one line in the wizard's list of applications
