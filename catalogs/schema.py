@@ -1,8 +1,11 @@
 """Pydantic schemas that validate the catalog files (see :mod:`catalogs.loader`)."""
 
+import inspect
 from typing import Annotated, Any, Literal
 
 from pydantic import BaseModel, ConfigDict, Field, model_validator
+
+from catalogs import rows
 
 Positive = Annotated[float, Field(gt=0, allow_inf_nan=False)]
 
@@ -135,23 +138,46 @@ MAX_RATED_POWER_KW = 1e5
 SUPPLY_FREQUENCY_RANGE_HZ = (1.0, 1000.0)
 
 
-class InductionMotor(_Row):
-    model: Annotated[str, Field(min_length=1, max_length=60)]
-    poles: int
-    #: 10 W … 100 MW (above: see MAX_RATED_POWER_KW, refused with its own reason)
-    rated_power_kW: Annotated[float, Field(ge=0.01, allow_inf_nan=False)]
-    rated_speed_rpm: Between(1.0, 6e4)
-    slip_pct: Annotated[float, Field(gt=0, lt=50, allow_inf_nan=False)]
-    breakdown_torque_ratio: Annotated[float, Field(gt=1, le=5, allow_inf_nan=False)]
-    starting_torque_ratio: Annotated[float, Field(gt=0, le=5, allow_inf_nan=False)]
-    efficiency_pct: Annotated[float, Field(gt=0, lt=100, allow_inf_nan=False)]
-    cos_phi: Annotated[float, Field(gt=0, le=1, allow_inf_nan=False)]
-    starting_current_ratio: Annotated[float, Field(ge=1, le=15, allow_inf_nan=False)]
-    inertia_kgm2: Between(1e-7, 1e5)
-    mass_kg: Between(0.1, 1e6)
-    source: str
-    estimated: list[str] = []
-    supply_frequency_Hz: Between(*SUPPLY_FREQUENCY_RANGE_HZ) = 50.0
+def row_fields(row: type, bounds: dict[str, Any]) -> type[_Row]:
+    """A schema's fields declared once, in the row of :mod:`catalogs.rows` it validates (a
+    NamedTuple): the row's names, types and defaults, each number within its ``bounds``
+    (an ``Annotated`` type of the field). A tuple of the row is read as the list TOML gives."""
+    from pydantic import create_model
+
+    unknown = set(bounds) - set(row._fields)
+    if unknown:
+        raise TypeError(f"{row.__name__}: bounds of fields it does not have: {sorted(unknown)}")
+    fields: dict[str, Any] = {}
+    for name, ann in inspect.get_annotations(row).items():
+        typ = bounds.get(name, list[str] if ann == tuple[str, ...] else ann)
+        default = row._field_defaults.get(name, ...)
+        fields[name] = (typ, list(default) if isinstance(default, tuple) else default)
+    return create_model(f"{row.__name__}Fields", __base__=_Row, **fields)
+
+
+class InductionMotor(
+    row_fields(
+        rows.InductionMotor,
+        {
+            "model": Annotated[str, Field(min_length=1, max_length=60)],
+            # 10 W … 100 MW (above: see MAX_RATED_POWER_KW, refused with its own reason)
+            "rated_power_kW": Annotated[float, Field(ge=0.01, allow_inf_nan=False)],
+            "rated_speed_rpm": Between(1.0, 6e4),
+            "slip_pct": Annotated[float, Field(gt=0, lt=50, allow_inf_nan=False)],
+            "breakdown_torque_ratio": Annotated[float, Field(gt=1, le=5, allow_inf_nan=False)],
+            "starting_torque_ratio": Annotated[float, Field(gt=0, le=5, allow_inf_nan=False)],
+            "efficiency_pct": Annotated[float, Field(gt=0, lt=100, allow_inf_nan=False)],
+            "cos_phi": Annotated[float, Field(gt=0, le=1, allow_inf_nan=False)],
+            "starting_current_ratio": Annotated[float, Field(ge=1, le=15, allow_inf_nan=False)],
+            "inertia_kgm2": Between(1e-7, 1e5),
+            "mass_kg": Between(0.1, 1e6),
+            "supply_frequency_Hz": Between(*SUPPLY_FREQUENCY_RANGE_HZ),
+        },
+    )
+):
+    """A row of an induction motor catalog: the fields of :class:`catalogs.rows.InductionMotor`
+    within their physical ranges, and the rated torque a datasheet may state."""
+
     #: optional: the rated torque as the datasheet states it, checked against P/ω_n (the
     #: advisor computes M_n from the power and the speed, never takes it from here)
     rated_torque_Nm: Between(1e-3, 1e7) | None = None
