@@ -56,6 +56,11 @@ def uncell(text: str) -> str:
 def cell(value: Any) -> str:
     """A CSV cell: blank for none, numbers as Python writes them (``-5`` stays a number),
     lists as JSON, text neutralised against spreadsheet formulas (:func:`neutral`)."""
+    kind = type(value)
+    if kind is str:  # the common cases first: a cell per column of every variant
+        return neutral(printable(value, newlines=False))
+    if kind is float or kind is int:
+        return str(value)
     if value is None:
         return ""
     if isinstance(value, bool):

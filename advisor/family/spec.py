@@ -188,31 +188,42 @@ def _in_unit(key: str, v: Any) -> Any:
 
 def axis_values(key: str, spec: Any) -> Axis:
     """The values of one axis: a list as given, or a range ``{from, to, steps, scale}``."""
-    where = f"family axis {key!r}"
     if isinstance(spec, list):
-        if not spec:
-            raise InputError(f"{where}: empty list; give at least one value")
-        typed, spec = spec, [_in_unit(key, v) for v in spec]  # "1 kN*m" and 1000 are one
-        seen: dict[Any, int] = {}
-        for i, v in enumerate(spec):
-            if isinstance(v, float) and not math.isfinite(v):
-                raise InputError(f"{where}: value {v!r}: must be a finite number")
-            j = seen.setdefault(_same_key(v), i)
-            if j != i:
-                first, again = typed[j], typed[i]
-                twice = (
-                    f"{_show(again)} appears twice"
-                    if repr(first) == repr(again)
-                    else f"{_show(first)} and {_show(again)} are the same value"
-                    + (f" ({_show(v)})" if isinstance(first, str) or isinstance(again, str) else "")
-                )
-                raise InputError(f"{where}: {twice}; give each value once")
-        return Axis(key, tuple(spec), "list")
+        return list_axis(key, spec)
     if not isinstance(spec, dict):
         raise InputError(
-            f"{where} = {spec!r}: must be a list of values or a range "
+            f"family axis {key!r} = {spec!r}: must be a list of values or a range "
             "{ from = A, to = B, steps = N, scale = 'linear' or 'log' }"
         )
+    return range_axis(key, spec)
+
+
+def list_axis(key: str, typed: list[Any]) -> Axis:
+    """An axis of values given one by one (quantity strings converted to the key's unit);
+    refused if empty, not finite, or holding one value twice."""
+    where = f"family axis {key!r}"
+    if not typed:
+        raise InputError(f"{where}: empty list; give at least one value")
+    spec = [_in_unit(key, v) for v in typed]  # "1 kN*m" and 1000 are one
+    seen: dict[Any, int] = {}
+    for i, v in enumerate(spec):
+        if isinstance(v, float) and not math.isfinite(v):
+            raise InputError(f"{where}: value {v!r}: must be a finite number")
+        j = seen.setdefault(_same_key(v), i)
+        if j != i:
+            first, again = typed[j], typed[i]
+            twice = (
+                f"{_show(again)} appears twice"
+                if repr(first) == repr(again)
+                else f"{_show(first)} and {_show(again)} are the same value"
+                + (f" ({_show(v)})" if isinstance(first, str) or isinstance(again, str) else "")
+            )
+            raise InputError(f"{where}: {twice}; give each value once")
+    return Axis(key, tuple(spec), "list")
+
+
+def check_range(where: str, spec: dict[str, Any]) -> tuple[Any, Any, Any, Any]:
+    """``(from, to, steps, scale)`` of a range, each checked on its own and together."""
     unknown = [k for k in spec if k not in RANGE_KEYS]
     if unknown:
         raise InputError(f"{where}: unknown key {unknown[0]!r}; allowed: {', '.join(RANGE_KEYS)}")
@@ -232,6 +243,14 @@ def axis_values(key: str, spec: Any) -> Axis:
         raise InputError(f"{where}: empty range (from = to = {lo:g}) with {steps} steps")
     if scale == "log" and (lo <= 0 or hi <= 0):
         raise InputError(f"{where}: a log range needs from > 0 and to > 0 (got {lo:g}, {hi:g})")
+    return lo, hi, steps, scale
+
+
+def range_axis(key: str, spec: dict[str, Any]) -> Axis:
+    """An axis of ``steps`` values from ``from`` to ``to`` (both as written), the others
+    rounded to six significant digits; whole numbers stay whole."""
+    where = f"family axis {key!r}"
+    lo, hi, steps, scale = check_range(where, spec)
     if steps == 1:
         return Axis(key, (lo,), scale)
     raw = _range(lo, hi, steps, scale)
@@ -331,11 +350,8 @@ def _read_toml(path: Path) -> dict[str, Any]:
     return read_toml(path)
 
 
-def parse_family(
-    doc: dict[str, Any], source: Path, max_variants: int = DEFAULT_MAX_VARIANTS
-) -> Family:
-    """Validate a family document; ``source`` locates relative ``base`` files."""
-    fam = doc.get("family")
+def family_head(fam: Any, source: Path) -> tuple[str, int | None]:
+    """The ``[family]`` table's own keys: ``(name, chunk_size)``, unknown keys refused."""
     if not isinstance(fam, dict):
         raise InputError(
             f"{source}: no [family] table; a family file is a base requirement "
@@ -350,8 +366,57 @@ def parse_family(
     chunk = fam.get("chunk_size")
     if chunk is not None and (not isinstance(chunk, int) or isinstance(chunk, bool) or chunk < 1):
         raise InputError(f"family.chunk_size = {chunk!r}: must be a whole number ≥ 1")
+    return name, chunk
+
+
+def listed_members(raw: Any, here: Path, inputs: list[Path]) -> list[Member]:
+    """The members of ``[[family.members]]``, each from its base file (added to ``inputs``)."""
+    if not isinstance(raw, list) or not raw:
+        raise InputError("family.members: must be a non-empty array of tables [[family.members]]")
+    members = []
+    for n, m in enumerate(raw, 1):
+        where = f"family.members[{n}]"
+        if not isinstance(m, dict):
+            raise InputError(f"{where}: must be a table")
+        bad = [k for k in m if k not in MEMBER_KEYS]
+        if bad:
+            raise InputError(f"{where}.{bad[0]}: unknown key; allowed: {', '.join(MEMBER_KEYS)}")
+        if not isinstance(m.get("base"), str):
+            raise InputError(f"{where}.base: missing; the requirement file of this member")
+        inputs.append(here / m["base"])
+        base = _read_toml(inputs[-1])
+        members.append(_member(str(m.get("name", "")), base, _axes(m.get("axes"), where)))
+    names = [m.name for m in members]
+    dup = next((x for x in names if names.count(x) > 1), None)
+    if dup is not None:
+        raise InputError(f"family.members: two members named {dup!r}; give each a name")
+    return members
+
+
+def only_member(
+    fam: dict[str, Any], inline: dict[str, Any], here: Path, inputs: list[Path]
+) -> Member:
+    """The one member of a family file without members: the base in the file itself, or
+    in the file ``family.base`` names (added to ``inputs``)."""
+    if "base" in fam:
+        if inline:
+            raise InputError(
+                "family.base: give the base requirement in the file or as family.base, not both"
+            )
+        inputs.append(here / str(fam["base"]))
+        base = _read_toml(inputs[-1])
+    else:
+        base = inline
+    return _member("", base, _axes(fam.get("axes"), "family.axes"))
+
+
+def parse_family(
+    doc: dict[str, Any], source: Path, max_variants: int = DEFAULT_MAX_VARIANTS
+) -> Family:
+    """Validate a family document; ``source`` locates relative ``base`` files."""
+    fam = doc.get("family")
+    name, chunk = family_head(fam, source)
     inline = {k: v for k, v in doc.items() if k != "family"}
-    here = source.parent
     inputs = [source]
     if "members" in fam:
         if inline or "axes" in fam or "base" in fam:
@@ -359,41 +424,9 @@ def parse_family(
                 "family.members: with members, each member has its own base and axes; "
                 "remove the top-level requirement tables, family.base and family.axes"
             )
-        raw = fam["members"]
-        if not isinstance(raw, list) or not raw:
-            raise InputError(
-                "family.members: must be a non-empty array of tables [[family.members]]"
-            )
-        members = []
-        for n, m in enumerate(raw, 1):
-            where = f"family.members[{n}]"
-            if not isinstance(m, dict):
-                raise InputError(f"{where}: must be a table")
-            bad = [k for k in m if k not in MEMBER_KEYS]
-            if bad:
-                raise InputError(
-                    f"{where}.{bad[0]}: unknown key; allowed: {', '.join(MEMBER_KEYS)}"
-                )
-            if not isinstance(m.get("base"), str):
-                raise InputError(f"{where}.base: missing; the requirement file of this member")
-            inputs.append(here / m["base"])
-            base = _read_toml(inputs[-1])
-            members.append(_member(str(m.get("name", "")), base, _axes(m.get("axes"), where)))
-        names = [m.name for m in members]
-        dup = next((x for x in names if names.count(x) > 1), None)
-        if dup is not None:
-            raise InputError(f"family.members: two members named {dup!r}; give each a name")
+        members = listed_members(fam["members"], source.parent, inputs)
     else:
-        if "base" in fam:
-            if inline:
-                raise InputError(
-                    "family.base: give the base requirement in the file or as family.base, not both"
-                )
-            inputs.append(here / str(fam["base"]))
-            base = _read_toml(inputs[-1])
-        else:
-            base = inline
-        members = [_member("", base, _axes(fam.get("axes"), "family.axes"))]
+        members = [only_member(fam, inline, source.parent, inputs)]
     check_size(members, max_variants)  # before the values are checked: that costs time
     for m in members:
         check_member(m)
