@@ -196,6 +196,45 @@ class KlossCurve(NamedTuple):
         return x * self.critical_slip
 
 
+def _check_ratings(rated_slip: float, overload_ratio: float, starting_ratio: float) -> None:
+    """The catalog ratings a refined Kloss curve can pass through: 0 < s_n < 1, λ > 1,
+    0 < μ ≤ λ; a ValueError names the first one outside."""
+    lam, mu, sn = overload_ratio, starting_ratio, rated_slip
+    if not (0.0 < sn < 1.0):
+        raise ValueError(f"rated slip must be in (0, 1), got {sn}")
+    if lam <= 1.0:
+        raise ValueError(f"breakdown torque ratio must exceed 1, got {lam}")
+    if not (0.0 < mu <= lam):
+        raise ValueError(f"starting torque ratio must be in (0, {lam}], got {mu}")
+
+
+def _critical_slip(eps: float, rated_slip: float, overload_ratio: float) -> float:
+    """s_k of the refined curve through M(s_n) = M_n, for a given ε: the larger root of
+    s_n/s_k + s_k/s_n = 2λ(1 + ε) − 2ε."""
+    a = 2.0 * overload_ratio * (1.0 + eps) - 2.0 * eps
+    return rated_slip * (a + math.sqrt(a * a - 4.0)) / 2.0
+
+
+def _fitted_epsilon(rated_slip: float, overload_ratio: float, starting_ratio: float) -> float:
+    """ε of the refined curve that also passes through M(1) = M_st (bisection)."""
+    lam, mu, sn = overload_ratio, starting_ratio, rated_slip
+
+    def residual(eps: float) -> float:
+        sk = _critical_slip(eps, sn, lam)
+        b = 2.0 * (lam / mu) * (1.0 + eps) - 2.0 * eps
+        return 1.0 / sk + sk - b
+
+    lo, hi = -1.0 + 1e-9, 1.0
+    while residual(hi) > 0 and hi < 1e6:
+        hi *= 4.0
+    try:
+        return bisect(residual, lo, hi)
+    except ValueError as exc:
+        raise ValueError(
+            f"no refined Kloss curve passes through s_n = {sn:.4f}, Mmax/Mn = {lam}, Mst/Mn = {mu}"
+        ) from exc
+
+
 def fit_kloss(
     rated_torque_Nm: float,
     rated_slip: float,
@@ -226,13 +265,12 @@ def fit_kloss(
     Notes
     -----
     When μ = λ the maximum is at standstill: s_k = 1 and ε follows in closed form. Raises
-    ValueError for ratings no such curve passes through (or that put the maximum beyond
-    standstill).
+    ValueError for ratings no such curve passes through, or that put the maximum beyond
+    standstill.
 
     Examples
     --------
-    The 4A80B4 row (1.5 kW, 1415 rpm, λ = 2.2, μ = 2.0): the fitted curve passes through
-    its three points.
+    The 4A80B4 row (1.5 kW, 1415 rpm, λ = 2.2, μ = 2.0) passes through its three points:
 
     >>> c = fit_kloss(10.123, 1 - 1415 / 1500, 2.2, 2.0)
     >>> round(c.torque(1 - 1415 / 1500), 3), round(c.torque(1.0), 3)
@@ -243,37 +281,12 @@ def fit_kloss(
     Refined Kloss formula [3]; seed 001's M(s) characteristics, fig. 4 [1].
     """
     lam, mu, sn = overload_ratio, starting_ratio, rated_slip
-    if not (0.0 < sn < 1.0):
-        raise ValueError(f"rated slip must be in (0, 1), got {sn}")
-    if lam <= 1.0:
-        raise ValueError(f"breakdown torque ratio must exceed 1, got {lam}")
-    if not (0.0 < mu <= lam):
-        raise ValueError(f"starting torque ratio must be in (0, {lam}], got {mu}")
+    _check_ratings(sn, lam, mu)
     mk = lam * rated_torque_Nm
-
-    def critical_slip(eps: float) -> float:
-        a = 2.0 * lam * (1.0 + eps) - 2.0 * eps
-        return sn * (a + math.sqrt(a * a - 4.0)) / 2.0
-
     if math.isclose(mu, lam, rel_tol=1e-9):
-        eps = (sn + 1.0 / sn - 2.0 * lam) / (2.0 * (lam - 1.0))
-        return KlossCurve(mk, 1.0, eps)
-
-    def residual(eps: float) -> float:
-        sk = critical_slip(eps)
-        b = 2.0 * (lam / mu) * (1.0 + eps) - 2.0 * eps
-        return 1.0 / sk + sk - b
-
-    lo, hi = -1.0 + 1e-9, 1.0
-    while residual(hi) > 0 and hi < 1e6:
-        hi *= 4.0
-    try:
-        eps = bisect(residual, lo, hi)
-    except ValueError as exc:
-        raise ValueError(
-            f"no refined Kloss curve passes through s_n = {sn:.4f}, Mmax/Mn = {lam}, Mst/Mn = {mu}"
-        ) from exc
-    sk = critical_slip(eps)
+        return KlossCurve(mk, 1.0, (sn + 1.0 / sn - 2.0 * lam) / (2.0 * (lam - 1.0)))
+    eps = _fitted_epsilon(sn, lam, mu)
+    sk = _critical_slip(eps, sn, lam)
     if sk >= 1.0:
         raise ValueError(
             f"the catalog points s_n = {sn:.4f}, Mmax/Mn = {lam}, Mst/Mn = {mu} put the "

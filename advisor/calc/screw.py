@@ -473,10 +473,6 @@ def critical_buckling_load(
     formula : str
         'Euler' or 'Johnson'
 
-    Notes
-    -----
-    A straight core under a central load; the thread's outer part adds stiffness, ignored.
-
     Examples
     --------
     Tr16x2 core (d3 = 13.5 mm) between pinned supports 0.4 m apart, steel 45 (E = 210 GPa,

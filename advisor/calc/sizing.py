@@ -48,12 +48,31 @@ WHOLE_TURN_TOLERANCE = 1e-9
 
 
 def nut_whole_turns(turns_for_pressure: float, turns_for_height: float) -> int:
-    """Engaged turns of the nut: the turns the flank pressure needs and the turns the minimum
-    height ratio ψ_min·d2/P needs, each rounded up to whole turns. Ivanov [3] sizes the nut
-    with z = F/(π·d2·H1·[p]); a nut is made with whole turns, and rounding up keeps the flank
-    pressure strictly below [p] except where z is a whole number exactly, so that a design
-    does not depend on the last bit of the force.
+    """Engaged turns of the nut, whole.
 
+    z = max(⌈z_p⌉, ⌈ψ_min·d2/P⌉, 1)
+
+    Parameters
+    ----------
+    turns_for_pressure : float
+        Turns the flank pressure needs, z_p = F/(π·d2·H1·[p]) [-]
+    turns_for_height : float
+        Turns the minimum height ratio needs, ψ_min·d2/P [-]
+
+    Returns
+    -------
+    turns : int
+        Engaged turns of the nut z [-]
+
+    Notes
+    -----
+    A nut is made with whole turns; rounding up keeps the flank pressure strictly below
+    [p] except where z is a whole number exactly, so that a design does not depend on the
+    last bit of the force. A height count within :data:`WHOLE_TURN_TOLERANCE` of a whole
+    number counts as whole.
+
+    Examples
+    --------
     Seed 001's Tr16x2 bronze nut at 3500 N: z = 3500/(π·15·1·10) = 7.43 → 8 for the
     pressure, 1.2·15/2 = 9 for the height: 9 turns.
 
@@ -61,6 +80,10 @@ def nut_whole_turns(turns_for_pressure: float, turns_for_height: float) -> int:
     9
     >>> nut_whole_turns(9.0001, 9.0)
     10
+
+    References
+    ----------
+    Ivanov, «Детали машин», power screws: z = F/(π·d2·H1·[p]).
     """
     by_height = math.ceil(turns_for_height * (1.0 - WHOLE_TURN_TOLERANCE))
     return max(math.ceil(turns_for_pressure), by_height, 1)
@@ -79,8 +102,26 @@ class ThrustFace(NamedTuple):
     viscosity_mm2_s: float = 0.0
 
     def torque_Nm(self, force_N: float, speed_rpm: float) -> float:
-        """The friction torque of the face under an axial force at a screw speed  [N·m]:
-        friction always resists the motion, whichever way the force acts."""
+        """The friction torque of the face under an axial force at a screw speed.
+
+        collar: T = |F|·f_c·d_c/2;  bearing: the SKF model's total moment, F axial
+
+        Parameters
+        ----------
+        force_N : float
+            Axial force on the face F [N]; its sign is ignored
+        speed_rpm : float
+            Screw speed n [rpm] (the bearing's speed-dependent terms)
+
+        Returns
+        -------
+        torque_Nm : float
+            Friction torque of the face T [N·m], resisting the motion whichever way F acts
+
+        References
+        ----------
+        Shigley, «Mechanical Engineering Design», eq. (8-6); SKF General Catalogue, friction.
+        """
         force = abs(force_N)
         if self.kind == "collar":
             return screw.collar_torque(force, self.friction_coefficient, self.mean_diameter_m)
@@ -186,247 +227,6 @@ def _check_sources(
     )
 
 
-class _ThreadNumbers(NamedTuple):
-    """The numbers of one thread under one requirement, from which :func:`evaluate_thread`
-    builds its evaluation and its checks."""
-
-    psi: float
-    phi: float
-    phi_low: float
-    phi_std: float
-    torque: float
-    revs: float
-    speed: float
-    turns: float
-    height: float
-    pressure: float
-    core: float
-    p_cr: float
-    slenderness: float
-    formula: str
-    thrust_torque: float = 0.0
-    max_speed: float = math.inf
-
-
-def _nut(
-    force_N: float, d2: float, p: float, h1: float, material: ScrewMaterial, service_factor: float
-) -> tuple[float, float]:
-    """The nut's whole engaged turns, enough for the flank pressure under the service factor
-    and for the minimum height ratio, and its flank pressure under the force (the same floats
-    for :func:`evaluate_thread` and :func:`screen_threads`)."""
-    z_req = screw.nut_turns_required(
-        service_factor * force_N, d2, h1, material.allowable_pressure_Pa
-    )
-    turns = float(nut_whole_turns(z_req, material.nut_height_ratio_min * d2 / p))
-    return turns, screw.nut_bearing_pressure(force_N, d2, h1, turns)
-
-
-def _max_speed_rpm(d3: float, span_m: float, end_fixity: str, material: ScrewMaterial) -> float:
-    """The fastest the screw may turn: the allowed share of its whirling speed  [rpm]."""
-    return screw.WHIRL_ALLOWED_SHARE * screw.critical_speed_rpm(
-        d3, span_m, end_fixity, material.elastic_modulus_Pa, STEEL_DENSITY_KG_M3
-    )
-
-
-def _thread_numbers(
-    thread: ThreadProfile,
-    force_N: float,
-    stroke_m: float,
-    travel_time_s: float,
-    span_m: float,
-    end_fixity: str,
-    starts: int,
-    friction_model: screw.FrictionModel,
-    material: ScrewMaterial,
-    thrust: ThrustFace | None = None,
-    service_factor: float = 1.0,
-) -> _ThreadNumbers:
-    """Torque, speed, nut, core stress and buckling of one thread (see
-    :func:`evaluate_thread`)."""
-    p = thread.pitch_mm * MM
-    d2 = thread.d2_mm * MM
-    d3 = thread.d3_mm * MM
-    f = material.friction_coefficient
-    psi = screw.lead_angle(p, d2, starts)
-    phi = screw.friction_angle(f, friction_model, psi)
-    # the torque of both friction models (the report shows the other beside the chosen),
-    # with the lead and friction angles computed once: eq. (1), as screw.thread_torque
-    phi_std = phi if friction_model == "standard" else screw.friction_angle(f, "standard", psi)
-    torque = screw.torque_from_angles(force_N, d2, psi, phi)
-    revs = screw.revolutions(stroke_m, p, starts)
-    speed = screw.screw_speed_rpm(revs, travel_time_s)
-    turns, pressure = _nut(force_N, d2, p, thread.H1_mm * MM, material, service_factor)
-    p_cr, slenderness, formula = screw.critical_buckling_load(
-        d3, span_m, end_fixity, material.elastic_modulus_Pa, material.yield_strength_Pa
-    )
-    return _ThreadNumbers(
-        psi=psi,
-        phi=phi,
-        phi_low=screw.friction_angle(material.friction_low, "standard", psi),
-        phi_std=phi_std,
-        torque=torque,
-        revs=revs,
-        speed=speed,
-        turns=turns,
-        height=turns * p,
-        pressure=pressure,
-        core=screw.core_equivalent_stress(force_N, torque, d3),
-        p_cr=p_cr,
-        slenderness=slenderness,
-        formula=formula,
-        thrust_torque=thrust.torque_Nm(force_N, speed) if thrust is not None else 0.0,
-        max_speed=_max_speed_rpm(d3, span_m, end_fixity, material),
-    )
-
-
-def _thread_checks(
-    n: _ThreadNumbers,
-    force_N: float,
-    d2: float,
-    material: ScrewMaterial,
-    end_fixity: str,
-    buckling_safety_factor: float,
-    service_factor: float,
-) -> tuple[Check, ...]:
-    """The five checks of a thread (see :func:`evaluate_thread`), the first three strength
-    checks under the service factor."""
-    m = material
-    src = _check_sources(m.yield_safety_factor, n.formula, end_fixity, buckling_safety_factor)
-    sf = service_factor if service_factor != 1.0 else None
-    allowed_stress = m.yield_strength_Pa / m.yield_safety_factor
-    return (
-        _upper(
-            "core_stress", src.core_name, n.core / MPA, allowed_stress / MPA, "MPa", src.core, sf
-        ),
-        _upper(
-            "buckling",
-            src.buckling_name,
-            force_N,
-            n.p_cr / buckling_safety_factor,
-            "N",
-            src.buckling,
-            sf,
-        ),
-        _upper(
-            "nut_pressure",
-            "nut flank bearing pressure",
-            n.pressure / MPA,
-            m.allowable_pressure_Pa / MPA,
-            "MPa",
-            src.ivanov,
-            sf,
-        ),
-        _upper(
-            "nut_height",
-            "nut height ratio H/d2",
-            n.height / d2,
-            m.nut_height_ratio_max,
-            "",
-            src.ivanov,
-        ),
-        _upper("nut_turns", "engaged nut turns", n.turns, float(m.nut_max_turns), "", src.ivanov),
-    )
-
-
-def _evaluation(
-    thread: ThreadProfile,
-    starts: int,
-    force_N: float,
-    friction_model: screw.FrictionModel,
-    material: ScrewMaterial,
-    n: _ThreadNumbers,
-    checks: tuple[Check, ...],
-    thrust: ThrustFace | None,
-    service_factor: float,
-) -> ThreadEvaluation:
-    """The evaluation of a thread from its numbers and its checks."""
-    psi, phi, torque, d2 = n.psi, n.phi, n.torque, thread.d2_mm * MM
-    f = material.friction_coefficient
-    return ThreadEvaluation(
-        thread=thread,
-        starts=starts,
-        friction_model=friction_model,
-        lead_angle_rad=psi,
-        friction_angle_rad=phi,
-        torque_Nm=torque,
-        torque_standard_Nm=torque
-        if friction_model == "standard"
-        else screw.torque_from_angles(force_N, d2, psi, n.phi_std),
-        torque_paper_Nm=torque
-        if friction_model == "paper"
-        else screw.torque_from_angles(force_N, d2, psi, screw.friction_angle(f, "paper", psi)),
-        efficiency=screw.efficiency(psi, phi),
-        back_driving_efficiency=screw.back_driving_efficiency(psi, phi),
-        # holding is physics: judged with the standard reduced friction even when the torque
-        # follows the paper's f/cos(ψ/2), so it agrees with the low-friction judgement below
-        self_locking=screw.is_self_locking(psi, n.phi_std),
-        self_locking_at_low_friction=screw.is_self_locking(psi, n.phi_low),
-        revolutions=n.revs,
-        speed_rpm=n.speed,
-        nut_height_mm=n.height / MM,
-        nut_turns=n.turns,
-        nut_pressure_Pa=n.pressure,
-        critical_load_N=n.p_cr,
-        slenderness=n.slenderness,
-        buckling_formula=n.formula,
-        core_stress_Pa=n.core,
-        checks=checks,
-        thrust_torque_Nm=n.thrust_torque,
-        thrust=thrust,
-        service_factor=service_factor,
-        max_speed_rpm=n.max_speed,
-    )
-
-
-def evaluate_thread(
-    thread: ThreadProfile,
-    *,
-    force_N: float,
-    stroke_m: float,
-    travel_time_s: float,
-    span_m: float,
-    end_fixity: str,
-    buckling_safety_factor: float,
-    starts: int,
-    friction_model: screw.FrictionModel,
-    material: ScrewMaterial,
-    thrust: ThrustFace | None = None,
-    service_factor: float = 1.0,
-) -> ThreadEvaluation:
-    """Torque, efficiency, self-locking and the strength checks of one thread.
-
-    Checks (all with margin = allowed / actual):
-    core von Mises stress ≤ σ_y / S; axial force ≤ P_cr / S_b (Euler or Johnson);
-    flank pressure ≤ [p] with the nut of :func:`nut_whole_turns` turns, H = z·P;
-    nut height ratio H/d2 ≤ ψ_max; engaged turns ≤ z_max. The first three are strength
-    checks: under a service factor f_B each demand is multiplied by it (the
-    core stress is linear in the force and the torque, so f_B·σ is the stress under f_B·F),
-    and the nut is sized for f_B·F. ``thrust``: the thrust face, whose friction torque at
-    the rated force and the screw speed adds to the thread's in :attr:`drive_torque_Nm`
-    (the core between the nut and the thrust face carries the thread torque alone).
-    """
-    n = _thread_numbers(
-        thread,
-        force_N,
-        stroke_m,
-        travel_time_s,
-        span_m,
-        end_fixity,
-        starts,
-        friction_model,
-        material,
-        thrust,
-        service_factor,
-    )
-    d2 = thread.d2_mm * MM
-    checks = _thread_checks(
-        n, force_N, d2, material, end_fixity, buckling_safety_factor, service_factor
-    )
-    return _evaluation(
-        thread, starts, force_N, friction_model, material, n, checks, thrust, service_factor
-    )
-
-
 class ThreadGeometry(NamedTuple):
     """A thread's name and the dimensions the checks use, in metres: the same conversions
     as :func:`_thread_numbers` makes, done once per catalog."""
@@ -440,6 +240,31 @@ class ThreadGeometry(NamedTuple):
 
 
 def thread_geometry(thread: ThreadProfile) -> ThreadGeometry:
+    """A thread's dimensions in metres, converted once per catalog.
+
+    p = P·10⁻³, d2 = d2·10⁻³, d3 = d3·10⁻³, H1 = H1·10⁻³
+
+    Parameters
+    ----------
+    thread : ThreadProfile
+        Trapezoidal thread of GOST 24737-81, dimensions in [mm]
+
+    Returns
+    -------
+    geometry : ThreadGeometry
+        The thread, its name, pitch, pitch and minor diameters and working depth [m]
+
+    Examples
+    --------
+    >>> from catalogs import load_catalogs
+    >>> g = thread_geometry(load_catalogs().thread("Tr16x2"))
+    >>> round(g.d2_m, 6), round(g.d3_m, 6)
+    (0.015, 0.0135)
+
+    References
+    ----------
+    GOST 24737-81 / ISO 2904, basic dimensions.
+    """
     return ThreadGeometry(
         thread,
         thread.name,
@@ -481,26 +306,228 @@ class ThreadScreen(NamedTuple):
         return (self.torque_Nm + self.thrust_torque_Nm) / self.device_efficiency
 
 
-def _holds_the_load(
-    g: ThreadGeometry,
-    force_N: float,
-    span_m: float,
-    end_fixity: str,
-    buckling_safety_factor: float,
-    material: ScrewMaterial,
-    service_factor: float,
-) -> bool:
-    """Whether a thread passes the four checks that do not depend on its number of starts:
-    buckling, flank pressure, nut height and nut turns (the same margins as
+@dataclass(frozen=True, slots=True)
+class ScrewDemand:
+    """What one requirement asks of every thread: the load, the stroke and its time, the
+    supports, the friction and the factors. The joint choice screens every thread under it
+    (:meth:`screen`) and evaluates the few it reports (:meth:`evaluate`); both compute with
+    the same functions, so that they see the same floats."""
+
+    force_N: float
+    stroke_m: float
+    travel_time_s: float
+    span_m: float
+    end_fixity: str
+    buckling_safety_factor: float
+    friction_model: screw.FrictionModel
+    material: ScrewMaterial
+    thrust: ThrustFace | None = None
+    service_factor: float = 1.0
+
+    def evaluate(self, thread: ThreadProfile, starts: int) -> ThreadEvaluation:
+        """:func:`evaluate_thread` of one thread with ``starts`` starts under this demand."""
+        n = _thread_numbers(thread, starts, self)
+        checks = _thread_checks(n, self, thread.d2_mm * MM)
+        return _evaluation(thread, starts, self, n, checks)
+
+    def screen(
+        self, geometries: list[ThreadGeometry], starts_options: tuple[int, ...]
+    ) -> list[ThreadScreen]:
+        """:func:`screen_threads` of every thread under this demand."""
+        out = []
+        for g in geometries:
+            max_speed = _max_speed_rpm(g.d3_m, self.span_m, self.end_fixity, self.material)
+            if not _holds_the_load(g, self):
+                nan = math.nan
+                out.extend(
+                    ThreadScreen(g.thread, g.name, z, False, nan, nan, nan, False)
+                    for z in starts_options
+                )
+                continue
+            out.extend(_screen_lead(g, z, self, max_speed) for z in starts_options)
+        return out
+
+
+class _ThreadNumbers(NamedTuple):
+    """The numbers of one thread under one requirement, from which
+    :meth:`ScrewDemand.evaluate` builds its evaluation and its checks."""
+
+    psi: float
+    phi: float
+    phi_low: float
+    phi_std: float
+    torque: float
+    revs: float
+    speed: float
+    turns: float
+    height: float
+    pressure: float
+    core: float
+    p_cr: float
+    slenderness: float
+    formula: str
+    thrust_torque: float = 0.0
+    max_speed: float = math.inf
+
+
+def _nut(
+    force_N: float, d2: float, p: float, h1: float, material: ScrewMaterial, service_factor: float
+) -> tuple[float, float]:
+    """The nut's whole engaged turns, enough for the flank pressure under the service factor
+    and for the minimum height ratio, and its flank pressure under the force."""
+    z_req = screw.nut_turns_required(
+        service_factor * force_N, d2, h1, material.allowable_pressure_Pa
+    )
+    turns = float(nut_whole_turns(z_req, material.nut_height_ratio_min * d2 / p))
+    return turns, screw.nut_bearing_pressure(force_N, d2, h1, turns)
+
+
+def _max_speed_rpm(d3: float, span_m: float, end_fixity: str, material: ScrewMaterial) -> float:
+    """The fastest the screw may turn: the allowed share of its whirling speed  [rpm]."""
+    return screw.WHIRL_ALLOWED_SHARE * screw.critical_speed_rpm(
+        d3, span_m, end_fixity, material.elastic_modulus_Pa, STEEL_DENSITY_KG_M3
+    )
+
+
+def _thread_numbers(thread: ThreadProfile, starts: int, d: ScrewDemand) -> _ThreadNumbers:
+    """Torque, speed, nut, core stress and buckling of one thread (see
     :func:`evaluate_thread`)."""
-    m, sf = material, service_factor
+    p = thread.pitch_mm * MM
+    d2 = thread.d2_mm * MM
+    d3 = thread.d3_mm * MM
+    force_N, material, model = d.force_N, d.material, d.friction_model
+    f = material.friction_coefficient
+    psi = screw.lead_angle(p, d2, starts)
+    phi = screw.friction_angle(f, model, psi)
+    # the torque of both friction models (the report shows the other beside the chosen),
+    # with the lead and friction angles computed once: eq. (1), as screw.thread_torque
+    phi_std = phi if model == "standard" else screw.friction_angle(f, "standard", psi)
+    torque = screw.torque_from_angles(force_N, d2, psi, phi)
+    revs = screw.revolutions(d.stroke_m, p, starts)
+    speed = screw.screw_speed_rpm(revs, d.travel_time_s)
+    turns, pressure = _nut(force_N, d2, p, thread.H1_mm * MM, material, d.service_factor)
+    p_cr, slenderness, formula = screw.critical_buckling_load(
+        d3, d.span_m, d.end_fixity, material.elastic_modulus_Pa, material.yield_strength_Pa
+    )
+    return _ThreadNumbers(
+        psi=psi,
+        phi=phi,
+        phi_low=screw.friction_angle(material.friction_low, "standard", psi),
+        phi_std=phi_std,
+        torque=torque,
+        revs=revs,
+        speed=speed,
+        turns=turns,
+        height=turns * p,
+        pressure=pressure,
+        core=screw.core_equivalent_stress(force_N, torque, d3),
+        p_cr=p_cr,
+        slenderness=slenderness,
+        formula=formula,
+        thrust_torque=d.thrust.torque_Nm(force_N, speed) if d.thrust is not None else 0.0,
+        max_speed=_max_speed_rpm(d3, d.span_m, d.end_fixity, material),
+    )
+
+
+def _thread_checks(n: _ThreadNumbers, d: ScrewDemand, d2: float) -> tuple[Check, ...]:
+    """The five checks of a thread (see :func:`evaluate_thread`), the first three strength
+    checks under the service factor."""
+    m = d.material
+    src = _check_sources(m.yield_safety_factor, n.formula, d.end_fixity, d.buckling_safety_factor)
+    sf = d.service_factor if d.service_factor != 1.0 else None
+    allowed_stress = m.yield_strength_Pa / m.yield_safety_factor
+    return (
+        _upper(
+            "core_stress", src.core_name, n.core / MPA, allowed_stress / MPA, "MPa", src.core, sf
+        ),
+        _upper(
+            "buckling",
+            src.buckling_name,
+            d.force_N,
+            n.p_cr / d.buckling_safety_factor,
+            "N",
+            src.buckling,
+            sf,
+        ),
+        _upper(
+            "nut_pressure",
+            "nut flank bearing pressure",
+            n.pressure / MPA,
+            m.allowable_pressure_Pa / MPA,
+            "MPa",
+            src.ivanov,
+            sf,
+        ),
+        _upper(
+            "nut_height",
+            "nut height ratio H/d2",
+            n.height / d2,
+            m.nut_height_ratio_max,
+            "",
+            src.ivanov,
+        ),
+        _upper("nut_turns", "engaged nut turns", n.turns, float(m.nut_max_turns), "", src.ivanov),
+    )
+
+
+def _evaluation(
+    thread: ThreadProfile,
+    starts: int,
+    d: ScrewDemand,
+    n: _ThreadNumbers,
+    checks: tuple[Check, ...],
+) -> ThreadEvaluation:
+    """The evaluation of a thread from its numbers and its checks."""
+    psi, phi, torque, d2 = n.psi, n.phi, n.torque, thread.d2_mm * MM
+    f, model = d.material.friction_coefficient, d.friction_model
+    return ThreadEvaluation(
+        thread=thread,
+        starts=starts,
+        friction_model=model,
+        lead_angle_rad=psi,
+        friction_angle_rad=phi,
+        torque_Nm=torque,
+        torque_standard_Nm=torque
+        if model == "standard"
+        else screw.torque_from_angles(d.force_N, d2, psi, n.phi_std),
+        torque_paper_Nm=torque
+        if model == "paper"
+        else screw.torque_from_angles(d.force_N, d2, psi, screw.friction_angle(f, "paper", psi)),
+        efficiency=screw.efficiency(psi, phi),
+        back_driving_efficiency=screw.back_driving_efficiency(psi, phi),
+        # holding is physics: judged with the standard reduced friction even when the torque
+        # follows the paper's f/cos(ψ/2), so it agrees with the low-friction judgement below
+        self_locking=screw.is_self_locking(psi, n.phi_std),
+        self_locking_at_low_friction=screw.is_self_locking(psi, n.phi_low),
+        revolutions=n.revs,
+        speed_rpm=n.speed,
+        nut_height_mm=n.height / MM,
+        nut_turns=n.turns,
+        nut_pressure_Pa=n.pressure,
+        critical_load_N=n.p_cr,
+        slenderness=n.slenderness,
+        buckling_formula=n.formula,
+        core_stress_Pa=n.core,
+        checks=checks,
+        thrust_torque_Nm=n.thrust_torque,
+        thrust=d.thrust,
+        service_factor=d.service_factor,
+        max_speed_rpm=n.max_speed,
+    )
+
+
+def _holds_the_load(g: ThreadGeometry, d: ScrewDemand) -> bool:
+    """Whether a thread passes the four checks that do not depend on its number of starts:
+    buckling, flank pressure, nut height and nut turns (the margins of
+    :func:`evaluate_thread`)."""
+    m, sf, force_N = d.material, d.service_factor, d.force_N
     p, d2 = g.pitch_m, g.d2_m
-    turns, pressure = _nut(force_N, d2, p, g.h1_m, m, service_factor)
+    turns, pressure = _nut(force_N, d2, p, g.h1_m, m, sf)
     p_cr = screw.critical_buckling_load(
-        g.d3_m, span_m, end_fixity, m.elastic_modulus_Pa, m.yield_strength_Pa
+        g.d3_m, d.span_m, d.end_fixity, m.elastic_modulus_Pa, m.yield_strength_Pa
     )[0]
     return (
-        _margin(force_N, p_cr / buckling_safety_factor, sf) >= 1.0
+        _margin(force_N, p_cr / d.buckling_safety_factor, sf) >= 1.0
         and _margin(pressure / MPA, m.allowable_pressure_Pa / MPA, sf) >= 1.0
         and _margin(turns * p / d2, m.nut_height_ratio_max) >= 1.0
         and _margin(turns, float(m.nut_max_turns)) >= 1.0
@@ -508,29 +535,20 @@ def _holds_the_load(
 
 
 def _screen_lead(
-    g: ThreadGeometry,
-    starts: int,
-    force_N: float,
-    stroke_m: float,
-    travel_time_s: float,
-    friction_model: screw.FrictionModel,
-    material: ScrewMaterial,
-    thrust: ThrustFace | None,
-    service_factor: float,
-    max_speed_rpm: float,
+    g: ThreadGeometry, starts: int, d: ScrewDemand, max_speed_rpm: float
 ) -> ThreadScreen:
     """The screen of a thread that holds the load, with one number of starts: its core
     stress under the torque of that lead decides."""
-    m = material
+    m, force_N = d.material, d.force_N
     psi = screw.lead_angle(g.pitch_m, g.d2_m, starts)
     torque = screw.torque_from_angles(
-        force_N, g.d2_m, psi, screw.friction_angle(m.friction_coefficient, friction_model, psi)
+        force_N, g.d2_m, psi, screw.friction_angle(m.friction_coefficient, d.friction_model, psi)
     )
     core = screw.core_equivalent_stress(force_N, torque, g.d3_m)
     stress_limit = m.yield_strength_Pa / m.yield_safety_factor / MPA
-    passed = _margin(core / MPA, stress_limit, service_factor) >= 1.0
-    revs = screw.revolutions(stroke_m, g.pitch_m, starts)
-    speed = screw.screw_speed_rpm(revs, travel_time_s)
+    passed = _margin(core / MPA, stress_limit, d.service_factor) >= 1.0
+    revs = screw.revolutions(d.stroke_m, g.pitch_m, starts)
+    speed = screw.screw_speed_rpm(revs, d.travel_time_s)
     low = screw.friction_angle(m.friction_low, "standard", psi)
     return ThreadScreen(
         g.thread,
@@ -541,9 +559,73 @@ def _screen_lead(
         revs if passed else math.nan,
         speed if passed else math.nan,
         passed and screw.is_self_locking(psi, low),
-        thrust_torque_Nm=thrust.torque_Nm(force_N, speed) if passed and thrust is not None else 0.0,
+        thrust_torque_Nm=d.thrust.torque_Nm(force_N, speed)
+        if passed and d.thrust is not None
+        else 0.0,
         max_speed_rpm=max_speed_rpm,
     )
+
+
+def evaluate_thread(
+    thread: ThreadProfile,
+    *,
+    force_N: float,
+    stroke_m: float,
+    travel_time_s: float,
+    span_m: float,
+    end_fixity: str,
+    buckling_safety_factor: float,
+    starts: int,
+    friction_model: screw.FrictionModel,
+    material: ScrewMaterial,
+    thrust: ThrustFace | None = None,
+    service_factor: float = 1.0,
+) -> ThreadEvaluation:
+    """Torque, efficiency, self-locking and the five checks of one thread.
+
+    M = F·d2/2·tan(ψ + φ');  f_B·σ_eq ≤ σ_y/S,  f_B·F ≤ P_cr/S_b,  f_B·p ≤ [p],
+    H/d2 ≤ ψ_max,  z ≤ z_max  (each margin = allowed / actual). The nut has
+    :func:`nut_whole_turns` turns for f_B·F, H = z·P; the core between the nut and the
+    thrust face carries the thread torque alone. Seed 001, eq. (1); Ivanov, «Детали
+    машин», power screws.
+
+    Parameters
+    ----------
+    thread : ThreadProfile
+        Trapezoidal thread of GOST 24737-81, dimensions in [mm]
+    force_N, stroke_m, travel_time_s : float
+        Rated axial force [N], stroke [m] and its travel time [s]
+    span_m, end_fixity : float, str
+        Length between the supports [m] and their fixity (a column's end conditions)
+    buckling_safety_factor, service_factor : float
+        Safety factor S_b on buckling [-]; service factor f_B on the strength checks [-]
+    starts : int
+        Number of thread starts [-]
+    friction_model : str
+        'standard' or 'paper' (:func:`advisor.calc.screw.friction_angle`)
+    material : ScrewMaterial
+        Friction, allowable pressure [Pa], steel [Pa] and nut proportions of the pair
+    thrust : ThrustFace or None
+        The face that takes the axial force; its friction adds to the thread's torque
+
+    Returns
+    -------
+    evaluation : ThreadEvaluation
+        Angles [rad], torques [N·m], efficiencies [-], speed [rpm], nut, checks
+    """
+    demand = ScrewDemand(
+        force_N,
+        stroke_m,
+        travel_time_s,
+        span_m,
+        end_fixity,
+        buckling_safety_factor,
+        friction_model,
+        material,
+        thrust,
+        service_factor,
+    )
+    return demand.evaluate(thread, starts)
 
 
 def screen_threads(
@@ -561,98 +643,46 @@ def screen_threads(
     thrust: ThrustFace | None = None,
     service_factor: float = 1.0,
 ) -> list[ThreadScreen]:
-    """The screen of every thread with every number of starts, in the order thread by
-    thread, starts within (see :class:`ThreadScreen`).
+    """Pass or fail of every thread with every number of starts, its torque and speed.
 
-    Exact, and cheaper than :func:`evaluate_thread` a hundred times: the same functions of
-    :mod:`advisor.calc.screw` on the same arguments, and each margin the same quotient
-    limit / value (:func:`_margin`). Four of the five checks (buckling, flank pressure, nut
-    height, nut turns) do not depend on the number of starts: they are judged once per
-    thread, and a thread that fails one of them fails with every number of starts, so its
-    torque is not computed. Only the core stress needs the torque of each lead.
+    passed ⇔ every margin of :func:`evaluate_thread` ≥ 1
+
+    Parameters
+    ----------
+    geometries : list[ThreadGeometry]
+        The catalog's threads, dimensions in [m] (:func:`thread_geometry`)
+    starts_options : tuple[int, ...]
+        Numbers of thread starts to screen [-]
+    force_N, stroke_m, travel_time_s, span_m, end_fixity, buckling_safety_factor
+        As for :func:`evaluate_thread` [N], [m], [s], [m], -, [-]
+    friction_model, material, thrust, service_factor
+        As for :func:`evaluate_thread`
+
+    Returns
+    -------
+    screens : list[ThreadScreen]
+        Thread by thread, starts within; torque [N·m], revolutions, speed [rpm]
+
+    Notes
+    -----
+    Exact: the same functions on the same arguments as :func:`evaluate_thread`, each margin
+    the same quotient. Buckling, flank pressure, nut height and turns do not depend on the
+    starts: a thread that fails one fails with every number of starts, and its torque is
+    not computed. Seed 001, eq. (1); Ivanov, «Детали машин», power screws.
     """
-    out = []
-    for g in geometries:
-        max_speed = _max_speed_rpm(g.d3_m, span_m, end_fixity, material)
-        if not _holds_the_load(
-            g, force_N, span_m, end_fixity, buckling_safety_factor, material, service_factor
-        ):
-            nan = math.nan
-            out.extend(
-                ThreadScreen(g.thread, g.name, z, False, nan, nan, nan, False)
-                for z in starts_options
-            )
-            continue
-        out.extend(
-            _screen_lead(
-                g,
-                z,
-                force_N,
-                stroke_m,
-                travel_time_s,
-                friction_model,
-                material,
-                thrust,
-                service_factor,
-                max_speed,
-            )
-            for z in starts_options
-        )
-    return out
-
-
-@dataclass(frozen=True, slots=True)
-class ScrewDemand:
-    """What one requirement asks of every thread: the load, the stroke and its time, the
-    supports, the friction and the factors. The joint choice screens every thread under it
-    and evaluates the few it reports."""
-
-    force_N: float
-    stroke_m: float
-    travel_time_s: float
-    span_m: float
-    end_fixity: str
-    buckling_safety_factor: float
-    friction_model: screw.FrictionModel
-    material: ScrewMaterial
-    thrust: ThrustFace | None = None
-    service_factor: float = 1.0
-
-    def evaluate(self, thread: ThreadProfile, starts: int) -> ThreadEvaluation:
-        """:func:`evaluate_thread` of one thread with ``starts`` starts under this demand."""
-        return evaluate_thread(
-            thread,
-            force_N=self.force_N,
-            stroke_m=self.stroke_m,
-            travel_time_s=self.travel_time_s,
-            span_m=self.span_m,
-            end_fixity=self.end_fixity,
-            buckling_safety_factor=self.buckling_safety_factor,
-            starts=starts,
-            friction_model=self.friction_model,
-            material=self.material,
-            thrust=self.thrust,
-            service_factor=self.service_factor,
-        )
-
-    def screen(
-        self, geometries: list[ThreadGeometry], starts_options: tuple[int, ...]
-    ) -> list[ThreadScreen]:
-        """:func:`screen_threads` of every thread under this demand."""
-        return screen_threads(
-            geometries,
-            starts_options,
-            force_N=self.force_N,
-            stroke_m=self.stroke_m,
-            travel_time_s=self.travel_time_s,
-            span_m=self.span_m,
-            end_fixity=self.end_fixity,
-            buckling_safety_factor=self.buckling_safety_factor,
-            friction_model=self.friction_model,
-            material=self.material,
-            thrust=self.thrust,
-            service_factor=self.service_factor,
-        )
+    demand = ScrewDemand(
+        force_N,
+        stroke_m,
+        travel_time_s,
+        span_m,
+        end_fixity,
+        buckling_safety_factor,
+        friction_model,
+        material,
+        thrust,
+        service_factor,
+    )
+    return demand.screen(geometries, starts_options)
 
 
 class MotorRow(Protocol):
@@ -719,11 +749,37 @@ class MotorEvaluation(NamedTuple):
 def evaluate_motor(
     motor: MotorRow, load_torque_Nm: float, required_speed_rpm: float, revolutions: float
 ) -> MotorEvaluation:
-    """The motor's refined Kloss curve, its working point under the load and its margins.
+    """A catalog motor's refined Kloss curve, its working point under the load and its margins.
 
-    The working point is the stable intersection M(s) = M_load; the travel time at that
-    speed is 60·N / n. The torque at the required speed is M(s_req), s_req = 1 − n_req/n₀,
-    and is reported for comparison with fig. 4 of seed 001.
+    M(s_w) = M_load (stable branch),  n_w = n₀·(1 − s_w),  t = 60·N / n_w; margins
+    M_n/M_load, M(1)/M_load, M_k/M_load; M(s_req), s_req = 1 − n_req/n₀, as in fig. 4
+
+    Parameters
+    ----------
+    motor : MotorRow
+        Catalog row: rated power, speed and torque, breakdown and starting ratios
+    load_torque_Nm : float
+        Load torque at the motor [N·m]
+    required_speed_rpm : float
+        Screw speed that makes the stroke in the travel time [rpm]
+    revolutions : float
+        Revolutions of the screw over the stroke N [-]
+
+    Returns
+    -------
+    evaluation : MotorEvaluation
+        Curve, torques [N·m], working slip [-], speed [rpm], margins [-], travel time [s]
+
+    Examples
+    --------
+    >>> from catalogs import load_catalogs
+    >>> m = next(m for m in load_catalogs().motors if m.model == "4A71B4")
+    >>> round(evaluate_motor(m, 5.085, 1200.0, 100.0).working_speed_rpm)
+    1392
+
+    References
+    ----------
+    Seed 001, the motor's M(s) against the screw torque (fig. 4); refined Kloss formula.
     """
     mn = motor.rated_torque_Nm
     curve = _fit(mn, motor.rated_slip, motor.breakdown_torque_ratio, motor.starting_torque_ratio)
@@ -763,8 +819,35 @@ class MotorFit(NamedTuple):
 
 
 def fit_motor(motor: MotorRow) -> MotorFit:
-    """The refined Kloss curve of a catalog motor (see :func:`evaluate_motor`); the fit (a
-    bisection) is cached by the ratings it depends on."""
+    """The refined Kloss curve of a catalog motor, for screening many loads quickly.
+
+    M(s) fitted through M(s_n) = M_n, max M = λ·M_n, M(1) = μ·M_n
+
+    Parameters
+    ----------
+    motor : MotorRow
+        Catalog row: rated torque and slip, breakdown and starting ratios
+
+    Returns
+    -------
+    fit : MotorFit
+        The motor, its curve, rated and starting torque [N·m], synchronous speed [rpm]
+
+    Notes
+    -----
+    The fit (a bisection) is cached by the ratings it depends on.
+
+    Examples
+    --------
+    >>> from catalogs import load_catalogs
+    >>> m = next(m for m in load_catalogs().motors if m.model == "4A71B4")
+    >>> round(fit_motor(m).rated_torque_Nm, 3)
+    5.152
+
+    References
+    ----------
+    :func:`advisor.calc.induction.fit_kloss`; seed 001, fig. 4.
+    """
     curve = _fit(
         motor.rated_torque_Nm,
         motor.rated_slip,
@@ -782,13 +865,33 @@ _fit = lru_cache(maxsize=1024)(induction.fit_kloss)
 def drive_working_speed(
     fit: MotorFit, load_torque_Nm: float, required_speed_rpm: float
 ) -> float | None:
-    """The working speed of a motor driving the load directly, or ``None`` when it cannot
-    drive it continuously. The same tests as :attr:`MotorEvaluation.problems`: rated torque
-    and starting torque not below the load, a stable working point, and a working speed not
-    below the required one.
+    """The working speed of a motor driving the load directly, if it can.
 
-    Hand check, 4A71B4 (0.75 kW, 1390 rpm) on seed 001's 5.085 N·m at 1200 rpm: rated
-    torque 5.152 N·m ≥ 5.085, so it drives the screw at a little above 1390 rpm.
+    n_w = n₀·(1 − s_w),  M(s_w) = M_load;  None unless M_n ≥ M_load, M(1) ≥ M_load
+    and n_w ≥ n_req
+
+    Parameters
+    ----------
+    fit : MotorFit
+        The motor with its fitted curve (:func:`fit_motor`)
+    load_torque_Nm : float
+        Load torque at the motor [N·m]
+    required_speed_rpm : float
+        Screw speed that makes the stroke in the travel time [rpm]
+
+    Returns
+    -------
+    speed_rpm : float or None
+        Working speed n_w [rpm]; None when the motor cannot drive the load continuously
+
+    Notes
+    -----
+    The same tests as :attr:`MotorEvaluation.problems`.
+
+    Examples
+    --------
+    4A71B4 (0.75 kW, 1390 rpm) on seed 001's 5.085 N·m at 1200 rpm: rated torque
+    5.152 N·m ≥ 5.085, so it drives the screw at a little above 1390 rpm.
 
     >>> from catalogs import load_catalogs
     >>> m = next(m for m in load_catalogs().motors if m.model == "4A71B4")
@@ -796,6 +899,10 @@ def drive_working_speed(
     1392
     >>> drive_working_speed(fit_motor(m), 5.2, 1200.0) is None
     True
+
+    References
+    ----------
+    Seed 001: the motor drives the screw at its working point.
     """
     if fit.rated_torque_Nm / load_torque_Nm < 1.0 or fit.starting_torque_Nm / load_torque_Nm < 1.0:
         return None
