@@ -15,6 +15,12 @@ Per example:
 Goals (issue 14): first screen ≤ 0.5 s; keystroke → results painted ≤ 100 ms, the first
 compute included.
 
+``--first-key`` measures a key pressed the moment the first screen paints (F1, the help
+screen, written as soon as the first step is read back) against the same key in the same
+process once the screen has settled, paired per start; with ``--tree DIR`` the runs
+alternate between this checkout and the one in DIR (the same measurement on old code and
+new, at the same moments). Goal (issue 29): ≤ 100 ms at the first paint.
+
 ``--floor`` measures the floor of the first screen in the same harness: a minimal textual
 app that paints one Static with the same words (textual's import, its start and one paint).
 """
@@ -42,7 +48,7 @@ TIMEOUT_S = 60.0
 class Terminal:
     """The wizard on the slave side of a pseudo-terminal of COLS × ROWS."""
 
-    def __init__(self, example: Path | None, state_dir: str) -> None:
+    def __init__(self, example: Path | None, state_dir: str, tree: Path | None = None) -> None:
         env = {
             **os.environ,
             "TERM": "xterm-256color",
@@ -55,6 +61,8 @@ class Terminal:
         pid, fd = pty.fork()
         if pid == 0:  # the child: the wizard, its terminal sized before it starts
             fcntl.ioctl(0, termios.TIOCSWINSZ, struct.pack("HHHH", ROWS, COLS, 0, 0))
+            if tree is not None:  # ``-m advisor`` then imports that checkout's package
+                os.chdir(tree)
             args = ["-m", "advisor", str(example)] if example else ["-c", FLOOR_APP]
             os.execve(sys.executable, [sys.executable, *args], env)
         self.pid, self.fd = pid, fd
@@ -178,12 +186,80 @@ def measure(example: Path, repeats: int) -> dict:
     }
 
 
+F1, ESCAPE = "\x1bOP", "\x1b"
+#: Text only the help screen shows.
+HELP_SHOWN = "this help"
+
+
+def first_key(example: Path, tree: Path | None = None) -> tuple[float, float]:
+    """F1 written the moment the first step is read back → the help painted (ms), and the
+    same once the screen has settled, in one start of the wizard on ``example``."""
+    with tempfile.TemporaryDirectory() as state:
+        term = Terminal(example, state, tree)
+        try:
+            term.wait_for("What must the drive do?")
+            t = term.send(F1)
+            at_paint = term.wait_for(HELP_SHOWN) - t
+            term.drain()
+            term.send(ESCAPE)
+            term.drain(1.0)
+            t = term.send(F1)
+            settled = term.wait_for(HELP_SHOWN) - t
+        finally:
+            term.close()
+    return 1e3 * at_paint, 1e3 * settled
+
+
+def first_keys(example: Path, runs: int, tree: Path | None = None) -> dict:
+    """:func:`first_key` ``runs`` times on this checkout (and on ``tree``'s, alternating)."""
+    mine: list[tuple[float, float]] = []
+    theirs: list[tuple[float, float]] = []
+    for _ in range(runs):
+        if tree is not None:
+            theirs.append(first_key(example, tree))
+        mine.append(first_key(example))
+
+    def summary(pairs: list[tuple[float, float]]) -> dict:
+        at_paint, settled = zip(*pairs, strict=True)
+        return {
+            "at_paint_median_ms": statistics.median(at_paint),
+            "at_paint_range_ms": (min(at_paint), max(at_paint)),
+            "settled_median_ms": statistics.median(settled),
+            "settled_range_ms": (min(settled), max(settled)),
+        }
+
+    out = {"this": summary(mine)}
+    if theirs:
+        out[str(tree)] = summary(theirs)
+    return out
+
+
 def tui_latency(repeats: int) -> dict:
     return {ex.name: measure(ex, repeats) for ex in examples()}
 
 
 if __name__ == "__main__":
     print(f"load average before: {os.getloadavg()[0]:.2f}, {os.cpu_count()} CPUs")
+    if "--first-key" in sys.argv:
+        sys.argv.remove("--first-key")
+        tree = None
+        if "--tree" in sys.argv:
+            i = sys.argv.index("--tree")
+            tree = Path(sys.argv[i + 1]).resolve()
+            del sys.argv[i : i + 2]
+        runs = int(sys.argv[1]) if len(sys.argv) > 1 else 10
+        for name in ("rudder_actuator.toml", "linear_screw_actuator.toml"):
+            ex = next(e for e in examples() if e.name == name)
+            for which, r in first_keys(ex, runs, tree).items():
+                lo, hi = r["at_paint_range_ms"]
+                slo, shi = r["settled_range_ms"]
+                print(
+                    f"{name} [{which}]: F1 at the first paint {r['at_paint_median_ms']:.0f} ms "
+                    f"median ({lo:.0f}–{hi:.0f}), settled {r['settled_median_ms']:.0f} ms "
+                    f"({slo:.0f}–{shi:.0f})"
+                )
+        print(f"load average after: {os.getloadavg()[0]:.2f}")
+        sys.exit(0)
     if "--floor" in sys.argv:
         sys.argv.remove("--floor")
         ms = floor(int(sys.argv[1]) if len(sys.argv) > 1 else 10)

@@ -21,7 +21,7 @@ import tomli_w
 
 from advisor.core.errors import InputError
 from advisor.core.io_safety import read_toml, show, show_repr, write_atomic
-from advisor.tui import fields as F
+from advisor.tui import fields
 
 
 def state_dir() -> Path:
@@ -77,7 +77,7 @@ def _echo(value: Any) -> str:
     return show_repr(value) if isinstance(value, str) else show(value)
 
 
-def _leaf_ok(field: F.Field, value: Any) -> str | None:
+def _leaf_ok(field: fields.Field, value: Any) -> str | None:
     """Why ``value`` cannot be shown in ``field``'s widget, or None when it can. Numbers and
     text given with the wrong type stay: they appear in their input box and the field's own
     check says what to fix."""
@@ -98,7 +98,7 @@ def _leaf_ok(field: F.Field, value: Any) -> str | None:
     return None
 
 
-_APP_FIELDS = (F.Field(("application", "title"), "Title", kind="str", optional=True),)
+_APP_FIELDS = (fields.Field(("application", "title"), "Title", kind="str", optional=True),)
 
 
 def shape(doc: Any) -> tuple[dict[str, Any], list[str]]:
@@ -109,7 +109,15 @@ def shape(doc: Any) -> tuple[dict[str, Any], list[str]]:
     if not isinstance(doc, dict):
         return {}, ["the file is not a table of requirements"]
     doc = dict(doc)
-    kind = None
+    kind = _shape_application(doc, problems)
+    for field in [*_APP_FIELDS, *(fields.all_fields(kind) if kind else [])]:
+        _shape_path(doc, field, problems)
+    return doc, problems
+
+
+def _shape_application(doc: dict[str, Any], problems: list[str]) -> str | None:
+    """The registered kind ``doc`` names (None: none); an ``application`` that is not a
+    table goes, and so does a kind no application has."""
     app = doc.get("application")
     if app is not None and not isinstance(app, dict):
         problems.append(
@@ -117,76 +125,85 @@ def shape(doc: Any) -> tuple[dict[str, Any], list[str]]:
             "choose the application again"
         )
         doc.pop("application")
-    elif isinstance(app, dict):
-        kinds = tuple(F.titles())
-        kind = app.get("kind") if app.get("kind") in kinds else None
-        if "kind" in app and kind is None:
-            problems.append(
-                f"application.kind = {_echo(app['kind'])}: must be one of {', '.join(kinds)}; "
-                "choose the application again"
-            )
-            app = doc["application"] = {k: v for k, v in app.items() if k != "kind"}
-    fields = [*_APP_FIELDS, *(F.all_fields(kind) if kind else [])]
-    for field in fields:
-        node: Any = doc
-        path = field.path
-        for i, key in enumerate(path):
-            where = ".".join(path[: i + 1])
-            last = i == len(path) - 1
-            if isinstance(node, list):
-                k = int(key)
-                if k >= len(node):
-                    break
-                value = node[k]
-            else:
-                if key not in node:
-                    break
-                value = node[key]
-            if last:
-                why = _leaf_ok(field, value)
-                if why is None and field.kind == "float" and isinstance(value, str):
-                    number, err = F.parse_text(field, value)  # "5 kN", as batch reads it
-                    if err is None and number is not None:
-                        node[key if isinstance(node, dict) else int(key)] = number
-                        break
-                if why is None and field.kind in ("float", "int") and isinstance(value, str | bool):
-                    problems.append(f"{where} = {_echo(value)}: must be a number; fix it here")
-                elif why is None and field.kind == "choice" and value not in field.choices:
-                    choices = ", ".join(field.choices)
-                    problems.append(
-                        f"{where} = {_echo(value)}: must be one of {choices}; shown in its field"
-                    )
-                elif why is None and field.kind == "str" and not isinstance(value, str):
-                    problems.append(f"{where} = {_echo(value)}: must be text in quotes")
-                    node[key if isinstance(node, dict) else int(key)] = str(value)
-                if why is not None:
-                    problems.append(f"{where} = {_echo(value)}: {why}; removed")
-                    del node[key if isinstance(node, dict) else int(key)]
-                break
-            want = list if path[i + 1].isdigit() else dict
-            if not isinstance(value, want):
-                what = "an array of tables" if want is list else "a table"
-                problems.append(f"{where} = {_echo(value)}: must be {what}; removed")
-                value = want()
-            else:
-                value = (
-                    [dict(v) if isinstance(v, dict) else v for v in value]
-                    if want is list
-                    else dict(value)
-                )
-            if want is list:
-                for j, item in enumerate(value):
-                    if not isinstance(item, dict):
-                        problems.append(
-                            f"{where}[{j + 1}] = {_echo(item)}: must be a table; removed"
-                        )
-                        value[j] = {}
-            if isinstance(node, list):
-                node[int(key)] = value
-            else:
-                node[key] = value
-            node = value
-    return doc, problems
+        return None
+    if not isinstance(app, dict):
+        return None
+    kinds = tuple(fields.titles())
+    kind = app.get("kind") if app.get("kind") in kinds else None
+    if "kind" in app and kind is None:
+        problems.append(
+            f"application.kind = {_echo(app['kind'])}: must be one of {', '.join(kinds)}; "
+            "choose the application again"
+        )
+        doc["application"] = {k: v for k, v in app.items() if k != "kind"}
+    return kind
+
+
+def _shape_path(doc: dict[str, Any], field: "fields.Field", problems: list[str]) -> None:
+    """The tables on ``field``'s path made tables (copies, so the caller's stay as given)
+    and its value one the field can show, each change said in ``problems``."""
+    node: Any = doc
+    path = field.path
+    for i, key in enumerate(path):
+        where = ".".join(path[: i + 1])
+        if isinstance(node, list):
+            if int(key) >= len(node):
+                return
+            value = node[int(key)]
+        else:
+            if key not in node:
+                return
+            value = node[key]
+        if i == len(path) - 1:
+            _shape_leaf(node, key, field, value, where, problems)
+            return
+        value = _shape_table(value, list if path[i + 1].isdigit() else dict, where, problems)
+        node[int(key) if isinstance(node, list) else key] = value
+        node = value
+
+
+def _shape_table(value: Any, want: type, where: str, problems: list[str]) -> Any:
+    """``value`` as a copy of the table (``dict``) or array of tables (``list``) it must be;
+    anything else is replaced by an empty one."""
+    if not isinstance(value, want):
+        what = "an array of tables" if want is list else "a table"
+        problems.append(f"{where} = {_echo(value)}: must be {what}; removed")
+        value = want()
+    else:
+        value = (
+            [dict(v) if isinstance(v, dict) else v for v in value] if want is list else dict(value)
+        )
+    if want is list:
+        for j, item in enumerate(value):
+            if not isinstance(item, dict):
+                problems.append(f"{where}[{j + 1}] = {_echo(item)}: must be a table; removed")
+                value[j] = {}
+    return value
+
+
+def _shape_leaf(
+    node: Any, key: str, field: "fields.Field", value: Any, where: str, problems: list[str]
+) -> None:
+    """A field's value in its table ``node``: a number written with its unit read as the
+    batch reads it, text made text, and a value of a type the field cannot hold removed."""
+    index = key if isinstance(node, dict) else int(key)
+    why = _leaf_ok(field, value)
+    if why is None and field.kind == "float" and isinstance(value, str):
+        number, err = fields.parse_text(field, value)  # "5 kN", as batch reads it
+        if err is None and number is not None:
+            node[index] = number
+            return
+    if why is None and field.kind in ("float", "int") and isinstance(value, str | bool):
+        problems.append(f"{where} = {_echo(value)}: must be a number; fix it here")
+    elif why is None and field.kind == "choice" and value not in field.choices:
+        choices = ", ".join(field.choices)
+        problems.append(f"{where} = {_echo(value)}: must be one of {choices}; shown in its field")
+    elif why is None and field.kind == "str" and not isinstance(value, str):
+        problems.append(f"{where} = {_echo(value)}: must be text in quotes")
+        node[index] = str(value)
+    if why is not None:
+        problems.append(f"{where} = {_echo(value)}: {why}; removed")
+        del node[index]
 
 
 def open_doc(path: Path) -> Loaded:
