@@ -8,10 +8,17 @@ parameters.
 
 from typing import Annotated, Literal
 
+from advisor.core.ranges import range_prose
 from advisor.core.requirements import StrictModel, after_check, ask, field_check, number_field
 from advisor.duty import requirement_checks as checks
 
 STEP = 4  # the wizard step that asks the duty
+
+
+#: The largest load of a linear segment, N (as linear.force_N), and of a load share (a tenfold
+#: overload): each 0 (none) or from its requirement_checks minimum up to this.
+SEGMENT_FORCE_MAX_N = 5e6
+LOAD_SHARE_MAX = 10.0
 
 
 class PositioningDutyReq(StrictModel):
@@ -67,8 +74,10 @@ class LinearSegmentReq(_Segment):
         float | None,
         number_field(
             ge=0,
-            le=5e6,
-            desc="axial load of the segment, N: 0 or 1 … 5·10⁶; default linear.force_N",
+            le=SEGMENT_FORCE_MAX_N,
+            desc="axial load of the segment, N: 0 or "
+            + range_prose("N", ge=checks.SEGMENT_FORCE_MIN_N, le=SEGMENT_FORCE_MAX_N)
+            + "; default linear.force_N",
             label="force",
             step=STEP,
         ),
@@ -130,8 +139,9 @@ class LoadShareReq(StrictModel):
         float,
         number_field(
             ge=0,
-            le=10,
-            desc="load as a share of the rated load: 0 (no load) or 0.001 … 10",
+            le=LOAD_SHARE_MAX,
+            desc="load as a share of the rated load: 0 (no load) or "
+            + range_prose(ge=checks.LOAD_SHARE_MIN, le=LOAD_SHARE_MAX),
             label="load share",
             step=STEP,
         ),

@@ -10,6 +10,7 @@ from typing import Annotated, Literal
 from pydantic import Field
 
 from advisor.applications.positioning import requirement_checks as checks
+from advisor.core.ranges import range_prose
 from advisor.core.requirements import (
     ApplicationReq,
     ProjectField,
@@ -68,6 +69,11 @@ class CandidateMotor(StrictModel):
     ] = None
 
 
+#: The largest load inertia (kg·m²) and load torque (N·m) a positioning drive may be given:
+#: each 0 (none) or from its requirement_checks minimum up to this.
+LOAD_MAX = 1e7
+
+
 class PositioningReq(StrictModel):
     profile: Annotated[
         Literal["trapezoidal", "triangular"],
@@ -87,8 +93,9 @@ class PositioningReq(StrictModel):
         float,
         number_field(
             ge=0,
-            le=1e7,
-            desc="load inertia J_p, 0 (none) or 10⁻⁹ … 10⁷ kg·m²",
+            le=LOAD_MAX,
+            desc="load inertia J_p, 0 (none) or "
+            + range_prose("kg·m²", ge=checks.LOAD_INERTIA_MIN_KGM2, le=LOAD_MAX),
             label="Load inertia",
             step=1,
         ),
@@ -97,8 +104,9 @@ class PositioningReq(StrictModel):
         float,
         number_field(
             ge=0,
-            le=1e7,
-            desc="load torque M_p, 0 (none) or 10⁻⁶ … 10⁷ N·m",
+            le=LOAD_MAX,
+            desc="load torque M_p, 0 (none) or "
+            + range_prose("N·m", ge=checks.LOAD_TORQUE_MIN_NM, le=LOAD_MAX),
             label="Load torque",
             step=1,
         ),

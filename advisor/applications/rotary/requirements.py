@@ -15,6 +15,7 @@ from typing import Annotated, Literal
 from pydantic import Field
 
 from advisor.applications.rotary import requirement_checks as checks
+from advisor.core.ranges import range_prose
 from advisor.core.requirements import (
     ApplicationReq,
     DesignReq,
@@ -208,15 +209,21 @@ class EnvelopeReq(StrictModel):
     ] = None
 
 
+#: The largest magnet loss a point may give, W: 0 (none) or from MAGNET_LOSS_MIN_W up to this.
+MAGNET_LOSS_MAX_W = 1e5
+
+
 class MagnetLossPoint(StrictModel):
     speed_rpm: Annotated[float, number_field(ge=1, le=2e5, desc="motor speed, {range}")]
     loss_W: Annotated[
         float,
         number_field(
             ge=0,
-            le=1e5,
-            desc="eddy-current loss in the magnets, 0 (none) or 10⁻⁶ … 10⁵ W (a power law "
-            "runs through two losses; below a microwatt its exponent is not finite)",
+            le=MAGNET_LOSS_MAX_W,
+            desc="eddy-current loss in the magnets, 0 (none) or "
+            + range_prose("W", ge=checks.MAGNET_LOSS_MIN_W, le=MAGNET_LOSS_MAX_W)
+            + " (a power law runs through two losses; below a microwatt its exponent is not "
+            "finite)",
         ),
     ]
 
