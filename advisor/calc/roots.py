@@ -87,15 +87,12 @@ def brent(f: Callable[[float], float], lo: float, hi: float, *, xtol: float = 1e
     Notes
     -----
     Raises ValueError without a sign change. About ten evaluations for a smooth ``f`` where
-    bisection takes sixty; never slower than bisection by more than a small factor (at most 200
-    steps).
+    bisection takes sixty; at most 200 steps.
 
     References
     ----------
     R. P. Brent, *Algorithms for Minimization without Derivatives*, 1973, ch. 4.
 
-    Examples
-    --------
     >>> round(brent(lambda x: x * x - 2.0, 0.0, 2.0), 12)
     1.414213562373
     """
@@ -120,27 +117,41 @@ def brent(f: Callable[[float], float], lo: float, hi: float, *, xtol: float = 1e
         m = 0.5 * (c - b)
         if abs(m) <= tol or fb == 0.0:
             return b
-        if abs(e) >= tol and abs(fa) > abs(fb):
-            s = fb / fa
-            if a == c:  # secant
-                p, q = 2.0 * m * s, 1.0 - s
-            else:  # inverse quadratic interpolation
-                q, r = fa / fc, fb / fc
-                p = s * (2.0 * m * q * (q - r) - (b - a) * (r - 1.0))
-                q = (q - 1.0) * (r - 1.0) * (s - 1.0)
-            if p > 0.0:
-                q = -q
-            p = abs(p)
-            if 2.0 * p < min(3.0 * m * q - abs(tol * q), abs(e * q)):
-                e, d = d, p / q
-            else:  # the interpolation strays: bisect
-                d = e = m
-        else:
-            d = e = m
+        d, e = _brent_step((a, b, c), (fa, fb, fc), m, tol, d, e)
         a, fa = b, fb
         b += d if abs(d) > tol else (tol if m > 0 else -tol)
         fb = f(b)
     return b
+
+
+def _brent_step(
+    x: tuple[float, float, float],
+    fx: tuple[float, float, float],
+    m: float,
+    tol: float,
+    d: float,
+    e: float,
+) -> tuple[float, float]:
+    """The next step of :func:`brent` from b and the step before it, (d, e): an inverse
+    quadratic interpolation through a, b, c (a secant where a = c) where it stays inside the
+    bracket and shrinks faster than the step before last; otherwise bisection, (m, m)."""
+    a, b, c = x
+    fa, fb, fc = fx
+    if not (abs(e) >= tol and abs(fa) > abs(fb)):
+        return m, m
+    s = fb / fa
+    if a == c:  # secant
+        p, q = 2.0 * m * s, 1.0 - s
+    else:  # inverse quadratic interpolation
+        q, r = fa / fc, fb / fc
+        p = s * (2.0 * m * q * (q - r) - (b - a) * (r - 1.0))
+        q = (q - 1.0) * (r - 1.0) * (s - 1.0)
+    if p > 0.0:
+        q = -q
+    p = abs(p)
+    if 2.0 * p < min(3.0 * m * q - abs(tol * q), abs(e * q)):
+        return p / q, d
+    return m, m  # the interpolation strays: bisect
 
 
 _EPS = 2.220446049250313e-16
