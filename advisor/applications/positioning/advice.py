@@ -250,11 +250,14 @@ def _duty(
 
 
 def advise_positioning(req: Requirements, cat: Catalogs, trace: Trace):
+    """The candidates; each at its fastest ratio (seed 003); the motor (MO-02 or MO-05); its
+    ratio and speed graph explained (MO-01, MO-03); with a [duty] table, the cycle's choice.
+    Returns the design's tables, its checks and its warnings."""
     pos = req.positioning
     path = pos.travel_rad
     cands = candidates(req, cat)
-    kept, dropped = usable(cands)
-    warnings = [*cands.warnings, *dropped]
+    kept, left_out = usable(cands)
+    warnings = [*cands.warnings, *left_out]
     solved = [Solved(c, motion.solve_ratio(c.drive, path, pos.profile)) for c in kept]
     required = required_time(req)
     best = _choose_motor(solved, cands, required, path, pos.profile, trace)

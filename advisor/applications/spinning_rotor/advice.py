@@ -105,6 +105,9 @@ def _warnings(req: Requirements, b: Bearing, angle: float) -> list[str]:
 
 
 def advise_spinning_rotor(req: Requirements, cat: Catalogs, trace: Trace):
+    """The bearing; the rotor's model (RO-03); the gyroscopic loads (RO-01); the steady
+    torques; the drive torque and run-up (RO-02); the slew with the drive sized on the steady
+    power; the bearing's rating. Returns the design's tables, its checks and its warnings."""
     r = req.rotor
     w = r.speed_rad_s
     b, angle = chosen_bearing(req, cat)
