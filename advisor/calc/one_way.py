@@ -43,10 +43,38 @@ class RollerGeometry(NamedTuple):
 
 
 def roller_geometry(torque_Nm: float, rollers: int, wedge_angle_deg: float) -> RollerGeometry:
-    """Seed 004, eqs. (1)–(9): d_p = 0.583·∛(M/z) (M in N·mm, d in mm), D = 12·d_p,
-    L = 1.5·d_p, c = d_p·(7·cos α − 1)/2, R = c + d_p/2, star and roller masses by (6), (7),
-    their inertias by (4), (5).
+    """Geometry, masses and inertias of a roller irreversible clutch.
 
+        d_p = 0.583·∛(M/z)  (M in N·mm, d in mm),   D = 12·d_p,   L = 1.5·d_p,
+        c = d_p·(7·cos α − 1)/2,   R = c + d_p/2,
+        m_star = ρ·π·R²·L,   m_roller = ρ·π·(d_p/2)²·L,
+        J_star = m_star·R²/2,   J_roller = m_roller·R²
+
+    Parameters
+    ----------
+    torque_Nm : float
+        Torque the clutch carries [N·m], > 0
+    rollers : int
+        Number of rollers z [-], 3 … 12
+    wedge_angle_deg : float
+        Wedging angle α [°], 6 … 10 in the seed
+
+    Returns
+    -------
+    RollerGeometry
+        Roller diameter d_p, outer diameter D, length L, support height c and star radius R
+        [mm]; star and roller masses [kg]; their inertias about the clutch axis [kg·m²]
+
+    Notes
+    -----
+    The OCR of eq. (1) lost the cube root; the later (M/z)^(5/3) laws of the seed need it.
+
+    References
+    ----------
+    Seed 004, eqs. (1)–(9).
+
+    Examples
+    --------
     >>> g = roller_geometry(2.0, 6, 8.0)
     >>> round(g.roller_diameter_mm, 3), round(g.outer_diameter_mm, 2)
     (4.042, 48.51)
@@ -73,9 +101,35 @@ def roller_geometry(torque_Nm: float, rollers: int, wedge_angle_deg: float) -> R
 
 
 def roller_clutch(torque_Nm: float, rollers: int = 6, wedge_angle_deg: float = 8.0) -> Device:
-    """Roller irreversible clutch from its geometry (seed 004, eqs. (1)–(9)); the mass is
-    π·D²/4·L·ρ·k_з, the inertia J_star + z·J_roller of eq. (3). It transmits the torque
-    without slip and draws no power."""
+    """A roller irreversible clutch sized for a torque.
+
+        m = π·D²/4·L·ρ·k_з,   J = J_star + z·J_roller   (geometry by :func:`roller_geometry`)
+
+    Parameters
+    ----------
+    torque_Nm : float
+        Torque the clutch carries [N·m], > 0
+    rollers : int, optional
+        Number of rollers z [-], 3 … 12
+    wedge_angle_deg : float, optional
+        Wedging angle α [°], 6 … 10 in the seed
+
+    Returns
+    -------
+    Device
+        Outer diameter and length [mm], mass [kg] (k_з = ROLLER_FILL), inertia [kg·m²];
+        efficiency 1 and power 0: it transmits the torque without slip and draws nothing
+
+    References
+    ----------
+    Seed 004, eqs. (1)–(9), (3).
+
+    Examples
+    --------
+    >>> d = roller_clutch(2.0)
+    >>> round(d.mass_kg, 4), round(d.inertia_kgm2 * 1e6, 3)
+    (0.0699, 3.577)
+    """
     g = roller_geometry(torque_Nm, rollers, wedge_angle_deg)
     d_m, l_m = g.outer_diameter_mm * 1e-3, g.length_mm * 1e-3
     mass = math.pi * d_m**2 / 4.0 * l_m * STEEL_DENSITY * ROLLER_FILL
@@ -93,9 +147,38 @@ def roller_clutch(torque_Nm: float, rollers: int = 6, wedge_angle_deg: float = 8
 
 
 def roller_collapsed_inertia(torque_Nm: float, rollers: int) -> tuple[float, float]:
-    """The paper's collapsed coefficients (12), (13): J_star = 0.95·ρπ·(M/z)^(5/3),
-    J_roller = 15.63·ρπ·(M/z)^(5/3) with M in N·mm, lengths in mm, ρ in kg/mm³ → kg·mm².
-    Returned in kg·m². Kept only as a cross-check: they do not follow from (4)–(9)."""
+    """The seed's collapsed inertia coefficients, kept only as a cross-check.
+
+        J_star = 0.95·ρ·π·(M/z)^(5/3),   J_roller = 15.63·ρ·π·(M/z)^(5/3)
+        (M in N·mm, lengths in mm, ρ in kg/mm³ → kg·mm²)
+
+    Parameters
+    ----------
+    torque_Nm : float
+        Torque the clutch carries [N·m], > 0
+    rollers : int
+        Number of rollers z [-]
+
+    Returns
+    -------
+    tuple[float, float]
+        J_star and J_roller [kg·m²]
+
+    Notes
+    -----
+    They do not follow from the seed's own geometry (4)–(9), which
+    :func:`roller_geometry` computes; the advice never uses them.
+
+    References
+    ----------
+    Seed 004, eqs. (12), (13).
+
+    Examples
+    --------
+    >>> j_star, j_roller = roller_collapsed_inertia(2.0, 6)
+    >>> round(j_roller / j_star, 2)
+    16.45
+    """
     k = STEEL_DENSITY * 1e-9 * math.pi * (torque_Nm * 1e3 / rollers) ** (5.0 / 3.0) * 1e-6
     return 0.95 * k, 15.63 * k
 
@@ -124,11 +207,41 @@ EM_CLUTCH = EmClutchDesign()
 def em_clutch_power(
     torque_Nm: float, diameter_mm: float, p: EmClutchDesign = EM_CLUTCH
 ) -> tuple[float, float]:
-    """Power drawn to transmit the torque, W, and the flux density in the poles, T.
+    """Power an electromagnetic friction clutch draws to transmit a torque, and the flux
+    density in its poles.
 
-    Seed 004, eqs. (14)–(19): F = k_з·M/(f·r·n), Φ = √(2·F·μ0·S), Iw = Φ·δ/(μ0·S),
-    P = I²R = ρ·2πr·(Iw)·j → P = 2π·j·ρ·δ·√(2·k_з·M·r/(n·f·μ0·S)) (n friction surfaces; the
-    seed writes n = 1).
+        F = k_з·M/(f·r·n),   Φ = √(2·F·μ0·S),   Iw = Φ·δ/(μ0·S),
+        P = ρ·2π·r·(Iw)·j = 2π·j·ρ·δ·√(2·k_з·M·r/(n·f·μ0·S)),   B = √(2·F·μ0/S)
+
+    Parameters
+    ----------
+    torque_Nm : float
+        Torque transmitted M [N·m], > 0
+    diameter_mm : float
+        Outer diameter of the clutch D [mm]; the friction radius r and the pole area S
+        follow from it by the proportions of ``p``
+    p : EmClutchDesign, optional
+        Current density j, air gap δ, friction f, reserve k_з, surfaces n and proportions
+
+    Returns
+    -------
+    tuple[float, float]
+        Power drawn P [W] and flux density in the poles B [T]
+
+    Notes
+    -----
+    Valid while B stays below saturation (``p.saturation_T``); the seed writes n = 1, the
+    armature clamped between two faces gives n = 2.
+
+    References
+    ----------
+    Seed 004, eqs. (14)–(19).
+
+    Examples
+    --------
+    >>> power, b = em_clutch_power(2.0, 80.0)
+    >>> round(power, 3), round(b, 3)
+    (1.318, 0.598)
     """
     d = diameter_mm * 1e-3
     r = p.friction_radius_share * d
@@ -149,8 +262,34 @@ def em_clutch_power(
 
 
 def em_clutch(torque_Nm: float, p: EmClutchDesign = EM_CLUTCH) -> Device | None:
-    """The smallest clutch of the seed's 80…140 mm range whose poles stay below saturation;
-    None when even the largest saturates."""
+    """The smallest electromagnetic clutch of the seed's range that carries a torque.
+
+    Tries the diameters of ``p`` (80 … 140 mm, the seed's fig. 9) in order and keeps the first
+    whose poles stay below saturation; power by :func:`em_clutch_power`, mass
+    π·D²/4·L·ρ·fill, inertia that of the armature disc, m_disc·D²/8.
+
+    Parameters
+    ----------
+    torque_Nm : float
+        Torque transmitted [N·m], > 0
+    p : EmClutchDesign, optional
+        The clutch's proportions (assumptions, stated in the device's basis)
+
+    Returns
+    -------
+    Device or None
+        The clutch: diameter and length [mm], mass [kg], inertia [kg·m²], efficiency 1,
+        power drawn [W]; None when even the largest saturates
+
+    References
+    ----------
+    Seed 004, eqs. (14)–(19), fig. 9.
+
+    Examples
+    --------
+    >>> em_clutch(2.0).outer_diameter_mm, em_clutch(500.0)
+    (80.0, None)
+    """
     for dia in p.diameters_mm:
         power, b = em_clutch_power(torque_Nm, dia, p)
         if b <= p.saturation_T:
@@ -176,9 +315,29 @@ def em_clutch(torque_Nm: float, p: EmClutchDesign = EM_CLUTCH) -> Device | None:
 
 # ------------------------------------------------------------------ self-locking worm
 def worm_efficiency(lead_angle_rad: float, friction_angle_rad: float) -> tuple[float, float]:
-    """Driving and back-driven efficiency: tan γ/tan(γ + φ) and tan(γ − φ)/tan γ (seed 004).
-    A back-driven efficiency ≤ 0 means the pair is self-locking.
+    """Driving and back-driven efficiency of a worm pair.
 
+        η = tan γ/tan(γ + φ),   η' = tan(γ − φ)/tan γ
+
+    Parameters
+    ----------
+    lead_angle_rad : float
+        Lead angle of the worm γ [rad], 0 … π/2
+    friction_angle_rad : float
+        Friction angle φ = atan f [rad]
+
+    Returns
+    -------
+    tuple[float, float]
+        Driving efficiency η [-] and back-driven efficiency η' [-]; η' ≤ 0 (γ ≤ φ): the pair
+        is self-locking
+
+    References
+    ----------
+    Seed 004 (aviation practice: γ < 0.5·φ).
+
+    Examples
+    --------
     >>> phi = math.atan(0.1)
     >>> round(worm_efficiency(0.5 * phi, phi)[0], 3)
     0.331
@@ -198,12 +357,42 @@ class WormDesign(NamedTuple):
 WORM = WormDesign()
 
 
-def worm(torque_Nm: float, p: WormDesign = WORM) -> Device:
-    """A single-start self-locking worm pair taking ``torque_Nm`` on the worm shaft.
+def _solid_disc(diameter_mm: float, width_mm: float) -> tuple[float, float]:
+    """Mass [kg] and inertia about its axis [kg·m²] of a solid steel disc: ρ·π·d²/4·b, m·d²/8."""
+    d, b = diameter_mm * 1e-3, width_mm * 1e-3
+    mass = STEEL_DENSITY * math.pi * d * d / 4.0 * b
+    return mass, mass * d * d / 8.0
 
-    Efficiency by seed 004; size by the textbook centre distance for worm gears
-    (Chernavsky et al., ref. [4] of the seed): a = (z2/q0 + 1)·∛((170/((z2/q0)·[σ_H]))²·T2·K)
-    in mm with T2 in N·mm and [σ_H] in MPa, q0 = 1/tan γ the diameter factor of a single-start worm.
+
+def worm(torque_Nm: float, p: WormDesign = WORM) -> Device:
+    """A single-start self-locking worm pair taking a torque on the worm shaft.
+
+        η = tan γ/tan(γ + φ),   γ = lead_share·φ,   q0 = 1/tan γ,
+        a = (z2/q0 + 1)·∛((170/((z2/q0)·[σ_H]))²·T2·K)   (a in mm, T2 in N·mm, [σ_H] in MPa)
+
+    Parameters
+    ----------
+    torque_Nm : float
+        Torque on the worm shaft [N·m], > 0
+    p : WormDesign, optional
+        Ratio z2, friction f, lead share, allowable contact stress [σ_H] [MPa], load factor K
+
+    Returns
+    -------
+    Device
+        Wheel tip diameter and overall length [mm], mass of worm and wheel [kg], inertia at
+        the worm shaft J_worm + J_wheel/z2² [kg·m²], driving efficiency η, power 0
+
+    References
+    ----------
+    Seed 004 (efficiency); the centre distance of worm gears of Chernavsky et al. (ref. [4]
+    of the seed); worm and wheel as solid steel discs.
+
+    Examples
+    --------
+    >>> d = worm(2.0)
+    >>> round(d.efficiency, 3), round(d.outer_diameter_mm, 1)
+    (0.331, 75.1)
     """
     phi = math.atan(p.friction)
     gamma = p.lead_share * phi
@@ -219,11 +408,8 @@ def worm(torque_Nm: float, p: WormDesign = WORM) -> Device:
     d1 = m * q0
     b2 = 0.75 * (d1 + 2.0 * m)
     l1 = (11.0 + 0.06 * z2) * m
-    rho = STEEL_DENSITY
-    m_wheel = rho * math.pi * (d2 * 1e-3) ** 2 / 4.0 * b2 * 1e-3
-    m_worm = rho * math.pi * (d1 * 1e-3) ** 2 / 4.0 * l1 * 1e-3
-    j_wheel = m_wheel * (d2 * 1e-3) ** 2 / 8.0
-    j_worm = m_worm * (d1 * 1e-3) ** 2 / 8.0
+    m_wheel, j_wheel = _solid_disc(d2, b2)
+    m_worm, j_worm = _solid_disc(d1, l1)
     return Device(
         "worm",
         torque_Nm,
@@ -250,8 +436,33 @@ INVERSE_GEAR = InverseGearDesign()
 
 
 def inverse_gear(torque_Nm: float, p: InverseGearDesign = INVERSE_GEAR) -> Device:
-    """Cylindrical gear with a braking (inverse) profile, seed 004: m = ∛(M/(σ_t·z)) (M in
-    N·mm, σ in MPa → m in mm), d = m·z, b = (8…15)·m, mass π·d²/4·b·ρ, J = m_k·d²/8."""
+    """A cylindrical gear with a braking (inverse) profile sized for a torque.
+
+        m = ∛(M/(σ_t·z))  (M in N·mm, σ_t in MPa → m in mm),   d = m·z,   b = (8 … 15)·m,
+        mass = π·d²/4·b·ρ,   J = mass·d²/8
+
+    Parameters
+    ----------
+    torque_Nm : float
+        Torque the gear carries [N·m], > 0
+    p : InverseGearDesign, optional
+        Teeth z, σ_t [MPa], width in modules, estimated driving efficiency
+
+    Returns
+    -------
+    Device
+        Pitch diameter d and width b [mm], mass [kg], inertia [kg·m²], driving efficiency
+        (estimated, below 0.5 when self-braking), power 0
+
+    References
+    ----------
+    Seed 004 (σ_t = 400 MPa, b = (8 … 15)·m).
+
+    Examples
+    --------
+    >>> round(inverse_gear(2.0).outer_diameter_mm, 2)
+    12.6
+    """
     module = (torque_Nm * 1e3 / (p.yield_MPa * p.teeth)) ** (1.0 / 3.0)
     d = module * p.teeth
     b = p.width_modules * module
@@ -271,7 +482,32 @@ def inverse_gear(torque_Nm: float, p: InverseGearDesign = INVERSE_GEAR) -> Devic
 
 
 def size(kind: str, torque_Nm: float, rollers: int = 6) -> Device | None:
-    """One device of the given type for a torque."""
+    """One device of a given type sized for a torque.
+
+    Parameters
+    ----------
+    kind : str
+        One of :data:`TYPES`: roller_clutch, em_clutch, worm, inverse_gear
+    torque_Nm : float
+        Torque the device carries where it sits [N·m], > 0
+    rollers : int, optional
+        Rollers of a roller clutch [-]
+
+    Returns
+    -------
+    Device or None
+        The device (see :func:`roller_clutch`, :func:`em_clutch`, :func:`worm`,
+        :func:`inverse_gear`); None for an electromagnetic clutch that saturates
+
+    References
+    ----------
+    Seed 004.
+
+    Examples
+    --------
+    >>> size("roller_clutch", 2.0).type
+    'roller_clutch'
+    """
     if kind == "roller_clutch":
         return roller_clutch(torque_Nm, rollers)
     if kind == "em_clutch":
@@ -302,25 +538,90 @@ class Passage(NamedTuple):
 
 
 def worm_lowering_factor(p: WormDesign = WORM) -> float:
-    """The worm torque that lowers a wheel load, per unit of the load's torque at the worm:
-    −tan(γ − φ)/tan γ, minus the back-driven efficiency of seed 004 (1 at γ = φ/2)."""
+    """The worm torque that lowers a load, per unit of the load's torque at the worm.
+
+        k = −η' = −tan(γ − φ)/tan γ
+
+    Parameters
+    ----------
+    p : WormDesign, optional
+        Friction f and lead share of the worm
+
+    Returns
+    -------
+    float
+        Lowering factor k [-], ≥ 0 for a self-locking pair (1 at γ = φ/2)
+
+    References
+    ----------
+    Seed 004, back-driven efficiency of a worm pair.
+
+    Examples
+    --------
+    >>> round(worm_lowering_factor(), 6)
+    1.0
+    """
     phi = math.atan(p.friction)
     _, back = worm_efficiency(p.lead_share * phi, phi)
     return -back
 
 
 def self_braking_lowering_factor(efficiency: float) -> float:
-    """For a self-braking pair known only by its driving efficiency η: with small angles
-    η = γ/(γ + φ) and the back-driven η' = (γ − φ)/γ = 2 − 1/η, so the motor lowers the load
-    with (1/η − 2) times its torque (0 at η = 0.5, the edge of self-locking)."""
+    """The torque that lowers a load through a self-braking pair known only by its driving
+    efficiency, per unit of the load's torque.
+
+        η = γ/(γ + φ),   η' = (γ − φ)/γ = 2 − 1/η,   k = −η' = 1/η − 2   (small angles)
+
+    Parameters
+    ----------
+    efficiency : float
+        Driving efficiency η [-], 0 … 1
+
+    Returns
+    -------
+    float
+        Lowering factor k [-], 0 at η ≥ 0.5 (the edge of self-locking)
+
+    References
+    ----------
+    Seed 004, self-braking gears (small-angle friction model).
+
+    Examples
+    --------
+    >>> round(self_braking_lowering_factor(0.45), 4)
+    0.2222
+    """
     return max(0.0, 1.0 / efficiency - 2.0)
 
 
 def passage(kind: str) -> Passage:
-    """Seed 004's devices as parts of the chain. The roller clutch passes rotation only from
-    its input to its output (the rollers wedge when the output drives): self-locking, and its
-    release takes only the rollers' friction, neglected (lowering factor 0). The worm and the
-    braking-profile gear are self-locking gears; the electromagnetic clutch is a clutch."""
+    """How a device of seed 004 passes torque as a part of the chain.
+
+    The roller clutch passes rotation only from its input to its output (the rollers wedge
+    when the output drives): self-locking, its release taking only the rollers' friction,
+    neglected (lowering factor 0). The worm and the braking-profile gear are self-locking
+    gears (:func:`worm_lowering_factor`, :func:`self_braking_lowering_factor`); the
+    energised electromagnetic clutch passes torque both ways.
+
+    Parameters
+    ----------
+    kind : str
+        One of :data:`TYPES`
+
+    Returns
+    -------
+    Passage
+        Driving efficiency [-], whether a driving load turns the motor, lowering factor [-]
+
+    References
+    ----------
+    Seed 004.
+
+    Examples
+    --------
+    >>> passage("em_clutch").back_drivable, passage("worm").back_drivable
+    (True, False)
+    """
     if kind == "roller_clutch":
         return Passage(kind, 1.0, False, 0.0, "seed 004: the rollers wedge when the load drives")
     if kind == "em_clutch":
@@ -352,10 +653,34 @@ NO_DEVICE = Passage("none", 1.0, True, 0.0, "no device")
 
 
 def motor_torque_through(p: Passage, torque_Nm: float) -> float:
-    """The motor torque that gives ``torque_Nm`` on the device's load side: T/η while the
-    motor drives (T ≥ 0); T (regenerating) through a back-drivable device while the load
-    drives (T < 0, the clutch's η = 1); through a self-locking one the motor drives the load
-    down with lowering_factor·|T| and takes nothing back."""
+    """The motor torque that gives a torque on the load side of a device.
+
+        M_motor = T/η            (T ≥ 0, the motor drives)
+        M_motor = T·η            (T < 0, a back-drivable device: the load drives the motor)
+        M_motor = k·|T|          (T < 0, a self-locking device: the motor drives the load down)
+
+    Parameters
+    ----------
+    p : Passage
+        The device's efficiency η, back-drivability and lowering factor k
+    torque_Nm : float
+        Torque on the device's load side T [N·m], signed: > 0 with the motion
+
+    Returns
+    -------
+    float
+        Motor torque [N·m]; through a self-locking device nothing is regenerated
+
+    References
+    ----------
+    Seed 004.
+
+    Examples
+    --------
+    >>> w = passage("worm")
+    >>> round(motor_torque_through(w, 10.0), 2), round(motor_torque_through(w, -10.0), 2)
+    (30.2, 10.0)
+    """
     if torque_Nm >= 0.0:
         return torque_Nm / p.efficiency
     if p.back_drivable:
