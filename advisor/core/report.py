@@ -228,13 +228,30 @@ class NonFiniteValue(ValueError):
     """A report value that is nan or inf: a bug of the advice, never written to a file."""
 
 
-def plain_data(obj: Any) -> Any:
+def float_text(x: float) -> str:
+    """``repr(round_sig(x))`` in one formatting: ``format(x, ".6g")`` rounds as
+    :func:`round_sig` does (correctly, to six significant digits) and differs from ``repr``
+    only in its layout: no ``.0`` on a whole number, an exponent from 10⁶ on (``repr``'s from
+    10¹⁶), and those few are read back. ``tests/test_report.py`` holds it to ``repr``.
+
+    >>> float_text(5.084934), float_text(1200.0), float_text(1234567.0), float_text(1.5e-5)
+    ('5.08493', '1200.0', '1234570.0', '1.5e-05')
+    """
+    s = f"{x:.6g}"
+    if "e" in s:
+        return repr(float(s))
+    return s if "." in s else s + ".0"
+
+
+def plain_data(obj: Any, rounded: bool = True) -> Any:
     """Plain dicts and lists of a report, without None (TOML has no null), floats rounded
-    to six significant digits, fields in their declared order. A nan or an inf is refused
-    with its key named (:class:`NonFiniteValue`): a report states numbers a reader can check.
+    to six significant digits (or, ``rounded=False``, as computed: for a writer that rounds
+    as it writes, :func:`float_text`), fields in their declared order. A nan or an inf is
+    refused with its key named (:class:`NonFiniteValue`): a report states numbers a reader
+    can check.
     """
     try:
-        return _plain_fast(obj)
+        return _plain_fast(obj, rounded)
     except NonFiniteValue:
         _plain_keyed(obj, "")  # the slow pass names the key; it raises
         raise
@@ -244,11 +261,13 @@ _floor, _log10 = math.floor, math.log10
 _KEPT = frozenset((str, int, bool))  # exact types a plain report holds as they are
 
 
-def _plain_fast(obj: Any) -> Any:
+def _plain_fast(obj: Any, rounded: bool) -> Any:
     t = type(obj)  # the exact types first: a report holds thousands of values
     if t is float:
         if obj - obj != 0.0:  # nan or ±inf, one subtraction instead of a call
             raise NonFiniteValue("a report value is not a finite number")
+        if not rounded:
+            return obj
         # round_sig(obj), written out: a report rounds about five hundred numbers
         return round(obj, 5 - _floor(_log10(abs(obj)))) if obj else obj
     if t is str or t is int or t is bool:
@@ -257,19 +276,21 @@ def _plain_fast(obj: Any) -> Any:
         if obj and all(type(v) is float for v in obj):  # a curve: one pass, no calls per item
             if any(v - v != 0.0 for v in obj):
                 raise NonFiniteValue("a report value is not a finite number")
+            if not rounded:
+                return list(obj)
             return [round(v, 5 - _floor(_log10(abs(v)))) if v else v for v in obj]
-        return [_plain_fast(v) for v in obj if v is not None]
+        return [_plain_fast(v, rounded) for v in obj if v is not None]
     # in tables, words, counts and flags are kept without a call: they are most of the values
     if t is dict:
         return {
-            str(k): v if type(v) in _KEPT else _plain_fast(v)
+            str(k): v if type(v) in _KEPT else _plain_fast(v, rounded)
             for k, v in obj.items()
             if v is not None
         }
     if isinstance(obj, ReportTable):
         values = obj.__dict__
         return {
-            n: v if type(v) in _KEPT else _plain_fast(v)
+            n: v if type(v) in _KEPT else _plain_fast(v, rounded)
             for n in t.field_names
             if (v := values.get(n)) is not None
         }
@@ -422,7 +443,8 @@ def nest_curves(doc: dict[str, Any]) -> dict[str, Any]:
 def to_toml(report: Report) -> str:
     """The report as TOML text (no nulls: TOML has none), curves in ``[curves]`` at the
     end, as tomli-w writes it (:mod:`advisor.core.toml_text` writes the same bytes faster)."""
-    return toml_text.dumps(archive(plain_data(report)))
+    # rounded as written: one formatting per number instead of a round() and a str()
+    return toml_text.dumps(archive(plain_data(report, rounded=False)), float_text)
 
 
 def to_json(report: Report) -> str:

@@ -12,6 +12,7 @@ documents.
 """
 
 import re
+from collections.abc import Callable
 from typing import Any
 
 #: tomli-w's: a line of an inline array of tables holds at most this many characters.
@@ -47,12 +48,18 @@ def key(part: str) -> str:
     return out
 
 
-def literal(obj: Any, nest: int = 0) -> str:
+#: How a float is written: tomli-w's ``str``, or a formatter given to :func:`dumps`.
+FloatText = Callable[[float], str]
+
+
+def literal(obj: Any, nest: int = 0, ftext: FloatText = str) -> str:
     """A value on the right of ``=`` (arrays one item a line, indented by ``nest``)."""
     t = type(obj)
     if t is str:
         return string(obj)
-    if t is float or t is int:
+    if t is float:
+        return ftext(obj)
+    if t is int:
         return str(obj)
     if t is bool:
         return "true" if obj else "false"
@@ -62,33 +69,35 @@ def literal(obj: Any, nest: int = 0) -> str:
         inner = INDENT * (nest + 1)
         # a curve is thousands of floats: written at once, as literal() writes each
         if all(type(x) is float for x in obj):
-            items = f",\n{inner}".join(map(str, obj))
+            items = f",\n{inner}".join(map(ftext, obj))
         else:
-            items = f",\n{inner}".join(literal(x, nest + 1) for x in obj)
+            items = f",\n{inner}".join(literal(x, nest + 1, ftext) for x in obj)
         return f"[\n{inner}{items},\n{INDENT * nest}]"
     if t is dict:
-        return inline_table(obj)
+        return inline_table(obj, ftext)
     if isinstance(obj, bool):
         return "true" if obj else "false"
-    if isinstance(obj, int | float):
+    if isinstance(obj, float):
+        return ftext(obj)
+    if isinstance(obj, int):
         return str(obj)
     if isinstance(obj, str):
         return string(obj)
     if isinstance(obj, list | tuple):
-        return literal(list(obj), nest)
+        return literal(list(obj), nest, ftext)
     if isinstance(obj, dict):
-        return inline_table(obj)
+        return inline_table(obj, ftext)
     raise TypeError(f"Object of type '{type(obj).__qualname__}' is not TOML serializable")
 
 
-def inline_table(obj: dict) -> str:
+def inline_table(obj: dict, ftext: FloatText = str) -> str:
     if not obj:
         return "{}"
-    return "{ " + ", ".join(f"{key(k)} = {literal(v)}" for k, v in obj.items()) + " }"
+    return "{ " + ", ".join(f"{key(k)} = {literal(v, 0, ftext)}" for k, v in obj.items()) + " }"
 
 
-def _inline_fits(t: dict) -> bool:
-    text = f"{INDENT}{inline_table(t)},"
+def _inline_fits(t: dict, ftext: FloatText) -> bool:
+    text = f"{INDENT}{inline_table(t, ftext)},"
     return len(text) <= MAX_LINE_LENGTH and "\n" not in text
 
 
@@ -96,7 +105,9 @@ def _is_aot(v: Any) -> bool:
     return isinstance(v, list | tuple) and bool(v) and all(isinstance(x, dict) for x in v)
 
 
-def _table(table: dict, out: list[str], name: str, inside_aot: bool = False) -> None:
+def _table(
+    table: dict, out: list[str], name: str, ftext: FloatText, inside_aot: bool = False
+) -> None:
     literals: list[str] = []
     tables: list[tuple[str, dict, bool]] = []
     keys, needs_escape = _keys, _ILLEGAL.search
@@ -108,14 +119,16 @@ def _table(table: dict, out: list[str], name: str, inside_aot: bool = False) -> 
                 literals.append(f'{key_text} = "{v}"\n')
             else:
                 literals.append(f"{key_text} = {string(v)}\n")
-        elif t is float or t is int:
+        elif t is float:
+            literals.append(f"{keys.get(k) or key(k)} = {ftext(v)}\n")
+        elif t is int:
             literals.append(f"{keys.get(k) or key(k)} = {v}\n")
         elif isinstance(v, dict):
             tables.append((k, v, False))
-        elif _is_aot(v) and not all(_inline_fits(t) for t in v):
+        elif _is_aot(v) and not all(_inline_fits(t, ftext) for t in v):
             tables.extend((k, t, True) for t in v)
         else:
-            literals.append(f"{key(k)} = {literal(v)}\n")
+            literals.append(f"{key(k)} = {literal(v, 0, ftext)}\n")
     yielded = False
     if inside_aot or (name and (literals or not tables)):
         yielded = True
@@ -129,11 +142,13 @@ def _table(table: dict, out: list[str], name: str, inside_aot: bool = False) -> 
         else:
             yielded = True
         part = key(k)
-        _table(v, out, f"{name}.{part}" if name else part, in_aot)
+        _table(v, out, f"{name}.{part}" if name else part, ftext, in_aot)
 
 
-def dumps(doc: dict) -> str:
-    """``doc`` as TOML text, as ``tomli_w.dumps(doc)`` writes it."""
+def dumps(doc: dict, ftext: FloatText = str) -> str:
+    """``doc`` as TOML text, as ``tomli_w.dumps(doc)`` writes it; with ``ftext`` each float
+    is written as ``ftext`` says (:func:`advisor.core.report.float_text`: rounded as it is
+    written, in one formatting per number)."""
     out: list[str] = []
-    _table(doc, out, "")
+    _table(doc, out, "", ftext)
     return "".join(out)
