@@ -9,7 +9,7 @@ from helpers import EXAMPLES
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from advisor.applications.linear.advice import (
+from advisor.applications.linear.choice import (
     catalog_parts,
     choice_options,
     drive_options,

@@ -227,16 +227,17 @@ def candidates(req: Any, cat: Any) -> list[tuple[str, int, int]]:
     preference (:func:`rules.screw.drive_order`): (thread, starts, pole pairs) of each, with
     the smallest motor of that pole count that drives it. Built by the linear advice's own
     functions, so the robust choice looks at exactly the advisor's candidates."""
-    from advisor.applications.linear import advice
+    from advisor.applications.linear.advice import screw_demand
+    from advisor.applications.linear.choice import catalog_parts, drive_options, thread_screens
     from advisor.core.rulebook import Trace
     from rules import screw as screw_rules
 
     s, hold = req.screw, req.application.hold_without_power
-    demand, _ = advice.screw_demand(req, cat, Trace())
-    screens = advice.thread_screens(req, cat, demand)
+    demand, _ = screw_demand(req, cat, Trace())
+    screens = thread_screens(req, cat, demand)
     options = [
         o
-        for o in advice.drive_options(screens, advice.catalog_parts(cat).lines)
+        for o in drive_options(screens, catalog_parts(cat).lines)
         if s.thread is None or o.thread == s.thread
     ]
     options.sort(key=lambda o: screw_rules.drive_order(o, hold))

@@ -1,0 +1,208 @@
+"""The chosen screw's own checks beyond its strength: the whirling speed, the thrust
+bearing's static load, and the nut's wear and heat at the motor's working speed."""
+
+import math
+from typing import NamedTuple
+
+from advisor.calc import screw as screw_calc
+from advisor.calc.screw import (
+    NUT_ALLOWED_RISE_K,
+    NUT_FILM_COEFFICIENT,
+    NUT_OUTER_DIAMETER_RATIO,
+    WHIRL_ALLOWED_SHARE,
+    WHIRL_EIGENVALUE,
+)
+from advisor.calc.service_factor import ServiceFactor
+from advisor.calc.sizing import (
+    STEEL_DENSITY_KG_M3,
+    Check,
+    MotorEvaluation,
+    ThreadEvaluation,
+    ThrustFace,
+)
+from advisor.core.cite import cite
+from advisor.core.reading import Requirements
+from catalogs import Catalogs
+from catalogs.threads import ThreadProfile
+
+
+class NutHeat(NamedTuple):
+    """The nut's wear and heat: flank sliding speed, Shigley's safe pressure at
+    it, p·v, and the steady temperature rise from the mean friction power."""
+
+    sliding_speed_m_s: float
+    safe_pressure_Pa: float
+    safe_pressure_row: str
+    pv_MPa_m_s: float
+    friction_power_W: float
+    mean_friction_power_W: float
+    mean_basis: str
+    surface_m2: float
+    temperature_rise_K: float
+
+
+def _mean_friction_power(req: Requirements, ev: ThreadEvaluation, power_W: float):
+    """The thread's friction power averaged over the cycle: the friction work of the duty's
+    moves (input work of the screw torque less the work done on the load) times the cycles
+    per hour; an IEC duty type by its cyclic duration factor; no duty: continuous running
+    (the worst case), said so."""
+    duty = req.duty
+    if duty is None:
+        return power_W, "no [duty]: continuous running assumed (give a duty for the mean)"
+    if getattr(duty, "segments", None):
+        from advisor.applications.linear.duty import screw_torque
+
+        lead = ev.thread.pitch_mm * 1e-3 * ev.starts
+        work = 0.0
+        for seg in duty.segments:
+            if seg.kind != "move":
+                continue
+            force = req.linear.force_N if seg.force_N is None else seg.force_N
+            angle = 2.0 * math.pi * seg.distance_m / lead
+            done = force * seg.distance_m * (1.0 if seg.direction == "against" else -1.0)
+            work += max(screw_torque(ev, force, seg.direction, thrust=False) * angle - done, 0.0)
+        return (
+            work * duty.cycles_per_hour / 3600.0,
+            f"duty segments: {work:.4g} J of thread friction a cycle × "
+            f"{duty.cycles_per_hour:g} cycles/h",
+        )
+    share = 1.0 if duty.duty_type in ("S1",) else (duty.cyclic_duration_factor or 1.0)
+    return power_W * share, f"duty {duty.duty_type}, running share {share:g}"
+
+
+def nut_heat(req: Requirements, ev: ThreadEvaluation, speed_rpm: float) -> NutHeat:
+    """Sliding speed, safe pressure, p·v and temperature rise of the chosen nut at the
+    motor's working speed."""
+    t = ev.thread
+    v = screw_calc.flank_sliding_speed(t.d2_mm * 1e-3, speed_rpm, ev.lead_angle_rad)
+    nut = "bronze" if "bronze" in req.screw.material_pair else "cast_iron"
+    if req.screw.material_pair == "steel_steel":
+        safe, row = 0.0, "steel–steel: not in Shigley's Table 8-4 (no safe value for a moving nut)"
+    else:
+        safe, row = screw_calc.shigley_bearing_pressure(nut, v)
+    power = screw_calc.friction_power(ev.torque_Nm, speed_rpm, ev.efficiency)
+    mean, basis = _mean_friction_power(req, ev, power)
+    area = screw_calc.nut_surface(t.d_mm * 1e-3, ev.nut_height_mm * 1e-3)
+    return NutHeat(
+        v,
+        safe,
+        row,
+        ev.nut_pressure_Pa / 1e6 * v,
+        power,
+        mean,
+        basis,
+        area,
+        screw_calc.nut_temperature_rise(mean, area),
+    )
+
+
+def whirling_speed_rpm(req: Requirements, thread: ThreadProfile, cat: Catalogs) -> float:
+    """The first whirling speed of the screw's core between its supports  [rpm]."""
+    lin = req.linear
+    steel = cat.steel(req.screw.screw_steel)
+    return screw_calc.critical_speed_rpm(
+        thread.d3_mm * 1e-3,
+        lin.support_span_m,
+        lin.end_fixity,
+        steel.elastic_modulus_MPa * 1e6,
+        STEEL_DENSITY_KG_M3,
+    )
+
+
+def _whirl_check(req: Requirements, ev: ThreadEvaluation, n_work: float, cat: Catalogs) -> Check:
+    """The screw's working speed against the allowed share of its whirling speed."""
+    lin = req.linear
+    n_cr = whirling_speed_rpm(req, ev.thread, cat)
+    allowed = WHIRL_ALLOWED_SHARE * n_cr
+    return Check(
+        "critical_speed",
+        f"screw speed against {WHIRL_ALLOWED_SHARE:g} of its whirling speed "
+        f"({lin.end_fixity}, βL = {WHIRL_EIGENVALUE[lin.end_fixity]:.5g}, core d3)",
+        n_work,
+        allowed,
+        "rpm",
+        allowed / n_work,
+        cite("blevins", "table 8-1").with_note(
+            f"n_cr = {n_cr:.5g} rpm; {WHIRL_ALLOWED_SHARE:g}·n_cr, screw makers' rule"
+        ),
+    )
+
+
+def _thrust_checks(
+    ev: ThreadEvaluation, thrust: ThrustFace | None, force_N: float, sf: ServiceFactor
+) -> tuple[list[Check], list[str]]:
+    """The thrust bearing's static load against C0 as a check; the thrust face left out, or
+    a bearing wider than the core, as warnings."""
+    if thrust is None:
+        return [], [
+            "the motor margin excludes thrust friction: no [screw.thrust] face is given, so "
+            "the torque is the thread's alone; a collar adds F·f_c·d_c/2 (Shigley, eq. (8-6))"
+        ]
+    if thrust.kind != "bearing":
+        return [], []
+    from advisor.calc.bearing_life import static_safety
+
+    b = thrust.bearing
+    c0 = b.C0_kN * 1e3
+    p0 = c0 / static_safety(b, 0.0, force_N)
+    factor = sf.value if sf.value != 1.0 else None
+    check = Check(
+        "thrust_bearing_static",
+        f"thrust bearing {b.designation}: static equivalent load against C0",
+        p0,
+        c0,
+        "N",
+        c0 / ((factor or 1.0) * p0),
+        cite("iso-76").with_note("P0 = max(F_r, X0·F_r + Y0·F_a)"),
+        factor,
+    )
+    warnings = []
+    if b.d_mm > ev.thread.d3_mm:
+        warnings.append(
+            f"the thrust bearing {b.designation} (bore {b.d_mm:g} mm) needs a journal "
+            f"wider than the core of {ev.thread.name} (d3 = {ev.thread.d3_mm:g} mm): "
+            "the screw end must be upset or the bearing smaller"
+        )
+    return [check], warnings
+
+
+def _nut_warnings(ev: ThreadEvaluation, heat: NutHeat) -> list[str]:
+    """The nut's wear (flank pressure above Shigley's safe one at its sliding speed) and
+    heat (steady rise above the allowed one), where they need a word."""
+    warnings = []
+    pressure_MPa = ev.nut_pressure_Pa / 1e6
+    if pressure_MPa > heat.safe_pressure_Pa / 1e6:
+        warnings.append(
+            f"the nut wears fast: its flank pressure {pressure_MPa:.3g} MPa at a sliding "
+            f"speed of {heat.sliding_speed_m_s:.3g} m/s ({heat.sliding_speed_m_s * 60:.3g} "
+            f"m/min; p·v = {heat.pv_MPa_m_s:.3g} MPa·m/s) is above the safe "
+            f"{heat.safe_pressure_Pa / 1e6:.3g} MPa of Shigley's Table 8-4 "
+            f"({heat.safe_pressure_row}); a slower screw (a reduction stage), a longer nut "
+            "or a ball screw"
+        )
+    if heat.temperature_rise_K > NUT_ALLOWED_RISE_K:
+        warnings.append(
+            f"the nut overheats: {heat.mean_friction_power_W:.3g} W of thread friction on "
+            f"average ({heat.mean_basis}) through its {heat.surface_m2 * 1e4:.3g} cm² surface "
+            f"gives a steady rise of {heat.temperature_rise_K:.3g} K, above the "
+            f"{NUT_ALLOWED_RISE_K:g} K allowed (natural convection, "
+            f"h = {NUT_FILM_COEFFICIENT:g} W/(m²·K), nut body "
+            f"{NUT_OUTER_DIAMETER_RATIO:g}·d; the screw's own cooling neglected)"
+        )
+    return warnings
+
+
+def screw_checks(
+    req: Requirements,
+    ev: ThreadEvaluation,
+    sel: MotorEvaluation,
+    thrust: ThrustFace | None,
+    sf: ServiceFactor,
+    cat: Catalogs,
+) -> tuple[list[Check], list[str]]:
+    """The whirling speed and the thrust bearing's static load as checks; the thrust face
+    left out, and the nut's wear and heat, as warnings where they need a word."""
+    n_work = sel.working_speed_rpm or ev.speed_rpm
+    checks, warnings = _thrust_checks(ev, thrust, req.linear.force_N, sf)
+    warnings += _nut_warnings(ev, nut_heat(req, ev, n_work))
+    return [_whirl_check(req, ev, n_work, cat), *checks], warnings
