@@ -22,8 +22,28 @@ import math
 import pytest
 from helpers import EXAMPLES
 
-from advisor.calc import bearing_life as bl
-from advisor.calc import rotor as ro
+from advisor.calc.bearing_life import equivalent_load, skf_friction
+from advisor.calc.rotor import (
+    BallSet,
+    CupGeometry,
+    G,
+    Loads,
+    Rotor,
+    aero_coefficient_from_loss,
+    aero_torque_cup,
+    ball_mass,
+    bearing_loads,
+    cage_speed,
+    centrifugal_force,
+    friction_moment,
+    reaction_forces,
+    resisting_torque,
+    run_up_curve,
+    run_up_time,
+    slew_response,
+    speed_after,
+    torque_for_run_up,
+)
 from advisor.core.engine import advise
 from advisor.core.reading import read_requirements
 from catalogs import load_catalogs
@@ -31,8 +51,8 @@ from catalogs import load_catalogs
 MASS, H, OMEGA = 0.56, 1.814, 4453.0
 R, DB, Z, BETA, HCG = 6.6e-3, 4.76e-3, 8, math.radians(15.0), 10e-3
 RB = R - DB / 2  # inner raceway radius r_B = 4.22 mm
-WEIGHT_SHARE = MASS * ro.G / 2
-BALLS = ro.BallSet(R, DB, Z, BETA)
+WEIGHT_SHARE = MASS * G / 2
+BALLS = BallSet(R, DB, Z, BETA)
 
 
 def _lambda_from_radial_row(row_Nm: float, radial_N: float) -> float:
@@ -58,8 +78,8 @@ def test_lambda_is_about_0_028_mm_from_both_rows():
 
 
 def test_rows_without_reaction_at_lambda_0_028():
-    loads = ro.bearing_loads(WEIGHT_SHARE, 0.0, BALLS, HCG, OMEGA)
-    parts = ro.friction_moment(loads, BALLS, 0.028e-3)
+    loads = bearing_loads(WEIGHT_SHARE, 0.0, BALLS, HCG, OMEGA)
+    parts = friction_moment(loads, BALLS, 0.028e-3)
     assert parts.radial_Nm == pytest.approx(2.96e-4, rel=0.015)
     assert parts.axial_Nm == pytest.approx(3.42e-4, rel=0.015)
 
@@ -69,13 +89,13 @@ def test_centrifugal_row_is_eq_4_with_half_the_balls():
     0.443 g, cage speed ω/2·(1 − D·cos β/2r) = 1451 rad/s, F_ц = m·ω_c²·r = 6.16 N. With all
     z = 8 balls eq. (4) gives 12.7e-4 N·m, twice the table's 6.4e-4; with z/2 = 4 it gives
     6.33e-4. The advisor keeps the printed equation (every ball is thrown outwards)."""
-    f_c = ro.centrifugal_force(OMEGA, BALLS)
-    assert ro.ball_mass(DB) == pytest.approx(4.433e-4, rel=1e-3)
-    assert ro.cage_speed(OMEGA, BALLS) == pytest.approx(1451.0, rel=1e-3)
+    f_c = centrifugal_force(OMEGA, BALLS)
+    assert ball_mass(DB) == pytest.approx(4.433e-4, rel=1e-3)
+    assert cage_speed(OMEGA, BALLS) == pytest.approx(1451.0, rel=1e-3)
     assert f_c == pytest.approx(6.16, rel=2e-3)
-    loads = ro.Loads(0.0, 0.0, f_c)
-    printed = ro.friction_moment(loads, BALLS, 0.028e-3).centrifugal_Nm
-    half = ro.friction_moment(loads, BALLS._replace(balls=Z // 2), 0.028e-3).centrifugal_Nm
+    loads = Loads(0.0, 0.0, f_c)
+    printed = friction_moment(loads, BALLS, 0.028e-3).centrifugal_Nm
+    half = friction_moment(loads, BALLS._replace(balls=Z // 2), 0.028e-3).centrifugal_Nm
     assert printed == pytest.approx(12.66e-4, rel=2e-3)
     assert half == pytest.approx(6.4e-4, rel=0.015)
 
@@ -90,8 +110,8 @@ def test_slew_rate_behind_the_with_reaction_column():
     moment = (radial - WEIGHT_SHARE) * (R * R + HCG * HCG) / HCG
     assert moment == pytest.approx(0.139, rel=0.01)
     assert moment / H == pytest.approx(0.0765, rel=0.01)
-    loads = ro.bearing_loads(WEIGHT_SHARE, moment, BALLS, HCG, OMEGA)
-    parts = ro.friction_moment(loads, BALLS, lam)
+    loads = bearing_loads(WEIGHT_SHARE, moment, BALLS, HCG, OMEGA)
+    parts = friction_moment(loads, BALLS, lam)
     assert parts.radial_Nm == pytest.approx(13.5e-4, rel=1e-6)
     assert parts.axial_Nm == pytest.approx(34.6e-4, rel=0.01)
     lam_row = _lambda_from_radial_row(2.96e-4, WEIGHT_SHARE)
@@ -159,15 +179,15 @@ def test_a_short_slew_costs_about_one_percent(report):
     assert slew.balance_speed_rad_s < OMEGA
 
 
-def _rotor() -> ro.Rotor:
-    return ro.Rotor(
+def _rotor() -> Rotor:
+    return Rotor(
         inertia_kgm2=H / OMEGA,
         bearings=2,
         balls=BALLS,
         rolling_friction_m=0.028e-3,
         weight_share_N=WEIGHT_SHARE,
         plane_to_cg_m=HCG,
-        aero_k=ro.aero_coefficient_from_loss(32.15, OMEGA),
+        aero_k=aero_coefficient_from_loss(32.15, OMEGA),
         slew_per_speed=H / OMEGA * 0.0765,
     )
 
@@ -180,21 +200,21 @@ def test_quadrature_and_time_integration_agree():
     rotor, m = _rotor(), 0.03
 
     def rhs(_t, y):
-        return [(m - ro.resisting_torque(rotor, y[0], False)) / rotor.inertia_kgm2]
+        return [(m - resisting_torque(rotor, y[0], False)) / rotor.inertia_kgm2]
 
     def reached(_t, y):
         return y[0] - OMEGA * (1 - 1e-9)
 
     reached.terminal = True
     sol = solve_ivp(rhs, (0, 1000), [0.0], events=reached, dense_output=True, rtol=1e-10)
-    t_quad = ro.run_up_time(rotor, m, OMEGA)
+    t_quad = run_up_time(rotor, m, OMEGA)
     assert sol.t_events[0][0] == pytest.approx(t_quad, rel=1e-4)
-    times, speeds = ro.run_up_curve(rotor, m, OMEGA)
+    times, speeds = run_up_curve(rotor, m, OMEGA)
     for t, w in zip(times[:-1], speeds[:-1], strict=True):
         assert sol.sol(t)[0] == pytest.approx(w, rel=1e-5, abs=1e-6)
     # and the torque found for a time gives back that time
-    m45 = ro.torque_for_run_up(rotor, OMEGA, 45.0)
-    assert ro.run_up_time(rotor, m45, OMEGA) == pytest.approx(45.0, rel=1e-8)
+    m45 = torque_for_run_up(rotor, OMEGA, 45.0)
+    assert run_up_time(rotor, m45, OMEGA) == pytest.approx(45.0, rel=1e-8)
 
 
 def test_sustained_slew_settles_in_about_ten_minutes():
@@ -204,43 +224,39 @@ def test_sustained_slew_settles_in_about_ten_minutes():
     from scipy.integrate import solve_ivp
 
     rotor = _rotor()
-    m = ro.resisting_torque(rotor, OMEGA, False)
-    times, speeds, settle = ro.slew_response(rotor, m, OMEGA)
+    m = resisting_torque(rotor, OMEGA, False)
+    times, speeds, settle = slew_response(rotor, m, OMEGA)
     assert 400 < times[-1] < 800
-    assert ro.resisting_torque(rotor, settle, True) == pytest.approx(m, rel=1e-9)
+    assert resisting_torque(rotor, settle, True) == pytest.approx(m, rel=1e-9)
 
     def rhs(_t, y):
-        return [(m - ro.resisting_torque(rotor, y[0], True)) / rotor.inertia_kgm2]
+        return [(m - resisting_torque(rotor, y[0], True)) / rotor.inertia_kgm2]
 
     sol = solve_ivp(rhs, (0, times[-1]), [OMEGA], dense_output=True, rtol=1e-10, atol=1e-6)
     for t, w in zip(times, speeds, strict=True):
         assert sol.sol(t)[0] == pytest.approx(w, rel=1e-5)
-    assert ro.speed_after(times, speeds, rotor, m, 100.0) == pytest.approx(
-        sol.sol(100.0)[0], rel=1e-6
-    )
+    assert speed_after(times, speeds, rotor, m, 100.0) == pytest.approx(sol.sol(100.0)[0], rel=1e-6)
 
 
 def test_aero_law_of_eq_5():
     """Cup R_o = 30 mm, l_o = 40 mm, R_i = 25 mm, l_i = 35 mm, air 1.204 kg/m³, 1.516e-5 m²/s
     at 4453 rad/s, by hand: shape = 0.03⁴·0.04 + 0.025⁴·0.035 + 0.4·0.03⁵ = 3.24e-8 + 1.367e-8 + 0.972e-8 = 5.579e-8 m⁵;
     1.06·π·1.204·4453²·5.585e-8·√(1.516e-5/(4453·0.03²)) = 4.0094·1.9829e7·5.579e-8·1.9449e-3 = 8.63e-3 N·m."""
-    cup = ro.CupGeometry(0.03, 0.04, 0.025, 0.035, 1.204, 1.516e-5)
+    cup = CupGeometry(0.03, 0.04, 0.025, 0.035, 1.204, 1.516e-5)
     shape = 0.03**4 * 0.04 + 0.025**4 * 0.035 + 0.4 * 0.03**5
     assert shape == pytest.approx(5.579e-8, rel=1e-3)
-    assert ro.aero_torque_cup(OMEGA, cup) == pytest.approx(8.63e-3, rel=2e-3)
+    assert aero_torque_cup(OMEGA, cup) == pytest.approx(8.63e-3, rel=2e-3)
     # torque ∝ ω^1.5
-    assert ro.aero_torque_cup(2 * OMEGA, cup) / ro.aero_torque_cup(OMEGA, cup) == pytest.approx(
-        2**1.5
-    )
+    assert aero_torque_cup(2 * OMEGA, cup) / aero_torque_cup(OMEGA, cup) == pytest.approx(2**1.5)
 
 
 def test_reaction_forces_scale_with_moment_and_follow_eq_3():
     """Fig. 3 of the seed (M = 10 N·m, h = 10 mm): at ωt = 0 the radial force M·h/(r² + h²)
     = 696.6 N exceeds the axial M·r/(r² + h²) = 459.7 N; both vanish at ωt = ±π/2."""
-    fa, fr = ro.reaction_forces(10.0, R, HCG)
+    fa, fr = reaction_forces(10.0, R, HCG)
     assert fr == pytest.approx(10 * HCG / (R * R + HCG * HCG))
     assert fa / fr == pytest.approx(R / HCG)
-    fa90, fr90 = ro.reaction_forces(10.0, R, HCG, math.pi / 2)
+    fa90, fr90 = reaction_forces(10.0, R, HCG, math.pi / 2)
     assert fa90 == pytest.approx(0.0, abs=1e-12) and fr90 == pytest.approx(0.0, abs=1e-12)
 
 
@@ -261,7 +277,7 @@ def test_iso_281_life_of_the_example_by_hand(report):
 
 def test_equivalent_load_below_e_is_the_radial_load():
     b = load_catalogs().bearing("7000 CD")
-    eq = bl.equivalent_load(b, 100.0, 10.0)
+    eq = equivalent_load(b, 100.0, 10.0)
     assert (eq.load_N, eq.X, eq.Y) == (100.0, 1.0, 0.0)
 
 
@@ -270,7 +286,7 @@ def test_deep_groove_factors_by_iso_281():
     Y 1.71) and 1.03 (e 0.28, Y 1.55): e = 0.278, Y = 1.564; F_a/F_r = 0.504 > e →
     P = 0.56·1000 + 1.564·504."""
     b = load_catalogs().bearing("6204")
-    eq = bl.equivalent_load(b, 1000.0, 504.0)
+    eq = equivalent_load(b, 1000.0, 504.0)
     t = (1.0 - 0.689) / (1.03 - 0.689)
     y = 1.71 + t * (1.55 - 1.71)
     assert eq.Y == pytest.approx(y, rel=1e-3)
@@ -282,7 +298,7 @@ def test_skf_inlet_shear_factor_matches_the_catalogue_example():
     φ_ish = 1/(1 + 1.84e-9·(3500·60)^1.28·68^0.64) ≈ 0.85."""
     b = load_catalogs().bearing("7208 BECBP")  # dm = 60 mm like the catalogue's example
     k = load_catalogs().bearing_friction[b.friction]
-    f = bl.skf_friction(b, k, 1000.0, 500.0, 3500.0, 68.0)
+    f = skf_friction(b, k, 1000.0, 500.0, 3500.0, 68.0)
     assert f.shear_heating_factor == pytest.approx(0.85, abs=0.01)
 
 
@@ -294,6 +310,6 @@ def test_skf_model_near_the_constant_mu_estimate():
     for name, mu in (("7205 BECBP", 0.0020), ("6205", 0.0015)):
         b = cat.bearing(name)
         p = 0.1 * b.C_kN * 1e3
-        f = bl.skf_friction(b, cat.bearing_friction[b.friction], p, 0.0, 1500.0, 30.0)
+        f = skf_friction(b, cat.bearing_friction[b.friction], p, 0.0, 1500.0, 30.0)
         rough = 0.5 * mu * p * b.d_mm * 1e-3
         assert 0.5 < f.total_Nm / rough < 2.0, (name, f.total_Nm, rough)

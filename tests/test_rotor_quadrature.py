@@ -1,29 +1,30 @@
-"""The spinning rotor's eq. (5) solved without scipy (issue 16): the resistance as a polynomial
-in ω, Gauss–Legendre panels for the run-up time, Brent's method for the roots."""
+"""The spinning rotor's eq. (5) solved without scipy (importing scipy.optimize costs more than a
+cold batch run's budget): the resistance as a polynomial in ω, Gauss–Legendre panels for the
+run-up time, Brent's method for the roots."""
 
 import math
 
 import pytest
 
-from advisor.calc import rotor as ro
 from advisor.calc.roots import brent
+from advisor.calc.rotor import BallSet, G, Rotor, resistance, resisting_torque, run_up_time
 
 # the seed-002 example: SKF 7000 CD, 8 balls of 4.76 mm on a pitch radius of 6.6 mm, 15°
-BALLS = ro.BallSet(6.6e-3, 4.76e-3, 8, math.radians(15.0))
+BALLS = BallSet(6.6e-3, 4.76e-3, 8, math.radians(15.0))
 OMEGA = 4453.0
 
 
-def _rotor(slew: float = 0.0765, aero_k: float = 32.15 / OMEGA**2.5) -> ro.Rotor:
+def _rotor(slew: float = 0.0765, aero_k: float = 32.15 / OMEGA**2.5) -> Rotor:
     inertia = 1.814 / OMEGA
-    return ro.Rotor(inertia, 2, BALLS, 0.028e-3, 0.56 * ro.G / 2, 0.010, aero_k, inertia * slew)
+    return Rotor(inertia, 2, BALLS, 0.028e-3, 0.56 * G / 2, 0.010, aero_k, inertia * slew)
 
 
 @pytest.mark.parametrize("slewing", [False, True])
 def test_the_polynomial_is_the_resistance_term_by_term(slewing):
     rotor = _rotor()
-    res = ro.resistance(rotor, slewing)
+    res = resistance(rotor, slewing)
     for w in (0.0, 1.0, 10.0, 1234.5, OMEGA, 2e4):
-        assert res(w) == pytest.approx(ro.resisting_torque(rotor, w, slewing), rel=1e-13)
+        assert res(w) == pytest.approx(resisting_torque(rotor, w, slewing), rel=1e-13)
         assert res.at_root(math.sqrt(w)) == pytest.approx(res(w), rel=1e-13)
     for u in (1e-6, 1.0, OMEGA / 2, OMEGA):
         assert res.drop(OMEGA, u) == pytest.approx(res(OMEGA) - res(OMEGA - u), rel=1e-9)
@@ -39,20 +40,18 @@ def test_run_up_time_against_the_closed_form(gap):
     1e-12. There 1 − x² = δ/c with δ = M − M_res(ω), so artanh x = ½·ln((1 + x)²·c/δ) keeps
     the closed form itself accurate."""
     rotor = _rotor(slew=0.0, aero_k=0.0)
-    res = ro.resistance(rotor, False)
+    res = resistance(rotor, False)
     assert res.a1 == 0.0 and res.k == 0.0
     m = res(OMEGA) * (1.0 + gap)
     c, delta = m - res.a0, m - res(OMEGA)
     x = OMEGA * math.sqrt(res.a2 / c)
     exact = rotor.inertia_kgm2 / math.sqrt(c * res.a2) * 0.5 * math.log((1 + x) ** 2 * c / delta)
-    assert ro.run_up_time(rotor, m, OMEGA) == pytest.approx(exact, rel=1e-9)
+    assert run_up_time(rotor, m, OMEGA) == pytest.approx(exact, rel=1e-9)
 
 
 def test_a_torque_below_the_resistance_never_arrives():
     rotor = _rotor()
-    assert ro.run_up_time(rotor, ro.resisting_torque(rotor, OMEGA, False) * 0.999, OMEGA) == (
-        math.inf
-    )
+    assert run_up_time(rotor, resisting_torque(rotor, OMEGA, False) * 0.999, OMEGA) == (math.inf)
 
 
 def test_brent_finds_roots_in_few_steps():

@@ -1,6 +1,6 @@
 """Every spinning-rotor requirement inside the documented ranges of
 advisor/applications/spinning_rotor/requirements.py ends in a report (exit 0) or a stated
-infeasibility (exit 3), never in exit 1, and no report holds nan or inf (issue 13). The ranges
+infeasibility (exit 3), never in exit 1, and no report holds nan or inf. The ranges
 are read from the model, so the test follows them; each number is drawn at an edge,
 uniformly, or log-uniformly across the range."""
 
