@@ -2,8 +2,8 @@
 
 A family is a base requirement plus axes (dotted requirement keys, each with a list of
 values or a range); its variants are the product of the axes. The variants are advised in
-chunks on a ``dask.distributed`` cluster (a local one by default) and gathered into
-``designs.csv``, ``summary.toml`` and ``family.html``.
+chunks, by worker processes on this machine or on a ``dask.distributed`` cluster
+(``--scheduler``), and gathered into ``designs.csv``, ``summary.toml`` and ``family.html``.
 
 Modules, from the inside out:
 
@@ -11,10 +11,12 @@ Modules, from the inside out:
 - :mod:`advisor.family.outputs`: the key outputs of each application, from its report;
 - :mod:`advisor.family.spec`: reading the family file, the axes and the variants;
 - :mod:`advisor.family.chunks`: what one task does (advise a block of variants);
-- :mod:`advisor.family.study`: the run on Dask, resume and progress;
-- :mod:`advisor.family.summary` and :mod:`advisor.family.html`: the results.
+- :mod:`advisor.family.local`: the chunks run on this machine (in-process or forked workers);
+- :mod:`advisor.family.study`: the run (locally or on Dask), resume and progress;
+- :mod:`advisor.family.summary`, :mod:`advisor.family.html` and :mod:`advisor.family.svg`:
+  the results, from one pass over the rows.
 
-Dask and matplotlib are imported only here, never on the batch path.
+Dask is imported only with ``--scheduler``, never on the batch path.
 """
 
 from advisor.core import pydantic_plugins

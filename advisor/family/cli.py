@@ -55,7 +55,7 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument(
         "--reports", action="store_true", help="also write every variant's report to DIR/reports/"
     )
-    p.add_argument("--no-html", action="store_true", help="skip family.html (and matplotlib)")
+    p.add_argument("--no-html", action="store_true", help="skip family.html")
     p.add_argument("--quiet", action="store_true", help="no progress bar")
     p.add_argument("--catalog-dir", type=Path, metavar="DIR", help="a directory of user catalogs")
     p.add_argument(

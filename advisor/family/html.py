@@ -1,17 +1,17 @@
 """family.html: the key outputs plotted against the axes, the outcome map and the summary
-tables, in one self-contained page (matplotlib SVG inline; imported only on this path).
+tables, in one self-contained page (inline SVG drawn by :mod:`advisor.family.svg`).
 
 Drawn from the summary alone: its document, and what it kept while the rows went by (the
 outcome of every variant, the rows at the points the plots show, :func:`plot_points`)."""
 
 import html
-import io
 from collections.abc import Iterator
 from pathlib import Path
 from typing import Any, NamedTuple
 
 import numpy as np
 
+from advisor.family import svg
 from advisor.family.outputs import NUMERIC
 from advisor.family.spec import Family, Member
 from advisor.family.summary import Picture
@@ -23,32 +23,7 @@ STATUS_COLOURS = {
     "invalid": "#c0392b",
     "internal_error": "#6c3483",
 }
-
-
-def _svg(fig: Any) -> str:
-    buf = io.StringIO()
-    fig.savefig(buf, format="svg", bbox_inches="tight")
-    import matplotlib.pyplot as plt
-
-    plt.close(fig)
-    text = buf.getvalue()
-    return text[text.index("<svg") :]
-
-
-def _label(v: Any) -> str:
-    return f"{v:g}" if isinstance(v, float) else str(v)
-
-
-def _mpl(text: str) -> str:
-    """User text as matplotlib draws it literally: a ``$`` would start mathtext (and a
-    broken formula in a member's name would stop the page)."""
-    return text.replace("$", r"\$")
-
-
-def _sample(n: int, k: int) -> list[int]:
-    if n <= k:
-        return list(range(n))
-    return sorted({round(i * (n - 1) / (k - 1)) for i in range(k)})
+_label = svg.label
 
 
 def _numeric_axis(a: Any) -> bool:
@@ -73,23 +48,28 @@ class Line(NamedTuple):
     variants: list[int]  # the member's variants along the plotted axis, in its order
 
 
+class Plot(NamedTuple):
+    axis: int  # the axis along x
+    other: int | None  # the axis whose values make the lines
+    lines: list[Line]
+
+
 def _other_axis(member: Member, ax_i: int) -> int | None:
     """The axis whose values make the lines of a plot against axis ``ax_i``."""
     axes = member.axes
     return next((j for j in range(len(axes)) if j != ax_i and len(axes[j].values) > 1), None)
 
 
-def plot_lines(member: Member) -> Iterator[tuple[int, int | None, list[Line]]]:
-    """For each axis of two values or more: the axis, the other axis, and the lines of its
-    plots (one per sampled value of the other axis; the remaining axes at their middle)."""
+def plot_lines(member: Member) -> Iterator[Plot]:
+    """For each axis of two values or more: the lines of its plots (one per sampled value of
+    the other axis; the remaining axes at their middle value)."""
     mid = [len(a.values) // 2 for a in member.axes]
     for ax_i, a in enumerate(member.axes):
         if len(a.values) < 2:
             continue
         other = _other_axis(member, ax_i)
-        sampled = (
-            _sample(len(member.axes[other].values), MAX_LINES) if other is not None else [None]
-        )
+        n = len(member.axes[other].values) if other is not None else 0
+        sampled: list[int | None] = list(svg.sample(n, MAX_LINES)) if other is not None else [None]
         lines = []
         for li in sampled:
             coords = list(mid)
@@ -100,144 +80,92 @@ def plot_lines(member: Member) -> Iterator[tuple[int, int | None, list[Line]]]:
                 coords[ax_i] = k
                 along.append(_local(member, coords))
             lines.append(Line(li, along))
-        yield ax_i, other, lines
+        yield Plot(ax_i, other, lines)
 
 
 def plot_points(member: Member) -> set[int]:
     """The member's variants whose key numbers the plots show (the summary keeps their rows)."""
-    return {v for _, _, lines in plot_lines(member) for line in lines for v in line.variants}
+    return {v for plot in plot_lines(member) for line in plot.lines for v in line.variants}
 
 
-def _plot_column(axp: Any, member: Member, picture: Picture, plot: tuple, col: str) -> None:
-    """One subplot: ``col`` against the plot's axis, one line per value of the other axis."""
-    ax_i, other, lines = plot
-    a = member.axes[ax_i]
-    xs = list(a.values) if _numeric_axis(a) else list(range(len(a.values)))
-    for line in lines:
-        ys = [_grid_value(picture, v, col) for v in line.variants]
-        label = None
-        if other is not None and line.value is not None:
-            b = member.axes[other]
-            label = _mpl(f"{b.key} = {_label(b.values[line.value])}")
-        axp.plot(xs, ys, marker=".", label=label)
-    if a.scale == "log":
-        axp.set_xscale("log")
-    if not _numeric_axis(a):
-        axp.set_xticks(xs, [_mpl(_label(v)) for v in a.values], rotation=30)
-    axp.set_xlabel(a.key)
-    axp.set_title(col, fontsize=10)
-    axp.grid(alpha=0.3)
-
-
-def _axis_figure(member: Member, picture: Picture, cols: list[str], plot: tuple) -> str:
-    """The key numbers against one axis, one subplot per number, as SVG."""
-    import matplotlib.pyplot as plt
-
-    ax_i, other, _ = plot
-    ncol = min(3, len(cols))
-    nrow = -(-len(cols) // ncol)
-    fig, axs = plt.subplots(nrow, ncol, figsize=(4.2 * ncol, 3.0 * nrow), squeeze=False)
-    for p, col in enumerate(cols):
-        _plot_column(axs[p // ncol][p % ncol], member, picture, plot, col)
-    for p in range(len(cols), nrow * ncol):
-        axs[p // ncol][p % ncol].axis("off")
-    if other is not None:
-        axs[0][0].legend(fontsize=7)
-    mid = [len(b.values) // 2 for b in member.axes]
+def _rest(member: Member, shown: tuple[int | None, ...]) -> str:
+    """`` (key = value, …)``: the axes not shown, at their middle value."""
     rest = [
-        f"{b.key} = {_label(b.values[mid[j]])}"
+        f"{b.key} = {_label(b.values[len(b.values) // 2])}"
         for j, b in enumerate(member.axes)
-        if j not in (ax_i, other)
+        if j not in shown
     ]
-    title = f"{member.name}: key outputs against {member.axes[ax_i].key}"
-    fig.suptitle(_mpl(title + (f" ({', '.join(rest)})" if rest else "")), fontsize=11)
-    fig.tight_layout()
-    return _svg(fig)
+    return f" ({', '.join(rest)})" if rest else ""
+
+
+def _figure(title: str, legend: str, panels: list[str]) -> str:
+    return f"<div class='fig'><h4>{html.escape(title)}</h4>{legend}{''.join(panels)}</div>"
+
+
+def axis_figure(member: Member, picture: Picture, cols: list[str], plot: Plot) -> str:
+    """The key numbers ``cols`` against one axis, one panel each, one line per value of the
+    other axis (its legend above the panels)."""
+    a = member.axes[plot.axis]
+    numeric = _numeric_axis(a)
+    xa = svg.XAxis(
+        list(a.values) if numeric else list(range(len(a.values))),
+        a.scale == "log",
+        None if numeric else [_label(v) for v in a.values],
+        a.key,
+    )
+    panels = [
+        svg.line_panel(
+            col, xa, [[_grid_value(picture, v, col) for v in line.variants] for line in plot.lines]
+        )
+        for col in cols
+    ]
+    legend = ""
+    if plot.other is not None:
+        b = member.axes[plot.other]
+        legend = svg.legend(
+            [
+                (f"{b.key} = {_label(b.values[line.value])}", svg.LINE_COLOURS[k])
+                for k, line in enumerate(plot.lines)
+                if line.value is not None
+            ]
+        )
+    title = f"{member.name}: key outputs against {a.key}" + _rest(member, (plot.axis, plot.other))
+    return _figure(title, legend, panels)
 
 
 def output_plots(member: Member, picture: Picture, cols: list[str]) -> list[str]:
     """For each axis: the key numbers ``cols`` against it, one line per value of another
     axis, the remaining axes at their middle value. A gap is a variant without a design."""
-    import matplotlib
-
-    matplotlib.use("Agg")
     if not cols:
         return []
-    return [_axis_figure(member, picture, cols, plot) for plot in plot_lines(member)]
+    return [axis_figure(member, picture, cols, plot) for plot in plot_lines(member)]
 
 
-def _status_grid(member: Member, picture: Picture) -> np.ndarray:
+def _status_grid(member: Member, picture: Picture) -> list[list[int]]:
     """The outcome (index into STATUS_COLOURS) over the first two axes, the others at their
     middle value: one row per value of the second axis."""
-    full = picture.status.reshape(tuple(len(a.values) for a in member.axes)).astype(np.int64)
+    full = picture.status.reshape(tuple(len(a.values) for a in member.axes))
     if len(member.axes) == 1:
-        return full.reshape(1, -1)
+        return [full.tolist()]
     mid = [len(a.values) // 2 for a in member.axes]
-    return full[(slice(None), slice(None), *mid[2:])].T
+    return np.asarray(full[(slice(None), slice(None), *mid[2:])]).T.tolist()
 
 
 def status_map(member: Member, picture: Picture) -> str | None:
     """The outcome of every variant over the first two axes (others at their middle)."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    from matplotlib.colors import ListedColormap
-
     axes = member.axes
     if not axes:
         return None
-    grid = _status_grid(member, picture)
-    a0, n1 = axes[0], grid.shape[0]
-    fig, ax = plt.subplots(figsize=(min(12, 2 + 0.35 * len(a0.values)), min(8, 1.5 + 0.35 * n1)))
-    ax.imshow(
-        grid,
-        cmap=ListedColormap(list(STATUS_COLOURS.values())),
-        vmin=0,
-        vmax=3,
-        aspect="auto",
-        origin="lower",
-        interpolation="nearest",
+    a0, a1 = axes[0], axes[1] if len(axes) > 1 else None
+    panel = svg.map_panel(
+        _status_grid(member, picture),
+        list(STATUS_COLOURS.values()),
+        [_label(v) for v in a0.values],
+        [_label(v) for v in a1.values] if a1 is not None else None,
+        (a0.key, a1.key if a1 is not None else ""),
     )
-    _status_ticks(ax, member)
-    fig.tight_layout()
-    return _svg(fig)
-
-
-def _status_ticks(ax: Any, member: Member) -> None:
-    """The status map's ticks, legend and title."""
-    from matplotlib.patches import Patch
-
-    axes = member.axes
-    a0 = axes[0]
-    step0 = max(1, len(a0.values) // 12)
-    ax.set_xticks(
-        range(0, len(a0.values), step0),
-        [_mpl(_label(v)) for v in a0.values[::step0]],
-        rotation=45,
-    )
-    ax.set_xlabel(a0.key)
-    if len(axes) > 1:
-        a1 = axes[1]
-        step1 = max(1, len(a1.values) // 12)
-        ax.set_yticks(
-            range(0, len(a1.values), step1), [_mpl(_label(v)) for v in a1.values[::step1]]
-        )
-        ax.set_ylabel(a1.key)
-    else:
-        ax.set_yticks([])
-    ax.legend(
-        handles=[Patch(color=c, label=s) for s, c in STATUS_COLOURS.items()],
-        loc="upper left",
-        bbox_to_anchor=(1.01, 1),
-        fontsize=8,
-    )
-    mid = [len(a.values) // 2 for a in axes]
-    rest = [f"{b.key} = {_label(b.values[mid[j]])}" for j, b in enumerate(axes) if j > 1]
-    ax.set_title(
-        _mpl(f"{member.name}: outcome of each variant" + (f" ({', '.join(rest)})" if rest else "")),
-        fontsize=11,
-    )
+    title = f"{member.name}: outcome of each variant" + _rest(member, (0, 1))
+    return _figure(title, svg.legend(list(STATUS_COLOURS.items())), [panel])
 
 
 def _table(head: list[str], body: list[list[Any]]) -> str:
@@ -250,7 +178,10 @@ def _table(head: list[str], body: list[list[Any]]) -> str:
 
 CSS = """body{font-family:sans-serif;max-width:1300px;margin:1em auto;padding:0 1em;color:#222}
 table{border-collapse:collapse;margin:.5em 0 1.5em}td,th{border:1px solid #ccc;padding:2px 8px;
-font-size:13px;text-align:left}th{background:#eee}svg{max-width:100%;height:auto}"""
+font-size:13px;text-align:left}th{background:#eee}svg{max-width:100%;height:auto}
+.fig{margin:1em 0}.fig h4{margin:.3em 0;font-weight:normal}.legend{margin:.2em 0;font-size:12px}
+.legend span{margin-right:1.2em}.legend i{display:inline-block;width:10px;height:10px;
+margin-right:4px}"""
 
 
 def _changes_table(md: dict[str, Any]) -> str:
@@ -329,13 +260,6 @@ def render(family: Family, doc: dict[str, Any], pictures: list[Picture]) -> str:
 
 
 def write_html(path: Path, family: Family, doc: dict[str, Any], pictures: list[Picture]) -> None:
-    import warnings
-
     from advisor.family.adapter import write_atomic
 
-    # matplotlib warns when a long title leaves no room for tight_layout ("Tight layout not
-    # applied"): the plot is drawn all the same, and the warning is not the user's business
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore")
-        text = render(family, doc, pictures)
-    write_atomic(path, text)
+    write_atomic(path, render(family, doc, pictures))
