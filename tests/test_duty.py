@@ -8,14 +8,14 @@ import sys
 import pytest
 from helpers import EXAMPLES
 
-from advisor.applications.positioning import duty as dp
+from advisor.applications.positioning.duty import cycle, move_and_rms
 from advisor.calc import duty as du
-from advisor.calc import motion as mo
+from advisor.calc.motion import Drive, move_time_trapezoidal
 from advisor.core.engine import advise
 from advisor.core.reading import read_requirements
 
 # Seed 003's load (examples/positioning_drive.toml) and its motor A.
-A = mo.Drive(150.0, 0.01, 20.0, 5.0, 100.0)
+A = Drive(150.0, 0.01, 20.0, 5.0, 100.0)
 
 
 def test_positioning_cycle_by_hand():
@@ -28,7 +28,7 @@ def test_positioning_cycle_by_hand():
     RMS = √((20²·1.2 + 10²·0.0667)/4) = √(486.67/4) = 11.030 N·m.
     Energy out 20·75·0.9 + 10·150·0.0667 = 1350 + 100 = 1450 J; back 20·75·0.3 = 450 J
     (= J·ω0²/2 − the friction's 10·22.5 J while braking = 675 − 225)."""
-    ph = dp.cycle(A, 10.0, 10.0, 4.0)
+    ph = cycle(A, 10.0, 10.0, 4.0)
     assert [p.name for p in ph] == ["accelerate", "run", "brake", "rest"]
     assert [p.torque_Nm for p in ph] == [20.0, 10.0, -20.0, 0.0]
     assert ph[0].time_s == pytest.approx(0.9)
@@ -36,7 +36,7 @@ def test_positioning_cycle_by_hand():
     assert ph[2].time_s == pytest.approx(0.3)
     move = 0.9 + 0.3 + 10.0 / 150.0
     assert ph[3].time_s == pytest.approx(4.0 - move)
-    assert move == pytest.approx(mo.move_time_trapezoidal(A, 10.0, 10.0))
+    assert move == pytest.approx(move_time_trapezoidal(A, 10.0, 10.0))
     rms = math.sqrt((20.0**2 * 1.2 + 10.0**2 * (10.0 / 150.0)) / 4.0)
     assert rms == pytest.approx(11.0303, abs=1e-4)
     assert du.rms_torque(ph) == pytest.approx(rms)
@@ -49,7 +49,7 @@ def test_positioning_cycle_by_hand():
 def test_triangular_move_by_hand():
     """A short path: 1 rad at i = 10 → 10 rad at the motor, ε₁ = 166.67, ε₂ = 500:
     v = √(2·10·166.67·500/666.67) = √2500 = 50 rad/s < 150; t₁ = 0.3 s, t₃ = 0.1 s."""
-    ph = dp.cycle(A, 1.0, 10.0, 2.0)
+    ph = cycle(A, 1.0, 10.0, 2.0)
     assert [p.name for p in ph] == ["accelerate", "brake", "rest"]
     assert ph[0].speed_end_rad_s == pytest.approx(50.0)
     assert (ph[0].time_s, ph[1].time_s) == pytest.approx((0.3, 0.1))
@@ -63,8 +63,8 @@ def test_example_chooses_the_fastest_passing_move():
     assert d.motor == "C"
     assert d.rms_torque_Nm == pytest.approx(18.0, rel=1e-6)
     assert d.ratio > rep.design.motion.optimal_ratio
-    c = mo.Drive(100.0, 0.03, 45.0, 5.0, 100.0)
-    ph = dp.cycle(c, 10.0, d.ratio, 4.0)
+    c = Drive(100.0, 0.03, 45.0, 5.0, 100.0)
+    ph = cycle(c, 10.0, d.ratio, 4.0)
     assert du.rms_torque(ph) == pytest.approx(d.rms_torque_Nm)
     # the phases are M_λ, M_p/i, −M_λ, 0; the RMS by hand from the reported phases
     p = d.phases
@@ -76,7 +76,9 @@ def test_example_chooses_the_fastest_passing_move():
     assert sum(x.time_s for x in p) == pytest.approx(4.0)
     # the ratio of least RMS torque is a minimum: its neighbours are no better
     for k in (0.99, 1.01):
-        assert dp._eval(c, 10.0, d.min_rms_ratio * k, 4.0)[1] >= d.min_rms_torque_Nm * (1 - 1e-9)
+        assert move_and_rms(c, 10.0, d.min_rms_ratio * k, 4.0)[1] >= d.min_rms_torque_Nm * (
+            1 - 1e-9
+        )
     assert d.thermal_utilisation == pytest.approx(d.rms_torque_Nm / 18.0)
     assert d.inertia_ratio == pytest.approx(5.0 / d.ratio**2 / 0.03)
     ids = {x.id for x in rep.decisions}

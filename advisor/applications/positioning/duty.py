@@ -50,10 +50,11 @@ def cycle(d: Drive, path_rad: float, i: float, cycle_time_s: float) -> list[Phas
 
 
 @lru_cache(maxsize=8192)
-def _eval(d: Drive, path: float, i: float, t_cycle: float) -> tuple[float, float]:
-    """(move time, RMS torque over the cycle) at ratio i; inf where the load cannot move.
-    Cached within one advice (:func:`advise_duty` clears it first): the fastest passing
-    ratio and the least-RMS ratio scan the same grid."""
+def move_and_rms(d: Drive, path: float, i: float, t_cycle: float) -> tuple[float, float]:
+    """(move time [s], RMS torque over the cycle [N·m]) at ratio i; the RMS is inf where the
+    move does not fit in the cycle, both are inf where the load cannot move (i ≤ m). Cached
+    within one advice (:func:`advise_duty` clears it first): the fastest passing ratio and
+    the least-RMS ratio scan the same grid."""
     ph = cycle(d, path, i, t_cycle)
     if ph is None:
         return math.inf, math.inf
@@ -89,11 +90,11 @@ def fastest_passing(
     ratio lies on the boundary of the passing set, found by bisection from a grid."""
 
     def ok(i: float) -> bool:
-        t, r = _eval(d, path, i, t_cycle)
+        t, r = move_and_rms(d, path, i, t_cycle)
         return t <= t_cycle and r <= rated
 
     if ok(fastest):
-        return fastest, _eval(d, path, fastest, t_cycle)[0]
+        return fastest, move_and_rms(d, path, fastest, t_cycle)[0]
     grid = _grid(d, fastest)
     flags = [ok(i) for i in grid]
     best: tuple[float, float] | None = None
@@ -106,7 +107,7 @@ def fastest_passing(
         if k + 1 < len(grid) and not flags[k + 1]:
             cands.append(_refine(ok, i, grid[k + 1]))
         for c in cands:
-            t = _eval(d, path, c, t_cycle)[0]
+            t = move_and_rms(d, path, c, t_cycle)[0]
             if best is None or t < best[1]:
                 best = (c, t)
     return best
@@ -118,18 +119,20 @@ def least_rms(d: Drive, path: float, t_cycle: float, fastest: float) -> tuple[fl
     at the edge of the fitting ratios (the move filling the whole cycle), bisection on that
     edge."""
     grid = _grid(d, fastest)
-    vals = [_eval(d, path, i, t_cycle)[1] for i in grid]
+    vals = [move_and_rms(d, path, i, t_cycle)[1] for i in grid]
     k = min(range(len(grid)), key=vals.__getitem__)
     best = (grid[k], vals[k])
     for j in (k - 1, k + 1):
         if 0 <= j < len(grid) and math.isinf(vals[j]):
-            edge = _refine(lambda i: _eval(d, path, i, t_cycle)[0] <= t_cycle, grid[k], grid[j])
-            r = _eval(d, path, edge, t_cycle)[1]
+            edge = _refine(
+                lambda i: move_and_rms(d, path, i, t_cycle)[0] <= t_cycle, grid[k], grid[j]
+            )
+            r = move_and_rms(d, path, edge, t_cycle)[1]
             if r < best[1]:
                 best = (edge, r)
     if 0 < k < len(grid) - 1 and math.isfinite(vals[k - 1]) and math.isfinite(vals[k + 1]):
         a, b = math.log(grid[k - 1]), math.log(grid[k + 1])
-        f = lambda x: _eval(d, path, math.exp(x), t_cycle)[1]  # noqa: E731
+        f = lambda x: move_and_rms(d, path, math.exp(x), t_cycle)[1]  # noqa: E731
         x = golden_min(f, a, b, iterations=100)
         if f(x) < best[1]:
             best = (math.exp(x), f(x))
@@ -166,7 +169,7 @@ def fit_cycle(
     whether it passes (the move fits, the RMS torque within the rated one, and with a required
     time the move meets it); where it fails, the reason the infeasible report gives."""
     name, d, i_fast = s.name, s.drive, s.solution.ratio
-    t_fast, rms_fast = _eval(d, path, i_fast, cycle_time_s)
+    t_fast, rms_fast = move_and_rms(d, path, i_fast, cycle_time_s)
     if t_fast > cycle_time_s:
         return CycleFit(t_fast, i_fast, False, "the move does not fit in the cycle"), (
             f"motor {name}: its fastest move takes {t_fast:.4g} s (i = {i_fast:.4g}), "
@@ -359,7 +362,7 @@ def advise_duty(
     ``required_s`` — a required move time: a motor passes only if its move at the cycle's
     ratio also meets it, and the smallest that passes is chosen (MO-06); without it, the
     fastest that passes (DU-01)."""
-    _eval.cache_clear()  # one advice's evaluations are shared, never a previous advice's
+    move_and_rms.cache_clear()  # one advice's evaluations are shared, never a previous advice's
     best, i = choose_for_cycle(solved, rated, path, cycle_time_s, required_s, trace)
     c = cycle_at(best, i, rated[best.name], path, cycle_time_s)
     within = explain_cycle(c, trace)
