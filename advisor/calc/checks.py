@@ -1,7 +1,9 @@
 """A check of a design: a value against its limit, with the margin (≥ 1 passes).
 
-Its own module so that every application can use it without importing the linear chain's
-sizing (the induction motor and screw equations; issue 16)."""
+A design check, not a requirement's: the rules a requirement file must meet are the
+``requirement_checks`` modules of the applications. Its own module so that every application
+can use it without importing the linear chain's sizing (the induction motor and screw
+equations)."""
 
 from typing import TYPE_CHECKING, NamedTuple
 
@@ -10,9 +12,30 @@ if TYPE_CHECKING:  # the citation type; calc imports nothing of the core at run 
 
 
 class Check(NamedTuple):
-    """One strength or function check: ``margin`` ≥ 1 passes. ``value`` is the demand as
-    computed, ``limit`` the capacity; a strength check under a service factor states it in
-    ``factor`` and its margin is limit / (factor·value)."""
+    """One strength or function check of a design.
+
+        margin = limit/value,   or limit/(factor·value) under a service factor
+
+    Attributes
+    ----------
+    id : str
+        Stable id of the check (``motor_rated_torque``, ``travel_time`` …)
+    name : str
+        What is checked, in words
+    value : float
+        The demand as computed [unit]
+    limit : float
+        The capacity it is checked against [unit]
+    unit : str
+        The unit of value and limit (N·m, W, K, h …)
+    margin : float
+        limit over demand [-]; ≥ 1 passes (:attr:`passed`)
+    source : Cite
+        The bibliography ids and the place cited
+    factor : float or None
+        The service factor the demand was multiplied by (a strength check under
+        ``[design] service_factor``); None where none applies
+    """
 
     id: str
     name: str
@@ -20,9 +43,7 @@ class Check(NamedTuple):
     limit: float
     unit: str
     margin: float
-    source: "Cite"  # the bibliography ids and the place cited
-    #: the service factor the demand was multiplied by (a strength check under
-    #: ``[design] service_factor``): margin = limit / (factor·value); None: none applies
+    source: "Cite"
     factor: float | None = None
 
     @property

@@ -92,7 +92,7 @@ def _record_class(name: str) -> type[Record]:
 
 
 @cache
-def _checks(name: str) -> tuple[dict[str, tuple[Any, ...]], tuple[Any, ...]]:
+def _validators(name: str) -> tuple[dict[str, tuple[Any, ...]], tuple[Any, ...]]:
     spec = MODELS[name]
     fields = {k: tuple(_load(c) for c in cs) for k, cs in spec["field_checks"].items()}
     return fields, tuple(_load(c) for c in spec["after"])
@@ -188,7 +188,7 @@ def _table(name: str, data: Any) -> Record:
             values[key] = _default(default)
     if any(k not in values for k in data):  # every field has a value: unknown keys left
         raise Refused("unknown key")
-    field_checks, after = _checks(name)
+    field_checks, after = _validators(name)
     for key, checks in field_checks.items():
         if key in data:  # pydantic checks a value given, not a default
             for check in checks:
@@ -221,7 +221,7 @@ def prepare() -> None:
     ``advisor --batch -j N`` then share them)."""
     for name in MODELS:
         _record_class(name)
-        _checks(name)
+        _validators(name)
 
 
 def compiled(kind: str) -> bool:

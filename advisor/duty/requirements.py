@@ -10,7 +10,7 @@ from typing import Annotated, Literal
 
 from advisor.core.ranges import range_prose
 from advisor.core.requirements import StrictModel, after_check, ask, field_check, number_field
-from advisor.duty import requirement_checks as checks
+from advisor.duty import requirement_checks
 
 STEP = 4  # the wizard step that asks the duty
 
@@ -76,15 +76,15 @@ class LinearSegmentReq(_Segment):
             ge=0,
             le=SEGMENT_FORCE_MAX_N,
             desc="axial load of the segment, N: 0 or "
-            + range_prose("N", ge=checks.SEGMENT_FORCE_MIN_N, le=SEGMENT_FORCE_MAX_N)
+            + range_prose("N", ge=requirement_checks.SEGMENT_FORCE_MIN_N, le=SEGMENT_FORCE_MAX_N)
             + "; default linear.force_N",
             label="force",
             step=STEP,
         ),
     ] = None
 
-    _force_zero_or_range = field_check("force_N", checks.force_zero_or_range)
-    _move_has_distance = after_check(checks.move_has_distance)
+    _force_zero_or_range = field_check("force_N", requirement_checks.force_zero_or_range)
+    _move_has_distance = after_check(requirement_checks.move_has_distance)
 
 
 class RotarySegmentReq(_Segment):
@@ -131,7 +131,7 @@ class RotarySegmentReq(_Segment):
         ),
     ] = None
 
-    _move_has_angle = after_check(checks.move_has_angle)
+    _move_has_angle = after_check(requirement_checks.move_has_angle)
 
 
 class LoadShareReq(StrictModel):
@@ -141,12 +141,12 @@ class LoadShareReq(StrictModel):
             ge=0,
             le=LOAD_SHARE_MAX,
             desc="load as a share of the rated load: 0 (no load) or "
-            + range_prose(ge=checks.LOAD_SHARE_MIN, le=LOAD_SHARE_MAX),
+            + range_prose(ge=requirement_checks.LOAD_SHARE_MIN, le=LOAD_SHARE_MAX),
             label="load share",
             step=STEP,
         ),
     ]
-    _share_zero_or_range = field_check("load_share", checks.share_zero_or_range)
+    _share_zero_or_range = field_check("load_share", requirement_checks.share_zero_or_range)
     time_share: Annotated[
         float,
         number_field(
@@ -224,7 +224,7 @@ class _CycleDuty(StrictModel):
         ask("S9, S10: the loads as shares of the rated load with their time shares", max_length=20),
     ] = []  # noqa: RUF012 - pydantic copies field defaults
 
-    _one_form = after_check(checks.one_form)
+    _one_form = after_check(requirement_checks.one_form)
 
 
 class LinearDutyReq(_CycleDuty):

@@ -4,7 +4,7 @@ from typing import Annotated, Literal
 
 from pydantic import Field
 
-from advisor.applications.linear import requirement_checks as checks
+from advisor.applications.linear import requirement_checks
 from advisor.core.requirements import (
     ApplicationReq,
     DesignReq,
@@ -76,7 +76,7 @@ class LinearReq(StrictModel):
         ),
     ] = None
 
-    _stroke_fits = after_check(checks.stroke_fits)
+    _stroke_fits = after_check(requirement_checks.stroke_fits)
 
 
 class InductionMotorReq(StrictModel):
@@ -85,7 +85,7 @@ class InductionMotorReq(StrictModel):
         float, number_field(gt=0, desc="supply frequency, Hz", label="Supply frequency", step=3)
     ] = 50.0
 
-    _fifty = field_check("supply_frequency_Hz", checks.fifty)
+    _fifty = field_check("supply_frequency_Hz", requirement_checks.fifty)
 
 
 class ScrewThrustReq(StrictModel):
@@ -144,7 +144,7 @@ class ScrewThrustReq(StrictModel):
         ),
     ] = 68.0
 
-    _complete = after_check(checks.thrust_complete)
+    _complete = after_check(requirement_checks.thrust_complete)
 
 
 class ScrewReq(StrictModel):
@@ -184,7 +184,7 @@ class ScrewReq(StrictModel):
     screw_steel: Annotated[Literal["45", "40X"], Field(description="screw steel grade")] = "45"
     thrust: ScrewThrustReq = ScrewThrustReq.model_construct()
 
-    _thread_form = field_check("thread", checks.thread_form)
+    _thread_form = field_check("thread", requirement_checks.thread_form)
 
 
 class LinearRequirements(StrictModel):

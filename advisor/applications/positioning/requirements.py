@@ -9,7 +9,7 @@ from typing import Annotated, Literal
 
 from pydantic import Field
 
-from advisor.applications.positioning import requirement_checks as checks
+from advisor.applications.positioning import requirement_checks
 from advisor.core.ranges import range_prose
 from advisor.core.requirements import (
     ApplicationReq,
@@ -95,7 +95,7 @@ class PositioningReq(StrictModel):
             ge=0,
             le=LOAD_MAX,
             desc="load inertia J_p, 0 (none) or "
-            + range_prose("kg·m²", ge=checks.LOAD_INERTIA_MIN_KGM2, le=LOAD_MAX),
+            + range_prose("kg·m²", ge=requirement_checks.LOAD_INERTIA_MIN_KGM2, le=LOAD_MAX),
             label="Load inertia",
             step=1,
         ),
@@ -106,7 +106,7 @@ class PositioningReq(StrictModel):
             ge=0,
             le=LOAD_MAX,
             desc="load torque M_p, 0 (none) or "
-            + range_prose("N·m", ge=checks.LOAD_TORQUE_MIN_NM, le=LOAD_MAX),
+            + range_prose("N·m", ge=requirement_checks.LOAD_TORQUE_MIN_NM, le=LOAD_MAX),
             label="Load torque",
             step=1,
         ),
@@ -133,11 +133,13 @@ class PositioningReq(StrictModel):
         ),
     ] = []  # noqa: RUF012 - pydantic copies field defaults
 
-    _inertia_zero_or_range = field_check("load_inertia_kgm2", checks.inertia_zero_or_range)
+    _inertia_zero_or_range = field_check(
+        "load_inertia_kgm2", requirement_checks.inertia_zero_or_range
+    )
 
-    _torque_zero_or_range = field_check("load_torque_Nm", checks.torque_zero_or_range)
+    _torque_zero_or_range = field_check("load_torque_Nm", requirement_checks.torque_zero_or_range)
 
-    _unique_names = after_check(checks.unique_names)
+    _unique_names = after_check(requirement_checks.unique_names)
 
 
 class PositioningRequirements(StrictModel):
@@ -154,6 +156,6 @@ class PositioningRequirements(StrictModel):
         Field(description="the [duty] table: cycle_time_s (optional: the move repeated)"),
     ] = None
 
-    _rated_for_duty = after_check(checks.rated_for_duty)
+    _rated_for_duty = after_check(requirement_checks.rated_for_duty)
 
-    _time_or_motors = after_check(checks.time_or_motors)
+    _time_or_motors = after_check(requirement_checks.time_or_motors)

@@ -14,7 +14,7 @@ from typing import Annotated, Literal
 
 from pydantic import Field
 
-from advisor.applications.rotary import requirement_checks as checks
+from advisor.applications.rotary import requirement_checks
 from advisor.core.ranges import range_prose
 from advisor.core.requirements import (
     ApplicationReq,
@@ -140,7 +140,7 @@ class OutputLoadReq(StrictModel):
         ),
     ] = None
 
-    _moment_needs_pair = after_check(checks.moment_needs_pair)
+    _moment_needs_pair = after_check(requirement_checks.moment_needs_pair)
 
 
 class DriveReq(StrictModel):
@@ -167,7 +167,7 @@ class DriveReq(StrictModel):
         ),
     ] = None
 
-    _bus_rises = after_check(checks.bus_rises)
+    _bus_rises = after_check(requirement_checks.bus_rises)
 
 
 class RotaryDesignReq(DesignReq):
@@ -221,13 +221,13 @@ class MagnetLossPoint(StrictModel):
             ge=0,
             le=MAGNET_LOSS_MAX_W,
             desc="eddy-current loss in the magnets, 0 (none) or "
-            + range_prose("W", ge=checks.MAGNET_LOSS_MIN_W, le=MAGNET_LOSS_MAX_W)
+            + range_prose("W", ge=requirement_checks.MAGNET_LOSS_MIN_W, le=MAGNET_LOSS_MAX_W)
             + " (a power law runs through two losses; below a microwatt its exponent is not "
             "finite)",
         ),
     ]
 
-    _loss_zero_or_range = field_check("loss_W", checks.magnet_loss_zero_or_range)
+    _loss_zero_or_range = field_check("loss_W", requirement_checks.magnet_loss_zero_or_range)
 
 
 class ReferenceMotor(StrictModel):
@@ -278,7 +278,7 @@ class ReferenceMotor(StrictModel):
         MagnetLossPoint.model_construct(speed_rpm=10000.0, loss_W=100.0),
     ]
 
-    _one_loss_per_speed = after_check(checks.one_loss_per_speed)
+    _one_loss_per_speed = after_check(requirement_checks.one_loss_per_speed)
 
 
 class BldcMotorReq(StrictModel):
@@ -319,7 +319,7 @@ class BldcMotorReq(StrictModel):
     ] = None
     reference: ReferenceMotor = ReferenceMotor.model_construct()
 
-    _each_speed_once = field_check("candidate_speeds_rpm", checks.each_speed_once)
+    _each_speed_once = field_check("candidate_speeds_rpm", requirement_checks.each_speed_once)
 
 
 class GearboxReq(StrictModel):
@@ -390,4 +390,4 @@ class RotaryRequirements(StrictModel):
         Field(description="the [duty] table: segments with cycles_per_hour, or duty_type"),
     ] = None
 
-    _reducer_reduces = after_check(checks.reducer_reduces)
+    _reducer_reduces = after_check(requirement_checks.reducer_reduces)

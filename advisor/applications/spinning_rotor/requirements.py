@@ -5,7 +5,7 @@ from typing import Annotated, Any
 
 from pydantic import Field
 
-from advisor.applications.spinning_rotor import requirement_checks as checks
+from advisor.applications.spinning_rotor import requirement_checks
 from advisor.applications.spinning_rotor.requirement_checks import (
     MIN_SLEW_RATE_rad_s,
     RotorDerived,
@@ -75,7 +75,7 @@ class AeroReq(StrictModel):
         float, _rng(1e-6, 0.1, "kinematic viscosity of that gas ν, m²/s")
     ] = 1.516e-5
 
-    _one_way = after_check(checks.aero_one_way)
+    _one_way = after_check(requirement_checks.aero_one_way)
 
 
 class RotorReq(RotorDerived, StrictModel):
@@ -171,9 +171,9 @@ class RotorReq(RotorDerived, StrictModel):
     ] = None
     aero: Annotated[AeroReq, Field(description="the [rotor.aero] table: loss_W or cup geometry")]
 
-    _slew_or_none = field_check("slew_rate_rad_s", checks.slew_or_none)
+    _slew_or_none = field_check("slew_rate_rad_s", requirement_checks.slew_or_none)
 
-    _momentum_or_inertia = after_check(checks.momentum_or_inertia)
+    _momentum_or_inertia = after_check(requirement_checks.momentum_or_inertia)
 
 
 class SpinningRotorRequirements(StrictModel):
