@@ -168,14 +168,38 @@ def test_covering_by_table_pattern_and_name():
     assert covering(("screw", "lubrication"), covers, ids) == []
 
 
-def test_the_loss_plot_draws_points_not_a_line_between_candidates(reports):
+def test_the_loss_plot_draws_the_reports_curve_and_the_candidates_as_points(reports):
+    """The losses against speed are the report's own curve (design.motor.loss_curve, the U
+    the speed choice rests on), not a straight line between candidates: lines through the
+    curve's points, the candidates as points on it."""
     from advisor.applications.rotary.plots import motor_losses
     from advisor.core.report import plain
 
-    plot = motor_losses(plain(reports["rudder_actuator.toml"]))
-    assert {line.style for line in plot.lines} == {"points"}
+    doc = plain(reports["rudder_actuator.toml"])
+    plot = motor_losses(doc)
+    curve = doc["design"]["motor"]["loss_curve"]
+    lines = {line.label: line for line in plot.lines}
+    assert lines["total"].style == "line" and lines["total"].x == curve["speed_rpm"]
+    assert len(curve["speed_rpm"]) > 30  # a curve, not two points
+    total = dict(zip(curve["speed_rpm"], curve["total_W"], strict=True))
+    points = lines["candidates (total)"]
+    assert points.style == "points"
+    for n, loss in zip(points.x, points.y, strict=True):
+        assert total[n] == pytest.approx(loss, rel=1e-12)  # the candidates lie on the curve
+    u = curve["total_W"]
+    assert min(u) < u[0] and min(u) < u[-1]  # U-shaped: the optimum lies inside
     assert [label for _, label in plot.vlines][-1].startswith("loss optimum 4055")
     assert plot.hlines and plot.hlines[0][1].startswith("frame's limit 228.4")
+    assert set(curve["limit_W"]) == {doc["design"]["motor"]["loss_limit_W"]}
+
+
+def test_without_a_curve_the_loss_plot_draws_points_only(reports):
+    from advisor.applications.rotary.plots import motor_losses
+    from advisor.core.report import plain
+
+    doc = plain(reports["rudder_actuator.toml"])
+    del doc["design"]["motor"]["loss_curve"]
+    assert {line.style for line in motor_losses(doc).lines} == {"points"}
 
 
 @pytest.mark.parametrize("fmt", ["html", "md"])

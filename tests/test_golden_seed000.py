@@ -117,6 +117,27 @@ def test_optimum_side_by_side_with_warnings(report):
     assert 1000 < sw["feasible"] <= sw["configurations"] < 10_000
 
 
+def test_the_loss_curve_is_in_the_report(report):
+    """Seed 000's choice of speed rests on the U of its losses against speed (eq. (10)): the
+    report carries that curve in [curves], through every candidate, with the frame's limit;
+    its least total lies near eq. (10)'s optimum, and 5000 rpm carries the paper's ≈ 230 W."""
+    m = report["design"]["motor"]
+    assert "loss_curve" not in m  # all curve data: in [curves], not in the design
+    curve = report["curves"]["design.motor.loss_curve"]
+    total = dict(zip(curve["speed_rpm"], curve["total_W"], strict=True))
+    for c in m["candidates"]:
+        assert total[c["speed_rpm"]] == pytest.approx(c["losses_W"]["total"], rel=1e-12)
+    assert total[5000.0] == pytest.approx(228.42, abs=0.01)
+    n_min = min(total, key=total.get)
+    assert n_min == pytest.approx(m["optimum_speed_rpm"], rel=0.1)
+    assert min(total.values()) < total[min(total)] and min(total.values()) < total[max(total)]
+    assert set(curve["limit_W"]) == {m["loss_limit_W"]}
+    parts = zip(
+        curve["ohmic_W"], curve["iron_W"], curve["magnets_W"], curve["total_W"], strict=True
+    )
+    assert all(o + i + g == pytest.approx(t, rel=1e-5) for o, i, g, t in parts)
+
+
 def test_fig1_data(report):
     f = report["curves"]["design.gearbox.fig1"]  # the archive keeps curves at the end
     assert f["rows"] == [2, 3, 4, 6, 8, 10, 12]

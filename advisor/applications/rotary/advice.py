@@ -16,6 +16,7 @@ from advisor.applications.rotary.candidates import (
     adopted_stages,
     device_efficiency,
     frame_model,
+    loss_curve,
     reducer_output_torque,
     speed_candidate,
     stage_count,
@@ -29,6 +30,7 @@ from advisor.applications.rotary.gearbox import (
 )
 from advisor.applications.rotary.report import (
     BldcMotorOut,
+    LossCurveOut,
     LossesOut,
     PoleSlotOut,
     RotaryDesignOut,
@@ -359,8 +361,10 @@ def advise_rotary(req: Requirements, cat: Catalogs, trace: Trace):
     from advisor.applications.rotary.frames import frame_out
 
     listed = fit.reducible if req.duty is None else fit.passing
+    curve = loss_curve(req, fit.model, params, [c.speed_rpm for c in listed], fit.limit)
     motor_out = _motor_out(working, listed, fit).replace(
-        frame=frame_out(choice, fit.model.ref, data)
+        frame=frame_out(choice, fit.model.ref, data),
+        loss_curve=LossCurveOut.make(**curve._asdict()),
     )
     gearbox = gearbox_out(gear, chosen.total_ratio, req.gearbox.rolling_body, params.k_rb)
     rest = _beyond_the_point(req, cat, trace, gear, working, fit, steel_cite, sf)

@@ -211,3 +211,60 @@ def optimum(
         return None
     ratios, rows = found
     return reducer.evaluate(ratios, [rows] + [2] * (len(ratios) - 1), params)
+
+
+#: Points of the loss curve between a quarter of the lowest candidate speed and twice the
+#: highest (log-spaced), besides the candidates themselves.
+CURVE_POINTS = 40
+
+
+class LossCurve(NamedTuple):
+    """The losses against speed [rpm, W], the frame's limit beside them [W], and a catalog
+    motor's rated speed, above which it states no losses [rpm] (None for other frames)."""
+
+    speed_rpm: list[float]
+    ohmic_W: list[float]
+    iron_W: list[float]
+    magnets_W: list[float]
+    total_W: list[float]
+    limit_W: list[float]
+    speed_limit_rpm: float | None
+
+
+def curve_speeds(candidates_rpm: list[float], points: int = CURVE_POINTS) -> list[float]:
+    """The candidate speeds and ``points`` log-spaced speeds from a quarter of the lowest to
+    twice the highest, sorted."""
+    lo, hi = min(candidates_rpm) / 4, max(candidates_rpm) * 2
+    grid = (lo * (hi / lo) ** (k / (points - 1)) for k in range(points))
+    return sorted({*candidates_rpm, *grid})
+
+
+def loss_curve(
+    req: Requirements,
+    model: FrameModel,
+    params: reducer.ReducerParams,
+    candidates_rpm: list[float],
+    limit_W: float,
+) -> LossCurve:
+    """The losses of the frame rewound for each speed of :func:`curve_speeds`, computed as
+    the candidates are (:func:`speed_candidate`: seed 000, eqs. (4), (5), (9), behind the
+    reducer the design would adopt at each ratio), so the curve passes through every
+    candidate; the U of eq. (10) the speed choice rests on. A speed no reducer realises has
+    no torque and no losses and is left out; a catalog motor's curve ends at its rated
+    speed."""
+    ref = model.ref
+    speed_limit = ref.speed_rpm if getattr(ref, "kind", "") == "catalog" else None
+    points = [
+        c
+        for c in (speed_candidate(n, req, model, params) for n in curve_speeds(candidates_rpm))
+        if c.split and (speed_limit is None or c.speed_rpm <= speed_limit * (1 + 1e-9))
+    ]
+    return LossCurve(
+        speed_rpm=[c.speed_rpm for c in points],
+        ohmic_W=[c.losses_W.ohmic for c in points],
+        iron_W=[c.losses_W.iron for c in points],
+        magnets_W=[c.losses_W.magnets for c in points],
+        total_W=[c.losses_W.total for c in points],
+        limit_W=[limit_W] * len(points),
+        speed_limit_rpm=speed_limit,
+    )

@@ -44,6 +44,21 @@ class SteelOut(ReportTable):
     estimated: list[str]
 
 
+class LossCurveOut(ReportTable):
+    """The motor's losses against its speed, the frame rewound for each speed behind the
+    reducer the design would adopt there (seed 000, eqs. (4), (5), (9)): the curve the speed
+    choice (BL-02) rests on, through every candidate, with the frame's loss limit."""
+
+    speed_rpm: list[float]
+    ohmic_W: list[float]
+    iron_W: list[float]
+    magnets_W: list[float]
+    total_W: list[float]
+    limit_W: list[float]  # what the frame's cooling carries, at every speed
+    # a catalog motor's rated speed: it states no losses above it, and the curve ends there
+    speed_limit_rpm: float | None = None
+
+
 class BldcMotorOut(ReportTable):
     kind: str
     speed_rpm: float
@@ -61,6 +76,7 @@ class BldcMotorOut(ReportTable):
     candidates: list[SpeedCandidateOut]
     pole_slot_options: list[PoleSlotOut]
     frame: "FrameOut | None" = None
+    loss_curve: LossCurveOut | None = None
 
 
 class StageOut(ReportTable):

@@ -53,48 +53,23 @@ def _frame_lines(m) -> list[tuple[str, str]]:
     ]
 
 
-def loss_curve(report, points: int = 40) -> list[dict]:
-    """The losses of the reference motor rewound for each speed from a quarter of the lowest
-    candidate to twice the highest, computed exactly as the candidates are (seed 000, eqs.
-    (4), (5), (9); the reducer split by the rules at each speed). Empty when the catalog
-    steel differs from the report's (a user catalog the view does not know)."""
-    from advisor.applications.rotary.candidates import frame_model, speed_candidate
-    from advisor.calc import reducer as rd
-    from advisor.calc import wavegear as wg
-    from advisor.core.reading import parse_requirements
-    from catalogs import load_catalogs
-
-    req = parse_requirements(report.requirements)
-    ref, gb = req.motor.reference, req.gearbox
-    frame = getattr(report.design.motor, "frame", None)
-    if frame is not None and frame.kind != "reference":  # the frame taken
-        ref = load_catalogs().bldc_frame(frame.name)
-        if ref is None:  # a catalog motor of a directory the view does not know
-            return []
-    model = frame_model(req, load_catalogs(), ref)
-    if abs(model.steel.p15_50_W_kg - report.design.motor.steel.p15_50_W_kg) > 1e-9:
+def loss_curve(report) -> list[dict]:
+    """The report's loss curve (``design.motor.loss_curve``: seed 000, eqs. (4), (5), (9),
+    computed by the advice as the candidates are) as one dict a speed: speed_rpm, ohmic,
+    iron, magnets, total [rpm, W]. Empty for a report without one."""
+    curve = getattr(report.design.motor, "loss_curve", None)
+    if curve is None:
         return []
-    from advisor.calc.service_factor import service_factor
-
-    params = rd.ReducerParams(  # sized as the advice sizes it (× f_B)
-        torque_Nm=req.rotary.torque_Nm * service_factor(req.design).value,
-        k_rb=wg.ROLLING_BODY_FACTOR[gb.rolling_body],
-        stage_efficiency=gb.stage_efficiency,
-        density_kg_m3=gb.density_kg_m3,
-        fill_factor=gb.fill_factor,
-    )
-    speeds = [c.speed_rpm for c in report.design.motor.candidates]
-    lo, hi = min(speeds) / 4, max(speeds) * 2
-    grid = sorted({*speeds, *(lo * (hi / lo) ** (k / (points - 1)) for k in range(points))})
-    out = []
-    for n in grid:
-        c = speed_candidate(n, req, model, params)
-        if c.split:  # a speed no reducer of the rules realises has no torque, no losses
-            out.append({"speed_rpm": n, **c.losses_W._asdict()})
-    return out
+    parts = zip(curve.ohmic_W, curve.iron_W, curve.magnets_W, curve.total_W, strict=True)
+    return [
+        {"speed_rpm": n, "ohmic": o, "iron": i, "magnets": m, "total": t}
+        for n, (o, i, m, t) in zip(curve.speed_rpm, parts, strict=True)
+    ]
 
 
 def plots(report) -> list[PlotData]:
+    """The motor's losses against speed (the report's curve, the candidates and the working
+    point on it, the frame's limit), seed 000's fig. 1, and the duty cycle's plots."""
     d = report.design
     cands = sorted(d.motor.candidates, key=lambda c: c.speed_rpm)
     curve = loss_curve(report) or [
@@ -102,20 +77,12 @@ def plots(report) -> list[PlotData]:
     ]
     speeds = [c["speed_rpm"] for c in curve]
     series = [
-        (name, speeds, [c[key] for c in curve])
-        for name, key in (
-            ("ohmic", "ohmic"),
-            ("iron", "iron"),
-            ("magnets", "magnets"),
-            ("total", "total"),
-        )
+        (name, speeds, [c[name] for c in curve]) for name in ("ohmic", "iron", "magnets", "total")
     ]
     series += [
         (f"candidate {c.speed_rpm:g} rpm (total)", [c.speed_rpm], [c.losses_W.total]) for c in cands
     ]
-    series.append(
-        ("working point", [d.motor.speed_rpm], [d.motor.losses_W.total]),
-    )
+    series.append(("working point", [d.motor.speed_rpm], [d.motor.losses_W.total]))
     series.append(("frame's limit", [speeds[0], speeds[-1]], [d.motor.loss_limit_W] * 2))
     main = PlotData("Motor losses against speed", "motor speed, rpm", "loss, W", series)
     fig = d.gearbox.fig1
