@@ -1,6 +1,10 @@
 """The linear actuator advice: induction motor + sliding screw–nut (seed 001).
 
 Orchestration only: the rules in ``rules/`` choose, the functions in ``advisor/calc`` compute.
+:func:`advise_linear` reads as its steps; the joint choice of thread and motor is in
+:mod:`.choice`, the motor's plan in :mod:`.motor`, the duty cycle in :mod:`.duty`, the
+screw's whirling, thrust-bearing and nut checks in :mod:`.screw_checks`, and the report
+tables built from the evaluations in :mod:`.tables`.
 """
 
 import math
@@ -322,6 +326,30 @@ def _choose_drive(
     return chosen, screens, options
 
 
+def _holding_device(
+    req: Requirements,
+    ev: ThreadEvaluation,
+    thread: str,
+    chain: Drive,
+    demand: ScrewDemand,
+    trace: Trace,
+):
+    """The one-way device of a drive that must hold its load (seed 004), sized for the
+    torque that passes it: the screw's (thread and thrust face), the motor's before the
+    device's own loss."""
+    eta_d = chain.passage.efficiency if chain.passage is not None else 1.0
+    torque = chain.at_motor.torque_Nm * eta_d
+    return _one_way(req, trace, ev, thread, demand.material.friction_low, torque)
+
+
+def _paper_friction_warning(ev: ThreadEvaluation) -> str:
+    """The paper's friction formula in use: the standard one's torque beside it."""
+    return (
+        "friction_model = 'paper' uses seed 001's f/cos(ψ/2); the standard f/cos(α/2) "
+        f"gives {ev.torque_standard_Nm:.4g} N·m instead of {ev.torque_paper_Nm:.4g} N·m."
+    )
+
+
 def advise_linear(
     req: Requirements, cat: Catalogs, trace: Trace
 ) -> tuple[LinearDesignOut, list[Check], list[str]]:
@@ -345,18 +373,10 @@ def advise_linear(
     chain, duty, duty_checks, warnings = _size_for_duty(req, ev, chain, cat, trace)
     one_way = None
     if hold:
-        # the torque that passes the device: the screw's (thread and thrust face), the
-        # motor's before the device's own loss
-        eta_d = chain.passage.efficiency if chain.passage is not None else 1.0
-        low = demand.material.friction_low
-        torque = chain.at_motor.torque_Nm * eta_d
-        one_way, device_warnings = _one_way(req, trace, ev, chosen.label, low, torque)
+        one_way, device_warnings = _holding_device(req, ev, chosen.label, chain, demand, trace)
         warnings += device_warnings
     if s.friction_model == "paper":
-        warnings.append(
-            "friction_model = 'paper' uses seed 001's f/cos(ψ/2); the standard f/cos(α/2) "
-            f"gives {ev.torque_standard_Nm:.4g} N·m instead of {ev.torque_paper_Nm:.4g} N·m."
-        )
+        warnings.append(_paper_friction_warning(ev))
     advisor_choice = trace.find("SCR-04").inputs.get("advisor_choice")
     plan = chain.plan
     sel = plan.evaluations[plan.selected.rated_power_kW]
