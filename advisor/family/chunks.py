@@ -85,28 +85,51 @@ class ChunkResult(NamedTuple):
     seconds: float  # time spent advising, for the cost model
 
 
+class MemberCells(NamedTuple):
+    """A member's cells that every one of its rows repeats, written once per chunk."""
+
+    head: tuple[str, str]  # its name and application
+    #: per axis key of the family: this member's axis number and its values as cells
+    #: (None: not an axis of this member, a blank cell)
+    axes: list[tuple[int, list[str]] | None]
+
+
+def member_cells(family: Family) -> list[MemberCells]:
+    keys = family.axis_keys()
+    out = []
+    for m in family.members:
+        pos = {a.key: i for i, a in enumerate(m.axes)}
+        axes = [
+            (pos[k], [cell(v) for v in m.axes[pos[k]].values]) if k in pos else None for k in keys
+        ]
+        out.append(MemberCells((cell(m.name), cell(m.application)), axes))
+    return out
+
+
 def run_chunk(
     family: Family, number: int, start: int, stop: int, catalog_dir: str | None, reports: bool
 ) -> ChunkResult:
     """Advise variants ``start`` … ``stop - 1``."""
     t0 = time.perf_counter()
-    keys = family.axis_keys()
+    cells = member_cells(family)
+    blank = [""] * len(COLUMNS)
     rows, texts = [], []
     for index in range(start, stop):
-        member, coords, req = family.variant(index)
-        o = advise_one(req, catalog_dir, with_text=reports)
-        axis = {a.key: a.values[k] for a, k in zip(member.axes, coords, strict=True)}
-        outputs = key_outputs(o.report) if o.report is not None else {}
+        n, local = family.locate(index)
+        member = family.members[n]
+        coords = member.coords(local)
+        o = advise_one(member.requirement(coords), catalog_dir, with_text=reports)
+        mc = cells[n]
+        outputs = key_outputs(o.report) if o.report is not None else None
         rows.append(
             [
                 str(index),
-                cell(member.name),
-                cell(member.application),
-                *(cell(axis.get(k)) for k in keys),
+                *mc.head,
+                *("" if ax is None else ax[1][coords[ax[0]]] for ax in mc.axes),
                 o.status,
                 str(int(o.exit_code)),
                 cell(o.reason),
-                *(cell(outputs.get(c)) for c in COLUMNS),
+                *(blank if outputs is None else [cell(outputs.get(c)) for c in COLUMNS]),
             ]
         )
         if o.text is not None:
