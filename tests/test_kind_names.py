@@ -18,9 +18,9 @@ ADVISOR = Path(__file__).resolve().parent.parent / "advisor"
 #: Kinds that are also ordinary words of the domain ("linear" scale): a literal of them is
 #: a finding only where it is used as a kind.
 ORDINARY = {"linear"}
-#: Where kinds are named by design: the applications themselves, and the compiled
-#: validator, generated from their requirement models.
-EXEMPT = ("applications/", "core/requirement_spec.py")
+#: Where kinds are named by design: the applications themselves, and the files generated
+#: from their requirement models (the compiled validator, the datasheet's field labels).
+EXEMPT = ("applications/", "core/requirement_spec.py", "datasheet/compiled_labels.py")
 
 
 def _kind_context(node: ast.Constant, parent: ast.AST) -> bool:

@@ -173,7 +173,7 @@ HOIST = registry.Application(
     pipeline=advise_hoist,
     headline=hoist_headline,
     views=hoist_views(),
-    plots=(rope_force,),
+    plots=SimpleNamespace(DATASHEET_PLOTS=(rope_force,)),
     family=SimpleNamespace(key_outputs=hoist_outputs, MEANING={"mass_kg": "the motor's"}),
     steps=("Load and speed", "", "", "Duty cycle"),
 )

@@ -39,8 +39,9 @@ class Application(NamedTuple):
     # "module:NAME", {requirement path: check id patterns}: which checks cover a requirement
     # (the datasheet's required-vs-achieved table; see :func:`covering`)
     covers: Any = None
-    # "module:NAME", a tuple of functions (report's plain data) -> Plot or None: the
-    # datasheet's plots of this application (:mod:`advisor.datasheet.plots`)
+    # "module" with DATASHEET_PLOTS, a tuple of functions (report's plain data) -> Plot or
+    # None, the application's own datasheet plots, and optionally motor_limits(doc) and
+    # working_point(doc) for the shared motor envelope (:mod:`advisor.datasheet.plots`)
     plots: Any = None
     # "module" with key_outputs(report's plain data) -> {column: value} and MEANING
     # ({column: what it means here}): the application's columns of a family study's rows
@@ -143,10 +144,12 @@ def covers(kind: str) -> dict[str, tuple[str, ...]]:
     return dict(load(app.covers)) if app.covers else {}
 
 
-def datasheet_plots(kind: str) -> tuple[Any, ...]:
-    """The datasheet's plot functions of an application (empty where it registers none)."""
+def datasheet(kind: str) -> Any:
+    """The module (or object) of an application's datasheet plots (``DATASHEET_PLOTS``,
+    ``motor_limits``, ``working_point``; see :mod:`advisor.datasheet.plots`), None where it
+    registers none."""
     app = application(kind)
-    return tuple(load(app.plots)) if app.plots else ()
+    return load(app.plots) if app.plots else None
 
 
 def family_outputs(kind: str) -> Any:

@@ -9,7 +9,6 @@ creator, ids salted per plot (``svg.hashsalt``) instead of random, text kept as 
 
 import io
 import itertools
-import math
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any
@@ -139,56 +138,6 @@ def duty_speed(doc: dict) -> Plot | None:
     )
 
 
-def _motor_limits(doc: dict) -> tuple[list[Line], list[Line]] | None:
-    """The continuous and peak torque–speed limits of the design's motor, from whichever
-    data the report holds: a catalog motor's M(n) with its rated point, a frame's rated
-    torque at its speed with the cycle's peak limit, or the listed motor the design chose."""
-    motor = table_at(doc, "design", "motor")
-    model = motor.get("model")
-    curve = next(
-        (
-            c["curve"]
-            for c in motor.get("candidates") or []
-            if c.get("model") == model and isinstance(at(c, "curve", "speed_rpm"), list)
-        ),
-        None,
-    )
-    peak_limit = at(doc, "design", "duty", "peak_torque_limit_Nm")
-    if curve is not None and "rated_torque_Nm" in motor:
-        n_r, m_r = motor.get("rated_speed_rpm", max(curve["speed_rpm"])), motor["rated_torque_Nm"]
-        return (
-            [Line(f"continuous: rated {m_r:.4g} N·m", [0.0, n_r, n_r], [m_r, m_r, 0.0])],
-            [Line(f"peak: M(n) of {model}", curve["speed_rpm"], curve["torque_Nm"])],
-        )
-    if "torque_Nm" in motor and "speed_rpm" in motor and "candidates" in motor:
-        n_r, m_r = motor["speed_rpm"], motor["torque_Nm"]
-        cont = [
-            Line(f"continuous: {m_r:.4g} N·m to {n_r:.4g} rpm", [0.0, n_r, n_r], [m_r, m_r, 0.0])
-        ]
-        peak = []
-        if isinstance(peak_limit, int | float):
-            peak = [
-                Line(f"peak: {peak_limit:.4g} N·m", [0.0, n_r, n_r], [peak_limit, peak_limit, 0.0])
-            ]
-        return cont, peak
-    from advisor.datasheet.review import _listed
-
-    chosen = at(doc, "design", "motion", "motor")
-    row = _listed(doc.get("requirements", {}), chosen) if isinstance(chosen, str) else None
-    if row and "speed_rad_s" in row:
-        n0 = row["speed_rad_s"] * 30.0 / math.pi
-        cont = []
-        if "rated_torque_Nm" in row:
-            m_r = row["rated_torque_Nm"]
-            cont = [Line(f"continuous: rated {m_r:.4g} N·m", [0.0, n0, n0], [m_r, m_r, 0.0])]
-        peak = []
-        if "accel_torque_Nm" in row:
-            m_a = row["accel_torque_Nm"]
-            peak = [Line(f"peak: M_λ {m_a:.4g} N·m", [0.0, n0, n0], [m_a, m_a, 0.0])]
-        return (cont, peak) if cont or peak else None
-    return None
-
-
 def _mean_speed(phase: dict) -> float | None:
     """Where a phase sits on the speed axis: a ramp (its start and end speeds given) at its
     mean speed, where its torque acts on average; a steady phase at its speed. At its top
@@ -204,10 +153,14 @@ def _mean_speed(phase: dict) -> float | None:
 def envelope(doc: dict) -> Plot | None:
     """The motor's continuous and peak torque–speed envelope with the operating points the
     report states: each phase of the cycle (at its speed, the magnitude of its torque), the
-    RMS torque at the mean speed and the peak torque; without a cycle, the working point."""
+    RMS torque at the mean speed and the peak torque; without a cycle, the working point.
+    The limits and the working point are the application's (its datasheet module's
+    ``motor_limits(doc)`` → (continuous lines, peak lines) and ``working_point(doc)`` →
+    (rpm, N·m)); an application without ``motor_limits`` has no envelope."""
     from advisor.datasheet.review import phases_of
 
-    limits = _motor_limits(doc)
+    hooks = application_hooks(doc)
+    limits = hooks.motor_limits(doc) if hasattr(hooks, "motor_limits") else None
     if limits is None:
         return None
     cont, peak = limits
@@ -225,12 +178,10 @@ def envelope(doc: dict) -> Plot | None:
     if isinstance(m_pk, int | float) and pts:
         n_pk = max(pts, key=lambda p: p[1])[0]
         lines.append(Line(f"peak {m_pk:.4g} N·m", [n_pk], [m_pk], "marker"))
-    if not phases:
-        motor = table_at(doc, "design", "motor")
-        n = motor.get("working_speed_rpm", motor.get("speed_rpm"))
-        m = at(doc, "design", "screw", "torque_Nm") or motor.get("torque_Nm")
-        if isinstance(n, int | float) and isinstance(m, int | float):
-            lines.append(Line(f"working point {n:.4g} rpm, {m:.4g} N·m", [n], [m], "marker"))
+    point = hooks.working_point(doc) if hasattr(hooks, "working_point") else None
+    if not phases and point is not None:
+        n, m = point
+        lines.append(Line(f"working point {n:.4g} rpm, {m:.4g} N·m", [n], [m], "marker"))
     return Plot(
         "motor-envelope",
         "Motor torque–speed envelope and operating points",
@@ -246,20 +197,20 @@ FIRST = (envelope,)
 LAST = (duty, duty_speed, duty_thermal)
 
 
-def application_plots(doc: dict) -> tuple[Callable[[dict], Plot | None], ...]:
-    """The plot functions the report's application registers (none for a kind the registry
-    does not know, e.g. a report file of an application removed since)."""
+def application_hooks(doc: dict) -> Any:
+    """The datasheet module of the report's application (its registry entry's ``plots``):
+    ``DATASHEET_PLOTS``, and where it has them ``motor_limits`` and ``working_point``. None
+    for a kind the registry does not know (a report file of an application removed since)."""
     from advisor.core import registry
 
     kind = at(doc, "report", "application")
-    if kind not in registry.kinds():
-        return ()
-    return registry.datasheet_plots(kind)
+    return registry.datasheet(kind) if kind in registry.kinds() else None
 
 
 def plots(doc: dict) -> list[Plot]:
     """Every plot the report has data for, in a fixed order."""
-    funcs = (*FIRST, *application_plots(doc), *LAST)
+    own = getattr(application_hooks(doc), "DATASHEET_PLOTS", ())
+    funcs: tuple[Callable[[dict], Plot | None], ...] = (*FIRST, *own, *LAST)
     return [p for p in (f(doc) for f in funcs) if p is not None]
 
 
