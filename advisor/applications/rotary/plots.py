@@ -1,7 +1,7 @@
-"""The rotary actuator's datasheet plots (seed 000): the motor's losses at the candidate
-speeds, the reducer's design space and fig. 1.
-Each reads its own keys of the report's plain data; the datasheet draws them
-(:mod:`advisor.datasheet.plots`) after the motor's envelope and before the duty cycle's."""
+"""The rotary actuator's datasheet plots (seed 000): the motor's losses against speed, the
+reducer's design space and fig. 1. Each reads its own keys of the report's plain data; the
+datasheet draws them (:mod:`advisor.datasheet.plots`) after the motor's envelope and before
+the duty cycle's."""
 
 from typing import Any
 
@@ -9,29 +9,45 @@ from advisor.datasheet.plots import Line, Plot, at, table_at
 
 
 def motor_losses(doc: dict) -> Plot | None:
-    """The BLDC motor's losses at each candidate speed, the chosen one marked (seed 000)."""
+    """The BLDC motor's losses against speed (seed 000): the report's loss curve
+    (``design.motor.loss_curve``, the U of eq. (10) the speed choice rests on) as lines,
+    the candidate speeds' totals as points, the chosen speed, the loss optimum and the
+    frame's limit marked. A report without the curve shows the candidates as points only
+    (a straight line between two of them would draw a curve nobody computed)."""
     cands = [c for c in at(doc, "design", "motor", "candidates") or [] if "losses_W" in c]
     if not cands:
         return None
     cands = sorted(cands, key=lambda c: c["speed_rpm"])
     speeds = [c["speed_rpm"] for c in cands]
-    # the candidates are points of a curve the report does not hold: a straight line
-    # between two of them would draw a curve nobody computed
-    lines = [
-        Line(part, speeds, [c["losses_W"][part] for c in cands], "points")
-        for part in ("ohmic", "iron", "magnets", "total")
-        if all(part in c["losses_W"] for c in cands)
-    ]
+    curve = at(doc, "design", "motor", "loss_curve") or {}
+    if curve.get("speed_rpm"):
+        lines = [
+            Line(part, curve["speed_rpm"], curve[f"{part}_W"])
+            for part in ("ohmic", "iron", "magnets", "total")
+            if f"{part}_W" in curve
+        ]
+        lines.append(
+            Line("candidates (total)", speeds, [c["losses_W"]["total"] for c in cands], "points")
+        )
+    else:
+        lines = [
+            Line(part, speeds, [c["losses_W"][part] for c in cands], "points")
+            for part in ("ohmic", "iron", "magnets", "total")
+            if all(part in c["losses_W"] for c in cands)
+        ]
     motor = at(doc, "design", "motor") or {}
     chosen, best = motor.get("speed_rpm"), motor.get("optimum_speed_rpm")
     vlines = [(chosen, f"chosen {chosen:g} rpm")] if chosen is not None else []
     if isinstance(best, int | float):
         vlines.append((best, f"loss optimum {best:.4g} rpm"))
+    top = curve.get("speed_limit_rpm")
+    if isinstance(top, int | float):
+        vlines.append((top, f"rated speed {top:.5g} rpm (no losses stated above)"))
     limit = motor.get("loss_limit_W")
     hlines = [(limit, f"frame's limit {limit:.4g} W")] if isinstance(limit, int | float) else []
     return Plot(
         "motor-losses",
-        "Motor losses at the candidate speeds",
+        "Motor losses against speed",
         "motor speed, rpm",
         "loss, W",
         lines,
