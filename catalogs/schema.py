@@ -13,7 +13,7 @@ Positive = Annotated[float, Field(gt=0, allow_inf_nan=False)]
 def Between(lo: float, hi: float) -> Any:
     """A finite number within the physical range ``lo … hi`` of a catalog field: a datasheet
     value outside it is a copying slip (a unit off by 10³, a missing exponent), and the
-    advice computed from it would overflow or divide by a denormal (issue 13)."""
+    advice computed from it would overflow or divide by a denormal."""
     return Annotated[float, Field(ge=lo, le=hi, allow_inf_nan=False)]
 
 

@@ -1,4 +1,4 @@
-"""Rules of a duty cycle (issue 15): the motor and ratio for the cycle, the thermal verdict,
+"""Rules of a duty cycle: the motor and ratio for the cycle, the thermal verdict,
 the inertia ratio against its guideline, the starts an induction motor allows."""
 
 from advisor.calc.duty import S2_POWER_FACTOR, S3_POWER_FACTOR
@@ -10,7 +10,8 @@ KLYUCHEV = cite("klyuchev", "method of equivalent torque")
 INERTIA_GUIDE = (cite("keb-servo") + cite("autoengcalc")).with_note(
     "servo sizing practice: load/motor inertia ≤ 10 for a standard axis, ≤ 5 for high precision"
 )
-#: The duty cycle's own basis: the project's issue 15, not a published source.
+#: The duty cycle's own basis, not a published source: the project's own design note (its
+#: text, "issue 15", is what the reports cite).
 ISSUE_15 = note("issue 15")
 SEED_003 = cite("seed-003")
 #: SEW-EURODRIVE's table of the power increasing factor K for S2 and S3 (p. 95).

@@ -5,7 +5,7 @@ The requirement models are the one source of truth (:mod:`advisor.core.requireme
 :mod:`advisor.core.requirement_spec`: each field's type, range and default, and each model's
 own checks, which are pure functions the models run too. This module applies that spec, so
 that a batch run does not import pydantic's model machinery (about 0.1 s, more than the
-advice itself; issue 16).
+advice itself).
 
 It decides only *whether* a document is valid, and builds the same values the models would.
 It never words a refusal: a document it refuses or cannot judge (a number given as a string

@@ -556,8 +556,8 @@ QUESTIONS = {
         (('duty', 'segments', '2', 'direction'), 'Segment 3: direction', '', 'choice', ('against', 'with'), True, 'against', 'a move against the load torque (the motor drives) or with it (the load drives)', 4, '', None, ('duty', 'segments', '2'), None),
         (('duty', 'segments', '2', 'torque_Nm'), 'Segment 3: load torque', 'N·m', 'float', (), True, None, 'output load torque of the segment, N·m; default rotary.torque_Nm', 4, '≥ 0, ≤ 1e+06', None, ('duty', 'segments', '2'), None),
         (('duty', 'load_inertia_kgm2'), 'Load inertia', 'kg·m²', 'float', (), True, 0.0, 'inertia of the load at the output, kg·m²', 4, '≥ 0, ≤ 1e+07', None, None, None),
-        (('duty', 'motor_inertia_kgm2'), 'Motor inertia', 'kg·m²', 'float', (), True, None, "rotor inertia of the motor, kg·m²; left out: the chosen frame's or catalog motor's (issue 25)", 4, '≥ 1e-11, ≤ 1000', None, None, None),
-        (('duty', 'thermal_time_constant_s'), 'Thermal time constant', 's', 'float', (), True, None, "thermal time constant of the motor, s; left out: the chosen frame's or catalog motor's (issue 25)", 4, '> 0, ≤ 100000', None, None, None),
+        (('duty', 'motor_inertia_kgm2'), 'Motor inertia', 'kg·m²', 'float', (), True, None, "rotor inertia of the motor, kg·m²; left out: the chosen frame's or catalog motor's", 4, '≥ 1e-11, ≤ 1000', None, None, None),
+        (('duty', 'thermal_time_constant_s'), 'Thermal time constant', 's', 'float', (), True, None, "thermal time constant of the motor, s; left out: the chosen frame's or catalog motor's", 4, '> 0, ≤ 100000', None, None, None),
         (('duty', 'peak_torque_factor'), 'Peak/continuous torque', '', 'float', (), True, 3.0, "peak torque the motor and drive give, as a multiple of the torque at the frame's loss limit (servo catalogs: about 3)", 4, '≥ 1, ≤ 10', None, None, None),
     ),
     'positioning': (

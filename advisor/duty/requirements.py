@@ -1,4 +1,4 @@
-"""The ``[duty]`` table: a cycle the drive repeats (issue 15). Without it nothing changes.
+"""The ``[duty]`` table: a cycle the drive repeats. Without it nothing changes.
 
 Positioning repeats seed 003's move: ``cycle_time_s`` (one move of ``positioning.travel_rad``,
 then rest until the cycle ends). Linear and rotary drives give either a list of segments
@@ -277,7 +277,7 @@ class RotaryDutyReq(_CycleDuty):
             ge=1e-11,
             le=1e3,
             desc="rotor inertia of the motor, kg·m²; left out: the chosen frame's or catalog "
-            "motor's (issue 25)",
+            "motor's",
             label="Motor inertia",
             step=STEP,
         ),
@@ -288,7 +288,7 @@ class RotaryDutyReq(_CycleDuty):
             gt=0,
             le=1e5,
             desc="thermal time constant of the motor, s; left out: the chosen frame's or "
-            "catalog motor's (issue 25)",
+            "catalog motor's",
             label="Thermal time constant",
             step=STEP,
         ),

@@ -1,4 +1,4 @@
-"""The optional ``[uncertainty]`` table (issue 30, part 2): which inputs are known only as a
+"""The optional ``[uncertainty]`` table: which inputs are known only as a
 distribution, how many samples, the seed, and the probability of passing a robust choice
 must reach. Imported by the applications' requirement models (no numpy here)."""
 

@@ -21,8 +21,9 @@ from advisor.uncertainty.requirements import UncertaintyField
 
 
 class LinearReq(StrictModel):
-    """The linear stage. Every number has a physically meaningful range (issue 13): a screw
-    actuator of this advisor pushes 1 N … 5 MN over 1 mm … 20 m in 10 ms … about 28 h."""
+    """The linear stage. Every number has a physically meaningful range, so that the advice
+    stays finite: a screw actuator of this advisor pushes 1 N … 5 MN over 1 mm … 20 m in
+    10 ms … about 28 h."""
 
     force_N: Annotated[
         float,
@@ -198,7 +199,8 @@ class LinearRequirements(StrictModel):
     ]
     motor: Annotated[InductionMotorReq, Field(description="the [motor] table: kind = 'induction'")]
     # defaults made without validation (they are valid): a nested model builds no validator
-    # of its own (defer_build), and validating one here would build it at import (issue 16)
+    # of its own (defer_build), and validating one here would build it at import (the batch path
+    # must stay light)
     screw: ScrewReq = ScrewReq.model_construct()
     one_way: OneWayReq = OneWayReq.model_construct()
     design: DesignReq = DesignReq.model_construct()
@@ -206,4 +208,4 @@ class LinearRequirements(StrictModel):
         LinearDutyReq | None,
         Field(description="the [duty] table: segments with cycles_per_hour, or duty_type"),
     ] = None
-    uncertainty: UncertaintyField = None  # issue 30: P(pass) (advisor.uncertainty)
+    uncertainty: UncertaintyField = None  # the probability of passing (advisor.uncertainty)

@@ -7,7 +7,7 @@ Every number has a physically meaningful range, stated in its description; a val
 is an input error naming the field and the range (exit 2). The ranges span the drives the
 seed's model describes — a reducer from about Ø10 mm (1 N·m) to about Ø1 m (10⁵ N·m), a
 motor frame from a few watts to hundreds of kilowatts — and keep every quantity the advice
-computes finite (issue 13).
+computes finite.
 """
 
 from typing import Annotated, Literal
@@ -84,7 +84,7 @@ class RotaryReq(StrictModel):
 
 class OutputLoadReq(StrictModel):
     """An external load on the output shaft ([output_load]): its bearing is checked by
-    ISO 281 with the SKF catalog (issue 26, item 3)."""
+    ISO 281 with the SKF catalog."""
 
     radial_N: Annotated[
         float,
@@ -374,7 +374,8 @@ class RotaryRequirements(StrictModel):
     project: ProjectField = None  # the datasheet's header (advisor.core.requirements)
     rotary: Annotated[RotaryReq, Field(description="the [rotary] table: torque_Nm, speed_rpm")]
     # defaults made without validation (they are valid): a nested model builds no validator
-    # of its own (defer_build), and validating one here would build it at import (issue 16)
+    # of its own (defer_build), and validating one here would build it at import (the batch path
+    # must stay light)
     envelope: EnvelopeReq = EnvelopeReq.model_construct()
     motor: Annotated[BldcMotorReq, Field(description="the [motor] table: kind = 'bldc'")]
     gearbox: GearboxReq = GearboxReq.model_construct()
