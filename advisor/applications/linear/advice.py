@@ -91,7 +91,14 @@ def thrust_face(req: Requirements, cat: Catalogs) -> ThrustFace | None:
     return None
 
 
-def _one_way(req, trace: Trace, ev, thread: str, friction_low: float, drive_torque: float):
+def _one_way(
+    req: Requirements,
+    trace: Trace,
+    ev: ThreadEvaluation,
+    thread: str,
+    friction_low: float,
+    drive_torque: float,
+):
     """Seed 004 for a screw drive: no device when the screw holds with margin, otherwise one
     at the motor side carrying the torque that drives the screw (thread and thrust face) — at
     the rated force or, if larger, at the emergency stop's momentary force, times the service
@@ -239,7 +246,7 @@ def _drive(
         drive if passage is None else drive._replace(torque_Nm=drive.torque_Nm / passage.efficiency)
     )
     motor = next(m for m in cat.motors if m.model == motor_model)
-    plan = plan_motor(at_motor, motor, cat, req.motor.supply_frequency_Hz, trace)
+    plan = plan_motor(at_motor, motor, cat, trace)
     return Drive(drive, at_motor, passage, plan)
 
 

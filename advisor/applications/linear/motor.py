@@ -20,7 +20,7 @@ class MotorPlan(NamedTuple):
 
 
 def plan_motor(
-    ev: ThreadEvaluation, motor: InductionMotor, cat: Catalogs, frequency_Hz: float, trace: Trace
+    ev: ThreadEvaluation, motor: InductionMotor, cat: Catalogs, trace: Trace
 ) -> MotorPlan:
     """The chosen motor's pole pairs, its rated-power band and the evaluated neighbours."""
     pp = motor.pole_pairs
