@@ -26,7 +26,9 @@ def compiled_or_none(data: dict[str, Any]) -> Requirements | None:
     or one that contradicts itself (:func:`advisor.core.ignored.contradictions`)."""
     from advisor.core import compiled_validator
     from advisor.core.ignored import contradictions
+    from advisor.core.units import convert_by_spec
 
+    data = convert_by_spec(data)  # "5 kN" → 5000.0 without the models, where the spec can
     req = compiled_validator.validate(data)
     return None if req is None or contradictions(data) else req
 

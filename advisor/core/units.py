@@ -33,12 +33,13 @@ import math
 import re
 import unicodedata
 from functools import cache
-from typing import Any, NamedTuple, get_args, get_origin
-
-from pydantic import BaseModel
+from typing import TYPE_CHECKING, Any, NamedTuple, get_args, get_origin
 
 from advisor.core.errors import InputError
 from advisor.core.questions import strip_optional
+
+if TYPE_CHECKING:  # the models are read by convert() only: reading by the spec needs none
+    from pydantic import BaseModel
 
 #: The longest quantity read; a longer string is refused before it is looked at.
 MAX_CHARS = 64
@@ -401,12 +402,14 @@ def _is_number(ann: Any) -> bool:
     return ann is float
 
 
-def _models(ann: Any) -> list[type[BaseModel]]:
+def _models(ann: Any) -> "list[type[BaseModel]]":
+    from pydantic import BaseModel
+
     args = get_args(ann)
     return [a for a in (ann, *args) if isinstance(a, type) and issubclass(a, BaseModel)]
 
 
-def _model_for(ann: Any, value: dict) -> type[BaseModel] | None:
+def _model_for(ann: Any, value: dict) -> "type[BaseModel] | None":
     """The model a table is validated with (a union of tables: the one whose ``kind``
     literal matches)."""
     members = _models(ann)
@@ -435,7 +438,7 @@ def _unit(name: str, info: Any) -> str:
     return unit_of(name)
 
 
-def convert(data: Any, model: type[BaseModel]) -> Any:
+def convert(data: Any, model: "type[BaseModel]") -> Any:
     """``data`` (a requirement document) with every string in a numeric field converted to
     the field's unit; anything else is left for the model to judge. Raises
     :class:`InputError`, one line per field, for strings that are not quantities of the
@@ -447,7 +450,7 @@ def convert(data: Any, model: type[BaseModel]) -> Any:
     return out
 
 
-def _convert(data: Any, model: type[BaseModel], path: tuple[Any, ...], errors: list[str]) -> Any:
+def _convert(data: Any, model: "type[BaseModel]", path: tuple[Any, ...], errors: list[str]) -> Any:
     if not isinstance(data, dict):
         return data
     out = dict(data)
@@ -491,3 +494,64 @@ def _one(text: str, unit: str, path: tuple[Any, ...], errors: list[str]) -> Any:
         errors.append(f"{_where(path)} = {show_repr(text)}: {exc}")
         return text
     return value
+
+
+# ------------------------------------------------------------------ without the models
+def _may_hold_quantity(node: Any) -> bool:
+    """Whether a document holds a string that begins as a number does (a cheap look before
+    the spec is read: a file of plain numbers is left at once)."""
+    if isinstance(node, str):
+        return node.lstrip(" \t\u00a0\u2009\u202f")[:1] in "0123456789+-."
+    if isinstance(node, dict):
+        return any(_may_hold_quantity(v) for v in node.values())
+    if isinstance(node, list):
+        return any(_may_hold_quantity(v) for v in node)
+    return False
+
+
+def convert_by_spec(data: Any) -> Any:
+    """``data`` with its quantities converted as :func:`convert` converts them, the fields
+    and their units read from the compiled spec of a shipped application
+    (:mod:`advisor.core.requirement_spec` and the datasheet's compiled labels), so that a file
+    with unit strings imports no pydantic. ``data`` itself, unchanged, where it holds no
+    quantity or anything is in doubt (an application the spec does not hold, a string that
+    is no quantity of its field): the models then convert it and word every refusal."""
+    if not isinstance(data, dict) or not _may_hold_quantity(data):
+        return data
+    from advisor.core.compiled_validator import compiled
+
+    try:
+        kind = data["application"]["kind"]
+        if not compiled(kind):
+            return data
+        from advisor.core.requirement_spec import ROOTS
+        from advisor.datasheet.compiled_labels import LABELS
+
+        units = {path: unit for path, (_, unit) in LABELS[kind].items()}
+        return _by_spec(data, ROOTS[kind], (), units)
+    except (UnitError, LookupError, TypeError):
+        return data
+
+
+def _by_spec(data: dict, model: str, prefix: tuple[str, ...], units: dict) -> dict:
+    from advisor.core.requirement_spec import MODELS
+
+    out = dict(data)
+    for key, t, _, _ in MODELS[model]["fields"]:
+        v = data.get(key)
+        t = t[1] if t[0] == "optional" else t
+        path = (*prefix, key)
+        if t[0] == "float" and isinstance(v, str):
+            out[key] = to_unit(v, units[path])
+        elif t[0] == "model" and isinstance(v, dict):
+            out[key] = _by_spec(v, t[1], path, units)
+        elif t[0] == "list" and isinstance(v, list):
+            item = t[1][1] if t[1][0] == "optional" else t[1]
+            if item[0] == "float":
+                out[key] = [to_unit(x, units[path]) if isinstance(x, str) else x for x in v]
+            elif item[0] == "model":
+                row = (*prefix, f"{key}[]")
+                out[key] = [
+                    _by_spec(x, item[1], row, units) if isinstance(x, dict) else x for x in v
+                ]
+    return out
