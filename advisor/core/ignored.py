@@ -18,7 +18,7 @@ IGNORED_PREFIX = "ignored: "
 
 def holds(kind: str) -> bool:
     """Whether an application's design can include a one-way holding device (seed 004): its
-    requirement model has a ``[one_way]`` table (linear and rotary actuators)."""
+    requirement model has a ``[one_way]`` table."""
     from advisor.core.compiled_validator import has_table
 
     known = has_table(kind, "one_way")  # the compiled spec: no pydantic on the batch path
@@ -36,10 +36,18 @@ def contradictions(data: dict[str, Any]) -> list[str]:
     if app.get("hold_without_power") is True and not holds(kind):
         return [
             f"application.hold_without_power = true: not available for a {kind} drive (a "
-            "holding one-way device is chosen only for linear and rotary actuators, seed 004); "
+            f"holding one-way device is chosen only for {holding_kinds()} actuators, seed 004); "
             "remove it or set it false"
         ]
     return []
+
+
+def holding_kinds() -> str:
+    """The applications whose design can hold the load, as a message names them ("a and b")."""
+    from advisor.core.registry import kinds
+
+    names = [k for k in kinds() if holds(k)]
+    return ", ".join(names[:-1]) + " and " + names[-1] if len(names) > 1 else "".join(names)
 
 
 #: The [duty] keys that only some forms of a cycle use (the drives that give segments or a duty
