@@ -1,5 +1,6 @@
 """Rules of the one-way (holding) device (seed 004)."""
 
+from advisor.calc.one_way import Device
 from advisor.core.cite import cite
 from advisor.core.rulebook import Finding, rule
 
@@ -54,9 +55,9 @@ def placement(
 
 
 @rule("OW-02", "Type of the one-way device", SEED_004)
-def device_type(asked: str, priority: str, options: dict[str, dict]) -> Finding[str]:
-    """``options``: type → {mass_kg, inertia_kgm2, efficiency, power_W} of each device that
-    can be built for the torque."""
+def device_type(asked: str, priority: str, options: dict[str, Device]) -> Finding[str]:
+    """``options``: type → the device of that type sized for the torque, for each that can
+    be built (:func:`advisor.calc.one_way.size`)."""
     if asked != "auto":
         return Finding(
             asked,
@@ -66,11 +67,11 @@ def device_type(asked: str, priority: str, options: dict[str, dict]) -> Finding[
         )
     clutches = {k: v for k, v in options.items() if k in ("roller_clutch", "em_clutch")}
     key = {"mass": "mass_kg", "inertia": "inertia_kgm2", "power": "power_W"}[priority]
-    best = min(clutches, key=lambda k: (clutches[k][key], clutches[k]["mass_kg"]))
+    best = min(clutches, key=lambda k: (getattr(clutches[k], key), clutches[k].mass_kg))
     table = "; ".join(
-        f"{NAMES[k]}: {v['mass_kg']:.3g} kg, {v['inertia_kgm2']:.3g} kg·m², "
-        f"η {v['efficiency']:.2f}, {v['power_W']:.3g} W"
-        for k, v in options.items()
+        f"{NAMES[k]}: {d.mass_kg:.3g} kg, {d.inertia_kgm2:.3g} kg·m², "
+        f"η {d.efficiency:.2f}, {d.power_W:.3g} W"
+        for k, d in options.items()
     )
     return Finding(
         best,

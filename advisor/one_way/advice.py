@@ -2,20 +2,21 @@
 (seed 004): chosen, sized at the motor side, compared with the same device at the output and
 with the other types. Orchestration only; shared by the linear and rotary pipelines."""
 
-from advisor.calc import one_way as ow
+from advisor.calc.one_way import EM_CLUTCH, TYPES, Device, Passage, em_clutch_power, passage, size
 from advisor.core.rulebook import Trace
 from advisor.one_way.report import DeviceOut, OneWayOut
-from rules import one_way as rules
+from rules.one_way import NAMES, device_type
 
 
-def _out(d: ow.Device, location: str) -> DeviceOut:
+def _out(d: Device, location: str) -> DeviceOut:
     return DeviceOut.make(location=location, **d._asdict())
 
 
-def _sized(torque_Nm: float, rollers: int) -> dict[str, ow.Device]:
+def _sized(torque_Nm: float, rollers: int) -> dict[str, Device]:
+    """Every type that can be built for the torque, sized (seed 004)."""
     out = {}
-    for kind in ow.TYPES:
-        d = ow.size(kind, torque_Nm, rollers)
+    for kind in TYPES:
+        d = size(kind, torque_Nm, rollers)
         if d is not None:
             out[kind] = d
     return out
@@ -23,16 +24,14 @@ def _sized(torque_Nm: float, rollers: int) -> dict[str, ow.Device]:
 
 def device_passage(
     req_one_way, motor_torque_Nm: float, output_torque_Nm: float, at_output: bool = False
-) -> ow.Passage:
+) -> Passage:
     """How the device that :func:`choose_device` would choose passes torque (its driving
     efficiency, whether a load can drive back through it), before the choice is recorded:
     the motor's own choice and the duty cycle must already see it."""
     here = output_torque_Nm if at_output else motor_torque_Nm
     options = _sized(here, req_one_way.rollers)
-    chosen = rules.device_type(
-        req_one_way.type, req_one_way.priority, {k: d._asdict() for k, d in options.items()}
-    ).value
-    return ow.passage(chosen)
+    chosen = device_type(req_one_way.type, req_one_way.priority, options).value
+    return passage(chosen)
 
 
 def choose_device(
@@ -50,21 +49,16 @@ def choose_device(
     )
     where = "output side" if at_output else "motor side"
     options = _sized(here, req_one_way.rollers)
-    chosen = trace.apply(
-        rules.device_type,
-        req_one_way.type,
-        req_one_way.priority,
-        {k: d._asdict() for k, d in options.items()},
-    )
+    chosen = trace.apply(device_type, req_one_way.type, req_one_way.priority, options)
     warnings: list[str] = []
     if chosen not in options:  # only the electromagnetic clutch can fail to exist
         raise _em_clutch_impossible(here, where)
     d = options[chosen]
-    other = ow.size(chosen, there, req_one_way.rollers)
+    other = size(chosen, there, req_one_way.rollers)
     other_out = None if other is None else _out(other, "motor side" if at_output else "output side")
     if d.efficiency < 0.5:
         warnings.append(
-            f"the {rules.NAMES[chosen]} drives with η = {d.efficiency:.2f}: the motor must give "
+            f"the {NAMES[chosen]} drives with η = {d.efficiency:.2f}: the motor must give "
             f"{1 / d.efficiency:.2f}× the torque, and seed 004 judges such devices not rational "
             "in a new drive"
         )
@@ -91,8 +85,8 @@ def choose_device(
 def _em_clutch_impossible(torque: float, where: str = "motor side"):
     from advisor.core.errors import InfeasibleError
 
-    p = ow.EM_CLUTCH
-    _, b = ow.em_clutch_power(torque, max(p.diameters_mm), p)
+    p = EM_CLUTCH
+    _, b = em_clutch_power(torque, max(p.diameters_mm), p)
     return InfeasibleError(
         "no feasible design: no electromagnetic clutch of the seed's range carries the torque",
         [
