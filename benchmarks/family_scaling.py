@@ -1,6 +1,6 @@
 """Family studies on Dask: variants per second at 1, 2, … workers, and the cost model.
 
-    python benchmarks/family_scaling.py [--quick]
+    python benchmarks/family_scaling.py [--quick] [--model-only]
 
 Measures, on this machine:
 - t_v, the advice of one variant in a worker (run_chunk in-process, no Dask), for the rotary
@@ -10,8 +10,9 @@ Measures, on this machine:
 - t_chunk, the client's serial work per chunk (receive, write the chunk's CSV with fsync);
 - t_join, the client's serial work per variant at the end (designs.csv, summary);
 - the wall time of real studies on a LocalCluster of 1, 2, … worker processes;
-and prints the cost model's prediction for 10⁶ variants on 64 workers. Writes
-benchmarks/results/family.json.
+and prints the cost model's prediction for 10⁷ variants on 64 workers, after checking the
+model against the studies it ran (the same formula, the measured t_v, t_chunk and t_join,
+against each study's measured wall time). Writes benchmarks/results/family.json.
 """
 
 import argparse
@@ -27,7 +28,7 @@ from _results import ROOT, save
 from advisor.family.chunks import run_chunk
 from advisor.family.spec import parse_family
 from advisor.family.study import join_chunks, run_study
-from advisor.family.summary import read_rows, summarize
+from advisor.family.summary import build_summary, iter_rows
 
 
 def valve_family(steps: int):
@@ -79,7 +80,7 @@ def study_wall_s(family, client, chunk: int) -> tuple[float, float, float]:
         res = run_study(family, Path(d), client, chunk)
         t1, c1 = time.perf_counter(), time.process_time()
         join_chunks(family, Path(d), chunk)
-        summarize(family, read_rows(Path(d) / "designs.csv"), {})
+        build_summary(family, iter_rows(Path(d) / "designs.csv"), {})
         t2 = time.perf_counter()
     assert res.computed == res.chunks
     return t1 - t0, c1 - c0, t2 - t1
@@ -95,6 +96,7 @@ def main() -> None:
 
         m = json.loads((ROOT / "benchmarks" / "results" / "family.json").read_text())
         m["scaling"] = {int(k): v for k, v in m["scaling"].items()}
+        m["check"] = check_model(m)
         m["prediction"] = predict(m)
         save("family", m)
         print_table(m)
@@ -151,28 +153,59 @@ def main() -> None:
         client.close()
         cluster.close()
     out["scaling"] = scaling
+    out["check"] = check_model(out)
     out["prediction"] = predict(out)
     save("family", out)
     print_table(out)
 
 
-def predict(m: dict, n: float = 1e6, workers: int = 64) -> dict:
-    """T(c) = max(n·t_v/W, (n/c)·t_chunk) + c·t_v + n·t_join: the workers' advice in
-    parallel, unless the client and scheduler (serial, t_chunk per chunk, which includes the
-    task's round trip) are the slower; then the last chunk's tail; then the join.
+def model_s(
+    n: float, workers: int, chunk: float, t_v: float, t_chunk: float, t_join: float
+) -> float:
+    """T = max(n·t_v/W, (n/c)·t_chunk) + c·t_v + n·t_join: the workers' advice in parallel,
+    unless the client and scheduler (serial, t_chunk per chunk, which includes the task's
+    round trip) are the slower; then the last chunk's tail; then the client's join and
+    summary (serial, per variant)."""
+    return max(n * t_v / workers, (n / chunk) * t_chunk) + chunk * t_v + n * t_join
+
+
+def check_model(m: dict) -> dict:
+    """The model against each study run here: its wall time predicted from t_v (wall, per
+    variant in one process), t_chunk and t_join, over the measured wall time."""
+    out = {}
+    for w, s in m["scaling"].items():
+        pred = model_s(
+            s["variants"],
+            w,
+            s["chunk_size"],
+            m["t_v_rotary_wall_ms"] / 1e3,
+            m["t_chunk_ms"] / 1e3,
+            0.0,  # the study's wall time is measured before the join
+        )
+        out[w] = {
+            "predicted_s": pred,
+            "measured_s": s["wall_s"],
+            "measured_over_predicted": s["wall_s"] / pred,
+        }
+    return out
+
+
+def predict(m: dict, n: float = 1e7, workers: int = 64) -> dict:
+    """The model (:func:`model_s`) for ``n`` variants on ``workers`` workers, by chunk size.
 
     The recommended chunk size is the fastest that leaves every worker at least 8 chunks
     (load balance, cheap retries) and keeps the serial work under a quarter of the parallel
     work (headroom: the scheduler must never become the bottleneck)."""
     t_v = m["t_v_rotary_ms"] / 1e3
     t_serial = m["t_chunk_ms"] / 1e3
+    t_join = m["t_join_us"] / 1e6
     compute = n * t_v / workers
     best = None
     table = {}
     for c in (10, 20, 50, 100, 200, 500, 1000, 2000, 5000):
         chunks = n / c
         serial = chunks * t_serial
-        total = max(compute, serial) + c * t_v + n * m["t_join_us"] / 1e6
+        total = model_s(n, workers, c, t_v, t_serial, t_join)
         table[c] = {"total_s": total, "serial_s": serial, "chunks_per_worker": chunks / workers}
         ok = chunks >= 8 * workers and serial <= 0.25 * compute
         if ok and (best is None or total < table[best]["total_s"]):
@@ -181,6 +214,7 @@ def predict(m: dict, n: float = 1e6, workers: int = 64) -> dict:
         "variants": n,
         "workers": workers,
         "compute_s": compute,
+        "join_s": n * t_join,
         "by_chunk_size": table,
         "recommended": best,
     }
@@ -203,8 +237,16 @@ def print_table(m: dict) -> None:
             f"{s['cluster_start_s']:.1f} s; join + summary {s['join_and_summary_s']:.2f} s; "
             f"load {s['load_average']:.1f})"
         )
+    for w, c in m.get("check", {}).items():
+        print(
+            f"model check, {w} workers: predicted {c['predicted_s']:.1f} s, measured "
+            f"{c['measured_s']:.1f} s ({c['measured_over_predicted']:.2f}×)"
+        )
     p = m["prediction"]
-    print(f"  1e6 variants on 64 workers: advice alone {p['compute_s']:.0f} s")
+    print(
+        f"  {p['variants']:.0e} variants on {p['workers']} workers: advice alone "
+        f"{p['compute_s']:.0f} s, join + summary {p['join_s']:.0f} s"
+    )
     for c, t in p["by_chunk_size"].items():
         print(
             f"  chunks of {c}: {t['total_s']:.0f} s (serial {t['serial_s']:.0f} s, "

@@ -43,9 +43,8 @@ MEMBER_KEYS = ("name", "base", "axes")
 RANGE_KEYS = ("from", "to", "steps", "scale")
 SCALES = ("linear", "log")
 MAX_STEPS = 100_000
-#: Variants a study may have unless ``--max-variants`` raises it: at about 10 ms a variant
-#: on one core (benchmarks/README.md), a million variants are hours of work, and the
-#: summary holds every row in memory.
+#: Variants a study may have unless ``--max-variants`` raises it: at 0.5–10 ms a variant on
+#: one core (benchmarks/README.md), a million variants are minutes to hours of work.
 DEFAULT_MAX_VARIANTS = 1_000_000
 
 

@@ -79,7 +79,7 @@ class Codes:
         """The distinct texts sorted, and each variant's code into them: what
         ``np.unique(texts, return_inverse=True)`` gives."""
         uniq = sorted(self.index)
-        remap = np.empty(max(len(uniq), 1), dtype=np.int64)
+        remap = np.empty(max(len(uniq), 1), dtype=self.codes.dtype)  # a byte a variant, still
         for new, text in enumerate(uniq):
             remap[self.index[text]] = new
         return np.array(uniq, dtype=str), remap[self.codes]
@@ -110,13 +110,13 @@ def coded_changes(member: Member, uniq: np.ndarray, codes: np.ndarray) -> list[d
             continue
         lo = np.take(grid, range(n - 1), axis=ax)
         hi = np.take(grid, range(1, n), axis=ax)
-        place = np.indices(lo.shape)[ax]
         mask = lo != hi
         if blank.size:
             mask &= (lo != blank[0]) & (hi != blank[0])
         if not mask.any():
             continue
-        triples = np.stack([place[mask], lo[mask], hi[mask]], axis=1)
+        place = np.nonzero(mask)[ax]  # the index along the axis of each change, in order
+        triples = np.stack([place, lo[mask], hi[mask]], axis=1)
         found, counts = np.unique(triples, axis=0, return_counts=True)
         lines = grid.size // n
         for (k, f, t), c in zip(found.tolist(), counts.tolist(), strict=True):
