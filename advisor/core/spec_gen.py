@@ -36,7 +36,7 @@ import typing
 from pathlib import Path
 from typing import Any, Literal, get_args, get_origin
 
-import annotated_types as at
+from annotated_types import Ge, Gt, Le, Lt, MaxLen, MinLen
 from pydantic import BaseModel
 from pydantic.fields import FieldInfo
 
@@ -45,8 +45,8 @@ from advisor.core.requirements import ApplicationReq
 
 SPEC_PATH = Path(__file__).with_name("requirement_spec.py")
 
-_CONSTRAINTS = {at.Ge: "ge", at.Gt: "gt", at.Le: "le", at.Lt: "lt"}
-_LENGTHS = {at.MinLen: "min_length", at.MaxLen: "max_length"}
+_CONSTRAINTS = {Ge: "ge", Gt: "gt", Le: "le", Lt: "lt"}
+_LENGTHS = {MinLen: "min_length", MaxLen: "max_length"}
 
 
 def model_name(model: type) -> str:
