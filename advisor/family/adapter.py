@@ -108,7 +108,7 @@ def field_problems(requirement: dict[str, Any]) -> list[FieldProblem]:
     else:
         from advisor.core.units import convert
 
-        try:  # "1 kN*m" is read as advisor --batch reads it (issue 24): units first
+        try:  # "1 kN*m" is read as advisor --batch reads it: units first, then the model
             requirement = convert(requirement, model)
         except InputError as exc:
             return [FieldProblem(m.split(" = ", 1)[0], m, False) for m in exc.messages]

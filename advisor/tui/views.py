@@ -80,7 +80,7 @@ def _rho(x: float) -> str:
 
 def probability_lines(report) -> list[str]:
     """P(pass) of the design, its least probable check with what drives it, and the robust
-    choice, in words (issue 30); nothing without an ``[uncertainty]`` table."""
+    choice, in words; nothing without an ``[uncertainty]`` table."""
     u = getattr(report, "uncertainty", None)
     if u is None:
         return []
@@ -280,7 +280,7 @@ class PlotData(NamedTuple):
 
 
 def drivers_plot(report) -> PlotData | None:
-    """The tornado chart of the design's least probable check (issue 30): one bar per
+    """The tornado chart of the design's least probable check: one bar per
     input, its Spearman ρ with the margin, the largest |ρ| on top; None without an
     ``[uncertainty]`` table or where no check has drivers."""
     u = getattr(report, "uncertainty", None)
