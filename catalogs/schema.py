@@ -138,10 +138,12 @@ MAX_RATED_POWER_KW = 1e5
 SUPPLY_FREQUENCY_RANGE_HZ = (1.0, 1000.0)
 
 
-def row_fields(row: type, bounds: dict[str, Any]) -> type[_Row]:
+def row_fields(row: type, bounds: dict[str, Any], name: str = "") -> type[_Row]:
     """A schema's fields declared once, in the row of :mod:`catalogs.rows` it validates (a
     NamedTuple): the row's names, types and defaults, each number within its ``bounds``
-    (an ``Annotated`` type of the field). A tuple of the row is read as the list TOML gives."""
+    (an ``Annotated`` type of the field). A tuple of the row is read as the list TOML gives.
+    ``name``: the model's (by default the row's, ``…Fields``, for a schema that subclasses it
+    to add its checks)."""
     from pydantic import create_model
 
     unknown = set(bounds) - set(row._fields)
@@ -152,7 +154,7 @@ def row_fields(row: type, bounds: dict[str, Any]) -> type[_Row]:
         typ = bounds.get(name, list[str] if ann == tuple[str, ...] else ann)
         default = row._field_defaults.get(name, ...)
         fields[name] = (typ, list(default) if isinstance(default, tuple) else default)
-    return create_model(f"{row.__name__}Fields", __base__=_Row, **fields)
+    return create_model(name or f"{row.__name__}Fields", __base__=_Row, **fields)
 
 
 class InductionMotor(
@@ -248,14 +250,23 @@ def _check_power_flow(m: InductionMotor, n0: float) -> None:
 
 
 # ---------------------------------------------------------------- screw materials
-class FrictionPair(_Row):
-    name: str
-    description: str
-    f_oil: Annotated[list[Annotated[float, Field(gt=0, lt=1)]], Field(min_length=2, max_length=2)]
-    f_dry: Annotated[list[Annotated[float, Field(gt=0, lt=1)]], Field(min_length=2, max_length=2)]
-    allowable_pressure_MPa: Between(0.1, 1e3)
-    source: list[str]
-    estimated: list[str] = []
+#: A friction range [low, high] of a material pair: two coefficients, each within (0, 1).
+FrictionRange = Annotated[
+    list[Annotated[float, Field(gt=0, lt=1)]], Field(min_length=2, max_length=2)
+]
+
+
+class FrictionPair(
+    row_fields(
+        rows.FrictionPair,
+        {
+            "f_oil": FrictionRange,
+            "f_dry": FrictionRange,
+            "allowable_pressure_MPa": Between(0.1, 1e3),
+        },
+    )
+):
+    """A material pair of a screw and its nut (:class:`catalogs.rows.FrictionPair`)."""
 
     @model_validator(mode="after")
     def _ranges(self) -> "FrictionPair":
@@ -266,23 +277,23 @@ class FrictionPair(_Row):
         return self
 
 
-class ScrewSteel(_Row):
-    name: str
-    yield_strength_MPa: Between(10.0, 1e4)
-    elastic_modulus_MPa: Between(1e3, 1e6)
-    source: list[str]
-
-
-class NutRules(_Row):
-    height_ratio_min: Between(0.1, 10.0)
-    height_ratio_max: Between(0.1, 10.0)
-    max_turns: Annotated[int, Field(ge=1, le=100)]
-    source: list[str]
-
-
-class StrengthRules(_Row):
-    yield_safety_factor: Between(1.0, 20.0)
-    source: list[str]
+ScrewSteel = row_fields(
+    rows.ScrewSteel,
+    {"yield_strength_MPa": Between(10.0, 1e4), "elastic_modulus_MPa": Between(1e3, 1e6)},
+    "ScrewSteel",
+)
+NutRules = row_fields(
+    rows.NutRules,
+    {
+        "height_ratio_min": Between(0.1, 10.0),
+        "height_ratio_max": Between(0.1, 10.0),
+        "max_turns": Annotated[int, Field(ge=1, le=100)],
+    },
+    "NutRules",
+)
+StrengthRules = row_fields(
+    rows.StrengthRules, {"yield_safety_factor": Between(1.0, 20.0)}, "StrengthRules"
+)
 
 
 class MaterialsFile(_Row):
@@ -302,15 +313,19 @@ class MaterialsFile(_Row):
         return self
 
 
-class ElectricalSteelRow(_Row):
-    grade: Annotated[str, Field(pattern=r"^\d{4}$")]
-    thickness_mm: Between(0.01, 5.0)
-    equivalent: str
-    p10_50_W_kg: Between(1e-3, 1e3)
-    p15_50_W_kg: Between(1e-3, 1e3)
-    p10_400_W_kg: Between(1e-3, 1e4)
-    source: list[str]
-    estimated: list[str] = []
+class ElectricalSteelRow(
+    row_fields(
+        rows.ElectricalSteel,
+        {
+            "grade": Annotated[str, Field(pattern=r"^\d{4}$")],
+            "thickness_mm": Between(0.01, 5.0),
+            "p10_50_W_kg": Between(1e-3, 1e3),
+            "p15_50_W_kg": Between(1e-3, 1e3),
+            "p10_400_W_kg": Between(1e-3, 1e4),
+        },
+    )
+):
+    """A grade of electrical steel (:class:`catalogs.rows.ElectricalSteel`)."""
 
     @model_validator(mode="after")
     def _losses_consistent(self) -> "ElectricalSteelRow":
