@@ -1,6 +1,6 @@
-"""The compiled validator (advisor/core/compiled_validator.py) against the requirement models it is compiled
-from: the same documents accepted, the same values, the same report; and the batch path free
-of pydantic (issue 16)."""
+"""The compiled validator (advisor/core/compiled_validator.py) against the requirement models
+it is compiled from: the same documents accepted, the same values, the same report; and the
+batch path free of pydantic."""
 
 import copy
 import math
@@ -98,7 +98,7 @@ def test_records_are_read_only():
 
 def test_a_batch_run_imports_no_pydantic(tmp_path):
     """The batch path of a valid file: no pydantic, no pydantic_core (their model machinery
-    is the cost issue 16 measures)."""
+    costs more than the advice itself)."""
     code = (
         "import sys\n"
         "from advisor.cli import main\n"
