@@ -94,7 +94,10 @@ def rms_torque(phases: list[Phase], standstill_factor: float = 1.0) -> float:
     1.5
     """
     num = sum(p.torque_Nm**2 * p.time_s for p in phases)
-    den = sum(p.time_s * cooling_weight(p, standstill_factor) for p in phases)
+    if standstill_factor == 1.0:  # every β is 1: the cycle's time (t·1.0 is t, exactly)
+        den = sum(p.time_s for p in phases)
+    else:
+        den = sum(p.time_s * cooling_weight(p, standstill_factor) for p in phases)
     return math.sqrt(num / den) if den > 0 else 0.0
 
 
