@@ -28,7 +28,7 @@ import time
 from pathlib import Path
 
 import goals
-import tui_latency as tui
+import tui_latency
 from _results import ROOT, examples, save
 from cold_batch import advisor_cmd, cold, spread, timed
 
@@ -62,16 +62,16 @@ def sweep(n: int) -> dict:
     sys.path.insert(0, str(ROOT / "tests"))
     from brute_reducer import lightest
 
-    from advisor.calc import reducer as rd
+    from advisor.calc import reducer
 
-    p = rd.ReducerParams(1620.0, 1.0, 0.9, 7800.0, 0.75)
+    p = reducer.ReducerParams(1620.0, 1.0, 0.9, 7800.0, 0.75)
     out = {}
     for q in (100.0, 1000.0, 2000.0, 10000.0):
-        rd.sweep(q, p)
+        reducer.sweep(q, p)
         ts = []
         for _ in range(n):
             t0 = time.perf_counter()
-            r = rd.sweep(q, p)
+            r = reducer.sweep(q, p)
             ts.append(time.perf_counter() - t0)
         med = statistics.median(ts)
         out[f"q={q:g}"] = {
@@ -80,7 +80,7 @@ def sweep(n: int) -> dict:
             "median_ms": 1e3 * med,
             "configs_per_s": r.evaluated / med,
             "feasible_per_s": r.feasible / med,
-            "mass_ratio_vs_fine_grid": float(r.mass_kg[rd.best(r, "mass")] / lightest(q, p)),
+            "mass_ratio_vs_fine_grid": float(r.mass_kg[reducer.best(r, "mass")] / lightest(q, p)),
         }
     return out
 
@@ -240,10 +240,10 @@ def family(quick: bool) -> dict:
 
 def first_key(runs: int) -> dict:
     """A key at the wizard's first paint (when ``tui_latency.py`` measures it)."""
-    if not hasattr(tui, "first_keys"):
+    if not hasattr(tui_latency, "first_keys"):
         return {}
     chosen = ("rudder_actuator.toml", "linear_screw_actuator.toml")
-    return {ex.name: tui.first_keys(ex, runs) for ex in examples() if ex.name in chosen}
+    return {ex.name: tui_latency.first_keys(ex, runs) for ex in examples() if ex.name in chosen}
 
 
 def commit() -> str:
@@ -278,7 +278,7 @@ def main() -> None:
     res["unit_strings"] = goals.unit_strings(7 if quick else 21)
     res["html"] = goals.html(5 if quick else 15)
     res["blas_threads"] = goals.blas_threads(7 if quick else 21)
-    res["tui_latency"] = tui.tui_latency(5 if quick else 15)
+    res["tui_latency"] = tui_latency.tui_latency(5 if quick else 15)
     res["first_key"] = first_key(5 if quick else 15)
     res["family"] = family(quick)
     res["machine_after"] = machine()
