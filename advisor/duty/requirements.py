@@ -93,7 +93,7 @@ class RotarySegmentReq(_Segment):
         number_field(
             ge=1e-3,
             le=1e7,
-            desc="angle of a move at the output, 10⁻³ … 10⁷ degrees (a move: required)",
+            desc="angle of a move at the output, {range} (a move: required)",
             label="angle",
             step=STEP,
         ),

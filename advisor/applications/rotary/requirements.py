@@ -209,6 +209,9 @@ class EnvelopeReq(StrictModel):
     ] = None
 
 
+#: The speeds a candidate motor speed may take, rpm (the reference design's range).
+MOTOR_SPEED_RPM = {"ge": 100, "le": 2e5}
+
 #: The largest magnet loss a point may give, W: 0 (none) or from MAGNET_LOSS_MIN_W up to this.
 MAGNET_LOSS_MAX_W = 1e5
 
@@ -297,7 +300,15 @@ class BldcMotorReq(StrictModel):
         ),
     ] = "reference"
     candidate_speeds_rpm: Annotated[
-        list[Annotated[float, number_field(ge=100, le=2e5, desc="a motor speed, 100 … 2·10⁵ rpm")]],
+        list[
+            Annotated[
+                float,
+                number_field(
+                    **MOTOR_SPEED_RPM,
+                    desc="a motor speed, " + range_prose("rpm", **MOTOR_SPEED_RPM),
+                ),
+            ]
+        ],
         ask(
             "motor speeds to compare, {range} each, each once, at most 20",
             label="Motor speeds to compare",
