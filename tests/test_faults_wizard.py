@@ -7,23 +7,10 @@ from textual.widgets import Input, RadioButton, Static
 from advisor.tui import draft as drafts
 from advisor.tui.app import ConfirmScreen, DriveAdvisorApp
 
+#: the shared Pilot set-up (tests/conftest.py): own drafts, no animation, a temporary cwd
+pytestmark = pytest.mark.usefixtures("wizard")
+
 SIZE = (120, 40)
-
-
-@pytest.fixture(autouse=True)
-def _state_dir(tmp_path, monkeypatch):
-    monkeypatch.setenv("XDG_STATE_HOME", str(tmp_path / "state"))
-    monkeypatch.chdir(tmp_path)
-
-
-def _text(widget) -> str:
-    import os
-
-    from rich.console import Console
-
-    console = Console(width=300, record=True, file=open(os.devnull, "w"))
-    console.print(widget.content)
-    return console.export_text()
 
 
 @pytest.mark.parametrize(
@@ -49,27 +36,27 @@ def _text(widget) -> str:
         ),
     ],
 )
-async def test_wrong_typed_files_open_with_the_problems_shown(doc, words):
+async def test_wrong_typed_files_open_with_the_problems_shown(doc, words, wizard):
     app = DriveAdvisorApp(doc, save_drafts=False, offer_draft=False)
     async with app.run_test(size=SIZE) as pilot:
         await pilot.pause()
-        assert words in _text(app.query_one("#step-0-error", Static))
+        assert words in wizard.text(app.query_one("#step-0-error", Static))
         for _ in range(4):  # every step builds and validates without an exception
             await pilot.press("ctrl+n")
             await pilot.pause()
     assert app.return_code in (None, 0)
 
 
-async def test_a_numeric_title_is_shown_as_text_to_fix():
+async def test_a_numeric_title_is_shown_as_text_to_fix(wizard):
     app = DriveAdvisorApp({"application": {"kind": "linear", "title": 5}}, save_drafts=False)
     async with app.run_test(size=SIZE) as pilot:
         await pilot.pause()
         assert app.query_one("#f-application-title", Input).value == "5"
         assert app.query_one("#kind-linear", RadioButton).value
-        assert "application.title = 5: must be text" in _text(app.query_one("#step-0-error"))
+        assert "application.title = 5: must be text" in wizard.text(app.query_one("#step-0-error"))
 
 
-async def test_a_wrong_typed_value_stays_in_its_field_to_fix():
+async def test_a_wrong_typed_value_stays_in_its_field_to_fix(wizard):
     doc = {"application": {"kind": "linear"}, "linear": {"force_N": "lots"}}
     app = DriveAdvisorApp(doc, save_drafts=False, offer_draft=False)
     async with app.run_test(size=SIZE) as pilot:
@@ -80,10 +67,10 @@ async def test_a_wrong_typed_value_stays_in_its_field_to_fix():
         await pilot.press("ctrl+n")  # the field's own check says what to fix
         await pilot.pause()
         assert app.step == 1
-        assert "number" in _text(app.query_one("#f-linear-force-N-err"))
+        assert "number" in wizard.text(app.query_one("#f-linear-force-N-err"))
 
 
-async def test_a_wrong_typed_draft_is_offered_shaped(tmp_path):
+async def test_a_wrong_typed_draft_is_offered_shaped(tmp_path, wizard):
     path = drafts.draft_path()
     path.parent.mkdir(parents=True)
     path.write_text('[application]\nkind = "rotary"\ntitle = 5\n[rotary]\ntorque_Nm = "x"\n')
@@ -94,25 +81,25 @@ async def test_a_wrong_typed_draft_is_offered_shaped(tmp_path):
         await pilot.press("y")
         await pilot.pause()
         assert app.query_one("#f-application-title", Input).value == "5"
-        shown = _text(app.query_one("#step-0-error", Static))
+        shown = wizard.text(app.query_one("#step-0-error", Static))
         assert "application.title = 5" in shown and "rotary.torque_Nm = 'x'" in shown
 
 
-async def test_a_draft_that_says_application_linear_does_not_crash():
+async def test_a_draft_that_says_application_linear_does_not_crash(wizard):
     path = drafts.draft_path()
     path.parent.mkdir(parents=True)
     path.write_text('application = "linear"\n')
     app = DriveAdvisorApp()
     async with app.run_test(size=SIZE) as pilot:
         await pilot.pause()
-        assert "application = 'linear'" in _text(app.query_one("#step-0-error", Static))
+        assert "application = 'linear'" in wizard.text(app.query_one("#step-0-error", Static))
     assert app.return_code in (None, 0)
 
 
 @pytest.mark.parametrize(
     "content", [b"[application\n", b"\xff\xfe", b"x = " + b"[" * 5000 + b"]" * 5000]
 )
-async def test_an_unreadable_draft_is_set_aside_and_said(content):
+async def test_an_unreadable_draft_is_set_aside_and_said(content, wizard):
     path = drafts.draft_path()
     path.parent.mkdir(parents=True)
     path.write_bytes(content)
@@ -120,7 +107,7 @@ async def test_an_unreadable_draft_is_set_aside_and_said(content):
     async with app.run_test(size=SIZE) as pilot:
         await pilot.pause()
         assert not isinstance(app.screen, ConfirmScreen)
-        shown = _text(app.query_one("#step-0-error", Static))
+        shown = wizard.text(app.query_one("#step-0-error", Static))
     assert "the saved draft could not be read" in shown and "set aside as" in shown
     assert not path.exists()
     aside = list(path.parent.glob("draft.unreadable-*.toml"))
@@ -158,7 +145,7 @@ def test_the_wizard_refuses_a_file_it_cannot_read_in_one_line(tmp_path, capsys, 
     assert len(err) == 2 and "not a file" in err[0] and "larger than 1024 KiB" in err[1]
 
 
-async def test_a_draft_that_cannot_be_saved_is_a_notice_not_a_crash():
+async def test_a_draft_that_cannot_be_saved_is_a_notice_not_a_crash(wizard):
     import os
 
     path = drafts.draft_path()
@@ -167,7 +154,7 @@ async def test_a_draft_that_cannot_be_saved_is_a_notice_not_a_crash():
     app = DriveAdvisorApp()
     async with app.run_test(size=SIZE) as pilot:
         await pilot.pause()
-        assert "set aside as" in _text(app.query_one("#step-0-error", Static))
+        assert "set aside as" in wizard.text(app.query_one("#step-0-error", Static))
         os.mkfifo(path)  # and again, for the saves
         await pilot.click("#kind-linear")
         await pilot.pause()
@@ -189,7 +176,7 @@ async def _type_force(app, pilot, keys: str) -> None:
 
 
 async def test_a_state_directory_that_is_a_file_is_said_once_and_the_input_kept(
-    tmp_path, monkeypatch
+    tmp_path, monkeypatch, wizard
 ):
     """XDG_STATE_HOME names a regular file: no draft can be written below it. Said once (a
     notice and the status line), not at each of the four keys; the input stays in memory."""
@@ -202,8 +189,8 @@ async def test_a_state_directory_that_is_a_file_is_said_once_and_the_input_kept(
         assert len(_notes(app, "the draft cannot be saved")) == 1
         assert "Not a directory" in _notes(app, "the draft cannot be saved")[0]
         status = app.query_one("#draft-status", Static)
-        assert status.display and "Draft not saved" in _text(status)
-        assert "Not a directory" in _text(status)
+        assert status.display and "Draft not saved" in wizard.text(status)
+        assert "Not a directory" in wizard.text(status)
         assert app.doc["linear"]["force_N"] == 3500.0
         # the place can be written again: the next change is saved and the line goes
         blocker.unlink()
@@ -214,7 +201,7 @@ async def test_a_state_directory_that_is_a_file_is_said_once_and_the_input_kept(
     assert app.return_code in (None, 0)
 
 
-async def test_a_read_only_state_directory_is_said_once_and_the_input_kept(monkeypatch):
+async def test_a_read_only_state_directory_is_said_once_and_the_input_kept(monkeypatch, wizard):
     """A read-only directory (root writes there all the same, so the write is made to fail
     as it does for a user: PermissionError)."""
 
@@ -229,7 +216,7 @@ async def test_a_read_only_state_directory_is_said_once_and_the_input_kept(monke
         await pilot.pause()
         assert len(_notes(app, "the draft cannot be saved")) == 1
         status = app.query_one("#draft-status", Static)
-        assert status.display and "Permission denied" in _text(status)
+        assert status.display and "Permission denied" in wizard.text(status)
         assert app.doc["linear"] == {"force_N": 600.0, "stroke_m": 25.0}
         assert app.query_one("#f-linear-stroke-m", Input).value == "25"
     assert app.return_code in (None, 0)

@@ -16,32 +16,10 @@ from advisor.core.report import to_toml
 from advisor.tui import draft as drafts
 from advisor.tui.app import ConfirmScreen, DriveAdvisorApp, ExportScreen
 
+#: the shared Pilot set-up (tests/conftest.py): own drafts, no animation, a temporary cwd
+pytestmark = pytest.mark.usefixtures("wizard")
+
 SIZE = (120, 40)
-
-
-@pytest.fixture(autouse=True)
-def _state_dir(tmp_path, monkeypatch):
-    monkeypatch.setenv("XDG_STATE_HOME", str(tmp_path / "state"))
-    monkeypatch.chdir(tmp_path)
-
-
-def _text(widget) -> str:
-    """What a Static or Label shows, as plain text."""
-    from rich.console import Console
-
-    console = Console(width=200, record=True, file=open(__import__("os").devnull, "w"))
-    console.print(widget.content)
-    return console.export_text()
-
-
-async def _computed(app, pilot) -> None:
-    start = app.results_version
-    await pilot.press("ctrl+r")
-    for _ in range(400):
-        await pilot.pause(0.02)
-        if app.results_version > start:
-            return
-    raise AssertionError("no result")
 
 
 async def _type(pilot, app, widget_id: str, text: str) -> None:
@@ -51,7 +29,7 @@ async def _type(pilot, app, widget_id: str, text: str) -> None:
     await pilot.press(*text)
 
 
-async def test_typing_the_seed_001_values_finds_tr16x2_at_1200_rpm():
+async def test_typing_the_seed_001_values_finds_tr16x2_at_1200_rpm(wizard):
     app = DriveAdvisorApp(save_drafts=False, offer_draft=False)
     async with app.run_test(size=SIZE) as pilot:
         await pilot.click("#kind-linear")
@@ -68,18 +46,18 @@ async def test_typing_the_seed_001_values_finds_tr16x2_at_1200_rpm():
         await _type(pilot, app, "f-screw-starts", "1")
         await pilot.press("ctrl+n", "ctrl+n")
         assert app.step == 4
-        await _computed(app, pilot)
-        summary = _text(app.query_one("#view-summary", Static))
-        comps = _text(app.query_one("#view-components", Static))
+        await wizard.compute(pilot)
+        summary = wizard.text(app.query_one("#view-summary", Static))
+        comps = wizard.text(app.query_one("#view-components", Static))
         assert "Tr16x2" in summary and "1200 rpm" in comps
 
 
 @pytest.mark.parametrize("example", sorted(p.name for p in EXAMPLES.glob("*.toml")))
-async def test_each_example_exports_the_batch_report(example, tmp_path):
+async def test_each_example_exports_the_batch_report(example, tmp_path, wizard):
     src = EXAMPLES / example
     app = DriveAdvisorApp(tomllib.loads(src.read_text(encoding="utf-8")), src, save_drafts=False)
     async with app.run_test(size=SIZE) as pilot:
-        await _computed(app, pilot)
+        await wizard.compute(pilot)
         await pilot.press("ctrl+s")
         await pilot.pause()
         assert isinstance(app.screen, ExportScreen)
@@ -92,7 +70,7 @@ async def test_each_example_exports_the_batch_report(example, tmp_path):
 
 
 @pytest.mark.parametrize("suffix", [".json", ".md", ".html"])
-async def test_export_offers_the_batch_formats(suffix, tmp_path):
+async def test_export_offers_the_batch_formats(suffix, tmp_path, wizard):
     """ctrl+s writes the report in the format its file suffix names, as --format does."""
     pytest.importorskip("matplotlib")
     from advisor.datasheet import format_of, render
@@ -100,7 +78,7 @@ async def test_export_offers_the_batch_formats(suffix, tmp_path):
     src = EXAMPLES / "positioning_drive.toml"
     app = DriveAdvisorApp(tomllib.loads(src.read_text(encoding="utf-8")), src, save_drafts=False)
     async with app.run_test(size=SIZE) as pilot:
-        await _computed(app, pilot)
+        await wizard.compute(pilot)
         await pilot.press("ctrl+s")
         await pilot.pause()
         target = tmp_path / f"design{suffix}"
@@ -112,7 +90,7 @@ async def test_export_offers_the_batch_formats(suffix, tmp_path):
     assert target.read_text(encoding="utf-8") == expected
 
 
-async def test_number_fields_take_units():
+async def test_number_fields_take_units(wizard):
     src = EXAMPLES / "linear_screw_actuator.toml"
     app = DriveAdvisorApp(tomllib.loads(src.read_text(encoding="utf-8")), src, save_drafts=False)
     async with app.run_test(size=SIZE) as pilot:
@@ -121,11 +99,11 @@ async def test_number_fields_take_units():
         await _type(pilot, app, "f-linear-stroke-m", "200 mm")
         assert app.doc["linear"]["force_N"] == 3500.0 and app.doc["linear"]["stroke_m"] == 0.2
         await _type(pilot, app, "f-linear-stroke-m", "5 kN")
-        err = _text(app.query_one("#f-linear-stroke-m-err", Label))
+        err = wizard.text(app.query_one("#f-linear-stroke-m-err", Label))
         assert "kN is a force, not a length; expected m" in err
 
 
-async def test_invalid_input_is_shown_inline_and_next_waits():
+async def test_invalid_input_is_shown_inline_and_next_waits(wizard):
     src = EXAMPLES / "linear_screw_actuator.toml"
     app = DriveAdvisorApp(tomllib.loads(src.read_text(encoding="utf-8")), src, save_drafts=False)
     async with app.run_test(size=SIZE) as pilot:
@@ -133,10 +111,10 @@ async def test_invalid_input_is_shown_inline_and_next_waits():
         await _type(pilot, app, "f-linear-force-N", "-3500")
         await pilot.press("ctrl+n")
         assert app.step == 1  # Next waited
-        err = _text(app.query_one("#f-linear-force-N-err", Label))
+        err = wizard.text(app.query_one("#f-linear-force-N-err", Label))
         assert "must be ≥ 1" in err and "1 N … 5 MN" in err
         await _type(pilot, app, "f-linear-stroke-m", "abc")
-        assert "must be a number" in _text(app.query_one("#f-linear-stroke-m-err", Label))
+        assert "must be a number" in wizard.text(app.query_one("#f-linear-stroke-m-err", Label))
         # Back keeps what was typed
         await pilot.press("ctrl+b", "ctrl+n")
         assert app.query_one("#f-linear-stroke-m", Input).value == "abc"
@@ -160,7 +138,7 @@ async def test_every_change_is_saved_and_offered_back():
         assert again.query_one("#f-rotary-torque-Nm", Input).value == "750"
 
 
-async def test_a_crash_in_a_calculation_keeps_the_app_and_the_input(monkeypatch):
+async def test_a_crash_in_a_calculation_keeps_the_app_and_the_input(monkeypatch, wizard):
     import advisor.core.engine
 
     def boom(*_a, **_k):
@@ -171,19 +149,19 @@ async def test_a_crash_in_a_calculation_keeps_the_app_and_the_input(monkeypatch)
     doc = tomllib.loads(src.read_text(encoding="utf-8"))
     app = DriveAdvisorApp(doc, src, save_drafts=False)
     async with app.run_test(size=SIZE) as pilot:
-        await _computed(app, pilot)
-        assert "internal error" in _text(app.query_one("#review-error", Static))
+        await wizard.compute(pilot)
+        assert "internal error" in wizard.text(app.query_one("#review-error", Static))
         assert app.doc == doc and app.is_running
 
 
-async def test_infeasible_design_is_explained():
+async def test_infeasible_design_is_explained(wizard):
     src = EXAMPLES / "rudder_actuator.toml"
     doc = tomllib.loads(src.read_text(encoding="utf-8"))
     doc["envelope"] = {"max_outer_diameter_mm": 20.0}
     app = DriveAdvisorApp(doc, src, save_drafts=False)
     async with app.run_test(size=SIZE) as pilot:
-        await _computed(app, pilot)
-        text = _text(app.query_one("#view-summary", Static))
+        await wizard.compute(pilot)
+        text = wizard.text(app.query_one("#view-summary", Static))
         assert "No feasible design" in text and "envelope" in text
 
 

@@ -12,19 +12,16 @@ from textual import events
 from textual.widgets import Input
 
 from advisor.tui import draft as drafts
-from advisor.tui import fields as F
+from advisor.tui import fields
 from advisor.tui.app import DriveAdvisorApp
+
+#: the shared Pilot set-up (tests/conftest.py): own drafts, no animation, a temporary cwd
+pytestmark = pytest.mark.usefixtures("wizard")
 
 SIZE = (120, 40)
 LINEAR = {"application": {"kind": "linear"}}
 FORCE, STROKE, TIME = "f-linear-force-N", "f-linear-stroke-m", "f-linear-travel-time-s"
 SPAN = "f-linear-support-span-m"
-
-
-@pytest.fixture(autouse=True)
-def _state_dir(tmp_path, monkeypatch):
-    monkeypatch.setenv("XDG_STATE_HOME", str(tmp_path / "state"))
-    monkeypatch.chdir(tmp_path)
 
 
 #: what a terminal sends for the keys that are not characters (a Key's ``character``)
@@ -86,19 +83,19 @@ async def test_keys_pressed_without_pauses_fill_two_fields():
 
 def _first_of_step_2() -> str:
     """The id of the screw step's first field (the model decides which it is)."""
-    return F.fields_for("linear", 2)[0].id
+    return fields.fields_for("linear", 2)[0].id
 
 
 async def test_a_burst_runs_on_into_the_next_step():
     """enter on a step's last field is ctrl+n: the keys after it act on the next step's
     first field. Every field of the load step gets a value or, optional, enter alone."""
     values = {FORCE: "3500", STROKE: "0.2", TIME: "5", SPAN: "0.4"}
-    fields = F.fields_for("linear", 1)
-    assert all(f.optional for f in fields if f.id not in values)
+    load_fields = fields.fields_for("linear", 1)
+    assert all(f.optional for f in load_fields if f.id not in values)
     app = DriveAdvisorApp(dict(LINEAR), offer_draft=False)
     async with app.run_test(size=SIZE) as pilot:
         await _on_the_linear_step(app, pilot)
-        _burst(app, *(k for f in fields for k in (*values.get(f.id, ""), "enter")))
+        _burst(app, *(k for f in load_fields for k in (*values.get(f.id, ""), "enter")))
         await _until(pilot, lambda: app.step == 2, "the screw step")
         await _until(pilot, lambda: app.focused.id == _first_of_step_2(), "its first field")
         assert {w: _value(app, w) for w in values} == values

@@ -15,6 +15,9 @@ from textual.widgets import Input
 
 from advisor.tui.app import DriveAdvisorApp
 
+#: the shared Pilot set-up (tests/conftest.py): own drafts, no animation, a temporary cwd
+pytestmark = pytest.mark.usefixtures("wizard")
+
 SIZE = (120, 40)
 SIZES = {"80x24": (80, 24), "120x40": (120, 40)}
 #: One example per application (every step of each is shot).
@@ -26,12 +29,6 @@ APPS = {
 }
 
 
-@pytest.fixture(autouse=True)
-def _state_dir(tmp_path, monkeypatch):
-    monkeypatch.setenv("XDG_STATE_HOME", str(tmp_path / "state"))
-    monkeypatch.setenv("TEXTUAL_ANIMATIONS", "none")
-
-
 def _app(example: str) -> DriveAdvisorApp:
     src = EXAMPLES / example
     return DriveAdvisorApp(
@@ -39,21 +36,10 @@ def _app(example: str) -> DriveAdvisorApp:
     )
 
 
-async def _compute(pilot) -> None:
-    app = pilot.app
-    start = app.results_version
-    await pilot.press("ctrl+r")
-    for _ in range(3000):  # a loaded machine can take seconds for the first compute
-        await pilot.pause(0.02)
-        if app.results_version > start and not app.computing:
-            break
-    await pilot.pause()
-
-
 def _steps_of(kind: str) -> int:
-    from advisor.tui import fields as F
+    from advisor.tui import fields
 
-    return len(F.steps_for(kind))
+    return len(fields.steps_for(kind))
 
 
 @pytest.mark.parametrize("size", sorted(SIZES))
@@ -66,15 +52,15 @@ def test_wizard_step(snap_compare, kind, step, size):
 
 @pytest.mark.parametrize("size", sorted(SIZES))
 @pytest.mark.parametrize("example", sorted(p.name for p in EXAMPLES.glob("*.toml")))
-def test_results(snap_compare, example, size):
-    assert snap_compare(_app(example), run_before=_compute, terminal_size=SIZES[size])
+def test_results(snap_compare, example, size, wizard):
+    assert snap_compare(_app(example), run_before=wizard.compute, terminal_size=SIZES[size])
 
 
 @pytest.mark.parametrize("size", sorted(SIZES))
 @pytest.mark.parametrize("example", ["rudder_actuator.toml", "valve_actuator_hold.toml"])
-def test_compare_view(snap_compare, example, size):
+def test_compare_view(snap_compare, example, size, wizard):
     async def run_before(pilot):
-        await _compute(pilot)
+        await wizard.compute(pilot)
         pilot.app.query_one("#result-tabs").active = "tab-compare"
         await pilot.pause()
 
@@ -83,14 +69,14 @@ def test_compare_view(snap_compare, example, size):
 
 @pytest.mark.parametrize("size", sorted(SIZES))
 @pytest.mark.parametrize("tab", ["summary", "plot"])
-def test_infeasible_result(snap_compare, tab, size):
+def test_infeasible_result(snap_compare, tab, size, wizard):
     """After a feasible result, an infeasible one: no plot of the previous design stays."""
 
     async def run_before(pilot):
-        await _compute(pilot)
+        await wizard.compute(pilot)
         pilot.app.query_one("#f-envelope-max-outer-diameter-mm", Input).value = "20"
         await pilot.pause()
-        await _compute(pilot)
+        await wizard.compute(pilot)
         pilot.app.query_one("#result-tabs").active = f"tab-{tab}"
         await pilot.pause()
 
@@ -107,9 +93,9 @@ def test_unknown_key_offers_a_rename(snap_compare):
     assert snap_compare(app, press=["ctrl+n", "ctrl+n"], terminal_size=(80, 24))
 
 
-def test_components_of_the_valve(snap_compare):
+def test_components_of_the_valve(snap_compare, wizard):
     async def run_before(pilot):
-        await _compute(pilot)
+        await wizard.compute(pilot)
         pilot.app.query_one("#result-tabs").active = "tab-components"
         await pilot.pause()
 
@@ -130,9 +116,9 @@ def test_invalid_input(snap_compare):
     )
 
 
-def test_export_dialog(snap_compare):
+def test_export_dialog(snap_compare, wizard):
     async def run_before(pilot):
-        await _compute(pilot)
+        await wizard.compute(pilot)
         await pilot.press("ctrl+s")
         await pilot.pause()
         pilot.app.screen.query_one("#export-path", Input).value = "rudder.report.toml"

@@ -14,17 +14,14 @@ from textual.widgets import Input, Label, Static
 from advisor.core.engine import advise
 from advisor.core.reading import parse_requirements, read_requirements
 from advisor.core.report import to_toml
-from advisor.tui.app import DriveAdvisorApp, SteadyStatic
+from advisor.tui.app import DriveAdvisorApp
+from advisor.tui.widgets import SteadyStatic
+
+#: the shared Pilot set-up (tests/conftest.py): own drafts, no animation, a temporary cwd
+pytestmark = pytest.mark.usefixtures("wizard")
 
 SIZE = (120, 40)
 RUDDER = EXAMPLES / "rudder_actuator.toml"
-
-
-@pytest.fixture(autouse=True)
-def _state_dir(tmp_path, monkeypatch):
-    monkeypatch.setenv("XDG_STATE_HOME", str(tmp_path / "state"))
-    monkeypatch.setenv("TEXTUAL_ANIMATIONS", "none")
-    monkeypatch.chdir(tmp_path)
 
 
 def _doc(path=RUDDER) -> dict:
@@ -37,21 +34,11 @@ def _app(doc: dict, lazy: bool = True, **kw) -> DriveAdvisorApp:
     )
 
 
-async def _computed(app, pilot) -> None:
-    start = app.results_version
-    await pilot.press("ctrl+r")
-    for _ in range(500):
-        await pilot.pause(0.02)
-        if app.results_version > start and not app.computing:
-            return
-    raise AssertionError("no result")
-
-
-async def test_a_first_compute_needs_no_step_built_and_equals_the_batch():
+async def test_a_first_compute_needs_no_step_built_and_equals_the_batch(wizard):
     app = _app(_doc(), warm_up=True)
     async with app.run_test(size=SIZE) as pilot:
         assert not app.query("#f-rotary-torque-Nm")  # step 2 is not built yet
-        await _computed(app, pilot)
+        await wizard.compute(pilot)
         assert app.report is not None
         assert to_toml(app.report) == to_toml(advise(read_requirements(RUDDER)))
         assert not app.query("#f-rotary-torque-Nm")
@@ -62,7 +49,7 @@ async def test_a_first_compute_needs_no_step_built_and_equals_the_batch():
         assert app.query_one("#f-rotary-torque-Nm", Input).value == f"{torque:g}"
 
 
-async def test_the_lazy_wizard_computes_what_the_fields_would_show():
+async def test_the_lazy_wizard_computes_what_the_fields_would_show(wizard):
     """A value with more digits than a field shows (1620.123456789 → "1620.12"): both
     wizards compute with what is shown, built or not."""
     doc = _doc()
@@ -71,7 +58,7 @@ async def test_the_lazy_wizard_computes_what_the_fields_would_show():
     for lazy in (False, True):
         app = _app(doc, lazy=lazy)
         async with app.run_test(size=SIZE) as pilot:
-            await _computed(app, pilot)
+            await wizard.compute(pilot)
             computed.append(app.computed_doc)
     assert computed[0] == computed[1]
     assert computed[1]["rotary"]["torque_Nm"] == 1620.12
@@ -102,10 +89,10 @@ async def test_an_engine_message_on_a_step_not_built_takes_the_user_there():
         assert str(app.query_one("#f-rotary-torque-Nm-err", Label).render()).strip()
 
 
-async def test_plots_and_the_comparison_are_built_when_shown():
+async def test_plots_and_the_comparison_are_built_when_shown(wizard):
     app = _app(_doc())
     async with app.run_test(size=SIZE) as pilot:
-        await _computed(app, pilot)
+        await wizard.compute(pilot)
         switcher = app.query_one("#plot-switcher")
         assert not switcher.children and not app.query_one("#compare-box").children
         app.query_one("#result-tabs").active = "tab-plot"
@@ -133,7 +120,7 @@ def test_a_steady_static_ignores_only_what_it_already_shows(monkeypatch):
 
 
 @pytest.mark.parametrize("lazy", [False, True])
-async def test_a_choice_not_offered_is_shown_in_its_own_field(lazy):
+async def test_a_choice_not_offered_is_shown_in_its_own_field(lazy, wizard):
     """A list cannot show 'cylinder': its field says so (the default shown), and the first
     step lists it among the loading problems; built at once or later, the same."""
     doc = _doc()
@@ -147,7 +134,7 @@ async def test_a_choice_not_offered_is_shown_in_its_own_field(lazy):
             await pilot.press("ctrl+n")
         err = str(app.query_one("#f-gearbox-rolling-body-err", Label).render())
         assert "'cylinder' in the file is not one of ball, roller" in err
-        await _computed(app, pilot)
+        await wizard.compute(pilot)
         assert app.report is not None
 
 
@@ -179,7 +166,7 @@ async def test_wrong_files_walk_and_compute_with_steps_built_late(doc):
 
 @pytest.mark.parametrize("edit", [False, True])
 async def test_the_first_compute_takes_the_warm_ups_design_only_for_the_same_document(
-    monkeypatch, edit
+    monkeypatch, edit, wizard
 ):
     """The warm-up advises once on the file as given; a first ctrl+r on that very document
     shows that design (the engine is not run again), an edited one is computed anew."""
@@ -193,7 +180,7 @@ async def test_the_first_compute_takes_the_warm_ups_design_only_for_the_same_doc
         if edit:
             app.query_one("#f-application-title", Input).value = "edited before ctrl+r"
             await pilot.pause()
-        await _computed(app, pilot)
+        await wizard.compute(pilot)
         assert app.report is not None
         expected = _doc()
         if edit:
@@ -202,7 +189,7 @@ async def test_the_first_compute_takes_the_warm_ups_design_only_for_the_same_doc
         assert to_toml(app.report) == to_toml(advise(parse_requirements(expected)))
         assert len(calls) == (2 if edit else 1)  # the warm-up's, and the edited document's
         # a second ctrl+r computes again: the warm-up's design is taken once
-        await _computed(app, pilot)
+        await wizard.compute(pilot)
         assert len(calls) == (3 if edit else 2)
 
 

@@ -13,41 +13,15 @@ from advisor.tui import draft as drafts
 from advisor.tui import fixes
 from advisor.tui.app import ConfirmScreen, DriveAdvisorApp, ExportScreen
 
+#: the shared Pilot set-up (tests/conftest.py): own drafts, no animation, a temporary cwd
+pytestmark = pytest.mark.usefixtures("wizard")
+
 SIZE = (120, 40)
 VALVE = EXAMPLES / "valve_actuator_hold.toml"
 
 
-@pytest.fixture(autouse=True)
-def _state_dir(tmp_path, monkeypatch):
-    monkeypatch.setenv("XDG_STATE_HOME", str(tmp_path / "state"))
-    monkeypatch.setenv("TEXTUAL_ANIMATIONS", "none")
-    monkeypatch.chdir(tmp_path)
-
-
-def _text(widget) -> str:
-    from rich.console import Console
-
-    console = Console(width=200, record=True, file=open(__import__("os").devnull, "w"))
-    console.print(widget.content if hasattr(widget, "content") else widget.render())
-    return console.export_text()
-
-
 def _doc(path=VALVE) -> dict:
     return tomllib.loads(path.read_text(encoding="utf-8"))
-
-
-async def _settle(pilot, app, start: int) -> None:
-    for _ in range(500):
-        await pilot.pause(0.02)
-        if app.results_version > start and not app.computing:
-            return
-    raise AssertionError("no result")
-
-
-async def _computed(app, pilot) -> None:
-    start = app.results_version
-    await pilot.press("ctrl+r")
-    await _settle(pilot, app, start)
 
 
 async def _retype(pilot, app, widget_id: str, text: str) -> None:
@@ -59,7 +33,7 @@ async def _retype(pilot, app, widget_id: str, text: str) -> None:
 
 
 # ------------------------------------------------------------------ never compute the unseen
-async def test_a_field_in_error_stops_compute_and_the_draft_never_holds_a_half_value():
+async def test_a_field_in_error_stops_compute_and_the_draft_never_holds_a_half_value(wizard):
     """The issue's repro: torque 8OO (letter O) computed 8 N·m and the draft held 8.0."""
     app = DriveAdvisorApp(_doc(), VALVE)
     async with app.run_test(size=SIZE) as pilot:
@@ -72,7 +46,7 @@ async def test_a_field_in_error_stops_compute_and_the_draft_never_holds_a_half_v
         assert app.results_version == start and app.report is None  # nothing computed
         assert app.query_one("#main").current == "wizard" and app.step == 1
         assert app.focused is app.query_one("#f-rotary-torque-Nm")  # taken to the field
-        assert "'8OO': must be a number or a quantity with a unit" in _text(
+        assert "'8OO': must be a number or a quantity with a unit" in wizard.text(
             app.query_one("#f-rotary-torque-Nm-err", Label)
         )
         saved = drafts.load_draft(VALVE).doc
@@ -83,7 +57,7 @@ async def test_a_field_in_error_stops_compute_and_the_draft_never_holds_a_half_v
         assert not isinstance(app.screen, ExportScreen)
 
 
-async def test_a_cleared_field_is_not_computed_with_its_old_value():
+async def test_a_cleared_field_is_not_computed_with_its_old_value(wizard):
     app = DriveAdvisorApp(_doc(), VALVE, save_drafts=False)
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("ctrl+n")
@@ -93,14 +67,14 @@ async def test_a_cleared_field_is_not_computed_with_its_old_value():
         await pilot.pause(0.3)
         assert app.results_version == start  # not 1000 N·m, the value no longer shown
         assert app.step == 1 and app.focused is app.query_one("#f-rotary-torque-Nm")
-        assert "required" in _text(app.query_one("#f-rotary-torque-Nm-err", Label))
+        assert "required" in wizard.text(app.query_one("#f-rotary-torque-Nm-err", Label))
         # typed again, it computes exactly what is shown
         await pilot.press(*"800")
-        await _computed(app, pilot)
+        await wizard.compute(pilot)
         assert app.report.requirements["rotary"]["torque_Nm"] == 800.0
 
 
-async def test_an_error_on_another_step_is_shown_before_computing():
+async def test_an_error_on_another_step_is_shown_before_computing(wizard):
     app = DriveAdvisorApp(_doc(), VALVE, save_drafts=False)
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("ctrl+n", "ctrl+n")
@@ -113,45 +87,45 @@ async def test_an_error_on_another_step_is_shown_before_computing():
         await pilot.press("ctrl+r")
         await pilot.pause(0.3)
         assert app.results_version == start and app.step == 2
-        assert "must be ≥ 1" in _text(app.query_one("#f-envelope-max-length-mm-err", Label))
+        assert "must be ≥ 1" in wizard.text(app.query_one("#f-envelope-max-length-mm-err", Label))
 
 
-async def test_an_infeasible_recompute_leaves_no_plot_of_the_previous_design():
+async def test_an_infeasible_recompute_leaves_no_plot_of_the_previous_design(wizard):
     app = DriveAdvisorApp(_doc(), VALVE, save_drafts=False)
     async with app.run_test(size=SIZE) as pilot:
-        await _computed(app, pilot)
+        await wizard.compute(pilot)
         assert app.report is not None
         app.query_one("#result-tabs").active = "tab-plot"  # plots are drawn when shown
         await pilot.pause()
         assert len(app.query_one("#plot-switcher").children) == 1 and len(app.plot_titles) == 2
         await pilot.press("ctrl+e", "ctrl+n", "ctrl+n")
         await _retype(pilot, app, "f-envelope-max-outer-diameter-mm", "20")
-        await _computed(app, pilot)
+        await wizard.compute(pilot)
         assert app.report is None
         assert len(app.query_one("#plot-switcher").children) == 0
-        assert "No plot" in _text(app.query_one("#plot-note", Static))
+        assert "No plot" in wizard.text(app.query_one("#plot-note", Static))
         for name in ("components", "decisions", "checks"):
-            assert "No design to show" in _text(app.query_one(f"#view-{name}", Static))
-        summary = _text(app.query_one("#view-summary", Static))
+            assert "No design to show" in wizard.text(app.query_one(f"#view-{name}", Static))
+        summary = wizard.text(app.query_one("#view-summary", Static))
         assert summary.count("No feasible design") == 1
-        assert "No design" in _text(app.query_one("#result-status", Static))
+        assert "No design" in wizard.text(app.query_one("#result-status", Static))
 
 
-async def test_results_say_when_the_inputs_changed_since_and_the_report_is_not_saved_stale():
+async def test_results_say_when_the_inputs_changed_since_and_the_report_is_not_saved_stale(wizard):
     app = DriveAdvisorApp(_doc(), VALVE, save_drafts=False)
     async with app.run_test(size=SIZE) as pilot:
-        await _computed(app, pilot)
-        assert "as they are now" in _text(app.query_one("#result-status", Static))
+        await wizard.compute(pilot)
+        assert "as they are now" in wizard.text(app.query_one("#result-status", Static))
         await pilot.press("ctrl+e", "ctrl+n")
         await _retype(pilot, app, "f-rotary-torque-Nm", "900")
-        assert "changed since this result" in _text(app.query_one("#result-status", Static))
+        assert "changed since this result" in wizard.text(app.query_one("#result-status", Static))
         await pilot.press("ctrl+s")
         await pilot.pause()
         assert isinstance(app.screen, ExportScreen)
         assert app.screen.query_one("#save-report", Button).disabled
         await pilot.press("escape")
-        await _computed(app, pilot)
-        summary = _text(app.query_one("#view-summary", Static))
+        await wizard.compute(pilot)
+        summary = wizard.text(app.query_one("#view-summary", Static))
         assert "Changed since the previous result" in summary
         # the lines of advisor diff: the requirement with its unit, then what followed
         assert "requirement rotary.torque_Nm: 1000 N·m → 900 N·m" in summary
@@ -177,7 +151,7 @@ async def test_opening_a_file_keeps_the_draft_of_a_new_requirement():
 
 
 # ------------------------------------------------------------------ every file can be fixed
-async def test_a_file_without_the_motor_table_gets_its_fixed_values(tmp_path):
+async def test_a_file_without_the_motor_table_gets_its_fixed_values(tmp_path, wizard):
     doc = _doc()
     del doc["motor"]
     app = DriveAdvisorApp(doc, tmp_path / "no_motor.toml", save_drafts=False)
@@ -185,7 +159,7 @@ async def test_a_file_without_the_motor_table_gets_its_fixed_values(tmp_path):
         for step in (1, 2, 3, 4):
             await pilot.press("ctrl+n")
             assert app.step == step
-        await _computed(app, pilot)
+        await wizard.compute(pilot)
         assert app.report is not None
 
 
@@ -208,7 +182,7 @@ async def test_an_unknown_key_is_renamed_to_the_closest_known_key(tmp_path):
         assert app.step == 2
 
 
-async def test_an_unknown_key_can_be_removed(tmp_path):
+async def test_an_unknown_key_can_be_removed(tmp_path, wizard):
     doc = _doc()
     doc["gearbox"]["colour"] = "red"
     app = DriveAdvisorApp(doc, tmp_path / "extra.toml", save_drafts=False)
@@ -220,11 +194,11 @@ async def test_an_unknown_key_can_be_removed(tmp_path):
         await pilot.click(".fix Button")
         await pilot.pause()
         assert "colour" not in app.doc["gearbox"]
-        await _computed(app, pilot)
+        await wizard.compute(pilot)
         assert app.report is not None
 
 
-async def test_a_wrong_typed_value_is_shown_in_its_field(tmp_path):
+async def test_a_wrong_typed_value_is_shown_in_its_field(tmp_path, wizard):
     doc = _doc()
     doc["rotary"]["torque_Nm"] = True
     doc["gearbox"]["rolling_body"] = "cylinder"
@@ -234,11 +208,11 @@ async def test_a_wrong_typed_value_is_shown_in_its_field(tmp_path):
         await pilot.pause(0.3)
         assert app.step == 1 and app.focused is app.query_one("#f-rotary-torque-Nm")
         assert app.query_one("#f-rotary-torque-Nm", Input).value == "True"
-        assert "must be a number or a quantity with a unit" in _text(
+        assert "must be a number or a quantity with a unit" in wizard.text(
             app.query_one("#f-rotary-torque-Nm-err", Label)
         )
         # a choice no list can show is set aside on opening, and said so on the first step
-        said = _text(app.query_one("#step-0-error", Static))
+        said = wizard.text(app.query_one("#step-0-error", Static))
         assert "gearbox.rolling_body = 'cylinder': must be one of ball, roller" in said
 
 
@@ -287,30 +261,30 @@ async def test_focus_starts_on_the_first_field_of_each_step_and_no_key_is_lost()
         assert app.focused is app.query_one("#f-envelope-max-outer-diameter-mm")
 
 
-async def test_step_names_fit_the_application_and_no_step_is_empty():
+async def test_step_names_fit_the_application_and_no_step_is_empty(wizard):
     app = DriveAdvisorApp(
         tomllib.loads((EXAMPLES / "gyro_compensator.toml").read_text()), save_drafts=False
     )
     async with app.run_test(size=(80, 24)) as pilot:
-        bar = _text(app.query_one("#steps", Static))
+        bar = wizard.text(app.query_one("#steps", Static))
         assert "Aerodynamic drag" in bar or "3" in bar
         await pilot.press("ctrl+n", "ctrl+n")
-        assert "Aerodynamic drag" in _text(app.query_one("#steps", Static))
-        assert "Review" in _text(app.query_one("#steps", Static))  # named even at 80
+        assert "Aerodynamic drag" in wizard.text(app.query_one("#steps", Static))
+        assert "Review" in wizard.text(app.query_one("#steps", Static))  # named even at 80
     app = DriveAdvisorApp(
         tomllib.loads((EXAMPLES / "positioning_drive.toml").read_text()), save_drafts=False
     )
     async with app.run_test(size=(80, 24)) as pilot:
         await pilot.press("ctrl+n", "ctrl+n")
         assert app.step == 3  # step 2 has no question for a positioning drive: skipped
-        assert "Candidate motors" in _text(app.query_one("#steps", Static))
-        assert "Review" in _text(app.query_one("#steps", Static))
+        assert "Candidate motors" in wizard.text(app.query_one("#steps", Static))
+        assert "Review" in wizard.text(app.query_one("#steps", Static))
 
 
-async def test_export_dialog_path_has_focus_enter_saves_and_keep_keeps_the_path(tmp_path):
+async def test_export_dialog_path_has_focus_enter_saves_and_keep_keeps_the_path(tmp_path, wizard):
     app = DriveAdvisorApp(_doc(), VALVE, save_drafts=False)
     async with app.run_test(size=SIZE) as pilot:
-        await _computed(app, pilot)
+        await wizard.compute(pilot)
         (tmp_path / "taken.report.toml").write_text("keep me")
         await pilot.press("ctrl+s", "ctrl+u", *"taken.report.toml", "enter")
         await pilot.pause()
@@ -327,7 +301,7 @@ async def test_export_dialog_path_has_focus_enter_saves_and_keep_keeps_the_path(
         assert "[design" in (tmp_path / "fresh.report.toml").read_text()
 
 
-async def test_export_never_replaces_the_opened_requirement_with_its_report(tmp_path):
+async def test_export_never_replaces_the_opened_requirement_with_its_report(tmp_path, wizard):
     """The report typed over the requirement file the wizard opened is refused in the dialog
     (as advisor --batch -o refuses it), before any "Replace?" question; so is a directory."""
     src = tmp_path / "valve.toml"
@@ -336,19 +310,21 @@ async def test_export_never_replaces_the_opened_requirement_with_its_report(tmp_
     (tmp_path / "adir.toml").mkdir()
     app = DriveAdvisorApp(_doc(src), src, save_drafts=False)
     async with app.run_test(size=SIZE) as pilot:
-        await _computed(app, pilot)
+        await wizard.compute(pilot)
         await pilot.press("ctrl+s", "ctrl+u", *str(src), "enter")
         await pilot.pause()
         assert isinstance(app.screen, ExportScreen)  # no confirmation asked
-        assert "is the requirement file itself" in _text(app.screen.query_one("#export-error"))
+        assert "is the requirement file itself" in wizard.text(
+            app.screen.query_one("#export-error")
+        )
         await pilot.press("ctrl+u", *str(tmp_path / "adir.toml"), "enter")
         await pilot.pause()
         assert isinstance(app.screen, ExportScreen)
-        assert "not a regular file" in _text(app.screen.query_one("#export-error"))
+        assert "not a regular file" in wizard.text(app.screen.query_one("#export-error"))
     assert src.read_text(encoding="utf-8") == before
 
 
-async def test_it_shows_that_it_is_computing(monkeypatch):
+async def test_it_shows_that_it_is_computing(monkeypatch, wizard):
     import threading
 
     from advisor.core import engine
@@ -370,32 +346,32 @@ async def test_it_shows_that_it_is_computing(monkeypatch):
                 break
             await pilot.pause(0.02)
         await pilot.pause()
-        during = _text(app.query_one("#steps", Static))
+        during = wizard.text(app.query_one("#steps", Static))
         gate.set()
-        await _settle(pilot, app, start)
+        await wizard.settle(pilot, start)
         assert "Computing" in during
-        assert "Computing" not in _text(app.query_one("#steps", Static))
+        assert "Computing" not in wizard.text(app.query_one("#steps", Static))
 
 
-async def test_one_way_device_summary_and_components():
+async def test_one_way_device_summary_and_components(wizard):
     app = DriveAdvisorApp(_doc(), VALVE, save_drafts=False)
     async with app.run_test(size=SIZE) as pilot:
-        await _computed(app, pilot)
-        summary = _text(app.query_one("#view-summary", Static))
+        await wizard.compute(pilot)
+        summary = wizard.text(app.query_one("#view-summary", Static))
         assert "holding: roller clutch at the motor side" in summary
-        comps = _text(app.query_one("#view-components", Static))
+        comps = wizard.text(app.query_one("#view-components", Static))
         assert "where" in comps and "motor side" in comps and "output side" in comps
         assert "em clutch" in comps and "(chosen)" in comps and "basis" in comps
 
 
 # ------------------------------------------------------------------ compare
-async def test_compare_shows_the_alternatives_and_use_this_imposes_one():
+async def test_compare_shows_the_alternatives_and_use_this_imposes_one(wizard):
     app = DriveAdvisorApp(_doc(), VALVE, save_drafts=False)
     async with app.run_test(size=SIZE) as pilot:
-        await _computed(app, pilot)
+        await wizard.compute(pilot)
         app.query_one("#result-tabs").active = "tab-compare"
         await pilot.pause()
-        text = "\n".join(_text(w) for w in app.query("#compare-box Static"))
+        text = "\n".join(wizard.text(w) for w in app.query("#compare-box Static"))
         assert "▶ rules (seed 000)" in text and "lightest in the space" in text
         assert "slimmest in the space" in text and "▶ roller clutch" in text
         assert "▶ chosen: BL-02" in text and "OW-02" in text
@@ -406,17 +382,17 @@ async def test_compare_shows_the_alternatives_and_use_this_imposes_one():
         start = app.results_version
         button = next(b for b in app.query("#compare-box Button") if "em clutch" in str(b.label))
         button.press()
-        await _settle(pilot, app, start)
+        await wizard.settle(pilot, start)
         assert app.doc["one_way"]["type"] == "em_clutch"
         assert app.report.design.one_way.type == "em_clutch"  # the next compute is that design
-        summary = _text(app.query_one("#view-summary", Static))
+        summary = wizard.text(app.query_one("#view-summary", Static))
         assert "requirement one_way.type: auto → em_clutch" in summary  # advisor diff's words
 
 
-async def test_compare_use_takes_the_lightest_reducer_and_the_device_at_the_output():
+async def test_compare_use_takes_the_lightest_reducer_and_the_device_at_the_output(wizard):
     app = DriveAdvisorApp(_doc(), VALVE, save_drafts=False)
     async with app.run_test(size=SIZE) as pilot:
-        await _computed(app, pilot)
+        await wizard.compute(pilot)
         lightest = app.report.design.gearbox.optimum
         app.query_one("#result-tabs").active = "tab-compare"
         await pilot.pause()
@@ -425,7 +401,7 @@ async def test_compare_use_takes_the_lightest_reducer_and_the_device_at_the_outp
             start = app.results_version
             button = next(b for b in app.query("#compare-box Button") if str(b.label) == label)
             button.press()
-            await _settle(pilot, app, start)
+            await wizard.settle(pilot, start)
             app.query_one("#result-tabs").active = "tab-compare"  # the result opens on Summary
             await pilot.pause()
 
@@ -433,7 +409,7 @@ async def test_compare_use_takes_the_lightest_reducer_and_the_device_at_the_outp
         assert app.doc["gearbox"]["choice"] == "lightest"
         g = app.report.design.gearbox  # the next compute is that reducer
         assert g.mass_kg == lightest.mass_kg and len(g.stages) == len(lightest.stages)
-        text = "\n".join(_text(w) for w in app.query("#compare-box Static"))
+        text = "\n".join(wizard.text(w) for w in app.query("#compare-box Static"))
         assert "▶ lightest in the space" in text and "WG-06" in text
         labels = [str(b.label) for b in app.query("#compare-box Button")]
         assert "Use the rules" in labels and "Use the lightest" not in labels
@@ -450,13 +426,13 @@ async def test_compare_use_takes_the_lightest_reducer_and_the_device_at_the_outp
         assert app.query_one("#f-one-way-location").value == "output_side"
 
 
-async def test_compare_after_an_infeasible_result_says_why_there_is_nothing():
+async def test_compare_after_an_infeasible_result_says_why_there_is_nothing(wizard):
     doc = _doc()
     doc.setdefault("envelope", {})["max_outer_diameter_mm"] = 20
     app = DriveAdvisorApp(doc, VALVE, save_drafts=False)
     async with app.run_test(size=SIZE) as pilot:
-        await _computed(app, pilot)
-        text = "\n".join(_text(w) for w in app.query("#compare-box Static"))
+        await wizard.compute(pilot)
+        text = "\n".join(wizard.text(w) for w in app.query("#compare-box Static"))
         assert "Nothing to compare: the requirement has no feasible design" in text
 
 
@@ -470,7 +446,7 @@ def test_plot_markers_tell_series_apart_without_colour():
     assert views.plural(1, "check") == "1 check" and views.plural(2, "check") == "2 checks"
 
 
-async def test_keys_arriving_in_a_burst_act_in_order():
+async def test_keys_arriving_in_a_burst_act_in_order(wizard):
     """A loaded machine delivers keys in bursts: ctrl+u then a path, all queued at once.
     textual ran ctrl+u's deletion after the path was typed (and deleted it); here it acts
     first, as typed. The same for backspace in a wizard field."""
@@ -483,7 +459,7 @@ async def test_keys_arriving_in_a_burst_act_in_order():
 
     app = DriveAdvisorApp(_doc(), VALVE, save_drafts=False)
     async with app.run_test(size=SIZE) as pilot:
-        await _computed(app, pilot)
+        await wizard.compute(pilot)
         await pilot.press("ctrl+s")
         await pilot.pause()
         burst(app, ["ctrl+u", *"e2e", "full_stop", *"toml"])
@@ -513,7 +489,7 @@ def test_the_loss_curve_passes_through_every_candidate_speed():
     assert curve[5000.0]["total"] == pytest.approx(228.42, abs=0.01)
 
 
-async def test_a_message_the_engine_no_longer_gives_leaves_its_field(tmp_path):
+async def test_a_message_the_engine_no_longer_gives_leaves_its_field(tmp_path, wizard):
     """An S4 duty without starts_per_hour: the empty field says "missing; required for
     duty_type = 'S4'". Once the duty is S3, the engine says nothing of it, and neither may
     the field, while a design computed from the same inputs is shown (a reviewer found the
@@ -535,13 +511,13 @@ async def test_a_message_the_engine_no_longer_gives_leaves_its_field(tmp_path):
         starts = next(i for i in ids if "starts-per-hour" in i)
         kind = next(i for i in ids if "duty-type" in i)
         label = app.query_one(f"#{starts}-err", Label)
-        assert "missing; required for duty_type = 'S4'" in _text(label)
+        assert "missing; required for duty_type = 'S4'" in wizard.text(label)
         assert app.report is None
         app.query_one(f"#{kind}", Select).value = "S3"
         await pilot.pause()
-        await _computed(app, pilot)
+        await wizard.compute(pilot)
         assert app.report is not None
-        assert _text(label).strip() == ""
+        assert wizard.text(label).strip() == ""
 
 
 async def test_a_title_with_terminal_escapes_is_shown_escaped():
