@@ -17,7 +17,11 @@ _SUPERSCRIPT = str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")
 
 def number_prose(x: float) -> str:
     """A limit as the prose of a range writes it: plain from 0.01 to below 10⁴ (``0.05``,
-    ``2000``) except 10³ itself, else a power of ten (``10⁻³``, ``10³``, ``2·10⁵``)."""
+    ``2000``) except 10³ itself, else a power of ten (``10⁻³``, ``10³``, ``2·10⁵``).
+
+    >>> [number_prose(x) for x in (0, 0.05, 2000, 1e3, 1e-3, 2e5)]
+    ['0', '0.05', '2000', '10³', '10⁻³', '2·10⁵']
+    """
     if x == 0 or (1e-2 <= abs(x) < 1e4 and abs(x) != 1e3):
         return f"{x:g}"
     exponent = math.floor(math.log10(abs(x)))
@@ -46,7 +50,15 @@ def range_prose(
 ) -> str:
     """The valid range of a number in words, from its constraint: ``1 … 10⁵ N·m``,
     ``1 mm … 20 m`` (see :data:`PREFIXED_UNITS`), ``> 0 … 2000 mm`` (an open end), ``≥ 1``
-    (no upper end)."""
+    (no upper end).
+
+    >>> range_prose("N·m", ge=1, le=1e5), range_prose("N", ge=1, le=5e6)
+    ('1 … 10⁵ N·m', '1 N … 5 MN')
+    >>> range_prose("mm", gt=0, le=2000), range_prose("", gt=0, lt=1)
+    ('> 0 … 2000 mm', '> 0 … < 1')
+    >>> range_prose("deg", ge=0, le=180)
+    '0 … 180°'
+    """
     lo, hi = (ge if gt is None else gt), (le if lt is None else lt)
     low = None if lo is None else ("" if gt is None else "> ") + _limit(lo, unit)
     high = None if hi is None else ("" if lt is None else "< ") + _limit(hi, unit)
