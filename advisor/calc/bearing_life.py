@@ -57,7 +57,27 @@ class Equivalent(NamedTuple):
 
 
 def equivalent_load(b: Bearing, radial_N: float, axial_N: float) -> Equivalent:
-    """Dynamic equivalent load P = X·F_r + Y·F_a (ISO 281:2007, 6.1)."""
+    """Dynamic equivalent load P = X·F_r + Y·F_a (ISO 281:2007, 6.1).
+
+    Parameters
+    ----------
+    b : Bearing
+        Catalog row: C, C0 [kN], type, contact angle [°], f0
+    radial_N : float
+        Radial load F_r [N]
+    axial_N : float
+        Axial load F_a [N]
+
+    Returns
+    -------
+    Equivalent
+        Equivalent load P [N], the limit e and the factors X, Y [-]
+
+    Notes
+    -----
+    Single-row deep-groove (normal clearance) and angular-contact ball bearings, ISO 281:2007,
+    table 3.
+    """
     c0 = b.C0_kN * 1e3
     if b.type == "deep_groove":
         e, y = _interp(_DG, (b.f0 or 0.0) * axial_N / c0)
@@ -76,7 +96,22 @@ def equivalent_load(b: Bearing, radial_N: float, axial_N: float) -> Equivalent:
 
 
 def rating_life_h(b: Bearing, load_N: float, speed_rpm: float) -> float:
-    """L10h = 10⁶/(60·n)·(C/P)³ for ball bearings (ISO 281:2007, eq. (1))."""
+    """L10h = 10⁶/(60·n)·(C/P)³ for ball bearings (ISO 281:2007, eq. (1)).
+
+    Parameters
+    ----------
+    b : Bearing
+        Catalog row: C, C0 [kN], type, contact angle [°], f0
+    load_N : float
+        Dynamic equivalent load P [N]
+    speed_rpm : float
+        Speed n [rpm]
+
+    Returns
+    -------
+    float
+        Basic rating life L10h [h]; infinite without load
+    """
     if load_N <= 0:
         return math.inf
     return 1e6 / (60.0 * speed_rpm) * (b.C_kN * 1e3 / load_N) ** 3
@@ -84,7 +119,22 @@ def rating_life_h(b: Bearing, load_N: float, speed_rpm: float) -> float:
 
 def static_safety(b: Bearing, radial_N: float, axial_N: float) -> float:
     """s0 = C0/P0 with P0 = max(F_r, 0.5·F_r + 0.46·F_a) for 15° angular contact, 0.6/0.5 for
-    deep groove (ISO 76 / SKF catalogue)."""
+    deep groove (ISO 76 / SKF catalogue).
+
+    Parameters
+    ----------
+    b : Bearing
+        Catalog row: C, C0 [kN], type, contact angle [°], f0
+    radial_N : float
+        Radial load F_r [N]
+    axial_N : float
+        Axial load F_a [N]
+
+    Returns
+    -------
+    float
+        Static safety s0 = C0/P0 [-]; infinite without load
+    """
     if b.type == "deep_groove":
         p0 = max(radial_N, 0.6 * radial_N + 0.5 * axial_N)
     else:
@@ -119,6 +169,31 @@ def skf_friction(
 ) -> SkfFriction:
     """Rolling and sliding moments of the SKF model, M = φ_ish·M_rr + M_sl (no seals, no
     oil-bath drag; the kinematic-starvation factor φ_rs is taken as 1, which errs high).
+
+    Parameters
+    ----------
+    b : Bearing
+        Catalog row: d, D [mm], C0 [kN], type
+    k : FrictionConstants
+        The SKF model's constants R1…R3, S1…S3 of the bearing's series
+    radial_N : float
+        Radial load F_r [N]
+    axial_N : float
+        Axial load F_a [N]
+    speed_rpm : float
+        Speed n [rpm]
+    viscosity_mm2_s : float
+        Lubricant's kinematic viscosity at the operating temperature ν [mm²/s]
+
+    Returns
+    -------
+    SkfFriction
+        Rolling and sliding moments [N·m] and the shear heating factor φ_ish [-]
+
+    Notes
+    -----
+    SKF General Catalogue, the SKF model of frictional moment; dimensions in mm and moments in
+    N·mm inside the formulas.
     """
     n, nu = speed_rpm, viscosity_mm2_s
     dm = 0.5 * (b.d_mm + b.D_mm)
@@ -152,6 +227,22 @@ def rating_life_Mrev(C_N: float, load_N: float, exponent: float = 3.0) -> float:
     SKF General Catalogue, calculation example 1: 6309, C = 55.3 kN, P = F_r = 10 kN →
     (5.53)³ = 169.1 million revolutions.
 
+    Parameters
+    ----------
+    C_N : float
+        Basic dynamic load rating C [N]
+    load_N : float
+        Dynamic equivalent load P [N]
+    exponent : float, optional
+        Life exponent p: 3 ball bearings, 10/3 roller bearings [-]
+
+    Returns
+    -------
+    float
+        Basic rating life L10 [millions of revolutions]; infinite without load
+
+    Examples
+    --------
     >>> round(rating_life_Mrev(55300.0, 10000.0), 1)
     169.1
     """
@@ -164,6 +255,20 @@ def hours_from_Mrev(life_Mrev: float, speed_rpm: float) -> float:
     """L10h = 10⁶/(60·n)·L10  [h] (ISO 281:2007). SKF's example 1: 169 million revolutions at
     3000 r/min → 10⁶/(60·3000)·169 = 939 h, printed as 940 h.
 
+    Parameters
+    ----------
+    life_Mrev : float
+        Life L10 [millions of revolutions]
+    speed_rpm : float
+        Speed n [rpm]
+
+    Returns
+    -------
+    float
+        Life L10h [h]
+
+    Examples
+    --------
     >>> round(hours_from_Mrev(169.0, 3000.0))
     939
     """
@@ -178,6 +283,24 @@ def pair_loads(
     tilting moment as a couple ±M/a, and the axial force on the locating one (counted on the
     most loaded one: errs high).
 
+    Parameters
+    ----------
+    radial_N : float
+        Radial force at the output F_r [N]
+    axial_N : float
+        Axial force at the output F_a [N]
+    moment_Nm : float
+        Tilting moment M [N·m]
+    spacing_mm : float or None
+        Distance between the pair's bearings a [mm]; None: one bearing
+
+    Returns
+    -------
+    tuple of float
+        Radial and axial load on the most loaded bearing [N]
+
+    Examples
+    --------
     >>> pair_loads(10000.0, 0.0, 0.0, None)
     (10000.0, 0.0)
     >>> pair_loads(2000.0, 500.0, 100.0, 100.0)  # 1000 + 100/0.1

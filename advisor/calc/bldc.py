@@ -30,6 +30,26 @@ class PoleSlot(NamedTuple):
 def winding_factor(slots: int, pole_pairs: int, teeth_per_group: int) -> float:
     """Fundamental winding factor of a tooth-coil winding [2].
 
+    Parameters
+    ----------
+    slots : int
+        Stator teeth (slots) z [-]
+    pole_pairs : int
+        Rotor pole pairs p [-]
+    teeth_per_group : int
+        Adjacent teeth of one phase group k [-]
+
+    Returns
+    -------
+    float
+        Fundamental winding factor k_w = k_p·k_d [-]
+
+    Notes
+    -----
+    For tooth-coil (concentrated) windings with alternating coil polarity within a group.
+
+    Examples
+    --------
     >>> round(winding_factor(12, 5, 2), 3), round(winding_factor(9, 4, 3), 3)
     (0.933, 0.945)
     """
@@ -46,6 +66,18 @@ def pole_slot_combinations(phases: int = 3, max_slots: int = 36) -> list[PoleSlo
 
     z must hold a whole number of phase groups of k teeth (z divisible by m·k), 2p must be
     even, and the winding must be balanced (z / gcd(z, p) divisible by m).
+
+    Parameters
+    ----------
+    phases : int, optional
+        Phases m [-]
+    max_slots : int, optional
+        Most teeth z enumerated [-]
+
+    Returns
+    -------
+    list of PoleSlot
+        Slots, poles, teeth per group and winding factor, by poles then slots
     """
     out = []
     for z in range(phases, max_slots + 1, phases):
@@ -67,6 +99,20 @@ def pole_slot_combinations(phases: int = 3, max_slots: int = 36) -> list[PoleSlo
 def flux_frequency_Hz(speed_rpm: float, pole_pairs: int) -> float:
     """f = n·p/60. Seed 000: 5000 rpm, p = 6 → 500 Hz.
 
+    Parameters
+    ----------
+    speed_rpm : float
+        Motor speed n [rpm]
+    pole_pairs : int
+        Pole pairs p (the electrical reduction) [-]
+
+    Returns
+    -------
+    float
+        Flux frequency in the stator f [Hz]
+
+    Examples
+    --------
     >>> flux_frequency_Hz(5000, 6)
     500.0
     """
@@ -78,6 +124,24 @@ def stator_steel_mass(
 ) -> float:
     """m = ρ·S·l·k_з. Seed 000: 7.8 g/cm³ × 12 cm² × 5 cm × 0.85 ≈ 0.4 kg.
 
+    Parameters
+    ----------
+    area_mm2 : float
+        Steel cross-section of the stator S [mm²]
+    stack_length_mm : float
+        Stack length l [mm]
+    fill : float
+        Stacking factor k_з [-]
+    density_kg_m3 : float
+        Steel density ρ [kg/m³]
+
+    Returns
+    -------
+    float
+        Stator steel mass m [kg]
+
+    Examples
+    --------
     >>> round(stator_steel_mass(1200, 50, 0.85, 7800), 4)
     0.3978
     """
@@ -89,6 +153,25 @@ def iron_specific_loss_quadratic(p15_50_W_kg: float, frequency_Hz: float) -> flo
     simplification of eq. (5) (hysteresis neglected, the excess term taken ∝ f²):
     P = P1.5/50·(f/50)². Seed 000: 2.5 W/kg at 500 Hz → 250 W/kg.
 
+    Parameters
+    ----------
+    p15_50_W_kg : float
+        Catalog loss of the steel at 1.5 T, 50 Hz P1.5/50 [W/kg]
+    frequency_Hz : float
+        Flux frequency f [Hz]
+
+    Returns
+    -------
+    float
+        Specific iron loss at 1.5 T [W/kg]
+
+    Notes
+    -----
+    The seed's simplification; it overstates the loss below 50 Hz and where hysteresis
+    dominates. The three-term :func:`fit_eq5` is the fuller model.
+
+    Examples
+    --------
     >>> iron_specific_loss_quadratic(2.5, 500)
     250.0
     """
@@ -111,6 +194,27 @@ def fit_eq5(p10_50: float, p15_50: float, p10_400: float) -> SteinmetzTerms:
     """Fit the three terms of seed 000 eq. (5) to the three catalog losses of a steel
     (P1.0/50, P1.5/50, P1.0/400), solving the 3×3 linear system exactly.
 
+    Parameters
+    ----------
+    p10_50 : float
+        Catalog loss at 1.0 T, 50 Hz [W/kg]
+    p15_50 : float
+        Catalog loss at 1.5 T, 50 Hz [W/kg]
+    p10_400 : float
+        Catalog loss at 1.0 T, 400 Hz [W/kg]
+
+    Returns
+    -------
+    SteinmetzTerms
+        K_h [W/(kg·Hz·T²)], K_c [W/(kg·(Hz·T)²)], K_e [W/(kg·(Hz·T)^1.5)] with C_dc = 1
+
+    Notes
+    -----
+    Exact through the three points; between 50 and 400 Hz and 1.0…1.5 T an interpolation,
+    beyond them an extrapolation of eq. (5).
+
+    Examples
+    --------
     >>> t = fit_eq5(1.0, 2.5, 17.0)
     >>> round(t.specific_loss(50, 1.5), 6), round(t.specific_loss(400, 1.0), 6)
     (2.5, 17.0)
@@ -151,6 +255,24 @@ def ohmic_loss(
 
     Seed 000: 70 W at 5000 rpm → 17.5 W at 10000 rpm (the paper rounds to 18 W).
 
+    Parameters
+    ----------
+    reference_loss_W : float
+        Copper loss of the reference winding P_1 [W]
+    reference_speed_rpm : float
+        Speed of the reference winding n_1 [rpm]
+    speed_rpm : float
+        Speed of the rewound motor n_2 [rpm]
+    load_ratio : float, optional
+        Required torque over the rewound motor's torque at the reference current [-]
+
+    Returns
+    -------
+    float
+        Copper loss of the rewound motor P_2 [W]
+
+    Examples
+    --------
     >>> round(ohmic_loss(2 * 1.14 * 5.5**2, 5000, 10000), 2)
     17.24
     """
@@ -171,6 +293,27 @@ def ohmic_loss_at_torque(
     Seed 000: 2 · 1.14 Ω · 5.5² A² = 68.97 W at 2.0 N·m; the 10000 rpm motor at 1.0 N·m
     (two parallels, R/4, same 5.5 A) loses a quarter of that.
 
+    Parameters
+    ----------
+    reference_loss_W : float
+        Copper loss at the reference torque P_ref [W]
+    reference_torque_Nm : float
+        Reference torque M_ref [N·m]
+    torque_Nm : float
+        Motor torque M [N·m]
+
+    Returns
+    -------
+    float
+        Copper loss P [W]
+
+    Notes
+    -----
+    The same frame and supply voltage, the winding rewound; temperature effects on the
+    resistance neglected.
+
+    Examples
+    --------
     >>> ohmic_loss_at_torque(68.97, 2.0, 1.0)
     17.2425
     """
@@ -190,6 +333,30 @@ def rewound_current_A(
 
     Seed 000: 1.0 N·m at 10000 rpm needs the reference 5.5 A (2.0 N·m at 5000 rpm).
 
+    Parameters
+    ----------
+    reference_current_A : float
+        Phase current at the reference point I_ref [A]
+    reference_torque_Nm : float
+        Reference torque M_ref [N·m]
+    reference_speed_rpm : float
+        Reference speed n_ref [rpm]
+    torque_Nm : float
+        Motor torque M [N·m]
+    speed_rpm : float
+        Speed the frame is wound for n [rpm]
+
+    Returns
+    -------
+    float
+        Phase current I [A]
+
+    Notes
+    -----
+    Seed 000, eq. (4): a winding for n times the speed has n times fewer turns.
+
+    Examples
+    --------
     >>> rewound_current_A(5.5, 2.0, 5000, 1.0, 10000)
     5.5
     """
@@ -208,6 +375,20 @@ def magnet_loss(points: list[tuple[float, float]], speed_rpm: float) -> float:
     that are segmented finely enough, or none at all) has no power law through it: between a
     zero and its neighbour the loss is interpolated linearly, and beyond a zero it stays 0.
 
+    Parameters
+    ----------
+    points : list of (float, float)
+        (speed [rpm], magnet loss [W]) of the reference design
+    speed_rpm : float
+        Motor speed n [rpm]
+
+    Returns
+    -------
+    float
+        Eddy-current loss in the magnets [W]
+
+    Examples
+    --------
     >>> magnet_loss([(5000, 60), (10000, 100)], 10000), magnet_loss([(5000, 60)], 10000)
     (100.0, 240.0)
     >>> magnet_loss([(5000, 0), (10000, 100)], 7500), magnet_loss([(5000, 0.0)], 10000)
@@ -234,6 +415,27 @@ def optimum_frequency_Hz(ohmic_W: float, core_W: float, frequency_Hz: float) -> 
     K_ом = P_ом·f² (eq. 9) and K_маг = P_M/f² taken at one operating point. At f* the ohmic
     and the core losses are equal.
 
+    Parameters
+    ----------
+    ohmic_W : float
+        Ohmic loss P_ом at the operating point [W]
+    core_W : float
+        Iron and magnet loss P_M at the operating point [W]
+    frequency_Hz : float
+        Flux frequency of the operating point f [Hz]
+
+    Returns
+    -------
+    float
+        Frequency of least total loss f* [Hz]
+
+    Notes
+    -----
+    Holds while P_ом ∝ 1/f² (a reducer's motor torque ∝ 1/n at one efficiency) and
+    P_M ∝ f² (the quadratic iron model).
+
+    Examples
+    --------
     >>> round(optimum_frequency_Hz(68.97, 160.0, 500.0), 1)
     405.1
     """
@@ -296,6 +498,24 @@ SCALING_LAW = (
 def length_scale_for_torque(torque_Nm: float, reference_torque_Nm: float) -> float:
     """l* of the frame that gives ``torque_Nm`` continuously, T* = l*^3.5 [3].
 
+    Parameters
+    ----------
+    torque_Nm : float
+        Continuous torque wanted T [N·m]
+    reference_torque_Nm : float
+        Continuous torque of the reference frame [N·m]
+
+    Returns
+    -------
+    float
+        Length scale l* [-]
+
+    Notes
+    -----
+    Geometric similarity, the same materials, flux density and winding temperature rise.
+
+    Examples
+    --------
     >>> round(length_scale_for_torque(2 * 2**3.5, 2.0), 9)
     2.0
     """
@@ -308,6 +528,22 @@ def scaled(quantity: str, reference_value: float, length_scale: float) -> float:
     The 2.0 N·m reference at twice its size: 2·2^3.5 = 22.6 N·m, its rotor 2⁵ = 32 times the
     inertia, its rated speed halved.
 
+    Parameters
+    ----------
+    quantity : str
+        A key of :data:`SCALING_EXPONENTS`
+    reference_value : float
+        The reference frame's value, in its unit
+    length_scale : float
+        Length scale l* [-]
+
+    Returns
+    -------
+    float
+        The scaled frame's value, in the reference's unit
+
+    Examples
+    --------
     >>> round(scaled("torque_Nm", 2.0, 2.0), 3), scaled("rotor_inertia_kgm2", 1.0, 2.0)
     (22.627, 32.0)
     >>> scaled("speed_rpm", 5000.0, 2.0)
@@ -320,6 +556,22 @@ def thermal_time_constant_s(limit_W: float, rise_K: float, heat_capacity_J_K: fl
     """τ = R_th·C_th of a first-order body whose limit losses give the allowed rise:
     R_th = Δθ/P. 228.4 W for 105 K and 1191 J/K: 547.6 s.
 
+    Parameters
+    ----------
+    limit_W : float
+        Losses that give the allowed rise P [W]
+    rise_K : float
+        Allowed temperature rise Δθ [K]
+    heat_capacity_J_K : float
+        Heat capacity of the body C_th [J/K]
+
+    Returns
+    -------
+    float
+        Thermal time constant τ [s]
+
+    Examples
+    --------
     >>> round(thermal_time_constant_s(228.42, 105.0, 2.5949 * 459.0), 1)
     547.5
     """

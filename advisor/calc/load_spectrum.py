@@ -53,7 +53,18 @@ class Load(NamedTuple):
 
 
 def revolutions_weight(phases: list[Load]) -> float:
-    """Σ|n|·t (rpm·s): the revolutions turned, times 60."""
+    """Σ|n|·t (rpm·s): the revolutions turned, times 60.
+
+    Parameters
+    ----------
+    phases : list of Load
+        The cycle at the output: torque [N·m], speed [rpm], time [s] per phase
+
+    Returns
+    -------
+    float
+        Σ|n_i|·t_i [rpm·s]
+    """
     return sum(abs(p.speed_rpm) * p.time_s for p in phases)
 
 
@@ -65,6 +76,18 @@ def cube_mean_torque(phases: list[Load]) -> float:
     Hand check ([1]): (10·0.2·150³ + 20·3·82³ + 10·0.3·130³)/(10·0.2 + 20·3 + 10·0.3)
     = (6 750 000 + 33 082 080 + 6 591 000)/65 = 714 201.2, ∛ = 89.39 N·m.
 
+    Parameters
+    ----------
+    phases : list of Load
+        The cycle at the output: torque [N·m], speed [rpm], time [s] per phase
+
+    Returns
+    -------
+    float
+        Cube-mean torque T_av [N·m]
+
+    Examples
+    --------
     >>> round(cube_mean_torque([Load(150, 10, 0.2), Load(82, 20, 3), Load(130, 10, 0.3),
     ...                         Load(0, 0, 0.2)]), 2)
     89.39
@@ -78,17 +101,51 @@ def cube_mean_torque(phases: list[Load]) -> float:
 
 
 def mean_speed_rpm(phases: list[Load]) -> float:
-    """n_av = Σ|n|·t / Σt  [rpm] over the whole cycle, rests included ([2], eq. 18.5)."""
+    """n_av = Σ|n|·t / Σt  [rpm] over the whole cycle, rests included ([2], eq. 18.5).
+
+    Parameters
+    ----------
+    phases : list of Load
+        The cycle at the output: torque [N·m], speed [rpm], time [s] per phase
+
+    Returns
+    -------
+    float
+        Mean speed n_av [rpm]; 0 for a cycle of no time
+    """
     t = sum(p.time_s for p in phases)
     return revolutions_weight(phases) / t if t > 0 else 0.0
 
 
 def max_speed_rpm(phases: list[Load]) -> float:
+    """The cycle's top speed at the output, max |n_i|  [rpm].
+
+    Parameters
+    ----------
+    phases : list of Load
+        The cycle at the output: torque [N·m], speed [rpm], time [s] per phase
+
+    Returns
+    -------
+    float
+        Largest |n_i| [rpm]; 0 for an empty cycle
+    """
     return max((abs(p.speed_rpm) for p in phases), default=0.0)
 
 
 def repeated_peak_torque(phases: list[Load]) -> float:
-    """The largest |T| of the normal cycle (acceleration, braking, holding)  [N·m]."""
+    """The largest |T| of the normal cycle (acceleration, braking, holding)  [N·m].
+
+    Parameters
+    ----------
+    phases : list of Load
+        The cycle at the output: torque [N·m], speed [rpm], time [s] per phase
+
+    Returns
+    -------
+    float
+        Largest |T_i| of the phases that last [N·m]
+    """
     return max((abs(p.torque_Nm) for p in phases if p.time_s > 0), default=0.0)
 
 
@@ -104,6 +161,32 @@ def rolling_life_h(
     life at rated torque and speed is L_n. Infinite where the stage does not turn or carries
     no torque.
 
+    Parameters
+    ----------
+    rated_torque_Nm : float
+        Rated torque of the stage T_N [N·m]
+    mean_torque_Nm : float
+        Cube-mean torque T_av (× the service factor) [N·m]
+    mean_input_speed_rpm : float
+        Mean input speed n_in,av [rpm]
+    exponent : float, optional
+        Life exponent p: 3 balls, 10/3 rollers [-]
+    rated_life_h : float, optional
+        Life at rated torque and speed L_n [h]
+    rated_speed_rpm : float, optional
+        Rated input speed n_N [rpm]
+
+    Returns
+    -------
+    float
+        L50 life of the rolling elements [h]
+
+    Notes
+    -----
+    The makers' rating of the wave generator bearing; the seed gives eq. (16) no life.
+
+    Examples
+    --------
     >>> round(rolling_life_h(100.0, 50.0, 1000.0))  # 35 000·2·8
     560000
     """
@@ -120,6 +203,19 @@ def momentary_peak_count_allowed(input_speed_rpm: float, duration_s: float) -> f
     """N = 10⁴ / (2·n_in/60·t): the momentary peaks a strain-wave gear takes, 10⁴ flexings of
     the flexspline at the momentary torque, two per wave-generator revolution, while the peak
     lasts t at input speed n_in. The form of Harmonic Drive's selection procedure as a public
-    selection script states it (its primary text was not found): shown, never decisive."""
+    selection script states it (its primary text was not found): shown, never decisive.
+
+    Parameters
+    ----------
+    input_speed_rpm : float
+        Input (wave generator) speed during the peak n_in [rpm]
+    duration_s : float
+        Duration of one peak t [s]
+
+    Returns
+    -------
+    float
+        Momentary peaks allowed over the life N [-]; infinite at standstill
+    """
     turns = 2.0 * input_speed_rpm / 60.0 * duration_s
     return math.inf if turns <= 0 else 1e4 / turns

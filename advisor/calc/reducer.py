@@ -61,8 +61,59 @@ class Reducer(NamedTuple):
     mass_kg: float
 
 
+def _stage(
+    position: str,
+    q: float,
+    rows: int,
+    torque_Nm: float,
+    common: tuple[float, float, float],
+    p: ReducerParams,
+) -> Stage:
+    """One stage at its torque: its own diameters by eqs. (13), (14), (16), the common outer
+    and inner diameters and its length (``common``), its mass by eqs. (12), (19)."""
+    D, d, length = common
+    d_rb = float(wavegear.rolling_body_diameter(torque_Nm, q, rows, p.k_rb))
+    vol = float(wavegear.hollow_cylinder_volume(D, d, length))
+    return Stage(
+        position,
+        q,
+        rows,
+        torque_Nm,
+        d_rb,
+        float(wavegear.outer_diameter(q, d_rb)),
+        float(wavegear.inner_diameter(q, d_rb)),
+        D,
+        d,
+        length,
+        float(wavegear.mass_kg(vol, p.density_kg_m3, p.fill_factor)),
+    )
+
+
 def evaluate(ratios_out_to_in: list[float], rows_out_to_in: list[int], p: ReducerParams) -> Reducer:
-    """One reducer; ratios and rows listed from the output stage towards the motor."""
+    """One reducer; ratios and rows listed from the output stage towards the motor.
+
+    Parameters
+    ----------
+    ratios_out_to_in : list of float
+        Stage ratios q_k, output first [-]
+    rows_out_to_in : list of int
+        Rows of rolling bodies n_p of each stage, output first [-]
+    p : ReducerParams
+        Output torque [N·m], rolling body, stage efficiency, density [kg/m³], fill factor
+
+    Returns
+    -------
+    Reducer
+        Stages (motor side first) with torques [N·m], diameters and lengths [mm], masses
+        [kg]; the reducer's total ratio, efficiency η^n, diameters, length [mm], volume
+        [mm³] and mass [kg]
+
+    Notes
+    -----
+    The output stage sets the diameters (eqs. (13), (14), (16)); the others share them and
+    differ in length, L_k = L_out·∛(1/Πq) (seed 000, after eq. (19)); the stage before one of
+    ratio q and efficiency η carries M/(q·η). Valid for stage ratios above 6.45 (eq. (14)).
+    """
     n = len(ratios_out_to_in)
     torque = p.torque_Nm
     q0 = ratios_out_to_in[0]
@@ -73,25 +124,9 @@ def evaluate(ratios_out_to_in: list[float], rows_out_to_in: list[int], p: Reduce
     stages = []
     downstream = 1.0  # product of the ratios between this stage and the output
     for i, (q, rows) in enumerate(zip(ratios_out_to_in, rows_out_to_in, strict=True)):
-        d_rb = float(wavegear.rolling_body_diameter(torque, q, rows, p.k_rb))
-        length = float(wavegear.equal_diameter_length(L_out, downstream))
-        vol = float(wavegear.hollow_cylinder_volume(D, d, length))
         position = "output" if i == 0 else ("input" if i == n - 1 else "intermediate")
-        stages.append(
-            Stage(
-                position,
-                q,
-                rows,
-                torque,
-                d_rb,
-                float(wavegear.outer_diameter(q, d_rb)),
-                float(wavegear.inner_diameter(q, d_rb)),
-                D,
-                d,
-                length,
-                float(wavegear.mass_kg(vol, p.density_kg_m3, p.fill_factor)),
-            )
-        )
+        length = float(wavegear.equal_diameter_length(L_out, downstream))
+        stages.append(_stage(position, q, rows, torque, (D, d, length), p))
         downstream *= q
         torque = torque / (q * p.stage_efficiency)
     length = sum(s.length_mm for s in stages)
@@ -109,7 +144,20 @@ def evaluate(ratios_out_to_in: list[float], rows_out_to_in: list[int], p: Reduce
 
 
 def fits(r: Reducer, max_outer_diameter_mm: float | None, max_length_mm: float | None) -> bool:
-    """Whether reducer ``r`` lies within an envelope (None: no limit)."""
+    """Whether reducer ``r`` lies within an envelope (None: no limit).
+
+    Parameters
+    ----------
+    r : Reducer
+        The reducer
+    max_outer_diameter_mm, max_length_mm : float or None
+        Envelope [mm]; None: no limit
+
+    Returns
+    -------
+    bool
+        Its outer diameter and length within the envelope
+    """
     return (max_outer_diameter_mm is None or r.outer_diameter_mm <= max_outer_diameter_mm) and (
         max_length_mm is None or r.length_mm <= max_length_mm
     )
@@ -146,7 +194,20 @@ class SweepResult(NamedTuple):
 
 def stage_count_bounds(total_ratio: float, max_stages: int = 4) -> range:
     """The stage counts that can realise ``total_ratio``: n stages make at least
-    q_min^n and at most q_out,max·q_max^(n−1) (one stage: q_min…q_max)."""
+    q_min^n and at most q_out,max·q_max^(n−1) (one stage: q_min…q_max).
+
+    Parameters
+    ----------
+    total_ratio : float
+        Total reduction q_Σ [-]
+    max_stages : int, optional
+        Most stages considered [-]
+
+    Returns
+    -------
+    range
+        The stage counts that can realise it (empty when none can)
+    """
     lo, hi = STAGE_RATIO_MIN, STAGE_RATIO_MAX
     ns = [
         n
@@ -315,7 +376,22 @@ def best(
 ) -> int | None:
     """Index of the lightest (``"mass"``) or slimmest (``"diameter"``) configuration within
     the envelope; ``None`` if none fits. Of equally slim ones (the output stage alone sets
-    the outer diameter, so many splits share it) the lightest."""
+    the outer diameter, so many splits share it) the lightest.
+
+    Parameters
+    ----------
+    result : SweepResult
+        The design space (:func:`sweep`)
+    objective : str
+        "mass" or "diameter"
+    max_outer_diameter_mm, max_length_mm : float, optional
+        Envelope [mm]; None: no limit
+
+    Returns
+    -------
+    int or None
+        Index into ``result``; None when nothing fits
+    """
     ok = _within(result, max_outer_diameter_mm, max_length_mm)
     if not ok.any():
         return None
@@ -417,7 +493,28 @@ def refine(
     envelope and the common-diameter check may leave room only between grid points
     (q = 20 758 under 0.8 of the free optimum's diameter: a 3-stage design of 9.01 kg that
     no grid point reaches, where the best 4-stage one is 9.39 kg). Returns the ratios
-    (output first) and output rows, or ``None`` if nothing fits."""
+    (output first) and output rows, or ``None`` if nothing fits.
+
+    Parameters
+    ----------
+    total_ratio : float
+        Total reduction q_Σ [-]
+    p : ReducerParams
+        Output torque [N·m], rolling body, stage efficiency, density [kg/m³], fill factor
+    result : SweepResult
+        The design space (:func:`sweep`)
+    objective : str
+        "mass" or "diameter"
+    max_outer_diameter_mm, max_length_mm : float, optional
+        Envelope [mm]; None: no limit
+    points, passes : int, optional
+        Ratios per local sweep and local sweeps per stage count [-]
+
+    Returns
+    -------
+    tuple of (list of float, int) or None
+        Stage ratios (output first) [-] and output rows [-]
+    """
     envelope = (max_outer_diameter_mm, max_length_mm)
     viol = _violation(result, *envelope)
     key, tie = _keys(result, objective)
@@ -594,7 +691,20 @@ def _unique(a: np.ndarray) -> np.ndarray:
 
 def thin(front: np.ndarray, at_most: int) -> np.ndarray:
     """At most ``at_most`` of the ``front`` (sorted by mass), evenly spaced along it, the
-    lightest and the heaviest always kept."""
+    lightest and the heaviest always kept.
+
+    Parameters
+    ----------
+    front : numpy.ndarray
+        Indices of the front, sorted by mass
+    at_most : int
+        Most points kept [-]
+
+    Returns
+    -------
+    numpy.ndarray
+        The indices kept
+    """
     if front.size <= at_most:
         return front
     return front[_unique(np.round(np.linspace(0, front.size - 1, at_most)).astype(int))]
@@ -609,7 +719,24 @@ def dominator(
 ) -> int | None:
     """Index of the configuration that dominates reducer ``r`` (no heavier, wider, longer or
     with more stages, and better in one of them by more than ``rel``), the lightest of them
-    (ties by diameter, length), or ``None`` if ``r`` is non-dominated in the design space."""
+    (ties by diameter, length), or ``None`` if ``r`` is non-dominated in the design space.
+
+    Parameters
+    ----------
+    result : SweepResult
+        The design space (:func:`sweep`)
+    r : Reducer
+        The reducer judged
+    max_outer_diameter_mm, max_length_mm : float, optional
+        Envelope [mm]; None: no limit
+    rel : float, optional
+        Relative margin by which the dominating one must be better [-]
+
+    Returns
+    -------
+    int or None
+        Index into ``result``; None when ``r`` is non-dominated
+    """
     ok = _within(result, max_outer_diameter_mm, max_length_mm)
     n = len(r.stages)
     m, D, L = r.mass_kg * (1 + rel), r.outer_diameter_mm * (1 + rel), r.length_mm * (1 + rel)

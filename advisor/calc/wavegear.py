@@ -32,6 +32,29 @@ def rolling_body_diameter(
 
     Hand check: ∛(241·1000/(3·19)·sin(π/19)) = ∛(4228.07·0.164595) = ∛695.92 = 8.862 mm.
 
+    Parameters
+    ----------
+    torque_Nm : float or array
+        Torque the stage delivers M [N·m]
+    q : float or array
+        Stage ratio [-]
+    rows : int or array
+        Rows of rolling bodies n_p [-]
+    k_rb : float or array, optional
+        Load capacity factor k_тк: 1 balls, 2 rollers (length = diameter) [-]
+
+    Returns
+    -------
+    numpy.ndarray
+        Rolling body diameter d_тк [mm]
+
+    Notes
+    -----
+    Valid for q > 2 (sin(π/(q − 1)) > 0); a bore needs q > 6.45 (eq. (14)). Lengths in mm
+    for M in N·m, as the seed writes its formulas.
+
+    Examples
+    --------
     >>> round(float(rolling_body_diameter(1000.0, 20, 3)), 3)
     8.862
     """
@@ -45,22 +68,80 @@ def rolling_body_diameter(
 
 
 def outer_diameter(q: ArrayLike, d_rb: ArrayLike) -> np.ndarray:
-    """D_н = (2.06/sin(π/q) + 1.8)·d_тк  [mm]. Seed 000, eq. (13)."""
+    """D_н = (2.06/sin(π/q) + 1.8)·d_тк  [mm]. Seed 000, eq. (13).
+
+    Parameters
+    ----------
+    q : float or array
+        Stage ratio [-]
+    d_rb : float or array
+        Rolling body diameter d_тк [mm]
+
+    Returns
+    -------
+    numpy.ndarray
+        Outer diameter of the stage D_н [mm]
+
+    Notes
+    -----
+    Valid for q > 1.
+    """
     return (_a(q) + 1.8) * np.asarray(d_rb, dtype=float)
 
 
 def inner_diameter(q: ArrayLike, d_rb: ArrayLike) -> np.ndarray:
-    """d_вн = (2.06/sin(π/q) − 4.4)·d_тк  [mm]. Seed 000, eq. (14); positive for q > 6.45."""
+    """d_вн = (2.06/sin(π/q) − 4.4)·d_тк  [mm]. Seed 000, eq. (14); positive for q > 6.45.
+
+    Parameters
+    ----------
+    q : float or array
+        Stage ratio [-]
+    d_rb : float or array
+        Rolling body diameter d_тк [mm]
+
+    Returns
+    -------
+    numpy.ndarray
+        Bore of the stage d_вн [mm]; negative (no bore) for q < 6.45
+    """
     return (_a(q) - 4.4) * np.asarray(d_rb, dtype=float)
 
 
 def stage_length(rows: ArrayLike, d_rb: ArrayLike) -> np.ndarray:
-    """L = (1.2·n_p + 1.8)·d_тк  [mm]. Seed 000, eq. (15)."""
+    """L = (1.2·n_p + 1.8)·d_тк  [mm]. Seed 000, eq. (15).
+
+    Parameters
+    ----------
+    rows : int or array
+        Rows of rolling bodies n_p [-]
+    d_rb : float or array
+        Rolling body diameter d_тк [mm]
+
+    Returns
+    -------
+    numpy.ndarray
+        Axial length of the stage L [mm]
+    """
     return (1.2 * np.asarray(rows, dtype=float) + 1.8) * np.asarray(d_rb, dtype=float)
 
 
 def hollow_cylinder_volume(D: ArrayLike, d: ArrayLike, L: ArrayLike) -> np.ndarray:
-    """W = π/4·(D² − d²)·L  [mm³]. Seed 000, eq. (12)."""
+    """W = π/4·(D² − d²)·L  [mm³]. Seed 000, eq. (12).
+
+    Parameters
+    ----------
+    D : float or array
+        Outer diameter [mm]
+    d : float or array
+        Inner diameter [mm]
+    L : float or array
+        Length [mm]
+
+    Returns
+    -------
+    numpy.ndarray
+        Volume W [mm³]
+    """
     D, d = np.asarray(D, dtype=float), np.asarray(d, dtype=float)
     return np.pi / 4.0 * (D**2 - d**2) * np.asarray(L, dtype=float)
 
@@ -70,6 +151,24 @@ def volume_per_torque(q: ArrayLike, rows: ArrayLike, k_rb: ArrayLike = 1.0) -> n
 
     W/M = 189·(1.2n + 1.8)/(n·k·(q − 1))·sin(π/(q − 1))·[(a + 1.8)² − (a − 4.4)²],
     a = 2.06/sin(π/q), 189 ≈ 241·π/4.
+
+    Parameters
+    ----------
+    q : float or array
+        Stage ratio [-]
+    rows : int or array
+        Rows of rolling bodies n [-]
+    k_rb : float or array, optional
+        Load capacity factor k: 1 balls, 2 rollers [-]
+
+    Returns
+    -------
+    numpy.ndarray
+        Stage volume per unit load torque W/M [mm³/(N·m)]
+
+    Notes
+    -----
+    Valid for q > 6.45 (a bore, eq. (14)); fig. 1 of the seed spans q = 7…40.
     """
     q = np.asarray(q, dtype=float)
     n = np.asarray(rows, dtype=float)
@@ -91,6 +190,22 @@ def rows_for_diameter(
     """Rows needed to fit a given outer diameter (the inequality after eq. (19), seed 000):
 
     n_p ≥ 241·M / (D³·k·(q − 1))·sin(π/(q − 1))·(2.06/sin(π/q) + 1.8)³  — returned unrounded.
+
+    Parameters
+    ----------
+    torque_Nm : float or array
+        Torque the stage delivers M [N·m]
+    q : float or array
+        Stage ratio [-]
+    max_outer_diameter_mm : float or array
+        Outer diameter allowed D [mm]
+    k_rb : float or array, optional
+        Load capacity factor k: 1 balls, 2 rollers [-]
+
+    Returns
+    -------
+    numpy.ndarray
+        Rows needed n_p, unrounded [-]
     """
     q = np.asarray(q, dtype=float)
     return (
@@ -105,14 +220,42 @@ def rows_for_diameter(
 def equal_diameter_length(output_length_mm: ArrayLike, ratio_to_output: ArrayLike) -> np.ndarray:
     """Length of a stage in the equal-diameter layout, seed 000 after eq. (19):
     L2 = L_out·∛(1/q_out), L3 = L_out·∛(1/(q_out·q2)), … — ``ratio_to_output`` is the product
-    of the ratios between the stage and the output (1 for the output stage itself)."""
+    of the ratios between the stage and the output (1 for the output stage itself).
+
+    Parameters
+    ----------
+    output_length_mm : float or array
+        Length of the output stage L_out [mm]
+    ratio_to_output : float or array
+        Product of the ratios between the stage and the output [-]
+
+    Returns
+    -------
+    numpy.ndarray
+        Length of the stage [mm]
+    """
     return np.asarray(output_length_mm, dtype=float) * np.cbrt(
         1.0 / np.asarray(ratio_to_output, dtype=float)
     )
 
 
 def mass_kg(volume_mm3: ArrayLike, density_kg_m3: float, fill_factor: float) -> np.ndarray:
-    """m = ρ·k_з·W  (W in mm³ → m³). Seed 000, eq. (19)."""
+    """m = ρ·k_з·W  (W in mm³ → m³). Seed 000, eq. (19).
+
+    Parameters
+    ----------
+    volume_mm3 : float or array
+        Volume W [mm³]
+    density_kg_m3 : float
+        Density of the material ρ [kg/m³]
+    fill_factor : float
+        Fill factor k_з, 0.7…0.8 in the seed [-]
+
+    Returns
+    -------
+    numpy.ndarray
+        Mass m [kg]
+    """
     return density_kg_m3 * fill_factor * np.asarray(volume_mm3, dtype=float) * 1e-9
 
 
@@ -122,6 +265,18 @@ def reducer_volume_eq17(output_volume_mm3: ArrayLike, ratios_out_to_in: list) ->
     Each stage after the output carries the torque divided by the ratios between it and the
     output (losses neglected, as in the seed) and, with the same q and rows, a volume in
     proportion (W ∝ M by eq. (18)).
+
+    Parameters
+    ----------
+    output_volume_mm3 : float or array
+        Volume of the output stage W_вых [mm³]
+    ratios_out_to_in : list of float
+        Stage ratios from the output towards the motor [-]
+
+    Returns
+    -------
+    numpy.ndarray
+        Volume of the reducer W_ред [mm³]
     """
     factor = 1.0
     downstream = 1.0
