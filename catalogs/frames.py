@@ -1,4 +1,4 @@
-"""The BLDC frame series scaled from seed 000's reference frame (issue 25), and its checks.
+"""The BLDC frame series scaled from seed 000's reference frame, and its checks.
 
 ``catalogs/bldc_frames.toml`` holds the reference frame (seed 000's 74 mm × 50 mm motor) and
 the frames derived from it by geometric similarity with the scaling laws of

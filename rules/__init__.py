@@ -1,7 +1,8 @@
 """Selection heuristics, one module per domain. Each rule decides and explains; none computes
 geometry. A rule module registers its rules in :data:`advisor.core.rulebook.REGISTRY` when it
 is imported; the package itself imports none of them, so that a path imports only the rules
-of its application (issue 16). :func:`load_all` imports every module: the whole rule table."""
+of its application (a batch run pays for no other). :func:`load_all` imports every module:
+the whole rule table."""
 
 from importlib import import_module
 

@@ -10,8 +10,8 @@ KLYUCHEV = cite("klyuchev", "method of equivalent torque")
 INERTIA_GUIDE = (cite("keb-servo") + cite("autoengcalc")).with_note(
     "servo sizing practice: load/motor inertia ≤ 10 for a standard axis, ≤ 5 for high precision"
 )
-#: The duty cycle's own basis, not a published source: the project's own design note (its
-#: text, "issue 15", is what the reports cite).
+#: The duty cycle's own basis, not a published source: the project's own design note, cited in
+#: the reports by the note's tracker name (kept so that archived reports stay comparable).
 ISSUE_15 = note("issue 15")
 SEED_003 = cite("seed-003")
 #: SEW-EURODRIVE's table of the power increasing factor K for S2 and S3 (p. 95).

@@ -40,7 +40,7 @@ class DutyOut(ReportTable):
     thermal_utilisation: float
     thermal_basis: str
     inertia_ratio: float
-    motor_inertia_kgm2: float | None = None  # the rotor inertia the cycle used (issue 25)
+    motor_inertia_kgm2: float | None = None  # the rotor inertia the cycle used
     motor_inertia_basis: str | None = None  # where it came from
     inertia_ratio_guideline: float
     energy_per_cycle_J: float

@@ -1,4 +1,4 @@
-"""The drivers of a check's margin as the data of a tornado chart (issue 30): one bar per
+"""The drivers of a check's margin as the data of a tornado chart: one bar per
 input, its length and sign Spearman's rank correlation ρ of the input with the margin
 (−1 … 1), largest |ρ| first, labelled with the requirement field's own label.
 

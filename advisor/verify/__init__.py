@@ -1,4 +1,4 @@
-"""``advisor verify``: the advisor checked against published worked examples (issue 30).
+"""``advisor verify``: the advisor checked against published worked examples.
 
 The verification set is data (``cases.toml`` beside this file): each case a requirement or a
 direct calculation, the numbers its source prints with their tolerance, where in the source
