@@ -3,10 +3,9 @@ functions of ``advisor.calc.wavegear`` only (independent of the sweep's own code
 
 import numpy as np
 
-from advisor.calc import reducer as rd
-from advisor.calc import wavegear as wg
+from advisor.calc import reducer, wavegear
 
-LO, HI, OUT_HI = rd.STAGE_RATIO_MIN, rd.STAGE_RATIO_MAX, rd.OUTPUT_RATIO_MAX
+LO, HI, OUT_HI = reducer.STAGE_RATIO_MIN, reducer.STAGE_RATIO_MAX, reducer.OUTPUT_RATIO_MAX
 
 
 def _span(rest, after, top, k):
@@ -19,7 +18,7 @@ def _span(rest, after, top, k):
     return np.where((a <= b * (1 + 1e-12))[..., None], out, np.nan)
 
 
-def lightest(q, p: rd.ReducerParams, k=(2000, 300, 60), max_d=None, max_l=None):
+def lightest(q, p: reducer.ReducerParams, k=(2000, 300, 60), max_d=None, max_l=None):
     """The least mass over stage counts 1…4, with k ratios per stage and every row count."""
     rows = np.arange(2, 13, dtype=float)
     best = np.inf
@@ -41,24 +40,26 @@ def lightest(q, p: rd.ReducerParams, k=(2000, 300, 60), max_d=None, max_l=None):
     for chain in chains:
         good = np.all([np.isfinite(c) for c in chain], axis=0)
         chain = [c[good][:, None] for c in chain]
-        d_rb = wg.rolling_body_diameter(p.torque_Nm, chain[0], rows[None, :], p.k_rb)
-        D = wg.outer_diameter(chain[0], d_rb)
-        d = wg.inner_diameter(chain[0], d_rb)
-        L_out = wg.stage_length(rows[None, :], d_rb)
+        d_rb = wavegear.rolling_body_diameter(p.torque_Nm, chain[0], rows[None, :], p.k_rb)
+        D = wavegear.outer_diameter(chain[0], d_rb)
+        d = wavegear.inner_diameter(chain[0], d_rb)
+        L_out = wavegear.stage_length(rows[None, :], d_rb)
         length = L_out
         ok = np.ones(D.shape, bool)
         down = 1.0
         for j, qj in enumerate(chain[1:], start=1):
             down = down * chain[j - 1]
-            length = length + wg.equal_diameter_length(L_out, down)
+            length = length + wavegear.equal_diameter_length(L_out, down)
             torque = p.torque_Nm / (down * p.stage_efficiency**j)
-            own = wg.outer_diameter(qj, wg.rolling_body_diameter(torque, qj, 2, p.k_rb))
+            own = wavegear.outer_diameter(qj, wavegear.rolling_body_diameter(torque, qj, 2, p.k_rb))
             ok &= own <= D * (1 + 1e-12)
         if max_d is not None:
             ok &= D <= max_d
         if max_l is not None:
             ok &= length <= max_l
-        mass = wg.mass_kg(wg.hollow_cylinder_volume(D, d, length), p.density_kg_m3, p.fill_factor)
+        mass = wavegear.mass_kg(
+            wavegear.hollow_cylinder_volume(D, d, length), p.density_kg_m3, p.fill_factor
+        )
         if ok.any():
             best = min(best, float(mass[ok].min()))
     return best

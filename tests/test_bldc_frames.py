@@ -7,7 +7,7 @@ import textwrap
 import numpy as np
 import pytest
 
-from advisor.applications.rotary import motor as bm
+from advisor.applications.rotary import motor
 from advisor.calc import bldc
 from advisor.core.engine import advise
 from advisor.core.errors import CatalogError, InputError
@@ -56,7 +56,7 @@ def test_one_scaled_frame_by_hand():
     mass = bldc.stator_steel_mass(f.stator_steel_area_mm2, f.stack_length_mm, 0.85, 7800)
     terms = bldc.fit_eq5(steel.p10_50_W_kg, steel.p15_50_W_kg, steel.p10_400_W_kg)
     mot = parse_requirements(_req(100)).motor
-    limit, basis = bm.loss_limit(mot, steel, mass, terms, f)
+    limit, basis = motor.loss_limit(mot, steel, mass, terms, f)
     copper = 2 * 0.49083 * 11.101**2
     assert copper == pytest.approx(68.97 * k**2, rel=1e-3)
     iron = 0.3978 * k**3 * 2.5 * (3775.5 * 6 / 60 / 50) ** 2

@@ -34,7 +34,7 @@ import pytest
 from helpers import EXAMPLES
 
 from advisor.applications.linear import duty as dl
-from advisor.applications.rotary import duty as dr
+from advisor.applications.rotary import duty as rotary_duty
 from advisor.calc import duty as du
 from advisor.core.engine import advise
 from advisor.core.reading import read_requirements
@@ -77,7 +77,7 @@ def _vmd_move():
     # friction torque at the screw shaft μ·m·g·P_B/2π; the reducer's R·η takes it to the motor
     friction = v["mu"] * v["m"] * G * v["P_B"] / (2.0 * math.pi)
     j_screw, _ = dl.load_inertia(_screw(v["d_B"] * 1e3, v["P_B"]), v["m"], v["l_B"])
-    phases = dr._move_phases("feed", seg, friction, j_screw, v["J_G"], v["R"], v["eta"])
+    phases = rotary_duty._move_phases("feed", seg, friction, j_screw, v["J_G"], v["R"], v["eta"])
     return t_a, friction, j_screw, phases
 
 
@@ -203,7 +203,7 @@ def test_yaskawa_sigma_s_acceleration_torque():
     the test takes 1.1 s at speed (55 rev, 19800°), its own choice, with t_a = 0.1 s.
     P_O = T_L·ω = 11.0 W (run phase); P_a = J_L·ω²/t_a = 46.78 W."""
     seg = RotarySegmentReq(kind="move", time_s=1.2, angle_deg=19800.0, accel_fraction=0.1 / 1.2)
-    ph = dr._move_phases("move", seg, 0.035, 0.474e-4, 0.00629e-4, 1.0, 1.0)
+    ph = rotary_duty._move_phases("move", seg, 0.035, 0.474e-4, 0.00629e-4, 1.0, 1.0)
     acc, run = ph[0], ph[1]
     assert acc.time_s == pytest.approx(0.1)
     assert acc.speed_end_rad_s * RPM == pytest.approx(3000.0)

@@ -12,7 +12,7 @@ from types import SimpleNamespace
 import pytest
 from helpers import EXAMPLES
 
-from advisor.applications.rotary import duty as dr
+from advisor.applications.rotary import duty as rotary_duty
 from advisor.calc import duty as du
 from advisor.calc import one_way as ow
 from advisor.core.engine import advise
@@ -146,8 +146,8 @@ def test_rotary_duty_through_a_worm_by_hand():
     Nothing is regenerated: no phase has a negative torque at a positive speed."""
     req = _rotary_req([_move("against"), _move("with")])
     frame = SimpleNamespace(limit_W=1e9)
-    worm = dr.Holder(ow.passage("worm"))
-    ph, problems = dr.cycle(req, 1000.0, 0.81, 5000.0, frame, worm)
+    worm = rotary_duty.Holder(ow.passage("worm"))
+    ph, problems = rotary_duty.cycle(req, 1000.0, 0.81, 5000.0, frame, worm)
     assert not problems
     by = {p.name: p.torque_Nm for p in ph}
     eps = math.radians(25.0) / 0.9 / 0.1
@@ -165,7 +165,7 @@ def test_rotary_duty_through_a_worm_by_hand():
     )
     assert du.energies(ph)[1] == 0.0
     # the same cycle with no device regenerates (the load drives the motor back)
-    free, _ = dr.cycle(req, 1000.0, 0.81, 5000.0, frame, dr.NO_HOLDER)
+    free, _ = rotary_duty.cycle(req, 1000.0, 0.81, 5000.0, frame, rotary_duty.NO_HOLDER)
     assert du.energies(free)[1] > 0.0
     assert {p.name: p.torque_Nm for p in free}["1 move: accelerate"] == pytest.approx(
         (2 * eps + 1200) / (1000 * 0.81) + rotor, rel=1e-9
@@ -176,9 +176,13 @@ def test_rotary_duty_through_a_worm_by_hand():
 def test_nothing_is_regenerated_through_a_self_locking_device(kind):
     req = _rotary_req([_move("against"), _move("with")])
     frame = SimpleNamespace(limit_W=1e9)
-    ph, _ = dr.cycle(req, 1000.0, 0.81, 5000.0, frame, dr.Holder(ow.passage(kind)))
+    ph, _ = rotary_duty.cycle(
+        req, 1000.0, 0.81, 5000.0, frame, rotary_duty.Holder(ow.passage(kind))
+    )
     assert du.energies(ph)[1] == 0.0
-    at_output, _ = dr.cycle(req, 1000.0, 0.81, 5000.0, frame, dr.Holder(ow.passage(kind), True))
+    at_output, _ = rotary_duty.cycle(
+        req, 1000.0, 0.81, 5000.0, frame, rotary_duty.Holder(ow.passage(kind), True)
+    )
     assert du.energies(at_output)[1] == 0.0
 
 
@@ -186,11 +190,18 @@ def test_rotary_motor_holds_a_standing_load_in_the_closing_rest():
     """A cycle ending on a move leaves 1200 N·m on the drive; with no device the motor
     holds it through the back-driven wave gear: 1200·0.81/1000 = 0.972 N·m in the rest."""
     req = _rotary_req([_move("against")], rest_s=5.0)
-    ph, _ = dr.cycle(req, 1000.0, 0.81, 5000.0, SimpleNamespace(limit_W=1e9), dr.NO_HOLDER)
+    ph, _ = rotary_duty.cycle(
+        req, 1000.0, 0.81, 5000.0, SimpleNamespace(limit_W=1e9), rotary_duty.NO_HOLDER
+    )
     assert ph[-1].name == "rest"
     assert ph[-1].torque_Nm == pytest.approx(0.972, rel=1e-12)
-    held, _ = dr.cycle(
-        req, 1000.0, 0.81, 5000.0, SimpleNamespace(limit_W=1e9), dr.Holder(ow.passage("worm"))
+    held, _ = rotary_duty.cycle(
+        req,
+        1000.0,
+        0.81,
+        5000.0,
+        SimpleNamespace(limit_W=1e9),
+        rotary_duty.Holder(ow.passage("worm")),
     )
     assert held[-1].torque_Nm == 0.0
 

@@ -8,10 +8,7 @@ import tomllib
 import pytest
 from helpers import EXAMPLES
 
-from advisor.calc import bearing_life as bl
-from advisor.calc import load_spectrum as ls
-from advisor.calc import regen as rg
-from advisor.calc import wavegear as wg
+from advisor.calc import bearing_life, load_spectrum, regen, wavegear
 from advisor.calc.duty import Phase
 from advisor.cli import main
 from advisor.core.engine import advise
@@ -41,14 +38,19 @@ def test_honpine_fsg25_cube_mean_torque_is_89_Nm():
     (0 rpm) counts nothing. By hand:
     Σ n·t·T³ = 10·0.2·150³ + 20·3·82³ + 10·0.3·130³ + 0 = 6 750 000 + 33 082 080 + 6 591 000
              = 46 423 080; Σ n·t = 2 + 60 + 3 = 65; T_av = ∛(714 201.2) = 89.39 N·m (89 printed)."""
-    phases = [ls.Load(150, 10, 0.2), ls.Load(82, 20, 3), ls.Load(130, 10, 0.3), ls.Load(0, 0, 0.2)]
+    phases = [
+        load_spectrum.Load(150, 10, 0.2),
+        load_spectrum.Load(82, 20, 3),
+        load_spectrum.Load(130, 10, 0.3),
+        load_spectrum.Load(0, 0, 0.2),
+    ]
     by_hand = (46_423_080 / 65) ** (1 / 3)
-    assert ls.cube_mean_torque(phases) == pytest.approx(by_hand, rel=1e-12)
-    assert round(ls.cube_mean_torque(phases)) == 89
+    assert load_spectrum.cube_mean_torque(phases) == pytest.approx(by_hand, rel=1e-12)
+    assert round(load_spectrum.cube_mean_torque(phases)) == 89
     # the mean output speed over the whole cycle, rest included: 65/3.7 = 17.57 rpm
-    assert ls.mean_speed_rpm(phases) == pytest.approx(65 / 3.7, rel=1e-12)
-    assert ls.max_speed_rpm(phases) == 20
-    assert ls.repeated_peak_torque(phases) == 150
+    assert load_spectrum.mean_speed_rpm(phases) == pytest.approx(65 / 3.7, rel=1e-12)
+    assert load_spectrum.max_speed_rpm(phases) == 20
+    assert load_spectrum.repeated_peak_torque(phases) == 150
     # weighting by time alone would give a different, wrong mean: ∛((0.2·150³ + 3·82³ +
     # 0.3·130³)/3.7) = 88.0 — the test can tell the two apart
     by_time = ((0.2 * 150**3 + 3 * 82**3 + 0.3 * 130**3) / 3.7) ** (1 / 3)
@@ -58,17 +60,17 @@ def test_honpine_fsg25_cube_mean_torque_is_89_Nm():
 def test_wave_generator_life_by_harmonic_drives_formula():
     """HD CSD-2A §4.1.2: L50 = 35 000·(2000/n_av)·(T_N/T_av)³; at T_N and 2000 rpm it is 35 000 h;
     at half the torque and 1000 rpm 35 000·2·8 = 560 000 h; rollers take 10/3."""
-    assert ls.rolling_life_h(100.0, 100.0, 2000.0) == pytest.approx(35000.0)
-    assert ls.rolling_life_h(100.0, 50.0, 1000.0) == pytest.approx(560000.0)
-    assert ls.rolling_life_h(100.0, 50.0, 2000.0, ls.LIFE_EXPONENT["roller"]) == pytest.approx(
-        35000.0 * 2 ** (10 / 3)
-    )
-    assert ls.L10_PER_L50 == 0.2
+    assert load_spectrum.rolling_life_h(100.0, 100.0, 2000.0) == pytest.approx(35000.0)
+    assert load_spectrum.rolling_life_h(100.0, 50.0, 1000.0) == pytest.approx(560000.0)
+    assert load_spectrum.rolling_life_h(
+        100.0, 50.0, 2000.0, load_spectrum.LIFE_EXPONENT["roller"]
+    ) == pytest.approx(35000.0 * 2 ** (10 / 3))
+    assert load_spectrum.L10_PER_L50 == 0.2
 
 
 def test_peak_allowances_are_csf_25_50s_ratios():
-    assert ls.REPEATED_PEAK_FACTOR == pytest.approx(98 / 39)
-    assert ls.MOMENTARY_PEAK_FACTOR == pytest.approx(186 / 39)
+    assert load_spectrum.REPEATED_PEAK_FACTOR == pytest.approx(98 / 39)
+    assert load_spectrum.MOMENTARY_PEAK_FACTOR == pytest.approx(186 / 39)
 
 
 def test_rudder_working_point_reports_the_spectrum_and_its_checks():
@@ -127,11 +129,11 @@ def test_skf_calculation_example_1_6309():
     C = 55.3 kN → L10 = (55.3/10)³ = 169 million revolutions, L10h = 940 h."""
     b = next(x for x in load_catalogs(None).bearings if x.designation == "6309")
     assert (b.d_mm, b.D_mm, b.B_mm, b.C_kN, b.C0_kN, b.Pu_kN) == (45, 100, 25, 55.3, 31.5, 1.34)
-    eq = bl.equivalent_load(b, 10000.0, 0.0)
+    eq = bearing_life.equivalent_load(b, 10000.0, 0.0)
     assert eq.load_N == 10000.0
-    l10 = bl.rating_life_Mrev(b.C_kN * 1e3, eq.load_N)
+    l10 = bearing_life.rating_life_Mrev(b.C_kN * 1e3, eq.load_N)
     assert round(l10) == 169
-    assert bl.hours_from_Mrev(l10, 3000.0) == pytest.approx(940, abs=1)
+    assert bearing_life.hours_from_Mrev(l10, 3000.0) == pytest.approx(940, abs=1)
 
 
 def test_skf_example_end_to_end_as_the_output_bearing():
@@ -181,7 +183,7 @@ def test_automatic_bearing_is_the_lightest_that_lives():
     chosen = next(b for b in cat.bearings if b.designation == ob.designation)
     for b in cat.bearings:  # no lighter deep-groove bearing reaches 900 h
         if b.type == "deep_groove" and (b.mass_kg or 0) < (chosen.mass_kg or 0):
-            assert bl.hours_from_Mrev((b.C_kN * 1e3 / 1e4) ** 3, 3000) < 900
+            assert bearing_life.hours_from_Mrev((b.C_kN * 1e3 / 1e4) ** 3, 3000) < 900
     assert ob.life_L10_h >= 900
 
 
@@ -225,7 +227,7 @@ def test_service_factor_sizes_the_stages_not_the_motor():
     s0, s1 = base.design.gearbox.stages[-1], r.design.gearbox.stages[-1]
     assert s1.torque_Nm == pytest.approx(2430)
     assert s1.rolling_body_diameter_mm == pytest.approx(
-        float(wg.rolling_body_diameter(2430, s1.ratio, s1.rows)), rel=1e-12
+        float(wavegear.rolling_body_diameter(2430, s1.ratio, s1.rows)), rel=1e-12
     )
     assert s1.rolling_body_diameter_mm / s0.rolling_body_diameter_mm == pytest.approx(
         1.5 ** (1 / 3)
@@ -248,18 +250,18 @@ def test_bus_and_resistor_by_hand():
         Phase("brake", 0.1, 500.0, 0.0, -2.0),
         Phase("rest", 0.8, 0.0, 0.0, 0.0),
     ]
-    (b,) = rg.brakings(phases)
+    (b,) = regen.brakings(phases)
     assert b.energy_J == pytest.approx(50.0)
     assert b.peak_power_W == pytest.approx(1000.0)
-    assert rg.capacitance_for_F(50.0, 300, 400) == pytest.approx(100 / 70000)
-    bus = rg.bus_energy_J(470e-6, 300, 400)
+    assert regen.capacitance_for_F(50.0, 300, 400) == pytest.approx(100 / 70000)
+    bus = regen.bus_energy_J(470e-6, 300, 400)
     assert bus == pytest.approx(16.45)
-    res = rg.braking_resistor([b], 2.0, bus, 400)
+    res = regen.braking_resistor([b], 2.0, bus, 400)
     assert res.needed
     assert res.average_power_W == pytest.approx((50 - 16.45) / 2.0)
     assert res.peak_power_W == pytest.approx(1000.0)
     assert res.max_resistance_ohm == pytest.approx(160.0)
-    assert not rg.braking_resistor([b], 2.0, 60.0, 400).needed
+    assert not regen.braking_resistor([b], 2.0, 60.0, 400).needed
 
 
 def test_rudder_cycle_regeneration_matches_the_duty():

@@ -8,13 +8,13 @@ import numpy as np
 import pytest
 from brute_reducer import lightest
 
-from advisor.calc import reducer as rd
+from advisor.calc import reducer
 from advisor.core.engine import advise
 from advisor.core.errors import InfeasibleError
 from advisor.core.reading import parse_requirements
 from rules.wavegear import split_ratio
 
-P = rd.ReducerParams(1620.0, 1.0, 0.9, 7800.0, 0.75)
+P = reducer.ReducerParams(1620.0, 1.0, 0.9, 7800.0, 0.75)
 
 
 def _rotary(torque, out_rpm, motor_rpm, envelope=None):
@@ -35,7 +35,7 @@ def test_issue_12_repro_ratios_20_to_78_get_a_design(out_rpm):
     rep = advise(_rotary(50.0, out_rpm, 3000.0))
     g = rep.design.gearbox
     assert g.total_ratio == pytest.approx(3000.0 / out_rpm)
-    assert all(s.ratio >= rd.STAGE_RATIO_MIN for s in g.stages)
+    assert all(s.ratio >= reducer.STAGE_RATIO_MIN for s in g.stages)
     wg02 = next(d for d in rep.decisions if d.id == "WG-02")
     assert "gives way" in wg02.decision
 
@@ -70,7 +70,7 @@ def test_every_ratio_gets_a_design_where_the_space_holds_one():
     motor_rpm = 3000.0
     for k, q in enumerate(np.geomspace(5.0, 1e5, 300)):
         env = None if k % 3 else {"max_outer_diameter_mm": 60.0 + (k % 7) * 10.0}
-        space = rd.sweep(q, rd.ReducerParams(5.0, 1.0, 0.9, 7800.0, 0.75))
+        space = reducer.sweep(q, reducer.ReducerParams(5.0, 1.0, 0.9, 7800.0, 0.75))
         fits = (
             space.feasible > 0
             if env is None
@@ -90,20 +90,20 @@ def test_every_ratio_gets_a_design_where_the_space_holds_one():
 def test_sweep_never_builds_an_infeasible_combination():
     # every configuration built realises the ratio with every stage within 6.5…64
     for q in (8.0, 50.0, 100.0, 1000.0, 2000.0, 12345.0):
-        r = rd.sweep(q, P)
+        r = reducer.sweep(q, P)
         ratios = [r.ratios_out_to_in(i) for i in range(r.feasible)]
         for rs in ratios:
             assert math.prod(rs) == pytest.approx(q, rel=1e-9)
-            assert all(rd.STAGE_RATIO_MIN * (1 - 1e-12) <= x <= 64.0 * (1 + 1e-12) for x in rs)
+            assert all(reducer.STAGE_RATIO_MIN * (1 - 1e-12) <= x <= 64.0 * (1 + 1e-12) for x in rs)
     # four stages make at least 6.5⁴ = 1785: none below, and no combination is built
-    assert list(rd.stage_count_bounds(1000.0)) == [2, 3]
-    assert list(rd.stage_count_bounds(1785.0)) == [2, 3]
-    assert list(rd.stage_count_bounds(1786.0)) == [2, 3, 4]
+    assert list(reducer.stage_count_bounds(1000.0)) == [2, 3]
+    assert list(reducer.stage_count_bounds(1785.0)) == [2, 3]
+    assert list(reducer.stage_count_bounds(1786.0)) == [2, 3, 4]
     # 6.5² = 42.25 ≤ q ≤ 64 both one and two stages; 40·64 = 2560 is the most two make
-    assert list(rd.stage_count_bounds(50.0)) == [1, 2]
-    assert list(rd.stage_count_bounds(3000.0)) == [3, 4]
+    assert list(reducer.stage_count_bounds(50.0)) == [1, 2]
+    assert list(reducer.stage_count_bounds(3000.0)) == [3, 4]
     # counted honestly: the evaluated count is what was built (chains × 11 rows)
-    r = rd.sweep(100.0, P)
+    r = reducer.sweep(100.0, P)
     q_out = r.q_out[r.stages == 2]
     assert r.evaluated % 11 == 0 and r.feasible <= r.evaluated
     # two stages: q_out from 100/64 → 6.5 (the limit) to 100/6.5 = 15.38, grid 6.5…15 by
@@ -115,16 +115,16 @@ def test_sweep_never_builds_an_infeasible_combination():
 @pytest.mark.parametrize("q", [8.0, 37.5, 50.0, 100.0, 333.0, 1000.0, 2718.0, 31415.0, 1e5])
 def test_optimum_within_half_a_percent_of_a_fine_brute_force(q):
     # issue 12 item 7: q = 100 reported 0.5774 kg (at 162 N·m) where 0.5618 kg exists
-    r = rd.sweep(q, P)
-    m = r.mass_kg[rd.best(r, "mass")]
+    r = reducer.sweep(q, P)
+    m = r.mass_kg[reducer.best(r, "mass")]
     assert m <= lightest(q, P) * 1.005
 
 
 def test_issue_12_q_100_value():
     # at 162 N·m the brute force's 0.5618 kg: q_out = 100/6.5 = 15.38 with 12 rows
     p = P._replace(torque_Nm=162.0)
-    r = rd.sweep(100.0, p)
-    i = rd.best(r, "mass")
+    r = reducer.sweep(100.0, p)
+    i = reducer.best(r, "mass")
     assert r.mass_kg[i] == pytest.approx(0.5618, abs=1e-4)
     assert r.ratios_out_to_in(i) == pytest.approx([100 / 6.5, 6.5])
 
@@ -138,17 +138,17 @@ def test_optimum_within_an_envelope_is_polished(q, share):
     # q = 20 757.8 under 0.8 of the free optimum's diameter the only 3-stage designs that fit
     # lie between grid points (the brute force's 9.041 kg; the best 4-stage grid point
     # polished gave 9.391 kg, 3.9 % more)
-    r = rd.sweep(q, P)
-    d_max = share * r.outer_diameter_mm[rd.best(r, "mass")]
-    ratios, rows = rd.refine(q, P, r, "mass", d_max)
-    red = rd.evaluate(ratios, [rows] + [2] * (len(ratios) - 1), P)
+    r = reducer.sweep(q, P)
+    d_max = share * r.outer_diameter_mm[reducer.best(r, "mass")]
+    ratios, rows = reducer.refine(q, P, r, "mass", d_max)
+    red = reducer.evaluate(ratios, [rows] + [2] * (len(ratios) - 1), P)
     assert red.outer_diameter_mm <= d_max
     assert red.mass_kg <= lightest(q, P, max_d=d_max) * 1.005
 
 
 def test_pareto_front_is_non_dominated_and_covers_the_space():
-    r = rd.sweep(1000.0, P)
-    front = rd.pareto(r, 0.9)
+    r = reducer.sweep(1000.0, P)
+    front = reducer.pareto(r, 0.9)
     obj = np.stack([r.mass_kg, r.outer_diameter_mm, r.length_mm, r.stages], axis=1)
     f = obj[front]
     # no front point dominates another
@@ -161,18 +161,18 @@ def test_pareto_front_is_non_dominated_and_covers_the_space():
     # the lightest and the slimmest are on it
     assert r.mass_kg[front].min() == r.mass_kg.min()
     assert r.outer_diameter_mm[front].min() == r.outer_diameter_mm.min()
-    shown = rd.thin(front, 24)
+    shown = reducer.thin(front, 24)
     assert shown.size == 24 and shown[0] == front[0] and shown[-1] == front[-1]
 
 
 def test_rule_design_dominated_by_a_named_design():
-    rule = rd.evaluate([20.0, 50.0], [3, 2], P)
-    r = rd.sweep(1000.0, P)
-    j = rd.dominator(r, rule)
+    rule = reducer.evaluate([20.0, 50.0], [3, 2], P)
+    r = reducer.sweep(1000.0, P)
+    j = reducer.dominator(r, rule)
     assert j is not None
     assert r.mass_kg[j] < rule.mass_kg and r.outer_diameter_mm[j] <= rule.outer_diameter_mm
     assert r.length_mm[j] <= rule.length_mm and r.stages[j] <= 2
     # the lightest of the space is not dominated
-    i = rd.best(r, "mass")
-    light = rd.evaluate(r.ratios_out_to_in(i), [int(r.rows_out[i]), 2], P)
-    assert rd.dominator(r, light) is None
+    i = reducer.best(r, "mass")
+    light = reducer.evaluate(r.ratios_out_to_in(i), [int(r.rows_out[i]), 2], P)
+    assert reducer.dominator(r, light) is None
