@@ -391,6 +391,19 @@ def _replace_materials(path: Path, shipped: Materials, bib: dict[str, dict[str, 
     return user
 
 
+#: The catalog files shipped with the advisor, in the order they are stamped.
+SHIPPED_FILES = (
+    THREADS_FILE,
+    POWERS_FILE,
+    MOTORS_FILE,
+    MATERIALS_FILE,
+    STEELS_FILE,
+    BEARINGS_FILE,
+    BIBLIOGRAPHY_FILE,
+    FRAMES_FILE,
+)
+
+
 @cache
 def load_catalogs(user_dir: Path | None = None) -> Catalogs:
     """The shipped catalogs, plus the rows of a user catalog directory if given.
@@ -401,19 +414,7 @@ def load_catalogs(user_dir: Path | None = None) -> Catalogs:
     import, and read back in a fraction of a millisecond. It is the user's own file, as
     trusted as the catalogs beside it; a truncated or foreign one is ignored and rewritten.
     """
-    files = [
-        HERE / f
-        for f in (
-            THREADS_FILE,
-            POWERS_FILE,
-            MOTORS_FILE,
-            MATERIALS_FILE,
-            STEELS_FILE,
-            BEARINGS_FILE,
-            BIBLIOGRAPHY_FILE,
-            FRAMES_FILE,
-        )
-    ]
+    files = [HERE / f for f in SHIPPED_FILES]
     if user_dir is not None:
         files += [
             user_dir / f
@@ -432,7 +433,9 @@ def load_catalogs(user_dir: Path | None = None) -> Catalogs:
         cached = _read_cache(cached_at)
         if cached is not None:
             return cached
-    cat = _load_and_validate(user_dir)
+    cat = shipped_snapshot(files) if user_dir is None else None
+    if cat is None:
+        cat = _load_and_validate(user_dir)
     if cached_at is not None:
         _write_cache(cached_at, cat)
     return cat
@@ -749,31 +752,75 @@ def cache_file(files: list[Path]) -> Path | None:
     return Path(base) / "drive-advisor" / f"catalogs-{key}.marshal"
 
 
+# ---------------------------------------------------------------- snapshot of the shipped ones
+#: The shipped catalogs, validated, as data (written by ``python -m catalogs.loader``), so
+#: that a first run reads them without pydantic; used only while its stamp matches.
+SNAPSHOT_MODULE = "validated"
+
+
+def snapshot_stamp(files: list[Path]) -> int:
+    """CRC-32 of the catalog code (:func:`code_stamp`) and of the files' contents (not their
+    times: an installation writes the files anew)."""
+    crc = zlib.crc32(code_stamp().to_bytes(4, "little"))
+    for f in files:
+        crc = zlib.crc32(f.read_bytes(), crc)
+    return crc
+
+
+def shipped_snapshot(files: list[Path]) -> Catalogs | None:
+    """The shipped catalogs from the snapshot, or None when it is absent or does not match
+    the files and the code (they are then validated)."""
+    try:
+        from catalogs import validated
+
+        if validated.STAMP != snapshot_stamp(files):
+            return None
+        return _from_data(validated.DATA)
+    except (ImportError, OSError, AttributeError, KeyError, TypeError, ValueError):
+        return None
+
+
+def snapshot_text() -> str:
+    """The source of :mod:`catalogs.validated`: the shipped catalogs validated now."""
+    files = [HERE / f for f in SHIPPED_FILES]
+    data = _data(_load_and_validate(None))
+    return (
+        '"""The shipped catalogs, validated, as plain data: a first run reads them without\n'
+        "pydantic while STAMP matches the catalog files and code (catalogs.loader). Do not\n"
+        'edit: python -m catalogs.loader writes it."""\n'
+        "\n# fmt: off\n# ruff: noqa: E501\n"
+        f"STAMP = {snapshot_stamp(files)}\n"
+        f"DATA = {data!r}\n"
+    )
+
+
 def _read_cache(path: Path) -> Catalogs | None:
     try:
-        data = marshal.loads(path.read_bytes())
-        mat = data["materials"]
-        return Catalogs(
-            threads=tuple(ThreadProfile(**t) for t in data["threads"]),
-            threads_source=data["threads_source"],
-            rated_powers_kW=tuple(data["rated_powers_kW"]),
-            powers_source=data["powers_source"],
-            motors=tuple(InductionMotor(**m) for m in data["motors"]),
-            motor_sources=_source_map(data["motor_sources"]),
-            materials=Materials.from_dict(mat),
-            electrical_steels=tuple(ElectricalSteel(**x) for x in data["electrical_steels"]),
-            steel_sources=_source_map(data["steel_sources"]),
-            bearings=tuple(Bearing(**b) for b in data["bearings"]),
-            bearing_friction={
-                k: FrictionConstants(**v) for k, v in data["bearing_friction"].items()
-            },
-            bearing_sources=_source_map(data["bearing_sources"]),
-            bibliography=data["bibliography"],
-            bldc_frames=tuple(BldcFrame.from_dict(f) for f in data["bldc_frames"]),
-            bldc_sources=_source_map(data["bldc_sources"]),
-        )
+        return _from_data(marshal.loads(path.read_bytes()))
     except (OSError, ValueError, EOFError, KeyError, TypeError):
         return None  # absent, truncated or stale format: validate the files again
+
+
+def _from_data(data: dict[str, Any]) -> Catalogs:
+    """The catalogs of the plain data :func:`_data` makes (the cache's, the snapshot's)."""
+    mat = data["materials"]
+    return Catalogs(
+        threads=tuple(ThreadProfile(**t) for t in data["threads"]),
+        threads_source=data["threads_source"],
+        rated_powers_kW=tuple(data["rated_powers_kW"]),
+        powers_source=data["powers_source"],
+        motors=tuple(InductionMotor(**m) for m in data["motors"]),
+        motor_sources=_source_map(data["motor_sources"]),
+        materials=Materials.from_dict(mat),
+        electrical_steels=tuple(ElectricalSteel(**x) for x in data["electrical_steels"]),
+        steel_sources=_source_map(data["steel_sources"]),
+        bearings=tuple(Bearing(**b) for b in data["bearings"]),
+        bearing_friction={k: FrictionConstants(**v) for k, v in data["bearing_friction"].items()},
+        bearing_sources=_source_map(data["bearing_sources"]),
+        bibliography=data["bibliography"],
+        bldc_frames=tuple(BldcFrame.from_dict(f) for f in data["bldc_frames"]),
+        bldc_sources=_source_map(data["bldc_sources"]),
+    )
 
 
 def _source_map(d: dict[str, list[str]]) -> SourceMap:
@@ -781,7 +828,19 @@ def _source_map(d: dict[str, list[str]]) -> SourceMap:
 
 
 def _write_cache(path: Path, cat: Catalogs) -> None:
-    data = {
+    data = _data(cat)
+    try:
+        path.parent.mkdir(parents=True, exist_ok=True)
+        tmp = path.with_suffix(f".{os.getpid()}.tmp")
+        tmp.write_bytes(marshal.dumps(data))
+        os.replace(tmp, path)
+    except OSError:
+        pass  # a read-only home only costs the validation time on the next run
+
+
+def _data(cat: Catalogs) -> dict[str, Any]:
+    """The validated catalogs as plain data (what the cache and the snapshot hold)."""
+    return {
         "threads": [t._asdict() for t in cat.threads],
         "threads_source": cat.threads_source,
         "rated_powers_kW": list(cat.rated_powers_kW),
@@ -798,10 +857,7 @@ def _write_cache(path: Path, cat: Catalogs) -> None:
         "bldc_frames": [f.as_dict() for f in cat.bldc_frames],
         "bldc_sources": cat.bldc_sources,
     }
-    try:
-        path.parent.mkdir(parents=True, exist_ok=True)
-        tmp = path.with_suffix(f".{os.getpid()}.tmp")
-        tmp.write_bytes(marshal.dumps(data))
-        os.replace(tmp, path)
-    except OSError:
-        pass  # a read-only home only costs the validation time on the next run
+
+
+if __name__ == "__main__":
+    (HERE / f"{SNAPSHOT_MODULE}.py").write_text(snapshot_text(), encoding="utf-8")
