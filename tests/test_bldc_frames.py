@@ -215,6 +215,18 @@ def test_user_catalog_motor_is_chosen_when_lighter(tmp_path):
     assert m.losses_W.total == pytest.approx(3 * 0.5 * (400 / (1200 * 0.8) / 0.1) ** 2, rel=1e-3)
 
 
+def test_a_catalog_motors_loss_curve_ends_at_its_rated_speed(tmp_path):
+    """Its datasheet states no losses above its rated 6000 rpm: the report's loss curve stops
+    there and says so; the candidate lies on it."""
+    (tmp_path / "bldc_motors.toml").write_text(CATALOG, encoding="utf-8")
+    rep = advise(parse_requirements(_req(400.0, (6000.0,))), tmp_path)
+    curve = rep.design.motor.loss_curve
+    assert curve.speed_limit_rpm == 6000.0
+    assert max(curve.speed_rpm) == 6000.0 and len(curve.speed_rpm) > 20
+    total = dict(zip(curve.speed_rpm, curve.total_W, strict=True))
+    assert total[6000.0] == pytest.approx(rep.design.motor.losses_W.total, rel=1e-12)
+
+
 def test_user_catalog_speed_above_rating_is_not_offered(tmp_path):
     (tmp_path / "bldc_motors.toml").write_text(CATALOG, encoding="utf-8")
     from advisor.core.errors import InfeasibleError
