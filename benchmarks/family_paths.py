@@ -4,7 +4,8 @@
 
 Three measurements, each a child process per run, so that imports and start-up count:
 
-- ``per_cpu``: ``advisor family FAMILY --out DIR --no-html --quiet`` (worker processes on
+- ``per_cpu`` (and ``per_cpu_rotary``: 6,000 variants of the example's family, about 5 ms
+  each): ``advisor family FAMILY --out DIR --no-html --quiet`` (worker processes on
   this machine, the default) paired with a plain loop in one process over the same variants
   (read the family file, then ``advise_one`` per variant: the engine's work and nothing
   else). Runs alternate (A B, B A, …); each pair gives the ratio loop CPU / family CPU, the
@@ -81,6 +82,16 @@ def positioning_family(n: int, folder: Path) -> Path:
     return path
 
 
+def valve_family(n: int, folder: Path) -> Path:
+    """The example's rotary family with ``n // 3`` torques (× its 3 speeds), in ``folder``."""
+    doc = tomllib.loads(EXAMPLE.read_text())
+    doc["family"]["axes"]["rotary.torque_Nm"]["steps"] = n // 3
+    doc["family"]["name"] = f"valve actuators {n}"
+    path = folder / f"valve_{n}.toml"
+    path.write_text(tomli_w.dumps(doc))
+    return path
+
+
 def _child(code: str, args: list[str]) -> dict[str, Any]:
     env = {k: v for k, v in os.environ.items() if k != "PYTHONDONTWRITEBYTECODE"}
     r = subprocess.run([PY, "-c", code, *args], capture_output=True, text=True, env=env)
@@ -134,10 +145,11 @@ def paired(family: Path, pairs: int, *options: str) -> dict[str, Any]:
     }
 
 
-def per_cpu(pairs: int, n: int = 10_000) -> dict[str, Any]:
+def per_cpu(pairs: int, n: int = 10_000, kind: str = "positioning") -> dict[str, Any]:
+    make = positioning_family if kind == "positioning" else valve_family
     with tempfile.TemporaryDirectory() as d:
-        out = paired(positioning_family(n, Path(d)), pairs, "--no-html", "--quiet")
-    return {"variants": n, **out}
+        out = paired(make(n, Path(d)), pairs, "--no-html", "--quiet")
+    return {"variants": n, "family": kind, **out}
 
 
 def example(pairs: int) -> dict[str, Any]:
@@ -167,16 +179,20 @@ def run_all(quick: bool) -> list[tuple[str, str, str]]:
     """The rows of ``run_all.py``'s table: (measurement, case, figure)."""
     pairs = 3 if quick else 7
     c, e = per_cpu(pairs), example(pairs)
+    rotary = [] if quick else [per_cpu(3, 6_000, "rotary")]
     mem = memory((1_000, 10_000) if quick else (1_000, 10_000, 100_000))
     rss = ", ".join(
         f"{n:,}: {v['parent_peak_rss_MiB']:.1f} MiB" for n, v in mem["by_variants"].items()
     )
     return [
-        (
-            "`advisor family` per CPU: loop CPU / study CPU (goal ≥ 0.95)",
-            f"positioning, {c['variants']:,} variants, workers = cores",
-            f"{_iqr(c['loop_cpu_over_study_cpu'])}; {c['study_cpu_s']['median']:.1f} s vs "
-            f"{c['loop_cpu_s']['median']:.1f} s CPU",
+        *(
+            (
+                "`advisor family` per CPU: loop CPU / study CPU (goal ≥ 0.95)",
+                f"{r['family']}, {r['variants']:,} variants, workers = cores",
+                f"{_iqr(r['loop_cpu_over_study_cpu'])}; {r['study_cpu_s']['median']:.1f} s vs "
+                f"{r['loop_cpu_s']['median']:.1f} s CPU",
+            )
+            for r in (c, *rotary)
         ),
         (
             "`advisor family` wall / plain loop wall (goal ≤ 2 × loop + 1 s)",
@@ -196,11 +212,12 @@ def run_all(quick: bool) -> list[tuple[str, str, str]]:
 def main() -> None:
     ap = argparse.ArgumentParser()
     ap.add_argument("--quick", action="store_true")
-    ap.add_argument("--only", help="per_cpu, example, memory (comma-separated)")
+    ap.add_argument("--only", help="per_cpu, per_cpu_rotary, example, memory (comma-separated)")
     args = ap.parse_args()
     pairs = 3 if args.quick else 7
     steps = {
         "per_cpu": lambda: per_cpu(pairs),
+        "per_cpu_rotary": lambda: per_cpu(pairs, 6_000, "rotary"),
         "example": lambda: example(pairs),
         "memory": lambda: memory((1_000, 10_000) if args.quick else (1_000, 10_000, 100_000)),
     }

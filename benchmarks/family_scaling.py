@@ -73,8 +73,9 @@ def task_round_trip_s(client, n: int) -> tuple[float, float]:
     return (time.perf_counter() - t0) / n, (time.process_time() - c0) / n
 
 
-def study_wall_s(family, client, chunk: int) -> tuple[float, float, float]:
-    """(wall of the study, CPU of this process during it, wall of join + summary)."""
+def study_wall_s(family, client, chunk: int) -> tuple[float, float, float, float]:
+    """(wall of the study, CPU of this process during it, wall of join + summary, the
+    workers' time advising, summed over the chunks)."""
     with tempfile.TemporaryDirectory() as d:
         t0, c0 = time.perf_counter(), time.process_time()
         res = run_study(family, Path(d), client, chunk)
@@ -83,7 +84,7 @@ def study_wall_s(family, client, chunk: int) -> tuple[float, float, float]:
         build_summary(family, iter_rows(Path(d) / "designs.csv"), {})
         t2 = time.perf_counter()
     assert res.computed == res.chunks
-    return t1 - t0, c1 - c0, t2 - t1
+    return t1 - t0, c1 - c0, t2 - t1, res.advise_seconds
 
 
 def main() -> None:
@@ -98,16 +99,57 @@ def main() -> None:
         m["scaling"] = {int(k): v for k, v in m["scaling"].items()}
         m["check"] = check_model(m)
         m["prediction"] = predict(m)
-        save("family", m)
-        print_table(m)
-        return
+    else:
+        m = measure(args.quick)
+    save("family", m)
+    print_table(m)
+
+
+def run_all(quick: bool) -> list[tuple[str, str, str]]:
+    """The rows of ``run_all.py``'s table: the model's terms, its check, its prediction."""
+    m = measure(quick)
+    save("family", m)
+    p = m["prediction"]
+    rows = [
+        (
+            "family cost model: terms (Dask)",
+            "valve family, rotary",
+            f"t_v {m['t_v_rotary_ms']:.1f} ms CPU a variant, t_chunk {m['t_chunk_ms']:.2f} ms "
+            f"CPU a chunk (client + scheduler), t_join {m['t_join_us']:.0f} µs a variant",
+        )
+    ]
+    for w, c in m["check"].items():
+        rows.append(
+            (
+                "family cost model: measured / predicted wall",
+                f"{w} Dask workers, {m['scaling'][w]['variants']} variants",
+                f"**{c['measured_over_predicted']:.2f} ×** ({c['measured_s']:.1f} s vs "
+                f"{c['predicted_s']:.1f} s; load {m['scaling'][w]['load_average']:.1f})",
+            )
+        )
+    best = p["by_chunk_size"][p["recommended"]] if p["recommended"] else None
+    rows.append(
+        (
+            "family cost model: 10⁷ variants on 64 workers",
+            f"chunks of {p['recommended']}",
+            f"{best['total_s'] / 60:.0f} min (advice {p['compute_s'] / 60:.0f} min, serial "
+            f"{best['serial_s'] / 60:.1f} min, join + summary {p['join_s'] / 60:.1f} min)"
+            if best
+            else "no chunk size meets the rules",
+        )
+    )
+    return rows
+
+
+def measure(quick: bool) -> dict:
+    """Every term of the model, the studies at 1, 2, … workers, the check and the prediction."""
     import logging
 
     from dask.distributed import Client, LocalCluster
 
-    steps = 20 if args.quick else 60
+    steps = 20 if quick else 60
     valve = valve_family(steps)
-    pos = positioning_family(200 if args.quick else 800)
+    pos = positioning_family(200 if quick else 800)
     out: dict = {"cores": os.cpu_count(), "load_average_before": os.getloadavg()[0]}
     wall_v, cpu_v = per_variant_s(valve, 60)
     out["t_v_rotary_wall_ms"], out["t_v_rotary_ms"] = 1e3 * wall_v, 1e3 * cpu_v
@@ -132,15 +174,15 @@ def main() -> None:
             # cheap variants in chunks of 1: the client's and scheduler's work per chunk
             # (receive, write the chunk with fsync, bookkeeping) is this process's CPU time
             small = positioning_family(100)
-            _, cpu1, _ = study_wall_s(small, client, 1)
+            _, cpu1, _, _ = study_wall_s(small, client, 1)
             out["t_chunk_ms"] = 1e3 * cpu1 / small.size
             # join + summary per variant, on enough variants that fixed costs do not count
-            _, _, join = study_wall_s(pos, client, 200)
+            _, _, join, _ = study_wall_s(pos, client, 200)
             out["t_join_us"] = 1e6 * join / pos.size
             out["join_variants"] = pos.size
         chunk = max(1, valve.size // (4 * workers))
         study_wall_s(valve, client, chunk)  # warm the workers' imports
-        wall, _, join = study_wall_s(valve, client, chunk)
+        wall, _, join, advise_s = study_wall_s(valve, client, chunk)
         scaling[workers] = {
             "load_average": os.getloadavg()[0],
             "cluster_start_s": start_s,
@@ -149,14 +191,14 @@ def main() -> None:
             "wall_s": wall,
             "variants_per_s": valve.size / wall,
             "join_and_summary_s": join,
+            "t_v_in_workers_ms": 1e3 * advise_s / valve.size,
         }
         client.close()
         cluster.close()
     out["scaling"] = scaling
     out["check"] = check_model(out)
     out["prediction"] = predict(out)
-    save("family", out)
-    print_table(out)
+    return out
 
 
 def model_s(
@@ -170,18 +212,14 @@ def model_s(
 
 
 def check_model(m: dict) -> dict:
-    """The model against each study run here: its wall time predicted from t_v (wall, per
-    variant in one process), t_chunk and t_join, over the measured wall time."""
+    """The model against each study run here: its wall time predicted from t_v (as the
+    study's workers measured it, wall time per variant: on a shared machine a worker gets
+    less than a core), t_chunk and the chunk size, over the measured wall time."""
     out = {}
     for w, s in m["scaling"].items():
-        pred = model_s(
-            s["variants"],
-            w,
-            s["chunk_size"],
-            m["t_v_rotary_wall_ms"] / 1e3,
-            m["t_chunk_ms"] / 1e3,
-            0.0,  # the study's wall time is measured before the join
-        )
+        t_v = s.get("t_v_in_workers_ms", m["t_v_rotary_wall_ms"]) / 1e3
+        # the study's wall time is measured before the join: t_join does not count here
+        pred = model_s(s["variants"], w, s["chunk_size"], t_v, m["t_chunk_ms"] / 1e3, 0.0)
         out[w] = {
             "predicted_s": pred,
             "measured_s": s["wall_s"],
