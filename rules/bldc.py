@@ -95,33 +95,33 @@ def within_limit(losses_W: float, limit_W: float) -> bool:
 
 
 @rule("BL-03", "Motor frame", SEED_000 + cite("budinger-2012") + cite("budinger-course"))
-def choose_frame(tried: list[dict]) -> Finding[str]:
+def choose_frame(tried: list) -> Finding[str]:
     """The smallest frame (by mass, then stator diameter) for which some candidate speed
     passes the loss limit and the duty cycle: a drive engineer sizing a product range takes
     the lightest motor that does the job, and a larger one only where the smaller fails.
 
-    ``tried``: the frames in that order up to the first that fits, each a dict with ``name``,
-    ``kind`` ("scaled" | "catalog"), ``torque_Nm`` (continuous), ``speed_rpm`` (rated),
-    ``mass_kg``, ``outer_diameter_mm``, ``fits`` and ``why`` (the best candidate's numbers).
-    The caller guarantees the last one fits."""
+    ``tried``: the frames in that order up to the first that fits, each a record (a
+    NamedTuple) with ``name``, ``kind`` ("scaled" | "catalog"), ``torque_Nm`` (continuous),
+    ``speed_rpm`` (rated), ``mass_kg``, ``outer_diameter_mm``, ``fits`` and ``why`` (the best
+    candidate's numbers). The caller guarantees the last one fits."""
     chosen = tried[-1]
-    kind = {"scaled": "scaled frame", "catalog": "catalog motor (datasheet)"}[chosen["kind"]]
+    kind = {"scaled": "scaled frame", "catalog": "catalog motor (datasheet)"}[chosen.kind]
     smaller = tried[-2] if len(tried) > 1 else None
     why_smaller = (
-        f" The next smaller, {smaller['name']} ({smaller['torque_Nm']:.4g} N·m, "
-        f"{smaller['mass_kg']:.3g} kg), fails: {smaller['why']}."
+        f" The next smaller, {smaller.name} ({smaller.torque_Nm:.4g} N·m, "
+        f"{smaller.mass_kg:.3g} kg), fails: {smaller.why}."
         if smaller
         else " It is the smallest of the series."
     )
     return Finding(
-        chosen["name"],
-        f"{chosen['name']}, {kind}: {chosen['torque_Nm']:.4g} N·m continuous at "
-        f"{chosen['speed_rpm']:.5g} rpm, Ø{chosen['outer_diameter_mm']:.4g} mm, "
-        f"{chosen['mass_kg']:.3g} kg; {chosen['why']}.{why_smaller}",
+        chosen.name,
+        f"{chosen.name}, {kind}: {chosen.torque_Nm:.4g} N·m continuous at "
+        f"{chosen.speed_rpm:.5g} rpm, Ø{chosen.outer_diameter_mm:.4g} mm, "
+        f"{chosen.mass_kg:.3g} kg; {chosen.why}.{why_smaller}",
         "The frames are tried from the lightest (then the slimmest) up; the first for which "
         "some candidate speed keeps its total losses (seed 000's model with the frame's own "
         "numbers) within its own limit, and passes the duty cycle, is taken. A scaled frame's "
         "numbers follow seed 000's reference by geometric similarity (Budinger et al.: "
         "T ∝ l^3.5, J ∝ l⁵, m ∝ l³); a catalog motor's are its datasheet's.",
-        {"frame": chosen["name"], "kind": chosen["kind"], "tried": tried},
+        {"frame": chosen.name, "kind": chosen.kind, "tried": [t._asdict() for t in tried]},
     )

@@ -245,30 +245,31 @@ def _choose_frame(req: Requirements, cat: Catalogs, params, speeds, trace: Trace
         if fit.error is not None:
             raise fit.error
         return fit, data, choice
-    tried: list[dict] = []
+    tried: list = []
     for frame in choice.series:
         data = frames.frame_data(req, frame)
         fit = _fit(req, cat, frame, params, data, speeds)
-        tried.append(frames.tried_row(frame, fit.error is None, ""))
         if fit.error is None:
             best = min(fit.passing, key=lambda c: c.losses_W.total)
-            tried[-1]["why"] = (
+            why = (
                 f"at {best.speed_rpm:g} rpm it loses {best.losses_W.total:.4g} W of its "
                 f"{fit.limit:.4g} W"
             )
+            tried.append(frames.tried_row(frame, True, why))
             trace.apply(bldc_rules.choose_frame, tried[-2:] if len(tried) > 1 else tried)
             return fit, data, choice._replace(tried=tuple(tried))
-        tried[-1]["why"] = _best_words(fit)
+        tried.append(frames.tried_row(frame, False, _best_words(fit)))
     raise _no_frame(tried[-1], fit)
 
 
-def _no_frame(last: dict, fit: _Fit) -> InfeasibleError:
-    """No frame of the series carries the load: the largest's reason."""
+def _no_frame(last, fit: _Fit) -> InfeasibleError:
+    """No frame of the series carries the load: the largest's reason (``last``: its
+    :class:`~advisor.applications.rotary.frames.FrameTried`)."""
     return InfeasibleError(
         "no feasible design: no motor frame of the series carries the load",
         [
-            f"the largest, {last['name']} ({last['torque_Nm']:.4g} N·m continuous, "
-            f"{last['mass_kg']:.3g} kg): {last['why']}",
+            f"the largest, {last.name} ({last.torque_Nm:.4g} N·m continuous, "
+            f"{last.mass_kg:.3g} kg): {last.why}",
             fit.error.summary if fit.error is not None else "",
             "give a catalog motor (bldc_motors.toml in --catalog-dir), motor.max_losses_W "
             "with motor.frame for a better cooling, more candidate speeds, or a lower "

@@ -82,20 +82,34 @@ def imposed_data(req, choice: Choice, cat):
     return frame_data(req, ref)
 
 
-def tried_row(frame, fits: bool, why: str) -> dict:
-    return {
-        "name": frame.name,
-        "kind": frame.kind,
-        "torque_Nm": frame.torque_Nm,
-        "speed_rpm": frame.speed_rpm,
-        "mass_kg": frame.mass_kg,
-        "outer_diameter_mm": frame.outer_diameter_mm,
-        "fits": fits,
-        "why": why,
-    }
+class FrameTried(NamedTuple):
+    """A frame of the series (or a catalog motor) as BL-03 weighs it; the fields of the
+    report's table of frames tried, in its order."""
+
+    name: str
+    kind: str  # "scaled" | "catalog"
+    torque_Nm: float  # continuous, at the rated speed
+    speed_rpm: float  # rated
+    mass_kg: float
+    outer_diameter_mm: float
+    fits: bool
+    why: str  # the best candidate's numbers, or why none passes
 
 
-def _neighbours(choice: Choice, name: str) -> list[dict]:
+def tried_row(frame, fits: bool, why: str) -> FrameTried:
+    return FrameTried(
+        frame.name,
+        frame.kind,
+        frame.torque_Nm,
+        frame.speed_rpm,
+        frame.mass_kg,
+        frame.outer_diameter_mm,
+        fits,
+        why,
+    )
+
+
+def _neighbours(choice: Choice, name: str) -> list[FrameTried]:
     frames = list(choice.all_frames)
     i = next((k for k, f in enumerate(frames) if f.name == name), None)
     if i is None:
@@ -117,9 +131,9 @@ def frame_out(choice: Choice, ref, data):
     else:
         words = "the requirement's [motor.reference] (seed 000's frame unless given)"
     name = getattr(ref, "name", "reference")
-    tried = [FrameTriedOut.make(**t) for t in choice.tried]
+    tried = [FrameTriedOut.make(**t._asdict()) for t in choice.tried]
     near = [
-        FrameTriedOut.make(**t)
+        FrameTriedOut.make(**t._asdict())
         for t in _neighbours(choice, name if kind != "reference" else SEED_FRAME)
     ]
     return FrameOut.make(
