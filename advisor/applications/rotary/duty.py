@@ -295,10 +295,28 @@ def _iec_cycle(req, q: float, eta: float, w: float, frame: Frame, holder: Holder
     ], problems
 
 
-def evaluate(req, q: float, eta: float, speed_rpm: float, frame: Frame, holder: Holder) -> dict:
+class CycleResult(NamedTuple):
+    """The motor over one cycle: its phases, what fails, the cycle-averaged losses [W], the
+    peak torque and its limit [N·m], and (losses [W], time [s]) per phase."""
+
+    phases: list
+    problems: list[str]
+    copper: float = 0.0
+    core: float = 0.0
+    total: float = 0.0
+    peak: float = 0.0
+    peak_limit: float = 0.0
+    losses: list | tuple = ()  # (losses [W], time [s]) per phase
+
+
+def evaluate(
+    req, q: float, eta: float, speed_rpm: float, frame: Frame, holder: Holder
+) -> CycleResult:
+    """The cycle at the motor behind the reducer (q, η) at ``speed_rpm``: its cycle-averaged
+    losses against the frame's limit and its peak torque against the peak the motor gives."""
     phases, problems = cycle(req, q, eta, speed_rpm, frame, holder)
     if not phases:
-        return {"phases": [], "problems": problems}
+        return CycleResult([], problems)
     t = duty_calc.cycle_time(phases)
     parts = [(frame.phase_losses(p), p.time_s) for p in phases]
     copper = sum(c * dt for (c, _), dt in parts) / t
@@ -317,16 +335,8 @@ def evaluate(req, q: float, eta: float, speed_rpm: float, frame: Frame, holder: 
             f"{speed_rpm:g} rpm: peak torque {peak:.4g} N·m above {peak_limit:.4g} N·m "
             f"({req.duty.peak_torque_factor:g} × the continuous {frame.continuous_torque():.4g})"
         )
-    return {
-        "phases": phases,
-        "problems": problems,
-        "copper": copper,
-        "core": core,
-        "total": total,
-        "peak": peak,
-        "peak_limit": peak_limit,
-        "losses": [(sum(frame.phase_losses(p)), p.time_s) for p in phases],
-    }
+    losses = [(sum(frame.phase_losses(p)), p.time_s) for p in phases]
+    return CycleResult(phases, problems, copper, core, total, peak, peak_limit, losses)
 
 
 def segment_loads_within_rating(req) -> None:
@@ -361,8 +371,8 @@ def passing_speeds(req, cands: list, frame_for, holder_for, limit_W: float) -> l
             continue
         frame = frame_for(c.speed_rpm)
         e = evaluate(req, c.total_ratio, c.gearbox_efficiency, c.speed_rpm, frame, holder_for(c))
-        if e["problems"]:
-            reasons += e["problems"]
+        if e.problems:
+            reasons += e.problems
         else:
             ok.append(c)
     if not ok:
@@ -377,7 +387,7 @@ def passing_speeds(req, cands: list, frame_for, holder_for, limit_W: float) -> l
     return ok
 
 
-def _decisions(req, e: dict, frame: Frame, q: float, eta: float, speed_rpm: float, trace):
+def _decisions(req, e: CycleResult, frame: Frame, q: float, eta: float, speed_rpm: float, trace):
     """DU-01 (the IEC duty type, if given), the thermal and the peak decisions and the
     inertia ratio; returns the inertia ratio and whether it is within the guideline."""
     duty = req.duty
@@ -390,19 +400,19 @@ def _decisions(req, e: dict, frame: Frame, q: float, eta: float, speed_rpm: floa
             "S5 and S7 start (and brake) at the peak torque; S9, S10 as shares of the rated "
             "output torque.",
         )
-    rms = duty_calc.rms_torque(e["phases"])
+    rms = duty_calc.rms_torque(e.phases)
     trace.apply(
         duty_rules.thermal,
-        e["total"] / frame.limit_W,
-        f"Cycle-averaged losses {e['total']:.4g} W (copper {e['copper']:.4g} W from the "
+        e.total / frame.limit_W,
+        f"Cycle-averaged losses {e.total:.4g} W (copper {e.copper:.4g} W from the "
         f"phases' torques, i.e. from the RMS torque {rms:.4g} N·m; iron and magnets "
-        f"{e['core']:.4g} W from the speed profile) against the frame's limit "
+        f"{e.core:.4g} W from the speed profile) against the frame's limit "
         f"{frame.limit_W:.4g} W, the limit of the point check.",
     )
     trace.apply(
         duty_rules.peak,
-        e["peak"],
-        e["peak_limit"],
+        e.peak,
+        e.peak_limit,
         f"The largest motor torque of the cycle against {duty.peak_torque_factor:g} × the "
         f"continuous torque of the frame at {speed_rpm:g} rpm, "
         f"{frame.continuous_torque():.4g} N·m (duty.peak_torque_factor).",
@@ -417,13 +427,13 @@ class _Thermal(NamedTuple):
     peak_rise_K: float
 
 
-def _thermal(e: dict, frame: Frame, t_cycle: float) -> _Thermal:
+def _thermal(e: CycleResult, frame: Frame, t_cycle: float) -> _Thermal:
     """First-order thermal model over repeated cycles, R from the limit and class F."""
     tau = frame.data.time_constant_s
     r_th = CLASS_F_RISE_K / frame.limit_W
     n = max(1, min(2000, math.ceil(5.0 * tau / t_cycle)))
-    hist = duty_calc.thermal_history(e["losses"], r_th, tau, n, max_points=400)
-    return _Thermal(r_th, hist, duty_calc.periodic_peak_rise(e["losses"], r_th, tau))
+    hist = duty_calc.thermal_history(e.losses, r_th, tau, n, max_points=400)
+    return _Thermal(r_th, hist, duty_calc.periodic_peak_rise(e.losses, r_th, tau))
 
 
 def _duty_warnings(ir: float, within: bool, thermal: _Thermal, tau: float) -> list[str]:
@@ -443,14 +453,14 @@ def _duty_warnings(ir: float, within: bool, thermal: _Thermal, tau: float) -> li
     return warnings
 
 
-def _duty_checks(e: dict, frame: Frame) -> list[Check]:
+def _duty_checks(e: CycleResult, frame: Frame) -> list[Check]:
     from advisor.applications.rotary.motor import losses_check
 
     return [
         losses_check(
             "duty_losses",
             "cycle-averaged losses of the motor within the frame's limit",
-            e["total"],
+            e.total,
             frame.limit_W,
             cite("seed-000", "eqs. (4), (5), (9)").with_note(
                 "issue 15; the frame's limit of the point check"
@@ -459,10 +469,10 @@ def _duty_checks(e: dict, frame: Frame) -> list[Check]:
         Check(
             "duty_peak_torque",
             "peak motor torque of the cycle within the peak the motor gives",
-            e["peak"],
-            e["peak_limit"],
+            e.peak,
+            e.peak_limit,
             "N·m",
-            e["peak_limit"] / e["peak"] if e["peak"] > 0 else math.inf,
+            e.peak_limit / e.peak if e.peak > 0 else math.inf,
             note("issue 15; duty.peak_torque_factor"),
         ),
     ]
@@ -475,11 +485,11 @@ def advise_duty(
     segment_loads_within_rating(req)
     duty = req.duty
     e = evaluate(req, q, eta, speed_rpm, frame, holder)
-    if e["problems"]:
+    if e.problems:
         raise InfeasibleError(
-            "no feasible design: the adopted drive fails the duty cycle", e["problems"]
+            "no feasible design: the adopted drive fails the duty cycle", e.problems
         )
-    phases = e["phases"]
+    phases = e.phases
     ir, within = _decisions(req, e, frame, q, eta, speed_rpm, trace)
     t_cycle = duty_calc.cycle_time(phases)
     tau = frame.data.time_constant_s
@@ -491,10 +501,10 @@ def advise_duty(
         ratio=q,
         cycle_time_s=t_cycle,
         move_time_s=sum(p.time_s for p in phases if p.speed_start_rad_s or p.speed_end_rad_s),
-        peak_torque_Nm=e["peak"],
-        peak_torque_limit_Nm=e["peak_limit"],
+        peak_torque_Nm=e.peak,
+        peak_torque_limit_Nm=e.peak_limit,
         rms_torque_Nm=duty_calc.rms_torque(phases),
-        thermal_utilisation=e["total"] / frame.limit_W,
+        thermal_utilisation=e.total / frame.limit_W,
         thermal_basis="cycle-averaged losses over the frame's limit",
         inertia_ratio=ir,
         motor_inertia_kgm2=frame.data.inertia_kgm2,
@@ -506,13 +516,13 @@ def advise_duty(
         cycles_per_hour=3600.0 / t_cycle,
         duty_type=duty.duty_type or "cycle",
         held_by=holder.words(),
-        losses_W={"copper": e["copper"], "iron_and_magnets": e["core"], "total": e["total"]},
+        losses_W={"copper": e.copper, "iron_and_magnets": e.core, "total": e.total},
         loss_limit_W=frame.limit_W,
         thermal=ThermalOut.make(
             time_constant_s=tau,
             time_constant_basis=frame.data.time_constant_basis,
             resistance_K_W=thermal.resistance_K_W,
-            steady_rise_K=e["total"] * thermal.resistance_K_W,
+            steady_rise_K=e.total * thermal.resistance_K_W,
             peak_rise_K=thermal.peak_rise_K,
             limit_rise_K=CLASS_F_RISE_K,
             time_s=[h[0] for h in thermal.history],
