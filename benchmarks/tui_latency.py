@@ -148,12 +148,12 @@ def floor(repeats: int) -> list[float]:
     return out
 
 
-def measure(example: Path, repeats: int) -> dict:
+def measure(example: Path, repeats: int, tree: Path | None = None) -> dict:
     # the floor's first screen just before, paired: the virtual machine's speed drifts, and a
     # first screen is judged against what textual alone takes at the same moment
     floor_ms = floor(1)[0]
     with tempfile.TemporaryDirectory() as state:
-        term = Terminal(example, state)
+        term = Terminal(example, state, tree)
         try:
             first_screen = term.wait_for("What must the drive do?") - term.started
             term.drain()

@@ -130,3 +130,32 @@ def test_a_burst_of_keys_in_tmux_fills_field_after_field(tmp_path, monkeypatch):
         _tmux("send-keys", "-t", session, "C-q")
     finally:
         _tmux("kill-server", check=False)
+
+
+def test_keys_at_the_first_paint_are_answered_before_the_rest_of_the_start(tmp_path):
+    """f1 the moment the first step shows opens the help (the warm-up and the result views
+    wait until the keyboard is quiet); closed, a ctrl+r then computes, the result views
+    mounted by then."""
+    src = EXAMPLES / "rudder_actuator.toml"
+    session = f"advisor-e2e-{uuid.uuid4().hex[:8]}"
+    env = (
+        f"XDG_STATE_HOME={tmp_path / 'state'} TEXTUAL_ANIMATIONS=none "
+        f"PATH={os.path.dirname(sys.executable)}:{os.environ.get('PATH', '')}"
+    )
+    command = f"cd {tmp_path} && env {env} {sys.executable} -m advisor {src}"
+    _tmux("new-session", "-d", "-s", session, "-x", "120", "-y", "40", command)
+    try:
+        _wait_for(session, "What must the drive do?")
+        _tmux("send-keys", "-t", session, "F1")
+        _wait_for(session, "Drive Advisor — keys")
+        _tmux("send-keys", "-t", session, "Escape")
+        for _ in range(150):  # (an escape alone waits a moment for a sequence to follow)
+            if "Drive Advisor — keys" not in _tmux("capture-pane", "-p", "-t", session):
+                break
+            time.sleep(0.2)
+        _tmux("send-keys", "-t", session, "C-r")
+        screen = _wait_for(session, "status: feasible")
+        assert "Results" in screen
+        _tmux("send-keys", "-t", session, "C-q")
+    finally:
+        _tmux("kill-server", check=False)

@@ -5,12 +5,14 @@ thread so the screen never freezes. Every change is saved to a draft in the user
 directory and offered back at the next start.
 
 Start-up is staged so that the first screen shows within half a second: the first step is
-painted from the file as read (textual and the registry only); the questions, which come
-from the pydantic models, the other steps and the result views are built right after that
-first paint, keys typed meanwhile waiting (none is lost); then a worker thread imports the
+painted from the file as read (textual and the registry only, the footer's keys included);
+the document is shaped and the step shown built right after that first paint, keys typed
+meanwhile waiting (none is lost). Those keys are answered before the rest starts (once the
+keyboard has been quiet for a moment, see :mod:`advisor.tui.startup`): a thread imports the
 engine and the application and advises once on the file as given, so that the first ctrl+r
-finds the modules and catalogs loaded (and, on a file not edited, that design). The plotting
-library is loaded after the first results are painted.
+finds the modules and catalogs loaded (and, on a file not edited, that design), and the
+result views are mounted. The plotting library is loaded after the first results are
+painted.
 """
 
 import copy
@@ -347,6 +349,7 @@ class DriveAdvisorApp(StartUp, KeysInOrder, StepPages, StepChecks, ResultViews, 
         # compute (the first ctrl+r on an unedited file), its design is the one (the same
         # function on the same input), taken once
         warm, self._warm_advice = self._warm_advice, None
+        self.call_from_thread(self._ensure_results)  # (a key at the first paint: not yet)
         try:
             if warm is not None and warm[0] == doc:
                 report = warm[1]

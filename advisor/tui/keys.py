@@ -1,6 +1,7 @@
 """Keys and pastes acting in the order typed, whatever the machine's load."""
 
 import asyncio
+import time
 from typing import Any
 
 from textual import events
@@ -16,6 +17,8 @@ class KeysInOrder:
     async def on_event(self, event: events.Event) -> None:
         """Keys, clicks and pastes wait (in order) until the start-up is done (_start); keys
         and pastes then act in the order typed (:meth:`_key_in_order`, :meth:`_paste_lines`)."""
+        if isinstance(event, events.Key | events.Paste | events.MouseDown):
+            self._last_input_s = time.monotonic()  # (the start-up's rest waits for quiet)
         if isinstance(event, events.InputEvent | events.Paste) and not self._built.is_set():
             await self._built.wait()
         if isinstance(event, events.Key) and not event.is_forwarded:

@@ -1,5 +1,6 @@
 """The result views: summary, components, compare, decisions, checks and plots."""
 
+import asyncio
 import threading
 import time
 from typing import Any
@@ -42,6 +43,20 @@ class ResultViews:
         self._compare_shown = 0  # the _views_version whose comparison is built
         self._figures: list[Any] = []
         self._plot_panes: set[str] = set()  # the ids of the plot panes mounted
+        self._results_asked = False  # the result views' mount has begun
+        self._results_ready = asyncio.Event()  # set once they are mounted
+
+    async def _ensure_results(self) -> None:
+        """The result views mounted, once: by the start-up once the first keys are answered,
+        or by a compute that comes before (see :meth:`_after_start`)."""
+        if self._results_asked:
+            await self._results_ready.wait()
+            return
+        self._results_asked = True
+        await self.query_one("#results", Vertical).mount(*self._result_views())
+        tabs = self.query_one("#result-tabs", TabbedContent)
+        self.watch(tabs, "active", self._show_lazy_views, init=False)
+        self._results_ready.set()
 
     @staticmethod
     def _result_views() -> list[Any]:

@@ -3,15 +3,14 @@
 import asyncio
 import copy
 import threading
+import time
 from typing import Any
 
-from textual.containers import Vertical
 from textual.widgets import (
     Input,
     Label,
     RadioButton,
     Static,
-    TabbedContent,
 )
 
 from advisor.core import registry
@@ -21,6 +20,10 @@ from advisor.tui.screens import ConfirmScreen
 
 #: At most this many loading problems are listed (then how many more).
 MAX_PROBLEMS = 8
+#: How long the keyboard must be quiet, once the start-up has built what keys need, before
+#: the rest of it runs (the warm-up's imports and the result views' layout, ≈ 0.3 s of the
+#: one interpreter): keys typed at the first paint are answered first [s].
+QUIET_S = 0.1
 
 
 class StartUp:
@@ -36,6 +39,7 @@ class StartUp:
         self._warming = False  # the warm-up is on (see _start)
         #: the document the warm-up advised on and its design (None: none, or taken)
         self._warm_advice: tuple[dict[str, Any], Any] | None = None
+        self._last_input_s = -1.0  # when the last key, paste or click came (monotonic)
 
     def _first_look(self) -> tuple[str | None, str]:
         """The application and the title the first screen shows, from the document as given
@@ -53,21 +57,41 @@ class StartUp:
         )
 
     async def _start(self) -> None:
-        """Everything the first screen did not need: the warm-up of the engine started in
-        a worker thread, then the document shaped (tables where tables belong, values of
-        the right kind), the draft to offer and the step shown built."""
-        warm = self.warm_up if self.warm_up is not None else not self.is_headless
-        self._warming = warm
-        kind, _ = self._first_look()
-        if warm and kind is not None:  # the file as given: as the batch would read it
-            self._warmed.clear()
-            doc = copy.deepcopy(self._given)
-            # a thread of its own, started now (a worker would start once this returns)
-            threading.Thread(target=self._warm, args=(doc,), daemon=True).start()
+        """What a key needs that the first screen did not: the document shaped (tables
+        where tables belong, values of the right kind), the draft to offer and the step
+        shown built. The rest waits until the keys typed meanwhile are answered
+        (:meth:`_after_start`)."""
         try:
             await self._build_start()
         finally:
             self._built.set()
+        if self.is_headless:  # under a test's Pilot: all of it before the first key
+            await self._after_start()
+        elif self._last_input_s >= 0:  # keys came meanwhile: they are answered now, first
+            self._last_input_s = time.monotonic()
+            self._when_quiet()
+        else:
+            self.call_after_refresh(self._after_start)
+
+    def _when_quiet(self) -> None:
+        """:meth:`_after_start` once no key, paste or click has come for :data:`QUIET_S`."""
+        wait_s = self._last_input_s + QUIET_S - time.monotonic()
+        if wait_s > 0:
+            self.set_timer(wait_s, self._when_quiet)
+        else:
+            self.call_later(self._after_start)
+
+    async def _after_start(self) -> None:
+        """The warm-up of the engine started in a thread of its own, then the result views
+        mounted (a compute that comes first mounts them itself)."""
+        warm = self.warm_up if self.warm_up is not None else not self.is_headless
+        self._warming = warm
+        kind, _ = self._first_look()
+        if warm and kind is not None and not self.computing:  # the file as given
+            self._warmed.clear()
+            doc = copy.deepcopy(self._given)
+            threading.Thread(target=self._warm, args=(doc,), daemon=True).start()
+        await self._ensure_results()
 
     def _warm(self, doc: dict[str, Any]) -> None:
         """Import the engine, the application and its views, and advise once (the result
@@ -113,9 +137,6 @@ class StartUp:
         if title.value != shaped_title:
             title.value = shaped_title
         await self._build_steps()
-        await self.query_one("#results", Vertical).mount(*self._result_views())
-        tabs = self.query_one("#result-tabs", TabbedContent)
-        self.watch(tabs, "active", self._show_lazy_views, init=False)
         self._show_step()
         self._show_problems(self.load_problems)
         if self._offered is not None and self._offered.doc:

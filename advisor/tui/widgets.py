@@ -5,6 +5,7 @@ from typing import Any
 
 from rich.text import Text
 from textual import events
+from textual.app import ComposeResult
 from textual.widgets import Footer, Input, Label, RadioButton, Static
 
 
@@ -42,6 +43,13 @@ class SteadyFooter(Footer):
     a compute moves the focus several times, and each rebuild cost more than the compute."""
 
     _shown: Any = None
+
+    def compose(self) -> ComposeResult:
+        # the keys in the first paint: built after it, the rebuild (a dozen widgets, styled)
+        # ran just when a key pressed at that paint was to be answered
+        self._bindings_ready = True
+        self._shown = self._keys()
+        yield from super().compose()
 
     def _keys(self) -> tuple[Any, ...]:
         return tuple(
