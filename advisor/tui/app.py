@@ -4,15 +4,14 @@ It calls exactly the engine the batch uses (:func:`advisor.core.engine.advise`),
 thread so the screen never freezes. Every change is saved to a draft in the user's state
 directory and offered back at the next start.
 
-Start-up is staged so that the first screen shows within half a second: the first step is
-painted from the file as read (textual and the registry only, the footer's keys included);
-the document is shaped and the step shown built right after that first paint, keys typed
-meanwhile waiting (none is lost). Those keys are answered before the rest starts (once the
-keyboard has been quiet for a moment, see :mod:`advisor.tui.startup`): a thread imports the
-engine and the application and advises once on the file as given, so that the first ctrl+r
-finds the modules and catalogs loaded (and, on a file not edited, that design), and the
-result views are mounted. The plotting library is loaded after the first results are
-painted.
+Start-up is staged so that the first screen shows within half a second and answers a key at
+once: the first step is painted from the file as read (textual and the registry), with the
+document shaped and the step shown built (the questions are compiled: a few milliseconds).
+The rest waits until that paint is done and the keyboard is quiet (see
+:mod:`advisor.tui.startup`): a thread imports the engine and the application and advises
+once on the file as given, so that the first ctrl+r finds the modules and catalogs loaded
+(and, on a file not edited, that design), and the result views are mounted. The plotting
+library is loaded after the first results are painted.
 """
 
 import copy
@@ -141,10 +140,9 @@ class DriveAdvisorApp(StartUp, KeysInOrder, StepPages, StepChecks, ResultViews, 
     async def on_mount(self) -> None:
         if self.build_all_steps is None:
             self.build_all_steps = self.is_headless
-        if self.is_headless:  # under a test's Pilot: ready before the first key
-            await self._start()
-        else:  # in a terminal: the first step is painted first
-            self.screen.call_after_refresh(self._start)
+        # before the first paint: what a key needs costs a few milliseconds now that the
+        # questions are compiled, and painted at once it spares a second layout
+        await self._start()
 
     def on_resize(self) -> None:
         if self.is_mounted and self._built.is_set():

@@ -57,21 +57,22 @@ class StartUp:
         )
 
     async def _start(self) -> None:
-        """What a key needs that the first screen did not: the document shaped (tables
-        where tables belong, values of the right kind), the draft to offer and the step
-        shown built. The rest waits until the keys typed meanwhile are answered
-        (:meth:`_after_start`)."""
+        """What a key needs: the document shaped (tables where tables belong, values of the
+        right kind), the draft to offer and the step shown built, before the first paint
+        (a few milliseconds). The rest waits until that paint is done and the keys typed
+        at it are answered (:meth:`_after_start`)."""
         try:
             await self._build_start()
         finally:
             self._built.set()
         if self.is_headless:  # under a test's Pilot: all of it before the first key
             await self._after_start()
-        elif self._last_input_s >= 0:  # keys came meanwhile: they are answered now, first
-            self._last_input_s = time.monotonic()
-            self._when_quiet()
         else:
-            self.call_after_refresh(self._after_start)
+            self.screen.call_after_refresh(self._after_first_paint)
+
+    def _after_first_paint(self) -> None:
+        self._last_input_s = max(self._last_input_s, time.monotonic())
+        self._when_quiet()
 
     def _when_quiet(self) -> None:
         """:meth:`_after_start` once no key, paste or click has come for :data:`QUIET_S`."""
