@@ -47,3 +47,23 @@ def test_closed_form_history_equals_the_stepped_one(max_points):
             assert y1 == pytest.approx(y0, rel=1e-10, abs=1e-10)
             assert round_sig(t1) == round_sig(t0)
             assert round_sig(y1) == round_sig(y0) or y1 == pytest.approx(y0, abs=1e-12)
+
+
+def test_the_clock_is_the_stepping_models_clock_to_the_last_bit():
+    """The times are the phase durations summed one after another, as the stepping model sums
+    them: a product c·t_cycle + t_j differs in the last bit, and where the true time is a tie
+    at the 6th digit (0.01 s phases, 1030.005 s) that bit changes the printed report."""
+    import random
+
+    from advisor.calc.duty import thermal_history, thermal_rise
+
+    rng = random.Random(7)
+    for _ in range(200):
+        phases = [
+            (rng.uniform(0, 500), rng.choice([0.01, 0.1, 0.2, 1.5, 2.35, 10.0]))
+            for _ in range(rng.randint(1, 4))
+        ]
+        cycles = rng.randint(1, 3000)
+        kept = thermal_history(phases, 0.4, 900.0, cycles)
+        stepped = dict(thermal_rise(phases, 0.4, 900.0, cycles))
+        assert all(t in stepped for t, _ in kept)
