@@ -169,6 +169,8 @@ def adopted_stages(
     (WG-02) where WG-06 lets the rule design stand; otherwise the design space's lightest
     (or slimmest) within the envelope, as the advice adopts. The rules' count where the
     space has none that fits (the advice then says so)."""
+    if choice == "rules" and d_max is None and l_max is None:
+        return len(split)  # without an envelope the rule design always fits: WG-06 is silent
     split_list = list(split)
     rule_design = None
     if choice == "rules":
