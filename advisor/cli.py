@@ -19,8 +19,9 @@ from typing import Any
 
 from advisor import __version__
 from advisor.core.errors import AdvisorError, ExitCode, InfeasibleError
-
-PROG = "advisor"
+from advisor.core.io_safety import LINE_CHARS as LINE_CHARS  # re-exported
+from advisor.core.io_safety import PROG
+from advisor.core.io_safety import print_error as print_error  # re-exported
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -81,24 +82,6 @@ def build_parser() -> argparse.ArgumentParser:
     )
     p.add_argument("--version", action="version", version=f"{PROG} {__version__}")
     return p
-
-
-def print_error(message: str) -> None:
-    """Each line of ``message`` on stderr after the program name: controls escaped, at most
-    :data:`LINE_CHARS` characters (a message never floods the terminal)."""
-    from advisor.core.io_safety import clip, printable
-
-    room = LINE_CHARS - len(PROG) - 2  # "advisor: " comes first
-    for line in message.splitlines() or [message]:
-        text = printable(line)
-        if len(text) > room:  # clip's "… (N characters)" counted in the room
-            tail = f"… ({len(text):,} characters)"
-            text = clip(text, room - len(tail) + 1)
-        print(f"{PROG}: {text}", file=sys.stderr)
-
-
-#: The longest line the command prints on stderr.
-LINE_CHARS = 300
 
 
 def _silence_stdout() -> None:

@@ -342,7 +342,7 @@ def main(argv: list[str]) -> int:
     try:
         a, b = read_report(args.a), read_report(args.b)
     except AdvisorError as exc:
-        from advisor.cli import print_error
+        from advisor.core.io_safety import print_error
 
         print_error(str(exc).splitlines()[0] if str(exc) else "bad input")
         return ExitCode.INVALID_INPUT

@@ -16,6 +16,7 @@ This module imports nothing heavy: the batch path uses it.
 
 import os
 import stat
+import sys
 import tomllib
 from pathlib import Path
 from typing import Any
@@ -256,3 +257,23 @@ def write_atomic(path: Path, text: str) -> None:
         except FileNotFoundError:
             pass
         raise
+
+
+#: The program name every message on stderr begins with.
+PROG = "advisor"
+
+
+def print_error(message: str) -> None:
+    """Each line of ``message`` on stderr after the program name: controls escaped, at most
+    :data:`LINE_CHARS` characters (a message never floods the terminal)."""
+    room = LINE_CHARS - len(PROG) - 2  # "advisor: " comes first
+    for line in message.splitlines() or [message]:
+        text = printable(line)
+        if len(text) > room:  # clip's "… (N characters)" counted in the room
+            tail = f"… ({len(text):,} characters)"
+            text = clip(text, room - len(tail) + 1)
+        print(f"{PROG}: {text}", file=sys.stderr)
+
+
+#: The longest line the command prints on stderr.
+LINE_CHARS = 300

@@ -42,8 +42,8 @@ def _short_names() -> dict[str, str]:
 
 
 def main(argv: list[str]) -> int:
-    from advisor.cli import print_error
     from advisor.core.errors import AdvisorError
+    from advisor.core.io_safety import print_error
     from advisor.verify.runner import DataError, load_cases
 
     try:
