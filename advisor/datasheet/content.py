@@ -6,12 +6,12 @@ Keys keep their meaning and lose their unit suffix to a unit column (``outer_dia
 six); curves are left to the plots.
 """
 
-import math
 from dataclasses import dataclass, field
 from typing import Any
 
 from advisor.core.report import curve_part, is_curve
 from advisor.datasheet.labels import UNITS as UNITS  # re-exported
+from advisor.datasheet.labels import number as number  # re-exported
 from advisor.datasheet.labels import split_key as split_key  # re-exported
 from advisor.datasheet.references import readable, references
 from advisor.datasheet.review import TIGHT_MARGIN as TIGHT_MARGIN  # re-exported
@@ -30,30 +30,6 @@ from advisor.datasheet.review import (
 #: (label, unit) of a requirement field by its path (see
 #: :func:`advisor.datasheet.labels.requirement_labels`).
 Labels = dict[tuple[str, ...], tuple[str, str]]
-
-
-def number(x: Any) -> str:
-    """A value as a reader wants it: four significant digits, no exponent between 0.001 and
-    a million, yes/no for booleans.
-
-    >>> number(5.08485), number(21120.5), number(442937), number(1.5e-05), number(True)
-    ('5.085', '21120', '442937', '1.5e-05', 'yes')
-    """
-    if isinstance(x, bool):
-        return "yes" if x else "no"
-    if isinstance(x, int):
-        return str(x)
-    if isinstance(x, float):
-        if x == 0 or not math.isfinite(x):
-            return f"{x:g}"
-        if 1e-3 <= abs(x) < 1e6:
-            decimals = max(0, 3 - math.floor(math.log10(abs(x))))
-            text = f"{x:.{decimals}f}"
-            return text.rstrip("0").rstrip(".") if "." in text else text
-        return f"{x:.4g}"
-    if isinstance(x, list):
-        return ", ".join(number(v) for v in x)
-    return str(x)
 
 
 @dataclass

@@ -7,6 +7,7 @@ name is a symbol of a standard or a seed (``d2_mm``, ``p15_50_W_kg``, ``C0_kN``)
 from its words and the unit its suffix names (``outer_diameter_mm`` → "outer diameter", mm).
 """
 
+import math
 import re
 from typing import Any
 
@@ -207,3 +208,27 @@ def write_compiled() -> None:
 
 if __name__ == "__main__":
     write_compiled()
+
+
+def number(x: Any) -> str:
+    """A value as a reader wants it: four significant digits, no exponent between 0.001 and
+    a million, yes/no for booleans.
+
+    >>> number(5.08485), number(21120.5), number(442937), number(1.5e-05), number(True)
+    ('5.085', '21120', '442937', '1.5e-05', 'yes')
+    """
+    if isinstance(x, bool):
+        return "yes" if x else "no"
+    if isinstance(x, int):
+        return str(x)
+    if isinstance(x, float):
+        if x == 0 or not math.isfinite(x):
+            return f"{x:g}"
+        if 1e-3 <= abs(x) < 1e6:
+            decimals = max(0, 3 - math.floor(math.log10(abs(x))))
+            text = f"{x:.{decimals}f}"
+            return text.rstrip("0").rstrip(".") if "." in text else text
+        return f"{x:.4g}"
+    if isinstance(x, list):
+        return ", ".join(number(v) for v in x)
+    return str(x)

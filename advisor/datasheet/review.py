@@ -9,7 +9,7 @@ from dataclasses import dataclass
 from fnmatch import fnmatchcase
 from typing import Any
 
-from advisor.datasheet.labels import split_key
+from advisor.datasheet.labels import number, split_key
 
 #: A check whose margin is below this passes, but with little to spare: marked "tight".
 TIGHT_MARGIN = 1.1
@@ -34,12 +34,6 @@ def status_of(check: dict) -> str:
     if not check.get("passed", True) or check["margin"] < 1:
         return "fails"
     return "tight" if check["margin"] < TIGHT_MARGIN else "passes"
-
-
-def number(x: Any) -> str:
-    from advisor.datasheet.content import number as fmt
-
-    return fmt(x)
 
 
 # ------------------------------------------------------------------------------ header
