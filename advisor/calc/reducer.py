@@ -564,8 +564,8 @@ def _within(
     return ok
 
 
-#: Points checked at once by :func:`pareto`.
-_BLOCK = 64
+#: Points checked at once by :func:`pareto` (fewer: more numpy calls; more: larger arrays).
+_BLOCK = 128
 
 
 def _shortest_of_groups(result: SweepResult, ok: np.ndarray) -> np.ndarray:
@@ -618,29 +618,25 @@ def _non_dominated(result: SweepResult, cand: np.ndarray) -> np.ndarray:
     transitive) so does a non-dominated point that dominates it: each block is checked
     against the front so far and against the points before it within the block. A point
     equal in every objective to an earlier one goes too (duplicates are kept once)."""
-    obj = [
-        result.mass_kg[cand],
-        result.outer_diameter_mm[cand],
-        result.length_mm[cand],
-        result.stages[cand].astype(float),
-    ]
-    front_obj = [x[:0] for x in obj]
+    obj = np.stack(
+        [
+            result.mass_kg[cand],
+            result.outer_diameter_mm[cand],
+            result.length_mm[cand],
+            result.stages[cand].astype(float),
+        ]
+    )  # (objective, point)
+    front_obj = obj[:, :0]
     front = []
     before = np.triu(np.ones((_BLOCK, _BLOCK), bool), 1)  # [i, j]: i before j
     for start in range(0, cand.size, _BLOCK):
-        blk = [x[start : start + _BLOCK] for x in obj]
-        b = blk[0].size
-        covered = before[:b, :b].copy()
-        for x in blk:
-            covered &= x[:, None] <= x[None, :]
+        blk = obj[:, start : start + _BLOCK]
+        b = blk.shape[1]
+        covered = (blk[:, :, None] <= blk[:, None, :]).all(axis=0) & before[:b, :b]
         dominated = covered.any(axis=0)
-        if front_obj[0].size:
-            covered = front_obj[0][:, None] <= blk[0][None, :]
-            for f, x in zip(front_obj[1:], blk[1:], strict=True):
-                covered &= f[:, None] <= x[None, :]
-            dominated |= covered.any(axis=0)
+        dominated |= (front_obj[:, :, None] <= blk[:, None, :]).all(axis=0).any(axis=0)
         keep = ~dominated
-        front_obj = [np.concatenate([f, x[keep]]) for f, x in zip(front_obj, blk, strict=True)]
+        front_obj = np.concatenate([front_obj, blk[:, keep]], axis=1)
         front.append(cand[start : start + _BLOCK][keep])
     return np.concatenate(front) if front else cand[:0]
 
