@@ -264,7 +264,7 @@ def usable_cpus() -> int:
 def preload(catalog_dir: Path | None) -> None:
     """Import every application's pipeline and report, the compiled requirement validator with
     its checks, and load the catalogs, in the parent before the workers fork: each worker then
-    starts with them instead of importing them again (issue 16). The pydantic models are not
+    starts with them instead of importing them again. The pydantic models are not
     imported: a valid file never needs them (:mod:`advisor.core.reading`); a worker that meets
     an invalid one imports them then. A catalog that cannot be read is left to the workers,
     which report it per file."""
@@ -303,7 +303,7 @@ def _pool_context():
         return None
 
 
-#: Tasks queued per worker (issue 16): with one, a worker idles between two tasks for the
+#: Tasks queued per worker: with one, a worker idles between two tasks for the
 #: round trip of its result through the parent.
 IN_FLIGHT = 2
 #: Files per task at most: a task of several files costs one round trip through the parent
@@ -474,7 +474,7 @@ STATUS = {0: "design", 2: "invalid", 3: "infeasible", 1: "bug"}
 def summary_lines(outcomes: list[Outcome], out_dir: Path) -> list[str]:
     """The run's summary: a heading, one aligned line per file (its result, exit code and
     design or reason), then the counts. Plain text: rich's table took 0.4 s to lay out 400
-    files, all of it after the workers had finished (issue 16). User text (file names,
+    files, all of it after the workers had finished. User text (file names,
     titles, messages) is shown with its control characters escaped."""
     from advisor.core.io_safety import printable
 

@@ -1,7 +1,7 @@
 """A short human summary of a report, printed as plain text after ``advisor --batch -o``.
 
 Plain text, not rich: the summary is a handful of lines, and importing and rendering rich
-would cost more than the whole advice on the batch path (issue 16). User and catalog text
+would cost more than the whole advice on the batch path. User and catalog text
 (title, path, names, messages) is shown with its control characters escaped.
 """
 

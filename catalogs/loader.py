@@ -58,7 +58,7 @@ class Catalogs(NamedTuple):
     #: catalogs/bibliography.toml (plus a user directory's): id → entry (fields as written)
     bibliography: dict[str, dict[str, Any]] = {}  # noqa: RUF012
     #: PM brushless motors the rotary advice chooses from: seed 000's scaled frames (the
-    #: reference among them) and a user directory's bldc_motors.toml (issue 25)
+    #: reference among them) and a user directory's bldc_motors.toml
     bldc_frames: tuple[BldcFrame, ...] = ()
     bldc_sources: SourceMap = {}  # noqa: RUF012
 
@@ -714,7 +714,7 @@ def _check_unique(path: Path, names: list[str], what: str) -> None:
 
 
 # ---------------------------------------------------------------- cache of validated catalogs
-CACHE_VERSION = 6  # 6: PM brushless frames and user motors (issue 25)
+CACHE_VERSION = 6  # 6: PM brushless frames and user motors
 
 #: The modules whose code makes the cached rows (read, validated, derived): the cache is
 #: keyed by their source, so an edit to any of them is a new cache without bumping

@@ -2,7 +2,7 @@
 
 tomli-w formats through generators and one ``isinstance`` chain per value, and escapes
 strings character by character; a report holds a few thousand values, and that made TOML
-output a third of a warm linear advice (issue 16). This writer takes the plain data a report
+output a third of a warm linear advice. This writer takes the plain data a report
 is made of (dicts, lists, str, int, float, bool, as :func:`advisor.core.report.plain_data`
 returns them) and writes what ``tomli_w.dumps(doc)`` writes with its defaults (indent 4, no
 multi-line strings): the same table order, the same inline-table heuristic (an array of

@@ -3,7 +3,7 @@
 to the unit its key names before the requirement models see it. The report therefore echoes
 the requirement in the keys' (SI) units.
 
-The strings are read by a strict grammar of this module, never evaluated (issue 24: pint,
+The strings are read by a strict grammar of this module, never evaluated (pint,
 which read them before, parses a unit string as an arithmetic expression, so ``"9**9**9 N"``
 never ended, ``"5 kN + 3 kN"`` was 8 kN, ``"3500 N*ln10"`` 8059 N, and its disk cache ran
 pickles from a writable folder). A quantity is::
@@ -25,7 +25,7 @@ for the inch, foot, pound, pound-force, kilogram-force, horsepower and psi), so 
 is needed. The radian is kept as a dimension of its own (pint counted it as none), so a
 speed of rotation (rpm, rad/s, deg/s) is told apart from a frequency (Hz) and an angle from a
 pure number. An energy (J, cal, W·h) has the dimension of a torque but is not one: a torque
-field refuses it (issue 23, item 9). A number in quotes without a unit is refused: it is a
+field refuses it. A number in quotes without a unit is refused: it is a
 slip or a unit left out, and guessing either way would hide it.
 """
 

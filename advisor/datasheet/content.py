@@ -91,7 +91,7 @@ class Sheet:
     cycle: Cycle | None = None
     bars: list[Bar] = field(default_factory=list)
     parts: list[list[str]] = field(default_factory=list)
-    probability: "Probability | None" = None  # issue 30: with an [uncertainty] table
+    probability: "Probability | None" = None  # with an [uncertainty] table
 
 
 @dataclass

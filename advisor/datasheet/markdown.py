@@ -167,7 +167,7 @@ def _review(s: Sheet) -> list[str]:
 
 def _probability(p: Probability | None) -> list[str]:
     """P(pass) of the design and of each check, and the tornado charts' data as tables: each
-    input's ρ with a bar of ten cells either side of zero (issue 30)."""
+    input's ρ with a bar of ten cells either side of zero."""
     out = ["## Probability of passing", ""]
     if p is None:
         return [
