@@ -153,9 +153,11 @@ def choose_drive(
     lightest screw that it drives. A heavier load can only remove options, so more force
     never gives a smaller motor."""
     free = [o for o in options if imposed_starts is None or o.starts == imposed_starts]
-    own = _best(free, hold_without_power)
     pool = [o for o in free if imposed is None or o.thread == imposed]
-    best = _best(pool, hold_without_power)
+    # sorted is stable: the first of equals comes first, as min would take it
+    ranked = sorted(pool, key=lambda o: drive_order(o, hold_without_power))
+    best = ranked[0] if ranked else None
+    own = best if imposed is None else _best(free, hold_without_power)
     inputs: dict = {
         "hold_without_power": hold_without_power,
         "starts": imposed_starts if imposed_starts is not None else "free (1…4)",
@@ -174,7 +176,6 @@ def choose_drive(
             "screw speed or torque that no 50 Hz induction motor of the catalog gives.",
             inputs,
         )
-    ranked = sorted(pool, key=lambda o: drive_order(o, hold_without_power))
     runners = [o.describe() for o in ranked[1 : 1 + RUNNERS_UP]]
     inputs.update(
         {

@@ -198,14 +198,15 @@ def _pole_options(
 ) -> list[induction_rules.PoleOption]:
     """The best drive option of each pole count (of the imposed thread, if one is), as rule
     IM-01 compares them."""
-    pool = [o for o in options if imposed is None or o.thread == imposed]
+    firsts: dict[int, tuple[tuple, screw_rules.DriveOption]] = {}
+    for o in options:  # each option's order once; a later one only if strictly first, as min
+        if imposed is None or o.thread == imposed:
+            key, held = screw_rules.drive_order(o, hold), firsts.get(o.pole_pairs)
+            if held is None or key < held[0]:
+                firsts[o.pole_pairs] = (key, o)
     out = []
     for pp in pole_pairs:
-        best = min(
-            (o for o in pool if o.pole_pairs == pp),
-            key=lambda o: screw_rules.drive_order(o, hold),
-            default=None,
-        )
+        best = firsts[pp][1] if pp in firsts else None
         out.append(
             induction_rules.PoleOption(
                 pp,
