@@ -11,6 +11,7 @@ References
     non-overlapping windings», 2008). Known values: 12s/10p 0.933, 9s/8p 0.945, 12s/8p 0.866.
 """
 
+import functools
 import itertools
 import math
 from typing import NamedTuple
@@ -61,7 +62,8 @@ def winding_factor(slots: int, pole_pairs: int, teeth_per_group: int) -> float:
     return kp * kd
 
 
-def pole_slot_combinations(phases: int = 3, max_slots: int = 36) -> list[PoleSlot]:
+@functools.cache  # a table of constants: the same for every frame
+def pole_slot_combinations(phases: int = 3, max_slots: int = 36) -> tuple[PoleSlot, ...]:
     """Feasible sets of eq. (1), 2p = z/(m·k)·(k·m ± 1), seed 000.
 
     z must hold a whole number of phase groups of k teeth (z divisible by m·k), 2p must be
@@ -76,7 +78,7 @@ def pole_slot_combinations(phases: int = 3, max_slots: int = 36) -> list[PoleSlo
 
     Returns
     -------
-    list of PoleSlot
+    tuple of PoleSlot
         Slots, poles, teeth per group and winding factor, by poles then slots
     """
     out = []
@@ -93,7 +95,7 @@ def pole_slot_combinations(phases: int = 3, max_slots: int = 36) -> list[PoleSlo
                 if (z // math.gcd(z, p)) % phases:
                     continue
                 out.append(PoleSlot(z, two_p, k, winding_factor(z, p, k)))
-    return sorted(set(out), key=lambda c: (c.poles, c.slots))
+    return tuple(sorted(set(out), key=lambda c: (c.poles, c.slots)))
 
 
 def flux_frequency_Hz(speed_rpm: float, pole_pairs: int) -> float:
