@@ -7,7 +7,6 @@ The SVG is deterministic, so that two datasheets of the same input diff clean: n
 creator, ids salted per plot (``svg.hashsalt``) instead of random, text kept as text.
 """
 
-import functools
 import io
 import itertools
 from collections.abc import Callable
@@ -227,40 +226,6 @@ def _style(salt: str) -> dict[str, Any]:
     }
 
 
-@functools.cache
-def _layout_renderer(width_px: float, height_px: float, dpi: float) -> Any:
-    """The renderer a figure of this size is laid out with: Agg, as savefig's default canvas
-    would make it, but one for the whole run. matplotlib caches text metrics per renderer, so
-    the datasheet's plots (all one size) measure each tick label and title once, not once
-    per plot."""
-    from matplotlib.backends.backend_agg import RendererAgg
-
-    return RendererAgg(width_px, height_px, dpi)
-
-
-@functools.cache
-def _canvas_class() -> type:
-    """An SVG canvas whose ``tight_layout`` measures text with
-    :func:`_layout_renderer`: the same metrics as a plain Figure's Agg, so the same SVG."""
-    from matplotlib.backends.backend_svg import FigureCanvasSVG
-
-    class LayoutCanvas(FigureCanvasSVG):
-        def get_renderer(self) -> Any:
-            w, h = self.figure.bbox.size
-            return _layout_renderer(w, h, self.figure.dpi)
-
-    return LayoutCanvas
-
-
-def _figure(**kwargs: Any) -> Any:
-    """A matplotlib Figure on the datasheet's canvas (:func:`_canvas_class`)."""
-    from matplotlib.figure import Figure
-
-    fig = Figure(**kwargs)
-    _canvas_class()(fig)
-    return fig
-
-
 def _svg_text(fig: Any) -> str:
     """A figure as an inline ``<svg>`` element: no date, no creator."""
     buf = io.StringIO()
@@ -273,8 +238,11 @@ def svg(plot: Plot, salt: str) -> str:
     """The plot as an inline ``<svg>`` element, byte for byte the same for the same data."""
     import matplotlib
 
+    matplotlib.use("Agg")
+    from matplotlib.figure import Figure
+
     with matplotlib.rc_context(_style(salt)):
-        fig = _figure(figsize=(6.4, 3.8))
+        fig = Figure(figsize=(6.4, 3.8))
         ax = fig.add_subplot()
         # in grey, lines are told apart by their dash and points by their shape
         dashes, shapes = itertools.cycle(DASHES), itertools.cycle(MARKERS)
@@ -327,13 +295,14 @@ def tornado_svg(t: Any, salt: str) -> str:
     an element with the id ``driver-<input>`` and its ρ written at its end; the check's
     P(pass) and interval in the title. Deterministic like :func:`svg`."""
     import matplotlib
+
+    matplotlib.use("Agg")
     from matplotlib.figure import Figure
     from matplotlib.patches import Patch
 
     n = len(t.bars)
     with matplotlib.rc_context({**_style(salt), "hatch.linewidth": 0.8}):
         # constrained: the legend goes below the axes, never over a bar
-        # a plain Figure: constrained layout runs inside savefig's draw, on savefig's canvas
         fig = Figure(figsize=(6.4, 1.9 + 0.42 * n), layout="constrained")
         ax = fig.add_subplot()
         ys = list(range(n))
