@@ -1,6 +1,8 @@
 """The cold figures of a run beyond the batch's: a file with unit strings, the HTML
-datasheet, numpy's BLAS threads. Each is paired like ``cold_batch.py``: the two commands
-compared run back to back, their order alternating, one ratio per pair (wall and CPU).
+datasheet (with its number of plots, and matplotlib's cost of one figure at its least, which
+bound what drawing them can cost), numpy's BLAS threads. Each is paired like
+``cold_batch.py``: the two commands compared run back to back, their order alternating, one
+ratio per pair (wall and CPU).
 
     python benchmarks/goals.py [-n PAIRS]
 """
@@ -8,6 +10,7 @@ compared run back to back, their order alternating, one ratio per pair (wall and
 import argparse
 import os
 import re
+import subprocess
 import sys
 import tempfile
 from pathlib import Path
@@ -22,6 +25,25 @@ MPL_FLOOR = [
     "-c",
     "import matplotlib; matplotlib.use('Agg'); from matplotlib.figure import Figure",
 ]
+
+#: matplotlib's CPU for one figure at its least, drawn as a datasheet plot is (three points,
+#: a title, axis labels, a legend, ``tight_layout``, ``savefig`` to SVG): milliseconds a
+#: figure over 10 figures, the imports and a first figure done before the clock starts.
+FIGURE_FLOOR = """
+import io, time
+import matplotlib; matplotlib.use('Agg'); from matplotlib.figure import Figure
+def figure():
+    fig = Figure(figsize=(6.4, 3.8)); ax = fig.add_subplot()
+    ax.plot([0, 1, 2], [0, 1, 4], label='a'); ax.set_title('t')
+    ax.set_xlabel('x'); ax.set_ylabel('y'); ax.legend(); fig.tight_layout()
+    fig.savefig(io.StringIO(), format='svg')
+figure(); t = time.process_time()
+for _ in range(10): figure()
+print(1e2 * (time.process_time() - t))
+"""
+
+#: How the figure floor runs: the benchmarks' environment (one BLAS thread), its output read.
+RUN = {"capture_output": True, "text": True, "check": True, "env": ENV}
 
 #: Examples written with unit strings: (example, {key: the same value as a unit string}).
 UNIT_FILES = {
@@ -82,14 +104,26 @@ def unit_strings(n: int) -> dict:
 
 
 def html(n: int) -> dict:
-    """``--format html -o FILE`` against matplotlib's import."""
+    """``--format html -o FILE`` against matplotlib's import, with the datasheet's number of
+    plots and its CPU beyond the import per plot (medians)."""
     adv, out = advisor_cmd(), {}
     with tempfile.TemporaryDirectory() as tmp:
         for name in HTML_EXAMPLES:
-            target = str(Path(tmp) / "sheet.html")
-            cmd = [*adv, "--batch", str(ROOT / "examples" / name), "--format", "html", "-o", target]
-            out[name] = pair(MPL_FLOOR, cmd, n)
+            target = Path(tmp) / "sheet.html"
+            cmd = [*adv, "--batch", str(ROOT / "examples" / name), "--format", "html"]
+            out[name] = pair(MPL_FLOOR, [*cmd, "-o", str(target)], n)
+            plots = target.read_text(encoding="utf-8").count('<figure id="plot-')
+            beyond = out[name]["b_cpu_ms"]["median"] - out[name]["a_cpu_ms"]["median"]
+            out[name] |= {"plots": plots, "beyond_import_per_plot_ms": beyond / max(plots, 1)}
     return out
+
+
+def figure_floor(n: int) -> dict:
+    """matplotlib's CPU for one figure at its least (:data:`FIGURE_FLOOR`), ``n`` runs."""
+    runs = [
+        float(subprocess.run([sys.executable, "-c", FIGURE_FLOOR], **RUN).stdout) for _ in range(n)
+    ]
+    return {"runs": n, "cpu_ms_per_figure": spread(runs)}
 
 
 def blas_threads(n: int) -> dict:
@@ -105,7 +139,12 @@ def main() -> None:
     ap = argparse.ArgumentParser()
     ap.add_argument("-n", type=int, default=11, help="pairs")
     n = ap.parse_args().n
-    res = {"unit_strings": unit_strings(n), "html": html(n), "blas_threads": blas_threads(n)}
+    res = {
+        "unit_strings": unit_strings(n),
+        "html": html(n),
+        "figure_floor": figure_floor(max(3, n // 3)),
+        "blas_threads": blas_threads(n),
+    }
     save("goals", res)
     for part, r in res.items():
         print(part, r)
