@@ -42,7 +42,7 @@ for _ in range(10): figure()
 print(1e2 * (time.process_time() - t))
 """
 
-#: How the figure floor runs: the benchmarks' environment (one BLAS thread), its output read.
+#: How the figure floor runs: in the benchmarks' environment, its output read.
 RUN = {"capture_output": True, "text": True, "check": True, "env": ENV}
 
 #: Examples written with unit strings: (example, {key: the same value as a unit string}).
