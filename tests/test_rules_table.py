@@ -35,7 +35,7 @@ def test_the_docs_rule_table_is_current():
 def test_every_rule_id_has_a_functional_test():
     """Each rule id appears in a test file as a string (a test that runs the rule and reads
     its decision; DU-06 and DU-08 are read below)."""
-    texts = [p.read_text(encoding="utf-8") for p in TESTS.glob("test_*.py")]
+    texts = [p.read_text(encoding="utf-8") for p in TESTS.rglob("test_*.py")]
     missing = [r.id for r in rows() if not any(r.id in t for t in texts)]
     assert missing == []
 
