@@ -1,6 +1,37 @@
+"""Shared fixtures, and the suite's organisation: a test's folder is its kind, and its marker.
+
+- ``unit``: one module's calculation or contract, in process, milliseconds each;
+- ``golden``: a published worked example or a hand calculation reproduced;
+- ``property``: hypothesis and exhaustive sweeps over the input space;
+- ``tui``: the wizard under textual's Pilot, its snapshots, and in a real terminal (tmux);
+- ``e2e``: the commands as a user runs them (batch, family, diff, verify), files and docs.
+
+``python -m pytest -q -m fast`` is the quick subset (unit and golden, less the few tests
+marked ``slow``); the whole suite stays the README's test command.
+"""
+
 import os
+from pathlib import Path
 
 import pytest
+
+KINDS = ("unit", "golden", "property", "tui", "e2e")
+FAST = ("unit", "golden")
+
+
+def pytest_collection_modifyitems(config, items):
+    """Mark every test with its folder's kind, and ``fast`` where the kind is quick and the
+    test is not marked ``slow``."""
+    tests = Path(__file__).parent
+    for item in items:
+        try:
+            kind = Path(item.fspath).relative_to(tests).parts[0]
+        except ValueError:  # a doctest in the package
+            kind = "unit"
+        if kind in KINDS:
+            item.add_marker(getattr(pytest.mark, kind))
+        if kind in FAST and item.get_closest_marker("slow") is None:
+            item.add_marker(pytest.mark.fast)
 
 
 @pytest.fixture(autouse=True)

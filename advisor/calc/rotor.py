@@ -4,7 +4,7 @@ SI units throughout: N, m, rad/s, kg. The bearing friction follows eq. (4) with 
 friction coefficient λ (a length); the run-up follows the motion equation (5).
 
 Numbers of the seed's example (7000 CD pair, h = 10 mm) are reproduced in
-``tests/test_golden_seed002.py``.
+``tests/golden/test_golden_seed002.py``.
 """
 
 import functools
@@ -257,9 +257,9 @@ def friction_moment(loads: Loads, balls: BallSet, rolling_friction_m: float) -> 
 
     Notes
     -----
-    r_B = r − D/2 is the inner raceway radius. Valid for angular-contact balls (β > 0); the seed's
-    table has the centrifugal row at half the printed equation (``tests/test_golden_seed002.py``);
-    the printed equation is kept.
+    r_B = r − D/2 is the inner raceway radius. Valid for angular-contact balls (β > 0); the
+    seed's table has the centrifugal row at half the printed equation
+    (``tests/golden/test_golden_seed002.py``); the printed equation is kept.
 
     References
     ----------

@@ -281,7 +281,7 @@ class ThreadScreen(NamedTuple):
     with every number of starts (about a hundred per advice); the full
     :class:`ThreadEvaluation`, with its checks and their cited sources, is built only for
     the threads the advice reports. The numbers are those of :func:`evaluate_thread`, to
-    the last bit (``tests/test_linear_screen.py`` holds them to it); where ``passed`` is
+    the last bit (``tests/unit/test_linear_screen.py`` holds them to it); where ``passed`` is
     false they are nan: nothing reads them."""
 
     thread: ThreadProfile

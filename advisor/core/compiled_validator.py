@@ -11,7 +11,7 @@ It decides only *whether* a document is valid, and builds the same values the mo
 It never words a refusal: a document it refuses or cannot judge (a number given as a string
 with a unit, an application it has no spec of) goes to the pydantic models, which validate
 it again and word every message (:mod:`advisor.core.reading`). So the worst a gap here can do
-is cost time. ``tests/test_compiled_validator.py`` checks, on the examples and on many
+is cost time. ``tests/unit/test_compiled_validator.py`` checks, on the examples and on many
 generated documents, that both accept the same documents and give the same values.
 """
 

@@ -26,7 +26,7 @@ class Application(NamedTuple):
     and puts an :class:`advisor.duty.report.DutyOut` at ``design.duty``; the datasheet's duty
     plots and the wizard's (:mod:`advisor.duty.views`) draw it from there, and
     ``duty_uses`` says which ``[duty]`` keys the application reads beyond the shared ones.
-    A toy application in ``tests/test_toy_application.py`` uses every hook."""
+    A toy application in ``tests/e2e/test_toy_application.py`` uses every hook."""
 
     kind: str  # the value of application.kind
     title: str  # one line in the wizard's list of applications

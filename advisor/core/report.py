@@ -232,7 +232,7 @@ def float_text(x: float) -> str:
     """``repr(round_sig(x))`` in one formatting: ``format(x, ".6g")`` rounds as
     :func:`round_sig` does (correctly, to six significant digits) and differs from ``repr``
     only in its layout: no ``.0`` on a whole number, an exponent from 10⁶ on (``repr``'s from
-    10¹⁶), and those few are read back. ``tests/test_report.py`` holds it to ``repr``.
+    10¹⁶), and those few are read back. ``tests/unit/test_report.py`` holds it to ``repr``.
 
     >>> float_text(5.084934), float_text(1200.0), float_text(1234567.0), float_text(1.5e-5)
     ('5.08493', '1200.0', '1234570.0', '1.5e-05')

@@ -6,7 +6,7 @@ repository's root:
 
     .venv/bin/python -m advisor.core.spec_gen
 
-tests/test_compiled_validator.py fails while it differs from the models. What the generator
+tests/unit/test_compiled_validator.py fails while it differs from the models. What the generator
 compiles and what it refuses: the docstring of advisor/core/spec_gen.py."""
 
 # fmt: off

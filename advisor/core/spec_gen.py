@@ -6,7 +6,7 @@ truth for every field: this module walks them and writes what
 model's own checks (pure functions, named by import path) — into
 :mod:`advisor.core.requirement_spec`. The batch path then reads a requirement file without
 importing pydantic, whose model machinery alone costs more than the advice.
-``tests/test_compiled_validator.py`` regenerates the spec and fails when the committed file
+``tests/unit/test_compiled_validator.py`` regenerates the spec and fails when the committed file
 differs, so a changed model cannot go unnoticed. After changing a model::
 
     .venv/bin/python -m advisor.core.spec_gen        # rewrites advisor/core/requirement_spec.py
@@ -272,7 +272,7 @@ def spec_source(spec: dict[str, Any] | None = None) -> str:
         "advisor/applications/*/requirements.py,\nadvisor/duty/requirements.py, "
         "advisor/uncertainty/requirements.py) and regenerate this file from the\n"
         "repository's root:\n\n    .venv/bin/python -m advisor.core.spec_gen\n\n"
-        "tests/test_compiled_validator.py fails while it differs from the models. What the "
+        "tests/unit/test_compiled_validator.py fails while it differs from the models. What the "
         "generator\ncompiles and what it refuses: the docstring of "
         'advisor/core/spec_gen.py."""',
         "",

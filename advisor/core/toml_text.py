@@ -7,7 +7,7 @@ is made of (dicts, lists, str, int, float, bool, as :func:`advisor.core.report.p
 returns them) and writes what ``tomli_w.dumps(doc)`` writes with its defaults (indent 4, no
 multi-line strings): the same table order, the same inline-table heuristic (an array of
 tables is written inline when every table fits on a line of 100 characters), the same
-escapes. ``tests/test_report.py`` holds it to tomli-w on the examples and on generated
+escapes. ``tests/unit/test_report.py`` holds it to tomli-w on the examples and on generated
 documents.
 """
 

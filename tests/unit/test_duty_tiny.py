@@ -13,7 +13,7 @@ from advisor.core.io_safety import read_toml
 from advisor.core.reading import parse_requirements
 from advisor.core.report import to_toml
 
-EXAMPLES = Path(__file__).parent.parent / "examples"
+EXAMPLES = Path(__file__).parents[2] / "examples"
 ROTARY = read_toml(EXAMPLES / "rudder_actuator_duty.toml")
 LINEAR = read_toml(EXAMPLES / "valve_actuator_duty.toml")
 KEEP = ("load_inertia_kgm2", "motor_inertia_kgm2", "thermal_time_constant_s", "moving_mass_kg")

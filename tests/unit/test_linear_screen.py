@@ -5,6 +5,7 @@ every line builds from the full evaluations; the per-catalog parts belong to the
 
 import itertools
 
+import pytest
 from helpers import EXAMPLES
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
@@ -116,6 +117,7 @@ def _compare(cat, material, model, force_N, stroke_m, travel_time_s, span_m, fix
     return sum(e.passed for e in full), len(options)
 
 
+@pytest.mark.slow  # seconds: outside the quick subset
 def test_the_screen_agrees_with_the_full_evaluation_on_a_grid():
     cat = load_catalogs()
     seen_pass = seen_fail = seen_options = 0

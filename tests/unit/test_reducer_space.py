@@ -63,6 +63,7 @@ def test_rule_between_20_and_78_takes_the_smaller_diameter():
     assert "gives way" in f.rationale
 
 
+@pytest.mark.slow  # seconds: outside the quick subset
 def test_every_ratio_gets_a_design_where_the_space_holds_one():
     # property over q: hundreds of log-spaced ratios from below one stage's minimum to 1e5,
     # with and without an envelope; exit 3 only where the design space holds nothing

@@ -13,7 +13,7 @@ from advisor.core.errors import InfeasibleError
 from advisor.core.reading import parse_requirements
 from advisor.core.report import to_toml
 
-VALVE = Path(__file__).parent.parent / "examples" / "valve_actuator_hold.toml"
+VALVE = Path(__file__).parents[2] / "examples" / "valve_actuator_hold.toml"
 
 
 def _doc(**tables) -> dict:
@@ -201,7 +201,7 @@ def test_the_device_types_that_cannot_carry_the_torque_are_named():
 
 
 def test_a_taken_reducer_that_overloads_the_motor_says_what_else_to_take():
-    rudder = Path(__file__).parent.parent / "examples" / "rudder_actuator.toml"
+    rudder = Path(__file__).parents[2] / "examples" / "rudder_actuator.toml"
     doc = tomllib.loads(rudder.read_text(encoding="utf-8"))
     doc.setdefault("gearbox", {})["choice"] = "slimmest"
     with pytest.raises(InfeasibleError) as exc:

@@ -13,7 +13,7 @@ from advisor.core.engine import advise
 from advisor.core.reading import parse_requirements
 from advisor.core.rules_table import DOC, as_markdown, rows
 
-TESTS = Path(__file__).resolve().parent
+TESTS = Path(__file__).resolve().parents[1]
 
 
 def test_advisor_rules_prints_every_registered_rule(capsys):

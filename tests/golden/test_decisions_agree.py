@@ -1,5 +1,5 @@
 """Issue 12, items 3 and 5, for the rotary actuator, the positioning drive and the spinning
-rotor (the linear actuator has its own in tests/test_linear_choice.py):
+rotor (the linear actuator has its own in tests/unit/test_linear_choice.py):
 
 - every number a decision states (its structured ``inputs``) equals the design's value in the
   report, over random requirements across the documented ranges;
@@ -190,6 +190,7 @@ def _scaled(doc: dict, path: tuple, factor: float) -> dict:
 ROTARY_FIELDS = [("rotary", "torque_Nm"), ("rotary", "speed_rpm")]
 
 
+@pytest.mark.slow  # seconds: outside the quick subset
 @SLOW
 @given(
     rotary_requirements(),

@@ -282,7 +282,7 @@ def test_duty_on_seed_000s_reference_takes_its_estimates():
 def test_the_docs_state_the_vendor_table():
     from pathlib import Path
 
-    readme = (Path(__file__).parents[1] / "docs" / "reference" / "motor-frames.md").read_text(
+    readme = (Path(__file__).parents[2] / "docs" / "reference" / "motor-frames.md").read_text(
         encoding="utf-8"
     )
     for name, *_ in VENDOR:

@@ -19,7 +19,7 @@ from advisor.datasheet.review import covering
 pytest.importorskip("matplotlib")
 
 NAMES = sorted(p.name for p in EXAMPLES.glob("*.toml"))
-GOLDEN = Path(__file__).parent / "golden" / "datasheet_gyro_compensator.md"
+GOLDEN = Path(__file__).parents[1] / "golden" / "datasheet_gyro_compensator.md"
 
 
 class Review(HTMLParser):

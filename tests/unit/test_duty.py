@@ -135,7 +135,7 @@ def test_linear_s3_by_hand(tmp_path):
     """S3 40 %, 10 min, β0 = 0.5: the run at seed 001's 5.085 N·m (paper model, Tr16x2) for
     240 s, rest 360 s at standstill: M_eq = 5.08485·√(240/(240 + 0.5·360)) = 5.08485·√(4/7)
     = 3.8438 N·m against the rated 750 W/(1390 rpm·π/30) = 5.1525 N·m of 4A71B4: 0.7460.
-    Beside it SEW's S3 factor at cdf 40 %, K = 1.15 (tests/test_duty_published.py): the
+    Beside it SEW's S3 factor at cdf 40 %, K = 1.15 (tests/golden/test_duty_published.py): the
     running 5.08485 N·m against 1.15 × 5.1525 = 5.9254 N·m: 0.8581, the stricter, decides."""
     f = _linear(tmp_path, '[duty]\nduty_type = "S3"\ncyclic_duration_factor = 0.4\n')
     rep = advise(read_requirements(f))

@@ -23,7 +23,7 @@ What none of them gives in text: the effective (RMS) torque of a whole cycle. Th
 examples go on to T_rms on their next pages, which were not found as text; Kollmorgen's
 "How to calculate RMS torque" (Block and Tackle vol. 3) states T_rms = 2.74 lb·ft =
 3.715 N·m, but its segment table is an image. So the RMS itself stays checked by the hand
-calculations of tests/test_duty.py; here the published parts of the cycle are: the speed
+calculations of tests/unit/test_duty.py; here the published parts of the cycle are: the speed
 diagram, the torques at the motor, the reflected inertia and the powers.
 """
 
@@ -292,7 +292,7 @@ def test_s3_equivalent_torque_is_less_conservative_than_sew(cdf):
 
 def test_linear_s3_takes_the_stricter_of_the_two(tmp_path):
     """Seed 001's valve actuator in S3 at cdf 40 %: the equivalent torque gives 3.8438/5.1525
-    = 0.7460 (tests/test_duty.py), SEW's K = 1.15 gives 5.08485/(1.15 × 5.1525) = 0.8581:
+    = 0.7460 (tests/unit/test_duty.py), SEW's K = 1.15 gives 5.08485/(1.15 × 5.1525) = 0.8581:
     the report's utilisation is SEW's, and both numbers are in its decision."""
     src = (EXAMPLES / "valve_actuator_duty.toml").read_text(encoding="utf-8")
     f = tmp_path / "s3.toml"

@@ -65,4 +65,4 @@ def test_a_users_plugin_choice_is_kept():
 def _example():
     from pathlib import Path
 
-    return Path(__file__).resolve().parent.parent / "examples" / "rudder_actuator.toml"
+    return Path(__file__).resolve().parents[2] / "examples" / "rudder_actuator.toml"

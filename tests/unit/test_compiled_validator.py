@@ -26,7 +26,7 @@ def by_models(data):
     return parse_requirements(data, compiled=False)
 
 
-EXAMPLES = sorted(Path(__file__).parent.parent.joinpath("examples").glob("*.toml"))
+EXAMPLES = sorted(Path(__file__).parents[2].joinpath("examples").glob("*.toml"))
 
 
 def _fields_set(obj):
@@ -239,6 +239,7 @@ def _has_unit_string(doc) -> bool:
         return False
 
 
+@pytest.mark.slow  # seconds: outside the quick subset
 @settings(max_examples=1000, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(documents())
 def test_the_compiled_validator_accepts_what_the_models_accept(doc):

@@ -14,7 +14,7 @@ import pytest
 
 from advisor.core import registry
 
-ADVISOR = Path(__file__).resolve().parent.parent / "advisor"
+ADVISOR = Path(__file__).resolve().parents[2] / "advisor"
 #: Kinds that are also ordinary words of the domain ("linear" scale): a literal of them is
 #: a finding only where it is used as a kind.
 ORDINARY = {"linear"}

@@ -4,8 +4,8 @@ result, an invalid input, a file fixed inside the wizard, the export dialog and 
 screen, with nothing on screen that changes between runs (no clock, no timing, no blinking
 cursor, fixed paths).
 
-Update after an intended change with ``pytest tests/test_tui_snapshots.py --snapshot-update``
-and review the SVGs in ``tests/__snapshots__``."""
+Update after an intended change with ``pytest tests/tui/test_tui_snapshots.py --snapshot-update``
+and review the SVGs in ``tests/tui/__snapshots__``."""
 
 import tomllib
 

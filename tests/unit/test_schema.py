@@ -12,7 +12,7 @@ from advisor.cli import main
 from advisor.core import registry
 from advisor.core.schema import KEYS_DOC, key_tables, with_key_tables
 
-ROOT = Path(__file__).parent.parent
+ROOT = Path(__file__).parents[2]
 SHIPPED = EXAMPLES / "requirements.schema.json"
 
 

@@ -1,5 +1,5 @@
-"""Issue 26 on the rotary side: the reducer under its load spectrum, the output bearing under
-an external load, the holding device against the emergency stop, the regenerated energy,
+"""The rotary drive as a reviewer checks it: the reducer under its load spectrum, the output
+bearing under an external load, the holding device against the emergency stop, the regenerated energy,
 and the service factor — each against a published or hand-worked number."""
 
 import math

@@ -38,7 +38,7 @@ def test_a_datasheet_imports_no_pydantic(tmp_path):
         "main(['--batch', sys.argv[1], '--format', 'md', '-o', sys.argv[2]])\n"
         "print(sorted(m for m in sys.modules if m in ('pydantic', 'pydantic.main')))\n"
     )
-    example = Path(__file__).parent.parent / "examples" / "rudder_actuator_duty.toml"
+    example = Path(__file__).parents[2] / "examples" / "rudder_actuator_duty.toml"
     runs = [
         subprocess.run(
             [sys.executable, "-c", code, str(example), str(tmp_path / "r.md")],

@@ -9,7 +9,7 @@ import pytest
 
 from advisor.cli import main
 
-HERE = Path(__file__).parent / "bad_inputs"
+HERE = Path(__file__).parents[1] / "bad_inputs"
 EXPECTED = tomllib.loads((HERE / "expected.txt").read_text(encoding="utf-8"))
 
 

@@ -14,7 +14,7 @@ from pathlib import Path
 
 import pytest
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 PACKAGES = ("advisor", "catalogs", "rules")
 #: Written by ``python -m advisor.core.spec_gen``: data, not code anyone edits.
 GENERATED = {"advisor/core/requirement_spec.py"}
