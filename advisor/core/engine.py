@@ -125,5 +125,5 @@ def _tomlable(inputs: dict) -> dict:
 def finite_checks(checks: list) -> list:
     """The checks a report can state: a check of a value that is zero (no load on that part)
     has an infinite margin. It is no check at all, and a report never states an infinite
-    number (issue 13)."""
+    number."""
     return [c for c in checks if c.margin - c.margin == 0.0]

@@ -25,7 +25,7 @@ class ReportTable:
     :meth:`make`, which checks the names (an unknown one or a missing required one is a bug
     of the advice) and copies mutable defaults, and dumped by :func:`plain_data`. A plain class
     rather than a pydantic model: the report validates nothing, and defining some fifty
-    pydantic classes cost about 15 ms of every run (issue 16).
+    pydantic classes cost about 15 ms of every run.
     """
 
     field_names: ClassVar[tuple[str, ...]] = ()
@@ -209,7 +209,7 @@ class Report(ReportTable):
     warnings: list[str] = []
     decisions: list[DecisionOut]
     sources: list[SourceOut] = []
-    #: issue 30: P(pass) under [uncertainty] (advisor.uncertainty.report.UncertaintyOut)
+    #: P(pass) under [uncertainty] (advisor.uncertainty.report.UncertaintyOut)
     uncertainty: Any = None
 
 

@@ -107,7 +107,7 @@ def _figure(p: Plot, index: int) -> str:
 
 def _probability(p: Probability | None) -> str:
     """P(pass) of the design and of each check, and the tornado chart of the drivers of the
-    least probable checks (issue 30)."""
+    least probable checks."""
     if p is None:
         return "<p>No [uncertainty] table: every margin above is at the nominal inputs only.</p>"
     out = [f"<p>{_e(p.statement)}</p>", _table(p.inputs, 3), _table(p.checks, 3)]

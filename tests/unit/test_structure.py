@@ -223,3 +223,19 @@ def test_comments_give_reasons_not_issue_numbers(package):
         if ISSUE_NUMBER.search(words)
     ]
     assert not cited, "say the reason instead of the issue number:\n" + "\n".join(cited)
+
+
+def test_every_public_calculation_is_documented_with_its_units():
+    """Every public function of ``advisor/calc`` says, as fluids does, its parameters and
+    what it returns (units in brackets) and where the equation comes from."""
+    undocumented = []
+    for rel, tree, _ in sources("advisor"):
+        if not rel.startswith("advisor/calc/"):
+            continue
+        for node in tree.body:
+            if isinstance(node, ast.FunctionDef) and not node.name.startswith("_"):
+                doc = ast.get_docstring(node) or ""
+                missing = [s for s in ("Parameters", "Returns", "[") if s not in doc]
+                if missing:
+                    undocumented.append(f"{rel}:{node.lineno} {node.name}() lacks {missing}")
+    assert not undocumented, "\n".join(undocumented)
