@@ -413,22 +413,33 @@ def compute(family: Any, out: Path, args: argparse.Namespace) -> tuple[Any, int,
 
 def write_results(family: Any, out: Path, args: argparse.Namespace, extra: dict) -> dict:
     """designs.csv (the chunks joined), then summary.toml and family.html from one pass
-    over its rows; the summary document."""
-    from advisor.family.study import join_chunks
-    from advisor.family.summary import build_summary, iter_rows, write_summary
+    over its rows; the summary document. Each is built before any is replaced: a damaged
+    chunk or a failure leaves the folder's previous results as they were."""
+    from advisor.family.adapter import write_atomic
+    from advisor.family.study import join_to_temp
+    from advisor.family.summary import build_summary, iter_rows, summary_text
 
-    designs = join_chunks(family, out, extra["chunk_size"])
-    keep = None
-    if not args.no_html:
-        from advisor.family.html import plot_points
+    joined = join_to_temp(family, out, extra["chunk_size"])
+    try:
+        keep = None
+        if not args.no_html:
+            from advisor.family.html import plot_points
 
-        keep = [plot_points(m) for m in family.members]
-    doc, pictures = build_summary(family, iter_rows(designs), extra, keep)
-    write_summary(out / "summary.toml", doc)
-    if not args.no_html:
-        from advisor.family.html import write_html
+            keep = [plot_points(m) for m in family.members]
+        doc, pictures = build_summary(family, iter_rows(joined), extra, keep)
+        summary = summary_text(doc)
+        page = None
+        if not args.no_html:
+            from advisor.family.html import render
 
-        write_html(out / "family.html", family, doc, pictures)
+            page = render(family, doc, pictures)
+        os.replace(joined, out / "designs.csv")
+    except BaseException:
+        joined.unlink(missing_ok=True)
+        raise
+    write_atomic(out / "summary.toml", summary)
+    if page is not None:
+        write_atomic(out / "family.html", page)
     return doc
 
 

@@ -8,12 +8,14 @@ killed study resumes where it stopped. A worker that dies mid-task costs only a 
 its chunk. When every chunk is in, the chunks are joined into ``DIR/designs.csv``.
 """
 
+import csv
+import io
 import itertools
 import json
 import math
 import os
+import stat
 import sys
-import tempfile
 import time
 import uuid
 from collections.abc import Callable, Generator, Iterable
@@ -301,6 +303,7 @@ def start_study(
     if reports:
         (out_dir / "reports").mkdir(exist_ok=True)
     done = chunks_written(out_dir, chunk_count(family.size, chunk_size))
+    done = drop_damaged(out_dir, family, chunk_size, done)
     variants = sum(b - a for a, b in (chunk_range(n, family.size, chunk_size) for n in done))
     return done, variants
 
@@ -373,20 +376,92 @@ def write_replace(path: Path, text: str) -> None:
         raise
 
 
+def chunk_problem(text: str, start: int, stop: int, width: int) -> str | None:
+    """What is wrong with a chunk's text, or None: it must hold the rows of variants
+    ``start`` … ``stop - 1`` in order, each of ``width`` cells, and end with its last line
+    (a file cut short, a stale chunk of another layout or a stray file are refused).
+
+    >>> chunk_problem("0,a\\n1,b\\n", 0, 2, 2) is None, chunk_problem("0,a\\n", 0, 2, 2)
+    (True, '1 rows where 2 were expected')
+    """
+    if text and not text.endswith("\n"):
+        return "its last line is cut short"
+    rows = list(csv.reader(io.StringIO(text)))
+    if len(rows) != stop - start:
+        return f"{len(rows)} rows where {stop - start} were expected"
+    for i, row in enumerate(rows):
+        if len(row) != width or row[0] != str(start + i):
+            return f"row {i + 1} is not variant {start + i} in {width} columns"
+    return None
+
+
+def read_chunk(out_dir: Path, family: Family, number: int, chunk_size: int) -> str:
+    """A chunk's text, checked (:func:`chunk_problem`); an InputError if it is missing or
+    damaged."""
+    path = chunk_path(out_dir, number)
+    try:
+        text = path.read_text(encoding="utf-8")
+    except (OSError, UnicodeDecodeError) as exc:
+        why: str | None = type(exc).__name__
+    else:
+        why = chunk_problem(
+            text, *chunk_range(number, family.size, chunk_size), len(columns(family))
+        )
+    if why is not None:
+        raise InputError(
+            f"{path}: damaged chunk ({why}); run the same command again to recompute it"
+        )
+    return text
+
+
+def drop_damaged(out_dir: Path, family: Family, chunk_size: int, done: set[int]) -> set[int]:
+    """The chunks of ``done`` that are whole; the damaged ones are deleted, to be computed
+    again (a chunk cut short by a full disk, or a stray file of the chunk's name)."""
+    whole = set()
+    for n in done:
+        try:
+            read_chunk(out_dir, family, n, chunk_size)
+        except InputError:
+            chunk_path(out_dir, n).unlink(missing_ok=True)
+        else:
+            whole.add(n)
+    return whole
+
+
+def new_file(target: Path) -> tuple[int, Path]:
+    """An open temporary file beside ``target`` with the mode ``target`` has, or for a new
+    file 0666 less the umask (as :func:`write_atomic` gives)."""
+    try:
+        mode: int | None = stat.S_IMODE(os.stat(target).st_mode)
+    except FileNotFoundError:
+        mode = None
+    tmp = target.with_name(f".{target.name}.{os.getpid()}-{os.urandom(6).hex()}.tmp")
+    fd = os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_EXCL | getattr(os, "O_CLOEXEC", 0), 0o666)
+    if mode is not None:
+        os.fchmod(fd, mode)
+    return fd, tmp
+
+
+def join_to_temp(family: Family, out_dir: Path, chunk_size: int) -> Path:
+    """The header, then every chunk in order (each checked), in a temporary file beside
+    DIR/designs.csv: the caller renames it over designs.csv once everything built from it
+    is valid. An InputError (nothing left behind) if a chunk is missing or damaged."""
+    fd, tmp = new_file(out_dir / "designs.csv")
+    try:
+        with os.fdopen(fd, "w", encoding="utf-8", newline="") as fh:
+            fh.write(rows_csv([], columns(family)))
+            for n in range(chunk_count(family.size, chunk_size)):
+                fh.write(read_chunk(out_dir, family, n, chunk_size))
+            fh.flush()
+            os.fsync(fh.fileno())
+    except BaseException:
+        tmp.unlink(missing_ok=True)
+        raise
+    return tmp
+
+
 def join_chunks(family: Family, out_dir: Path, chunk_size: int) -> Path:
     """Write DIR/designs.csv: the header, then every chunk in order (atomically)."""
     target = out_dir / "designs.csv"
-    header = rows_csv([], columns(family))
-    fd, tmp = tempfile.mkstemp(prefix=".designs.csv.", suffix=".tmp", dir=out_dir)
-    try:
-        with os.fdopen(fd, "w", encoding="utf-8", newline="") as fh:
-            fh.write(header)
-            for n in range(chunk_count(family.size, chunk_size)):
-                fh.write(chunk_path(out_dir, n).read_text(encoding="utf-8"))
-            fh.flush()
-            os.fsync(fh.fileno())
-        os.replace(tmp, target)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise
+    os.replace(join_to_temp(family, out_dir, chunk_size), target)
     return target

@@ -284,9 +284,14 @@ def summarize(family: Family, rows: Iterable[Row], extra: dict[str, Any]) -> dic
     return build_summary(family, rows, extra).doc
 
 
-def write_summary(path: Path, doc: dict[str, Any]) -> None:
+def summary_text(doc: dict[str, Any]) -> str:
+    """summary.toml's text."""
     import tomli_w
 
+    return tomli_w.dumps(doc)
+
+
+def write_summary(path: Path, doc: dict[str, Any]) -> None:
     from advisor.family.adapter import write_atomic
 
-    write_atomic(path, tomli_w.dumps(doc))
+    write_atomic(path, summary_text(doc))

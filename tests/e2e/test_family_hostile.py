@@ -748,3 +748,58 @@ def test_a_refused_scheduler_connection_is_said_at_once(tmp_path, capsys):
         )
         assert time.monotonic() - t0 < family_cli.CONNECT_TIMEOUT_S, line
     assert not (tmp_path / "o").exists()
+
+
+def _small_study(tmp_path: Path) -> tuple[Path, list[str]]:
+    fam = family_file(tmp_path / "f.toml", "'linear.travel_time_s' = [4, 5, 6, 7]", LINEAR)
+    out = tmp_path / "out"
+    return out, ["family", str(fam), "--out", str(out), "--workers", "1", "--chunk-size", "2"]
+
+
+@pytest.mark.parametrize(
+    "damage",
+    [
+        lambda text: "garbage,\n1,2\n",  # a stray file of a chunk's name
+        lambda text: text[: len(text) // 2],  # cut short mid-row
+        lambda text: text.split("\n", 1)[0] + "\n",  # cut short at a row's end
+    ],
+)
+def test_a_damaged_chunk_is_computed_again(tmp_path, capsys, damage):
+    out, argv = _small_study(tmp_path)
+    assert main(argv) == 0
+    first = (out / "designs.csv").read_bytes()
+    chunk = out / "chunks" / "c000001.csv"
+    chunk.write_text(damage(chunk.read_text(encoding="utf-8")), encoding="utf-8")
+    assert main(argv) == 0
+    assert (out / "designs.csv").read_bytes() == first
+    assert "1 of 2 chunks computed" in capsys.readouterr().out
+
+
+def test_a_chunk_damaged_at_the_join_is_refused_and_the_results_kept(tmp_path, capsys, monkeypatch):
+    from advisor.family import study
+
+    out, argv = _small_study(tmp_path)
+    assert main(argv) == 0
+    before = tree(out)
+    (out / "chunks" / "c000001.csv").write_text("garbage,\n1,2\n", encoding="utf-8")
+    monkeypatch.setattr(study, "drop_damaged", lambda out_dir, family, size, done: done)
+    capsys.readouterr()
+    assert main([*argv, "--quiet"]) == 2
+    err = capsys.readouterr().err
+    assert "c000001.csv: damaged chunk" in err and len(err.strip().splitlines()) == 1
+    after = tree(out)
+    assert {k: v for k, v in after.items() if "chunks" not in k} == {
+        k: v for k, v in before.items() if "chunks" not in k
+    }
+    assert not list(out.glob(".*.tmp"))
+
+
+def test_designs_csv_gets_the_mode_of_the_other_results(tmp_path):
+    out, argv = _small_study(tmp_path)
+    old = os.umask(0o022)
+    try:
+        assert main(argv) == 0
+    finally:
+        os.umask(old)
+    modes = {p.name: p.stat().st_mode & 0o777 for p in out.iterdir() if p.is_file()}
+    assert modes == {"designs.csv": 0o644, "summary.toml": 0o644, "family.html": 0o644}
