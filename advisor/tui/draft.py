@@ -88,11 +88,11 @@ def _leaf_ok(field: fields.Field, value: Any) -> str | None:
     if field.kind == "choice":  # text not offered: set aside when its field is built
         ok = value in field.choices or isinstance(value, str)
         return None if ok else f"must be one of {', '.join(field.choices)}"
-    if field.kind == "floats":
+    if field.kind == "floats":  # a quantity with its unit ("3000 rpm") as the batch takes it
         ok = isinstance(value, list) and all(
-            isinstance(v, int | float) and not isinstance(v, bool) for v in value
+            isinstance(v, int | float | str) and not isinstance(v, bool) for v in value
         )
-        return None if ok else "must be an array of numbers"
+        return None if ok else "must be an array of numbers (or quantities with their unit)"
     if isinstance(value, dict | list):
         return f"must be {'text' if field.kind == 'str' else 'a number'}, not {_type_name(value)}"
     return None
@@ -193,7 +193,11 @@ def _shape_leaf(
         if err is None and number is not None:
             node[index] = number
             return
-    if why is None and field.kind in ("float", "int") and isinstance(value, str | bool):
+    if why is None and field.kind == "floats" and any(isinstance(v, str) for v in value):
+        _, err = fields.parse_text(field, fields.to_text(field, value))  # shown as written
+        if err is not None:
+            problems.append(f"{where} = {_echo(value)}: {err}; fix it here")
+    elif why is None and field.kind in ("float", "int") and isinstance(value, str | bool):
         problems.append(f"{where} = {_echo(value)}: must be a number; fix it here")
     elif why is None and field.kind == "choice" and value not in field.choices:
         choices = ", ".join(field.choices)

@@ -5,6 +5,7 @@ valid range, optional or not) from its field in the application's requirement mo
 use it cheaply."""
 
 import math
+import re
 from functools import cache
 from typing import Any
 
@@ -182,8 +183,9 @@ def prune(doc: Any) -> Any:
 def to_text(field: Field, value: Any) -> str:
     if value is None:
         return ""
-    if field.kind == "floats":
-        return ", ".join(f"{v:g}" for v in value)
+    if field.kind == "floats" and isinstance(value, list):
+        # a quantity from a file ("3000 rpm") is shown as written, as it would be typed
+        return ", ".join(_item_text(v) for v in value)
     if isinstance(value, float):
         return f"{value:g}"
     # text from a file is shown with its control and bidi characters escaped (\x1b): a box
@@ -193,16 +195,29 @@ def to_text(field: Field, value: Any) -> str:
     return printable(str(value), newlines=False)
 
 
+def _item_text(value: Any) -> str:
+    if isinstance(value, str):
+        from advisor.core.io_safety import printable
+
+        return printable(value, newlines=False)
+    return f"{value:g}"
+
+
+#: A plain number as the grammar of :mod:`advisor.core.units` writes one: ASCII digits, no
+#: ``_`` separators (``float`` would take ``1_000`` and full-width ``１６２０``, a file not).
+_PLAIN = re.compile(r"[+-]?(?:[0-9]+(?:\.[0-9]*)?|\.[0-9]+)(?:[eE][+-]?[0-9]+)?", re.ASCII)
+_WHOLE = re.compile(r"[+-]?[0-9]+", re.ASCII)
+
+
 def _number(field: Field, text: str) -> float:
     """A number, or a quantity with a unit ("5 kN") in the field's unit, as a requirement
     file takes it (:mod:`advisor.core.units`: a strict grammar, so any text typed so far is
     a value or a :class:`~advisor.core.units.UnitError` worded for the user)."""
-    try:
+    if _PLAIN.fullmatch(text.strip(" \t")):
         return float(text)
-    except ValueError:
-        from advisor.core.units import to_unit
+    from advisor.core.units import to_unit
 
-        return to_unit(text, field.unit)  # UnitError is a ValueError, worded for the user
+    return to_unit(text, field.unit)  # UnitError is a ValueError, worded for the user
 
 
 def parse_text(field: Field, text: str) -> tuple[Any, str | None]:
@@ -214,10 +229,9 @@ def parse_text(field: Field, text: str) -> tuple[Any, str | None]:
     if field.kind == "str":
         return text, None
     if field.kind == "int":
-        try:
+        if _WHOLE.fullmatch(text):
             return int(text), None
-        except ValueError:
-            return None, f"{text!r} is not a whole number"
+        return None, f"{text!r} is not a whole number (digits 0-9 only)"
     if field.kind == "floats":
         try:
             values = [_number(field, x) for x in text.replace(";", ",").split(",") if x.strip()]

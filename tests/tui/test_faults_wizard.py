@@ -24,7 +24,7 @@ SIZE = (120, 40)
         ),
         (
             {"application": {"kind": "rotary"}, "motor": {"candidate_speeds_rpm": "fast"}},
-            "motor.candidate_speeds_rpm = 'fast': must be an array of numbers; removed",
+            "motor.candidate_speeds_rpm = 'fast': must be an array of numbers",
         ),
         (
             {"application": {"kind": "positioning"}, "positioning": {"motors": [1, "x"]}},
