@@ -350,7 +350,8 @@ def _run(args: argparse.Namespace) -> int:
     check_out(out, family.inputs, not args.no_html, args.reports)
     from advisor.family.study import precheck_manifest
 
-    precheck_manifest(out, family, args.chunk_size or family.chunk_size, args.reports)
+    size = args.chunk_size or family.chunk_size
+    precheck_manifest(out, family, size, args.reports, args.catalog_dir)
     created = make_out_dir(out)
     try:
         check_writable(out, "--out")

@@ -9,6 +9,7 @@ its chunk. When every chunk is in, the chunks are joined into ``DIR/designs.csv`
 """
 
 import csv
+import hashlib
 import io
 import itertools
 import json
@@ -77,10 +78,31 @@ def chunk_path(out_dir: Path, number: int) -> Path:
     return out_dir / "chunks" / f"c{number:06d}.csv"
 
 
-def make_manifest(family: Family, chunk_size: int, reports: bool) -> dict[str, Any]:
+def catalogs_stamp(catalog_dir: Path | None) -> str:
+    """Identifies the catalogs a study's variants are advised with: the contents of the
+    shipped catalog files and of every file of ``--catalog-dir`` (by name). Chunks computed
+    with other catalogs are another study's."""
+    from catalogs.loader import HERE, SHIPPED_FILES
+
+    digest = hashlib.sha256()
+    named = [(f"shipped/{f}", HERE / f) for f in SHIPPED_FILES]
+    if catalog_dir is not None:
+        with os.scandir(catalog_dir) as entries:
+            named += sorted((f"user/{e.name}", Path(e.path)) for e in entries if e.is_file())
+    for name, path in named:
+        data = path.read_bytes() if path.is_file() else b""
+        digest.update(f"{name}\0{len(data)}\0".encode())
+        digest.update(data)
+    return digest.hexdigest()[:16]
+
+
+def make_manifest(
+    family: Family, chunk_size: int, reports: bool, catalog_dir: Path | None = None
+) -> dict[str, Any]:
     """What identifies a study's chunks: a rerun resumes only the same study."""
     return {
         "fingerprint": family.fingerprint(),
+        "catalogs": catalogs_stamp(catalog_dir),
         "chunk_size": chunk_size,
         "variants": family.size,
         "reports": reports,
@@ -98,12 +120,18 @@ def _read_manifest(out_dir: Path) -> dict[str, Any] | None:
 
 def _another_study(out_dir: Path) -> InputError:
     return InputError(
-        f"{out_dir}: holds chunks of another study (family, chunk size or --reports "
-        "differ); use another --out DIR or delete its chunks/ folder"
+        f"{out_dir}: holds chunks of another study (family, catalogs, chunk size or "
+        "--reports differ); use another --out DIR or delete its chunks/ folder"
     )
 
 
-def precheck_manifest(out_dir: Path, family: Family, chunk_size: int | None, reports: bool) -> None:
+def precheck_manifest(
+    out_dir: Path,
+    family: Family,
+    chunk_size: int | None,
+    reports: bool,
+    catalog_dir: Path | None = None,
+) -> None:
     """Refuse, before any cluster starts, a DIR that holds chunks of another study (the
     chunk size is compared only when it is already known: given, or kept from that study)."""
     path = out_dir / "chunks" / MANIFEST
@@ -112,7 +140,8 @@ def precheck_manifest(out_dir: Path, family: Family, chunk_size: int | None, rep
     old = _read_manifest(out_dir)
     if old is None:
         raise _another_study(out_dir)
-    want = make_manifest(family, chunk_size or old.get("chunk_size"), reports)  # type: ignore[arg-type]
+    size = chunk_size or old.get("chunk_size")
+    want = make_manifest(family, size, reports, catalog_dir)  # type: ignore[arg-type]
     if old != want:
         raise _another_study(out_dir)
 
@@ -296,10 +325,10 @@ def as_runner(runner: Any, window: int | None = None) -> Runner:
 
 
 def start_study(
-    family: Family, out_dir: Path, chunk_size: int, reports: bool
+    family: Family, out_dir: Path, chunk_size: int, reports: bool, catalog_dir: Path | None = None
 ) -> tuple[set[int], int]:
     """Check or write the manifest; the chunks already written and their variants."""
-    check_manifest(out_dir, make_manifest(family, chunk_size, reports))
+    check_manifest(out_dir, make_manifest(family, chunk_size, reports, catalog_dir))
     if reports:
         (out_dir / "reports").mkdir(exist_ok=True)
     done = chunks_written(out_dir, chunk_count(family.size, chunk_size))
@@ -335,7 +364,7 @@ def run_study(
     worker in mid-study).
     """
     n_chunks = chunk_count(family.size, chunk_size)
-    done, done_variants = start_study(family, out_dir, chunk_size, reports)
+    done, done_variants = start_study(family, out_dir, chunk_size, reports, catalog_dir)
     done_chunks = len(done)
     if progress is not None:
         progress.update(done_chunks, done_variants, final=done_chunks == n_chunks)

@@ -803,3 +803,21 @@ def test_designs_csv_gets_the_mode_of_the_other_results(tmp_path):
         os.umask(old)
     modes = {p.name: p.stat().st_mode & 0o777 for p in out.iterdir() if p.is_file()}
     assert modes == {"designs.csv": 0o644, "summary.toml": 0o644, "family.html": 0o644}
+
+
+def test_chunks_of_other_catalogs_are_another_study(tmp_path, capsys):
+    import shutil
+
+    cat = tmp_path / "cat"
+    shutil.copytree(EXAMPLES / "catalogs", cat)
+    _, argv = _small_study(tmp_path)
+    with_cat = [*argv, "--quiet", "--catalog-dir", str(cat)]
+    assert main(with_cat) == 0
+    assert main(with_cat) == 0  # the same catalogs: resumed, nothing computed
+    assert "0 of 2 chunks computed" in capsys.readouterr().out
+    assert main([*argv, "--quiet"]) == 2  # the shipped catalogs alone
+    assert "holds chunks of another study" in capsys.readouterr().err
+    first = sorted(cat.iterdir())[0]
+    first.write_text(first.read_text(encoding="utf-8") + "\n# edited\n", encoding="utf-8")
+    assert main(with_cat) == 2  # a user catalog edited
+    assert "holds chunks of another study" in capsys.readouterr().err
