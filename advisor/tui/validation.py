@@ -152,15 +152,27 @@ class StepChecks:
         from advisor.core.reading import parse_requirements
 
         doc = fields.prune(self.doc)
-        if self._engine_said is not None and self._engine_said[0] == doc:
-            return list(self._engine_said[1])
-        try:
-            parse_requirements(copy.deepcopy(doc))
-            said: list[str] = []
-        except InputError as exc:
-            said = exc.messages
-        self._engine_said = (copy.deepcopy(doc), said)
-        return list(said)
+        if self._engine_said is None or self._engine_said[0] != doc:
+            try:
+                parse_requirements(copy.deepcopy(doc))
+                said: list[str] = []
+            except InputError as exc:
+                said = exc.messages
+            self._engine_said = (copy.deepcopy(doc), said)
+        return [out for line in self._engine_said[1] for out in self._named(line)]
+
+    def _named(self, line: str) -> list[str]:
+        """A table the engine calls missing only because each of its fields shows an error
+        of its own text (none reached the document): those fields, each with its error."""
+        table = fixes.message_path(line)
+        bad = [
+            f
+            for f in (fields.all_fields(self.kind) if self.kind in fields.titles() else [])
+            if f.id in self.field_errors and f.path[: len(table)] == table
+        ]
+        if not bad or ": missing" not in line or not table:
+            return [line]
+        return [f"{f.dotted}: {self.field_errors[f.id]}" for f in bad]
 
     def _by_id(self, wid: str) -> Any:
         """The widget with id ``wid`` (None: none): found once, then kept while it stays in

@@ -101,3 +101,24 @@ async def test_typing_1_000_says_so_beside_the_field(wizard):
         await pilot.pause()
         said = wizard.text(app.query_one("#f-rotary-torque-Nm-err", Static))
         assert "'１６２０'" in said and "not allowed" in said and "N·m" in said
+
+
+async def test_a_table_of_refused_values_is_named_by_its_fields_not_called_missing(
+    tmp_path, wizard
+):
+    import re
+
+    text = (EXAMPLES / "rudder_actuator.toml").read_text(encoding="utf-8")
+    text = re.sub(r"^torque_Nm = .*$", 'torque_Nm = "9**9**9 N*m"', text, count=1, flags=re.M)
+    text = re.sub(r"^speed_rpm = .*$", 'speed_rpm = "1e999 rpm"', text, count=1, flags=re.M)
+    src = tmp_path / "hostile.toml"
+    src.write_text(text, encoding="utf-8")
+    app = DriveAdvisorApp(drafts.open_doc(src).doc, src, save_drafts=False)
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("ctrl+r")
+        await pilot.pause()
+        said = app._engine_errors()
+        assert not any("missing" in line for line in said)
+        assert [line.split(":")[0] for line in said] == ["rotary.torque_Nm", "rotary.speed_rpm"]
+        assert not any("Remove" in str(b.label) for bs in app.fix_buttons.values() for b in bs)
+        assert "finite" in wizard.text(app.query_one("#f-rotary-speed-rpm-err", Static))
