@@ -66,13 +66,23 @@ def sigint_blocked() -> Iterator[None]:
         signal.pthread_sigmask(signal.SIG_SETMASK, old)
 
 
-def serve(conn: Any, family: Family, catalog_dir: str | None, reports: bool) -> None:
-    """A worker: advise the chunk received, send back its result, until told to stop."""
+def serve(
+    conn: Any, family: Family, catalog_dir: str | None, reports: bool, inherited: tuple = ()
+) -> None:
+    """A worker: advise the chunk received, send back its result, until told to stop or
+    the command is gone (its end of the pipe closed: killed, it cannot say stop).
+
+    ``inherited``: the command's ends of the pipes, this worker's and the others', copied
+    by the fork; closed at once, else the worker itself would hold its pipe open and never
+    see the end of a command killed with SIGKILL."""
+    for other in inherited:
+        other.close()
     signal.signal(signal.SIGINT, signal.SIG_IGN)
     if hasattr(signal, "pthread_sigmask"):
         signal.pthread_sigmask(signal.SIG_UNBLOCK, {signal.SIGINT})
-    while (job := conn.recv()) is not None:
-        conn.send(run_chunk(family, *job, catalog_dir, reports))
+    with contextlib.suppress(EOFError, OSError):
+        while (job := conn.recv()) is not None:
+            conn.send(run_chunk(family, *job, catalog_dir, reports))
 
 
 @dataclass
@@ -97,10 +107,13 @@ class ForkPool:
         methods = multiprocessing.get_all_start_methods()
         self.context = multiprocessing.get_context("fork" if "fork" in methods else None)
 
-    def start(self, args: tuple) -> Worker:
+    def start(self, args: tuple, pool: list[Worker]) -> Worker:
+        """A new worker; ``pool``: the workers running, whose pipe ends it must not keep."""
         ours, theirs = self.context.Pipe()
+        forked = self.context.get_start_method() == "fork"
+        inherited = (ours, *(w.conn for w in pool if not w.conn.closed)) if forked else ()
         with sigint_blocked():
-            p = self.context.Process(target=serve, args=(theirs, *args), daemon=True)
+            p = self.context.Process(target=serve, args=(theirs, *args, inherited), daemon=True)
             p.start()
         theirs.close()
         return Worker(p, ours)
@@ -114,7 +127,9 @@ class ForkPool:
             return
         warm_up(family, catalog_dir)
         args = (family, catalog_dir, reports)
-        pool = [self.start(args) for _ in first]
+        pool: list[Worker] = []
+        for _ in first:
+            pool.append(self.start(args, pool))
         try:
             for w, job in zip(pool, first, strict=True):
                 w.give(job)
@@ -142,7 +157,7 @@ class ForkPool:
                         continue
                 if w.job is not None and not w.process.is_alive():
                     retry.append(died(w, tries))
-                    pool[pool.index(w)] = new = self.start(args)
+                    pool[pool.index(w)] = new = self.start(args, pool)
                     new.give(retry.popleft())
 
 

@@ -821,3 +821,35 @@ def test_chunks_of_other_catalogs_are_another_study(tmp_path, capsys):
     first.write_text(first.read_text(encoding="utf-8") + "\n# edited\n", encoding="utf-8")
     assert main(with_cat) == 2  # a user catalog edited
     assert "holds chunks of another study" in capsys.readouterr().err
+
+
+def _gone(pid: int) -> bool:
+    try:
+        with open(f"/proc/{pid}/stat") as fh:
+            return fh.read().rsplit(")", 1)[1].split()[0] == "Z"
+    except OSError:
+        return True
+
+
+@pytest.mark.skipif(not Path("/proc/self/task").is_dir(), reason="reads /proc to find workers")
+def test_the_workers_of_a_killed_study_end(tmp_path):
+    fam = family_file(
+        tmp_path / "f.toml", "'linear.travel_time_s' = {from = 4, to = 8, steps = 400}", LINEAR
+    )
+    out = tmp_path / "out"
+    argv = [str(fam), "--out", str(out), "--workers", "2", "--chunk-size", "2", "--quiet"]
+    code = "import sys; from advisor.cli import main; sys.exit(main(['family', *sys.argv[1:]]))"
+    proc = subprocess.Popen([sys.executable, "-c", code, *argv])
+    try:
+        _wait(lambda: (out / "chunks").is_dir() and _chunks(out) >= 2, timeout=60)
+        workers = _workers(proc.pid)
+        assert len(workers) == 2
+    finally:
+        proc.kill()
+        proc.wait()
+    try:
+        _wait(lambda: all(_gone(w) for w in workers), timeout=10)
+    finally:
+        for w in workers:  # never leave an orphan behind a failure
+            with contextlib.suppress(OSError):
+                os.kill(w, signal.SIGKILL)
