@@ -236,3 +236,13 @@ def test_the_options_read_with_a_thread_imposed_give_the_same_choice(
     assert screw_rules.choose_drive(read, hold, imposed, starts) == screw_rules.choose_drive(
         full, hold, imposed, starts
     )
+
+
+def test_the_catalog_in_use_keeps_its_parts_while_others_come_and_go():
+    """The parts cache drops the least recently used catalog, never the one in use (it was
+    cleared whole once full, so a run that met eight catalogs recomputed the one it uses)."""
+    shipped = load_catalogs()
+    a = catalog_parts(shipped)
+    for _ in range(12):
+        catalog_parts(_load_and_validate(None))
+        assert catalog_parts(shipped) is a

@@ -56,8 +56,9 @@ _PARTS_MAX = 8
 def catalog_parts(cat: Catalogs) -> CatalogParts:
     """The thread geometries and fitted motor lines of ``cat``, computed once per catalog:
     they do not depend on the requirement."""
-    held = _PARTS.get(id(cat))
+    held = _PARTS.pop(id(cat), None)
     if held is not None and held[0] is cat:
+        _PARTS[id(cat)] = held  # the most recently used last: the oldest is dropped first
         return held[1]
     fits = {pp: [fit_motor(m) for m in cat.motors_with_poles(2 * pp)] for pp in (1, 2, 3, 4)}
     fits = {pp: line for pp, line in fits.items() if line}
@@ -67,7 +68,7 @@ def catalog_parts(cat: Catalogs) -> CatalogParts:
         [motor_line(pp, line) for pp, line in fits.items()],
     )
     if len(_PARTS) >= _PARTS_MAX:
-        _PARTS.clear()
+        del _PARTS[next(iter(_PARTS))]
     _PARTS[id(cat)] = (cat, parts)
     return parts
 
