@@ -4,7 +4,6 @@ tables, in one self-contained page (inline SVG drawn by :mod:`advisor.family.svg
 Drawn from the summary alone: its document, and what it kept while the rows went by (the
 outcome of every variant, the rows at the points the plots show, :func:`plot_points`)."""
 
-import html
 from collections.abc import Iterator
 from pathlib import Path
 from typing import Any, NamedTuple
@@ -99,7 +98,7 @@ def _rest(member: Member, shown: tuple[int | None, ...]) -> str:
 
 
 def _figure(title: str, legend: str, panels: list[str]) -> str:
-    return f"<div class='fig'><h4>{html.escape(title)}</h4>{legend}{''.join(panels)}</div>"
+    return f"<div class='fig'><h4>{svg.page_text(title)}</h4>{legend}{''.join(panels)}</div>"
 
 
 def axis_figure(member: Member, picture: Picture, cols: list[str], plot: Plot) -> str:
@@ -169,9 +168,9 @@ def status_map(member: Member, picture: Picture) -> str | None:
 
 
 def _table(head: list[str], body: list[list[Any]]) -> str:
-    th = "".join(f"<th>{html.escape(h)}</th>" for h in head)
+    th = "".join(f"<th>{svg.page_text(h)}</th>" for h in head)
     trs = "".join(
-        "<tr>" + "".join(f"<td>{html.escape(_label(c))}</td>" for c in r) + "</tr>" for r in body
+        "<tr>" + "".join(f"<td>{svg.page_text(_label(c))}</td>" for c in r) + "</tr>" for r in body
     )
     return f"<table><tr>{th}</tr>{trs}</table>"
 
@@ -219,7 +218,7 @@ def _without_design_table(md: dict[str, Any]) -> str:
 def member_section(m: Member, md: dict[str, Any], picture: Picture) -> list[str]:
     """A member's part of the page: its axes, the outcome map, the plots and the tables."""
     parts = [
-        f"<h2>{html.escape(m.name)} ({html.escape(m.application)}), {m.size} variants</h2>",
+        f"<h2>{svg.page_text(m.name)} ({svg.page_text(m.application)}), {m.size} variants</h2>",
         _table(
             ["axis", "scale", "values"],
             [
@@ -244,10 +243,10 @@ def render(family: Family, doc: dict[str, Any], pictures: list[Picture]) -> str:
     """The page, from the summary document and what the summary kept for the plots."""
     c = doc["counts"]
     parts = [
-        f"<!doctype html><html><head><meta charset='utf-8'><title>{html.escape(family.name)}"
+        f"<!doctype html><html><head><meta charset='utf-8'><title>{svg.page_text(family.name)}"
         f"</title><style>{CSS}</style></head><body>",
-        f"<h1>{html.escape(family.name)}</h1>",
-        f"<p>{family.size} variants from <code>{html.escape(family.source)}</code>: "
+        f"<h1>{svg.page_text(family.name)}</h1>",
+        f"<p>{family.size} variants from <code>{svg.page_text(family.source)}</code>: "
         f"{c['design']} designs, {c['infeasible']} infeasible, {c['invalid']} invalid"
         + (f", {c['internal_error']} internal errors" if c["internal_error"] else "")
         + ". Every row of <code>designs.csv</code> is what <code>advisor --batch</code> gives "

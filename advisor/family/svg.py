@@ -11,12 +11,21 @@ from collections.abc import Sequence
 from html import escape
 from typing import NamedTuple
 
+from advisor.core.io_safety import printable
+
 #: The colours of the lines, one per value of the other axis (matplotlib's first six).
 LINE_COLOURS = ("#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b")
 PANEL_W, PANEL_H = 320, 220  # px
 LEFT, RIGHT, TOP, BOTTOM = 56, 12, 24, 44  # margins of the plotting area, px
 MAX_CELLS = 160  # cells per side of the outcome map; more are sampled evenly
 FONT = "font-family='sans-serif' font-size='11'"
+
+
+def page_text(text: object) -> str:
+    """Text for the page: HTML-escaped, and control and bidi characters shown escaped (as
+    the HTML datasheet does: a NUL is invalid in HTML, an ESC or BEL in a member's name must
+    not reach the page raw)."""
+    return escape(printable(str(text), newlines=False))
 
 
 def label(v: object) -> str:
@@ -80,9 +89,8 @@ def y_range(series: Sequence[Sequence[float]]) -> tuple[float, float]:
 
 
 def _text(x: float, y: float, text: str, anchor: str = "middle", extra: str = "") -> str:
-    return (
-        f"<text x='{x:.1f}' y='{y:.1f}' text-anchor='{anchor}' {FONT} {extra}>{escape(text)}</text>"
-    )
+    at = f"x='{x:.1f}' y='{y:.1f}' text-anchor='{anchor}' {FONT} {extra}"
+    return f"<text {at}>{page_text(text)}</text>"
 
 
 def _polylines(xs: Sequence[float], ys: Sequence[float], sx: Scale, sy: Scale, colour: str) -> str:
@@ -211,7 +219,7 @@ def legend(items: Sequence[tuple[str, str]]) -> str:
     return (
         "<p class='legend'>"
         + "".join(
-            f"<span><i style='background:{colour}'></i>{escape(name)}</span>"
+            f"<span><i style='background:{colour}'></i>{page_text(name)}</span>"
             for name, colour in items
         )
         + "</p>"

@@ -853,3 +853,18 @@ def test_the_workers_of_a_killed_study_end(tmp_path):
         for w in workers:  # never leave an orphan behind a failure
             with contextlib.suppress(OSError):
                 os.kill(w, signal.SIGKILL)
+
+
+def test_control_characters_of_names_are_escaped_in_family_html(tmp_path):
+    from advisor.family.html import render
+
+    name = "a\x1b[2Jb\x07\u202e"
+    _, page = _page(tmp_path, name, "linear.travel_time_s", [4, 5])
+    assert "\x1b" not in page and "\x07" not in page and "\u202e" not in page
+    assert "a\\x1b[2Jb\\x07" in page
+    doc = tomllib.loads(LINEAR)
+    doc["family"] = {"name": name, "axes": {"linear.travel_time_s": [4, 5]}}
+    fam = parse_family(doc, tmp_path / "f.toml")
+    counts = dict.fromkeys(("design", "infeasible", "invalid", "internal_error"), 0)
+    page = render(replace(fam, members=()), {"counts": counts, "members": []}, [])
+    assert "\x1b" not in page and "\x07" not in page
