@@ -30,8 +30,10 @@ def build_parser() -> argparse.ArgumentParser:
         description="Advise every variant of a product family (the product of its axes) on "
         "this machine's cores or a Dask cluster; write designs.csv, summary.toml and "
         "family.html.",
-        epilog="Exit codes: 0 study complete, 2 invalid family file or option, 130 "
-        "interrupted (run the same command again to resume).",
+        epilog="Exit codes: 0 study complete, 1 some variants hit a bug (see designs.csv), "
+        "2 invalid family file or option (or a damaged chunk), 4 a chunk's worker died 3 "
+        "times (killed, out of memory), 130 interrupted (4 and 130: run the same command "
+        "again to resume).",
     )
     p.add_argument("family", type=Path, metavar="FAMILY.toml", help="the family file")
     p.add_argument("--out", type=Path, required=True, metavar="DIR", help="results folder")

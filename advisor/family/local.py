@@ -22,7 +22,7 @@ from dataclasses import dataclass
 from multiprocessing.connection import wait
 from typing import Any
 
-from advisor.family.adapter import advise_one
+from advisor.family.adapter import AdvisorError, advise_one
 from advisor.family.chunks import ChunkResult, run_chunk
 from advisor.family.spec import Family
 
@@ -30,6 +30,24 @@ from advisor.family.spec import Family
 Job = tuple[int, int, int]
 #: A chunk whose worker died this many times is given up (as Dask's ``retries=2``).
 MAX_TRIES = 3
+#: The exit code of a study given up because a chunk's worker kept dying (killed, out of
+#: memory): not a bug of the advice, not a bad input; the chunks written are kept.
+WORKER_LOST_EXIT = 4
+
+
+class WorkerLost(AdvisorError):
+    """A chunk's worker died :data:`MAX_TRIES` times: the study stops (one line, exit 4)."""
+
+    exit_code = WORKER_LOST_EXIT  # type: ignore[assignment]
+
+
+def worker_lost(job: Job, times: int) -> WorkerLost:
+    number, start, stop = job
+    return WorkerLost(
+        f"chunk {number} (variants {start} to {stop - 1}): its worker died {times} times "
+        "(killed, or out of memory?); the chunks written so far are kept: run the same "
+        "command again to retry it (a smaller --chunk-size or fewer --workers need less memory)"
+    )
 
 
 class InProcess:
@@ -169,7 +187,7 @@ def died(w: Worker, tries: dict[int, int]) -> Job:
     w.conn.close()
     w.process.join()
     if tries[n] >= MAX_TRIES:
-        raise RuntimeError(f"chunk {n}: its worker died {tries[n]} times")
+        raise worker_lost(w.job, tries[n])
     return w.job
 
 

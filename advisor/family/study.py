@@ -279,7 +279,7 @@ class DaskRunner:
         # a key of its own per run: the tasks of an interrupted run may still be cancelling
         run_id = f"{family.fingerprint()}-{uuid.uuid4().hex[:8]}"
         jobs = iter(jobs)
-        in_flight: set[Any] = set()
+        in_flight: dict[Any, Job] = {}
 
         def submit(job: Job) -> Any:
             fut = self.client.submit(
@@ -291,14 +291,13 @@ class DaskRunner:
                 key=f"advisor-family-{run_id}-{job[0]}",
                 retries=2,
             )
-            in_flight.add(fut)
+            in_flight[fut] = job
             return fut
 
         try:
             queue = as_completed([submit(j) for j in itertools.islice(jobs, self.window)])
             for fut in queue:
-                res: ChunkResult = fut.result()
-                in_flight.discard(fut)
+                res = result_of(fut, in_flight.pop(fut))
                 fut.release()
                 nxt = next(jobs, None)
                 if nxt is not None:
@@ -307,6 +306,19 @@ class DaskRunner:
         except BaseException:  # an error, ctrl+c, or the study stopped reading
             self.client.cancel(list(in_flight))
             raise
+
+
+def result_of(fut: Any, job: Job) -> ChunkResult:
+    """A chunk's result; a task whose workers kept dying (Dask gave it up) is said as the
+    local runner says it (:class:`advisor.family.local.WorkerLost`)."""
+    from distributed import KilledWorker
+
+    from advisor.family.local import MAX_TRIES, worker_lost
+
+    try:
+        return fut.result()
+    except KilledWorker:
+        raise worker_lost(job, MAX_TRIES) from None
 
 
 class Runner(Protocol):

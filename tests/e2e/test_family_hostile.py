@@ -868,3 +868,19 @@ def test_control_characters_of_names_are_escaped_in_family_html(tmp_path):
     counts = dict.fromkeys(("design", "infeasible", "invalid", "internal_error"), 0)
     page = render(replace(fam, members=()), {"counts": counts, "members": []}, [])
     assert "\x1b" not in page and "\x07" not in page
+
+
+def test_a_chunk_whose_worker_keeps_dying_is_said_in_one_line(tmp_path, capsys, monkeypatch):
+    from advisor.family import local
+
+    def die(*args, **kwargs):
+        os._exit(9)  # as a worker killed by the kernel for its memory
+
+    monkeypatch.setattr(local, "run_chunk", die)
+    _, argv = _small_study(tmp_path)
+    argv[argv.index("--workers") + 1] = "2"
+    assert main([*argv, "--quiet"]) == 4
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "its worker died 3 times" in err[0] and err[0].count("chunk ") >= 1
+    assert "internal error" not in err[0]
+    assert "4 a chunk's worker died" in family_cli.build_parser().epilog
