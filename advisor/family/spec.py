@@ -168,7 +168,8 @@ def _round6(x: float) -> float:
 def _in_unit(key: str, v: Any) -> Any:
     """An axis value as the batch reads it: a quantity string (``"1 kN*m"``) converted to
     the unit the key names (``rotary.torque_Nm`` → N·m) by :func:`advisor.core.units.to_unit`,
-    the converter of the requirement models; anything else (a number, a designation such as
+    the converter of the requirement models (a whole number as an int, written as a plain
+    one is); anything else (a number, a designation such as
     ``"6309"`` or ``"auto"``, a string that is no quantity of that unit) as given, for the
     requirement to judge per variant."""
     if not isinstance(v, str):
@@ -180,9 +181,12 @@ def _in_unit(key: str, v: Any) -> Any:
     if not unit:
         return v
     try:
-        return to_unit(v, unit)
+        x = to_unit(v, unit)
     except UnitError:
         return v
+    # "1.5 kN*m" is written 1500 as a plain 1500 is; a value not whole stays exact (a row
+    # must equal the batch's advice for that variant, which reads the same string)
+    return int(x) if isinstance(x, float) and x.is_integer() and abs(x) < 2**53 else x
 
 
 def axis_values(key: str, spec: Any) -> Axis:
