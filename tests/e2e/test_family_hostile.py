@@ -452,7 +452,7 @@ def test_designs_csv_of_hostile_names_and_values(tmp_path):
     (tmp_path / "designs.csv").write_text(text, encoding="utf-8")
     rows = read_rows(tmp_path / "designs.csv")
     assert [r["member"] for r in rows] == [hyperlink, hyperlink, "@SUM(A1)"]
-    assert rows[0]["linear.force_N"] == "3500.0"
+    assert rows[0]["linear.force_N"] == "3500"
 
 
 # ------------------------------------------------------------------ quiet
@@ -686,7 +686,7 @@ def test_killed_worker_then_ctrl_c_then_two_identical_studies_at_once(tmp_path):
     # the quote goes inside the CSV quoting: the cell is '=HYPERLINK("http://x","y")
     assert '\n0,"\'=HYPERLINK(""http://x"",""y"")",linear,500,2,,' in raw
     assert "\n120,'@SUM(A1),linear,,,steel_bronze," in raw
-    assert "\n123,units,linear,3500.0,,," in raw  # '+3500 N' as the number advised
+    assert "\n123,units,linear,3500,,," in raw  # '+3500 N' as the number advised
     summary = tomllib.loads((out / "summary.toml").read_text(encoding="utf-8"))
     assert [m["name"] for m in summary["members"]] == [
         '=HYPERLINK("http://x","y")',
