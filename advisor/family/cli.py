@@ -323,6 +323,9 @@ def main(argv: list[str]) -> int:
         _err(str(exc))
         return exc.exit_code
     except KeyboardInterrupt:
+        from advisor.family.study import remove_own_temporaries
+
+        remove_own_temporaries(args.out)
         if (args.out / "chunks").is_dir():
             _err(
                 f"interrupted; the chunks written so far are kept in {args.out}/chunks: run "

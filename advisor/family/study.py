@@ -349,6 +349,22 @@ def start_study(
     return done, variants
 
 
+def remove_own_temporaries(out_dir: Path) -> None:
+    """Delete the temporary files this process left in ``out_dir`` when it was interrupted:
+    a ctrl+c that lands between a temporary file's creation and its writer's cleanup (the
+    writers name each one ``.NAME.<pid>-<random>.tmp``) would leave it beside the results.
+    Another process's temporaries (a second study into the same folder) are not touched."""
+    own = f".{os.getpid()}-"
+    for folder in (out_dir / "chunks", out_dir / "reports", out_dir):
+        try:
+            names = [e.name for e in os.scandir(folder) if e.is_file(follow_symlinks=False)]
+        except OSError:
+            continue
+        for name in names:
+            if name.startswith(".") and name.endswith(".tmp") and own in name:
+                (folder / name).unlink(missing_ok=True)
+
+
 def write_chunk(out_dir: Path, res: ChunkResult) -> None:
     """A chunk's reports, then its rows: a chunk file marks its reports written."""
     for name, text in res.reports:

@@ -891,3 +891,23 @@ def test_a_whole_value_given_with_a_unit_is_written_as_a_plain_one():
     assert [cell(v) for v in values] == ["1500", "200", "300"]
     speed = axis_values("rotary.speed_rpm", ["0.1 rad/s"]).values[0]
     assert speed == pytest.approx(0.954929658551)  # not whole: exact, as the batch reads it
+
+
+def test_an_interrupted_study_removes_its_own_temporaries_only(tmp_path):
+    """A ctrl+c between a temporary file's creation and its writer's cleanup left it in
+    chunks/; the interrupted command removes its own (named by its pid), never those of
+    another study writing into the same folder at the same time."""
+    import os
+
+    from advisor.family.study import remove_own_temporaries
+
+    mine, other = os.getpid(), os.getpid() + 1_000_000
+    for folder in ("chunks", "reports"):
+        (tmp_path / folder).mkdir()
+        (tmp_path / folder / f".c000009.csv.{mine}-49be9ffed3cd.tmp").write_text("x")
+        (tmp_path / folder / f".c000009.csv.{other}-49be9ffed3cd.tmp").write_text("x")
+        (tmp_path / folder / "c000001.csv").write_text("kept")
+    remove_own_temporaries(tmp_path)
+    for folder in ("chunks", "reports"):
+        left = sorted(p.name for p in (tmp_path / folder).iterdir())
+        assert left == [f".c000009.csv.{other}-49be9ffed3cd.tmp", "c000001.csv"]
