@@ -34,8 +34,8 @@ def replaced(table: Any, **update: Any) -> Any:
 
 
 def distributions(req: Any, cat: Any, nominal: dict[str, float]) -> list:
-    """The inputs' laws: the table's, and the defaults for what the data marks uncertain (the
-    screw's friction: the material pair's range, uniform)."""
+    """The inputs' laws: the table's, and the defaults the application's model gives for what
+    its data marks uncertain (``default_inputs``: the linear screw's friction, for one)."""
     from advisor.uncertainty.sampling import Distribution
 
     out = []
@@ -59,14 +59,7 @@ def distributions(req: Any, cat: Any, nominal: dict[str, float]) -> list:
                 x0 if d.mode is None and d.distribution == "triangular" else d.mode,
             )
         )
-    if "screw.friction_coefficient" not in given and "screw.friction_coefficient" in nominal:
-        lo, hi = cat.pair(req.screw.material_pair).friction_range(req.screw.lubrication)
-        f0 = nominal["screw.friction_coefficient"]
-        basis = (
-            f"default: the {req.screw.material_pair} pair's friction range "
-            f"({req.screw.lubrication})"
-        )
-        out.append(Distribution("screw.friction_coefficient", "uniform", f0, lo, hi, basis=basis))
+    out += margin_model(req.application.kind).default_inputs(req, cat, nominal, given)
     for d in out:
         if d.kind != "normal" and not (d.low <= d.nominal <= d.high):
             raise InputError(
@@ -77,13 +70,14 @@ def distributions(req: Any, cat: Any, nominal: dict[str, float]) -> list:
 
 
 def _label(report: Any) -> str:
-    s, m = report.design.screw, report.design.motor
-    return f"{s.thread} ({s.starts} start{'s' if s.starts > 1 else ''}) with {m.model}"
+    """The design in the words of its application's model (``design_label``)."""
+    return margin_model(report.report.application).design_label(report)
 
 
 def margin_model(kind: str) -> Any:
-    """The module of an application's margin model (``margin_model``, ``candidates``,
-    ``restricted``); an InputError where the application has none."""
+    """The module of an application's margin model (``margin_model``, ``default_inputs``,
+    ``design_label``, ``candidates``, ``restricted``); an InputError where the application has
+    none."""
     model = registry.application(kind).uncertainty
     if model is None:
         available = [a.kind for a in registry.applications() if a.uncertainty is not None]

@@ -223,3 +223,18 @@ def test_ten_thousand_samples_well_within_a_second():
     section = evaluate(req, nominal, CAT)
     assert time.perf_counter() - t0 < 1.0
     assert section.samples == 10_000
+
+
+def test_the_linear_model_gives_the_friction_law_the_catalog_states():
+    """Where the [uncertainty] table leaves the screw's friction out, the linear model gives
+    it uniform over the material pair's range for its lubrication: steel on tin bronze, oiled,
+    f = 0.10 … 0.16 (catalogs/screw_materials.toml, after Shigley's Table 8-5); given in the
+    table, it is not given twice. The design is named as its reports name it."""
+    req, cat = read_requirements(ROBUST), load_catalogs()
+    nominal = {"screw.friction_coefficient": 0.15, "linear.force_N": 3500.0}
+    (law,) = linear.default_inputs(req, cat, nominal, given={"linear.force_N"})
+    assert (law.name, law.kind, law.nominal) == ("screw.friction_coefficient", "uniform", 0.15)
+    assert (law.low, law.high) == (0.10, 0.16)
+    assert linear.default_inputs(req, cat, nominal, given={"screw.friction_coefficient"}) == []
+    rep = advise(req)
+    assert linear.design_label(rep) == rep.uncertainty.design == "Tr18x4 (1 start) with 4A80A6"

@@ -256,3 +256,24 @@ def restricted(req: Any, cat: Any, option: tuple[str, int, int]) -> tuple[Any, A
         motors=tuple(m for m in cat.motors if m.poles == 2 * pole_pairs),
     )
     return req2, cat2
+
+
+def default_inputs(req: Any, cat: Any, nominal: dict[str, float], given: set[str]) -> list:
+    """The laws the data gives where the ``[uncertainty]`` table gives none: the screw's
+    friction coefficient, uniform over its material pair's range for its lubrication (the
+    catalog's friction pairs)."""
+    from advisor.uncertainty.sampling import Distribution
+
+    name = "screw.friction_coefficient"
+    if name in given or name not in nominal:
+        return []
+    pair, lubrication = req.screw.material_pair, req.screw.lubrication
+    lo, hi = cat.pair(pair).friction_range(lubrication)
+    basis = f"default: the {pair} pair's friction range ({lubrication})"
+    return [Distribution(name, "uniform", nominal[name], lo, hi, basis=basis)]
+
+
+def design_label(report: Any) -> str:
+    """The design in a few words: ``Tr18x4 (1 start) with 4A80A6``."""
+    s, m = report.design.screw, report.design.motor
+    return f"{s.thread} ({s.starts} start{'s' if s.starts > 1 else ''}) with {m.model}"
