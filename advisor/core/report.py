@@ -257,7 +257,8 @@ def plain_data(obj: Any, rounded: bool = True) -> Any:
         raise
 
 
-_floor, _log10 = math.floor, math.log10
+_floor, _log10, _isfinite = math.floor, math.log10, math.isfinite
+_FLOAT = {float}
 _KEPT = frozenset((str, int, bool))  # exact types a plain report holds as they are
 
 
@@ -273,8 +274,8 @@ def _plain_fast(obj: Any, rounded: bool) -> Any:
     if t is str or t is int or t is bool:
         return obj
     if t is list or t is tuple:
-        if obj and all(type(v) is float for v in obj):  # a curve: one pass, no calls per item
-            if any(v - v != 0.0 for v in obj):
+        if obj and set(map(type, obj)) == _FLOAT:  # a curve: checked in C, no call per item
+            if not all(map(_isfinite, obj)):
                 raise NonFiniteValue("a report value is not a finite number")
             if not rounded:
                 return list(obj)
@@ -334,17 +335,21 @@ def plain(report: Report) -> dict[str, Any]:
     return plain_data(report)
 
 
-_NUMBER_TYPES = (float, int)  # exact types: a bool is no number here
+_NUMBER_TYPES = frozenset((float, int))  # exact types: a bool is no number here
 
 
 def _numbers(v: Any) -> bool:
     """An array of numbers (or of arrays of them)."""
-    return isinstance(v, list) and all(
-        type(x) in _NUMBER_TYPES
-        or (isinstance(x, int | float) and not isinstance(x, bool))
-        or _numbers(x)
-        for x in v
-    )
+    if not isinstance(v, list):
+        return False
+    if set(map(type, v)) <= _NUMBER_TYPES:  # one pass in C: a curve is hundreds of floats
+        return True
+    return all((isinstance(x, int | float) and not isinstance(x, bool)) or _numbers(x) for x in v)
+
+
+def _holds_containers(items: list) -> bool:
+    """Some item of ``items`` is a dict or a list (checked once per kind of item)."""
+    return any(issubclass(kind, dict | list) for kind in set(map(type, items)))
 
 
 def curve_part(table: Any) -> dict[str, Any]:
@@ -353,7 +358,7 @@ def curve_part(table: Any) -> dict[str, Any]:
     front) — data for a plot rather than the design. Empty when there is none."""
     if not isinstance(table, dict):
         return {}
-    arrays = {k: v for k, v in table.items() if _numbers(v)}
+    arrays = {k: v for k, v in table.items() if isinstance(v, list) and _numbers(v)}
     if not arrays or max(len(v) for v in arrays.values()) < CURVE_POINTS:
         return {}
     return arrays
@@ -377,14 +382,14 @@ def _lift(node: Any, path: str, curves: dict[str, Any]) -> Any:
         for k, v in node.items():
             if v is None or k in part:
                 continue
-            if isinstance(v, dict | list):  # a path is made for containers only
-                v = _lift(v, f"{path}.{k}", curves)
+            if isinstance(v, dict) or (isinstance(v, list) and _holds_containers(v)):
+                v = _lift(v, f"{path}.{k}", curves)  # a path is made for containers only
                 if v is None:
                     continue
             out[k] = v
         return out if out or not part else None
     if isinstance(node, list):
-        if not any(isinstance(v, dict | list) for v in node):  # numbers, words: as they are
+        if not _holds_containers(node):  # numbers, words: as they are
             return node
         return [_lift(v, f"{path}[{i + 1}]", curves) for i, v in enumerate(node)]
     return node
@@ -394,19 +399,20 @@ def _drop_empty(node: Any) -> Any:
     if isinstance(node, dict):
         return {k: _drop_empty(v) for k, v in node.items() if v is not None}
     if isinstance(node, list):
-        if not any(isinstance(v, dict | list) for v in node):
+        if not _holds_containers(node):
             return node
         return [_drop_empty(v) for v in node]
     return node
 
 
-def archive(doc: dict[str, Any]) -> dict[str, Any]:
+def archive(doc: dict[str, Any], *, none_dropped: bool = False) -> dict[str, Any]:
     """The archive layout: the curve data of the design (see :func:`curve_part`) moved into
     one ``[curves]`` table at the end, keyed by the table that held it
     (``"design.motion.curve"``, ``"design.motor.candidates[2].curve"``, list items counted
     from 1), so the design reads first; the table's other keys stay where they were.
     ``None`` values are dropped (TOML has no null). Only a top-level table whose key begins
-    with ``design`` is searched for curves; the others are copied as they are.
+    with ``design`` is searched for curves; the others are copied as they are, or, with
+    ``none_dropped`` (``doc`` holds no ``None``, as :func:`plain_data` makes it), kept.
 
     >>> archive({"design": {"m": 1.0, "curve": {"t": list(range(10))}}})["curves"]
     {'design.curve': {'t': [0, 1, 2, 3, 4, 5, 6, 7, 8, 9]}}
@@ -416,7 +422,10 @@ def archive(doc: dict[str, Any]) -> dict[str, Any]:
     for k, v in doc.items():
         if v is None:
             continue
-        v = _lift(v, k, curves) if k.startswith("design") else _drop_empty(v)
+        if k.startswith("design"):
+            v = _lift(v, k, curves)
+        elif not none_dropped:
+            v = _drop_empty(v)
         if v is not None:
             out[k] = v
     if curves:
@@ -444,11 +453,13 @@ def to_toml(report: Report) -> str:
     """The report as TOML text (no nulls: TOML has none), curves in ``[curves]`` at the
     end, as tomli-w writes it (:mod:`advisor.core.toml_text` writes the same bytes faster)."""
     # rounded as written: one formatting per number instead of a round() and a str()
-    return toml_text.dumps(archive(plain_data(report, rounded=False)), float_text)
+    doc = archive(plain_data(report, rounded=False), none_dropped=True)
+    return toml_text.dumps(doc, float_text)
 
 
 def to_json(report: Report) -> str:
     """The report as JSON: the same document as the TOML, keys in the same order."""
     import json
 
-    return json.dumps(archive(plain_data(report)), indent=2, ensure_ascii=False) + "\n"
+    doc = archive(plain_data(report), none_dropped=True)
+    return json.dumps(doc, indent=2, ensure_ascii=False) + "\n"

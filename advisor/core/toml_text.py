@@ -23,6 +23,7 @@ _ILLEGAL = re.compile(r'[\x00-\x08\x0a-\x1f\x7f"\\]')  # ASCII controls but tab,
 _ESCAPES = {"\b": "\\b", "\n": "\\n", "\f": "\\f", "\r": "\\r", '"': '\\"', "\\": "\\\\"}
 _BARE = re.compile(r"[A-Za-z0-9_-]+")
 _keys: dict[str, str] = {}
+_FLOAT, _STR = {float}, {str}
 
 
 def _escape(m: re.Match) -> str:
@@ -64,15 +65,7 @@ def literal(obj: Any, nest: int = 0, ftext: FloatText = str) -> str:
     if t is bool:
         return "true" if obj else "false"
     if t is list or t is tuple:
-        if not obj:
-            return "[]"
-        inner = INDENT * (nest + 1)
-        # a curve is thousands of floats: written at once, as literal() writes each
-        if all(type(x) is float for x in obj):
-            items = f",\n{inner}".join(map(ftext, obj))
-        else:
-            items = f",\n{inner}".join(literal(x, nest + 1, ftext) for x in obj)
-        return f"[\n{inner}{items},\n{INDENT * nest}]"
+        return array(obj, nest, ftext)
     if t is dict:
         return inline_table(obj, ftext)
     if isinstance(obj, bool):
@@ -84,10 +77,26 @@ def literal(obj: Any, nest: int = 0, ftext: FloatText = str) -> str:
     if isinstance(obj, str):
         return string(obj)
     if isinstance(obj, list | tuple):
-        return literal(list(obj), nest, ftext)
+        return array(list(obj), nest, ftext)
     if isinstance(obj, dict):
         return inline_table(obj, ftext)
     raise TypeError(f"Object of type '{type(obj).__qualname__}' is not TOML serializable")
+
+
+def array(obj: list | tuple, nest: int = 0, ftext: FloatText = str) -> str:
+    """An array, one item a line. An array of one kind of value (a curve of floats, a list of
+    words) is written in one join, as :func:`literal` writes each item."""
+    if not obj:
+        return "[]"
+    inner = INDENT * (nest + 1)
+    kinds = set(map(type, obj))  # one pass in C: a curve is hundreds of floats
+    if kinds == _FLOAT:
+        items = map(ftext, obj)
+    elif kinds == _STR:
+        items = map(string, obj)
+    else:
+        items = (literal(x, nest + 1, ftext) for x in obj)
+    return f"[\n{inner}" + f",\n{inner}".join(items) + f",\n{INDENT * nest}]"
 
 
 def inline_table(obj: dict, ftext: FloatText = str) -> str:
@@ -96,13 +105,22 @@ def inline_table(obj: dict, ftext: FloatText = str) -> str:
     return "{ " + ", ".join(f"{key(k)} = {literal(v, 0, ftext)}" for k, v in obj.items()) + " }"
 
 
-def _inline_fits(t: dict, ftext: FloatText) -> bool:
-    text = f"{INDENT}{inline_table(t, ftext)},"
-    return len(text) <= MAX_LINE_LENGTH and "\n" not in text
+def _inline_tables(tables: list | tuple, ftext: FloatText) -> str | None:
+    """An array of tables written inline, each on its line, as tomli-w writes one when every
+    table fits on a line of :data:`MAX_LINE_LENGTH`; None when one does not (it is written
+    as ``[[name]]`` tables)."""
+    texts = []
+    for t in tables:
+        text = inline_table(t, ftext)
+        if len(text) > MAX_LINE_LENGTH - len(INDENT) - 1 or "\n" in text:  # indent + text + ","
+            return None
+        texts.append(text)
+    return "[\n" + "".join(f"{INDENT}{text},\n" for text in texts) + "]"
 
 
 def _is_aot(v: Any) -> bool:
-    return isinstance(v, list | tuple) and bool(v) and all(isinstance(x, dict) for x in v)
+    """A non-empty array of tables (tomli-w's test)."""
+    return bool(v) and all(issubclass(kind, dict) for kind in set(map(type, v)))
 
 
 def _table(
@@ -125,8 +143,12 @@ def _table(
             literals.append(f"{keys.get(k) or key(k)} = {v}\n")
         elif isinstance(v, dict):
             tables.append((k, v, False))
-        elif _is_aot(v) and not all(_inline_fits(t, ftext) for t in v):
-            tables.extend((k, t, True) for t in v)
+        elif isinstance(v, list | tuple) and _is_aot(v):
+            text = _inline_tables(v, ftext)
+            if text is None:
+                tables.extend((k, t, True) for t in v)
+            else:
+                literals.append(f"{key(k)} = {text}\n")
         else:
             literals.append(f"{key(k)} = {literal(v, 0, ftext)}\n")
     yielded = False
