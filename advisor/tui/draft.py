@@ -194,9 +194,7 @@ def _shape_leaf(
             node[index] = number
             return
     if why is None and field.kind == "floats" and any(isinstance(v, str) for v in value):
-        _, err = fields.parse_text(field, fields.to_text(field, value))  # shown as written
-        if err is not None:
-            problems.append(f"{where} = {_echo(value)}: {err}; fix it here")
+        problems.extend(_item_problems(field, value, where))  # each said as the batch says it
     elif why is None and field.kind in ("float", "int") and isinstance(value, str | bool):
         problems.append(f"{where} = {_echo(value)}: must be a number; fix it here")
     elif why is None and field.kind == "choice" and value not in field.choices:
@@ -208,6 +206,20 @@ def _shape_leaf(
     if why is not None:
         problems.append(f"{where} = {_echo(value)}: {why}; removed")
         del node[index]
+
+
+def _item_problems(field: "fields.Field", value: list[Any], where: str) -> list[str]:
+    """The strings of a loaded list that are no quantity of its field, one line each in the
+    batch's words (``motor.candidate_speeds_rpm[2] = '3,5 rpm': …``); kept in the field
+    (shown quoted, as written) to be fixed there."""
+    out = []
+    for k, item in enumerate(value, start=1):
+        if isinstance(item, str):
+            try:
+                fields.quantity(field, item)
+            except ValueError as exc:
+                out.append(f"{where}[{k}] = {_echo(item)}: {exc}; fix it here")
+    return out
 
 
 def open_doc(path: Path) -> Loaded:

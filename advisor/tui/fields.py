@@ -196,17 +196,26 @@ def to_text(field: Field, value: Any) -> str:
 
 
 def _item_text(value: Any) -> str:
-    if isinstance(value, str):
-        from advisor.core.io_safety import printable
+    if not isinstance(value, str):
+        return f"{value:g}"
+    from advisor.core.io_safety import printable
 
-        return printable(value, newlines=False)
-    return f"{value:g}"
+    text = printable(value, newlines=False)
+    # quoted where a bare item would read otherwise: a comma or semicolon would split it, and
+    # a number in quotes is text to a file ("3000", refused: a unit is missing)
+    bare = text.strip(" \t")
+    if not bare or any(c in text for c in ',;"') or _PLAIN.fullmatch(bare):
+        return '"' + text.replace('"', '""') + '"'
+    return text
 
 
 #: A plain number as the grammar of :mod:`advisor.core.units` writes one: ASCII digits, no
 #: ``_`` separators (``float`` would take ``1_000`` and full-width ``１６２０``, a file not).
 _PLAIN = re.compile(r"[+-]?(?:[0-9]+(?:\.[0-9]*)?|\.[0-9]+)(?:[eE][+-]?[0-9]+)?", re.ASCII)
 _WHOLE = re.compile(r"[+-]?[0-9]+", re.ASCII)
+#: One item of a list box: in double quotes, as a file writes a string (``"3,5 rpm"`` stays
+#: one item; a quote inside is doubled), or bare up to the next comma or semicolon.
+_ITEM = re.compile(r'[ \t]*(?:"((?:[^"]|"")*)"[ \t]*|([^,;"][^,;]*)?)(?:[,;]|$)')
 
 
 def _number(field: Field, text: str) -> float:
@@ -233,20 +242,66 @@ def parse_text(field: Field, text: str) -> tuple[Any, str | None]:
             return int(text), None
         return None, f"{text!r} is not a whole number (digits 0-9 only)"
     if field.kind == "floats":
-        try:
-            values = [_number(field, x) for x in text.replace(";", ",").split(",") if x.strip()]
-        except ValueError as exc:
-            return None, f"{text!r}: numbers separated by commas, e.g. 5000, 10000 ({exc})"
-        if not values or not all(math.isfinite(v) for v in values):
-            return None, "numbers separated by commas, each finite"
-        return values, None
-    try:
-        value = _number(field, text.replace(",", "."))
+        return _parse_list(field, text)
+    try:  # "1,5" is refused as a file refuses it: the grammar has no decimal comma
+        value = _number(field, text)
     except ValueError as exc:
         return None, f"{text!r}: {exc}"
     if not math.isfinite(value):
         return None, "must be a finite number"
     return value, None
+
+
+def quantity(field: Field, text: str) -> float:
+    """A string of a file (``"3000 rpm"``) in the field's unit, as the batch reads it: a
+    :class:`~advisor.core.units.UnitError` in the batch's words when it is no quantity."""
+    from advisor.core.units import to_unit
+
+    return to_unit(text, field.unit)
+
+
+def list_items(text: str) -> list[tuple[str, bool]] | None:
+    """The items of a list box's text, each with whether it was quoted; None when a quote
+    is not closed or text follows a closing quote.
+
+    >>> list_items('3000 rpm; "3,5 rpm",, 5000')
+    [('3000 rpm', False), ('3,5 rpm', True), ('5000', False)]
+    """
+    items: list[tuple[str, bool]] = []
+    pos = 0
+    while pos < len(text):
+        m = _ITEM.match(text, pos)
+        if m is None:
+            return None
+        quoted, bare = m.group(1), m.group(2)
+        if quoted is not None:
+            items.append((quoted.replace('""', '"'), True))
+        elif bare is not None and bare.strip():
+            items.append((bare.strip(), False))
+        pos = m.end()
+    return items
+
+
+def _parse_list(field: Field, text: str) -> tuple[list[float] | None, str | None]:
+    """A list box's numbers; a refused item named by its place, in the batch's words (a
+    quoted item is a string of a file: a quantity with its unit, read by the grammar)."""
+    items = list_items(text)
+    if items is None:
+        return None, (
+            f"{text!r}: numbers separated by commas, e.g. 5000, 10000 (an item in quotes, "
+            '"3000 rpm", ends at its closing quote)'
+        )
+    values = []
+    for k, (item, quoted) in enumerate(items, start=1):
+        try:
+            values.append(quantity(field, item) if quoted else _number(field, item))
+        except ValueError as exc:
+            from advisor.core.io_safety import show_repr
+
+            return None, f"item {k} = {show_repr(item)}: {exc}"
+    if not values or not all(math.isfinite(v) for v in values):
+        return None, "numbers separated by commas, each finite"
+    return values, None
 
 
 def error_step(dotted: str, kind: str) -> int | None:

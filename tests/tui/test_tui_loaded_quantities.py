@@ -60,7 +60,7 @@ def test_a_list_item_that_is_no_quantity_is_said_and_kept_to_fix():
     doc = {"application": {"kind": "rotary"}, "motor": {"candidate_speeds_rpm": ["3000 N", 5]}}
     shaped, problems = drafts.shape(doc)
     assert shaped["motor"]["candidate_speeds_rpm"] == ["3000 N", 5]
-    assert len(problems) == 1 and "motor.candidate_speeds_rpm = " in problems[0]
+    assert len(problems) == 1 and "motor.candidate_speeds_rpm[1] = '3000 N'" in problems[0]
     assert "fix it here" in problems[0] and "rpm" in problems[0]
 
 
