@@ -1,5 +1,7 @@
 """Rules of the sliding screw–nut stage (seed 001 and the power-screw design texts)."""
 
+from collections.abc import Callable
+from operator import attrgetter
 from typing import NamedTuple
 
 from advisor.core.cite import cite
@@ -123,10 +125,25 @@ def thread_label(thread: str, starts: int) -> str:
     return f"Tr{d}x{float(p) * starts:g}(P{p})"
 
 
+#: :attr:`DriveOption.motor_size`, then :attr:`DriveOption.screw_weight`, as one flat tuple:
+#: the same order, built in one call (the joint choice ranks hundreds of options).
+_SIZE_THEN_WEIGHT = attrgetter(
+    "rated_power_kW", "rated_torque_Nm", "d_mm", "starts", "screw_torque_Nm", "pitch_mm"
+)
+
+
 def drive_order(o: DriveOption, hold: bool) -> tuple:
     """The order of preference: where holding without power is asked, a screw that holds by
     itself first; then the smallest motor; then the lightest screw that it drives."""
-    return (not o.self_locking_at_low_friction if hold else False, o.motor_size, o.screw_weight)
+    return (not o.self_locking_at_low_friction if hold else False, *_SIZE_THEN_WEIGHT(o))
+
+
+def drive_order_key(hold: bool) -> Callable[[DriveOption], tuple]:
+    """:func:`drive_order` as a sort key. Without holding, every option's first element is
+    the same, so the key leaves it out (the same order)."""
+    if hold:
+        return lambda o: drive_order(o, True)
+    return _SIZE_THEN_WEIGHT
 
 
 #: Runners-up listed in the decision.
@@ -155,7 +172,7 @@ def choose_drive(
     free = [o for o in options if imposed_starts is None or o.starts == imposed_starts]
     pool = [o for o in free if imposed is None or o.thread == imposed]
     # sorted is stable: the first of equals comes first, as min would take it
-    ranked = sorted(pool, key=lambda o: drive_order(o, hold_without_power))
+    ranked = sorted(pool, key=drive_order_key(hold_without_power))
     best = ranked[0] if ranked else None
     own = best if imposed is None else _best(free, hold_without_power)
     inputs: dict = {
@@ -224,7 +241,7 @@ def choose_drive(
 
 
 def _best(options: list[DriveOption], hold: bool) -> DriveOption | None:
-    return min(options, key=lambda o: drive_order(o, hold), default=None)
+    return min(options, key=drive_order_key(hold), default=None)
 
 
 @rule("SCR-05", "Holding the load without power", cite("ivanov-dm", "power screws") + SEED_001)

@@ -199,9 +199,10 @@ def _pole_options(
     """The best drive option of each pole count (of the imposed thread, if one is), as rule
     IM-01 compares them."""
     firsts: dict[int, tuple[tuple, screw_rules.DriveOption]] = {}
+    order = screw_rules.drive_order_key(hold)
     for o in options:  # each option's order once; a later one only if strictly first, as min
         if imposed is None or o.thread == imposed:
-            key, held = screw_rules.drive_order(o, hold), firsts.get(o.pole_pairs)
+            key, held = order(o), firsts.get(o.pole_pairs)
             if held is None or key < held[0]:
                 firsts[o.pole_pairs] = (key, o)
     out = []

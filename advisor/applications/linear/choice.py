@@ -154,10 +154,10 @@ def first_drive_option(
                 continue  # no motor of the line drives it
             cap = math.inf
             if best_key is not None:
-                if (flag, line.fits[i].motor.rated_power_kW) > (best_key[0], best_key[1][0]):
+                if (flag, line.fits[i].motor.rated_power_kW) > best_key[:2]:
                     continue
                 if flag == best_key[0]:
-                    cap = best_key[1][0]
+                    cap = best_key[1]
             option = line_option(ev, line, cap)
             if option is None:
                 continue
