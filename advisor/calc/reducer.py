@@ -565,7 +565,9 @@ def _within(
 
 
 #: Points checked at once by :func:`pareto` (fewer: more numpy calls; more: larger arrays).
-_BLOCK = 128
+_BLOCK = 192
+#: [i, j]: point i comes before point j within a block.
+_BEFORE = np.triu(np.ones((_BLOCK, _BLOCK), bool), 1)
 
 
 def _shortest_of_groups(result: SweepResult, ok: np.ndarray) -> np.ndarray:
@@ -610,6 +612,21 @@ def _fewest_stages(result: SweepResult, cand: np.ndarray) -> np.ndarray:
     return cand[order]
 
 
+def _ranks(x: np.ndarray) -> np.ndarray:
+    """Each value's rank among ``x`` (equal values, equal ranks) as small integers: they
+    order exactly as the values do, and compare faster in the (block, block) arrays."""
+    return np.searchsorted(np.sort(x), x).astype(np.int16 if x.size < 2**15 else np.int32)
+
+
+def _covered(by: np.ndarray, points: np.ndarray) -> np.ndarray:
+    """[i, j]: point i of ``by`` is no worse than point j of ``points`` in every objective
+    (rows: objectives; one comparison array per objective, faster than one 3-D array)."""
+    covered = by[0][:, None] <= points[0]
+    for k in range(1, by.shape[0]):
+        covered &= by[k][:, None] <= points[k]
+    return covered
+
+
 def _non_dominated(result: SweepResult, cand: np.ndarray) -> np.ndarray:
     """The non-dominated of ``cand`` (sorted as :func:`_fewest_stages` sorts) by mass,
     diameter, length and stages (fewer: higher efficiency η^n, lower losses).
@@ -617,24 +634,22 @@ def _non_dominated(result: SweepResult, cand: np.ndarray) -> np.ndarray:
     In this order whatever dominates a point comes before it, and (dominance being
     transitive) so does a non-dominated point that dominates it: each block is checked
     against the front so far and against the points before it within the block. A point
-    equal in every objective to an earlier one goes too (duplicates are kept once)."""
+    before another is no heavier, so mass needs no comparison. A point equal in every
+    objective to an earlier one goes too (duplicates are kept once)."""
     obj = np.stack(
         [
-            result.mass_kg[cand],
-            result.outer_diameter_mm[cand],
-            result.length_mm[cand],
-            result.stages[cand].astype(float),
+            _ranks(result.outer_diameter_mm[cand]),
+            _ranks(result.length_mm[cand]),
+            result.stages[cand].astype(np.int16),  # 1…4
         ]
     )  # (objective, point)
     front_obj = obj[:, :0]
     front = []
-    before = np.triu(np.ones((_BLOCK, _BLOCK), bool), 1)  # [i, j]: i before j
     for start in range(0, cand.size, _BLOCK):
         blk = obj[:, start : start + _BLOCK]
         b = blk.shape[1]
-        covered = (blk[:, :, None] <= blk[:, None, :]).all(axis=0) & before[:b, :b]
-        dominated = covered.any(axis=0)
-        dominated |= (front_obj[:, :, None] <= blk[:, None, :]).all(axis=0).any(axis=0)
+        dominated = (_covered(blk, blk) & _BEFORE[:b, :b]).any(axis=0)
+        dominated |= _covered(front_obj, blk).any(axis=0)
         keep = ~dominated
         front_obj = np.concatenate([front_obj, blk[:, keep]], axis=1)
         front.append(cand[start : start + _BLOCK][keep])
