@@ -4,6 +4,7 @@ import itertools
 import marshal
 import math
 import os
+import re
 import sys
 import zlib
 from functools import cache
@@ -153,8 +154,46 @@ def _fail(path: Path, where: str, exc) -> CatalogError:
     from advisor.core.io_safety import show
 
     field = f"field {loc} = {show(repr(err['input']))}: " if loc else ""
-    msg = _bound_text(err) or err["msg"].removeprefix("Value error, ")
-    return CatalogError(f"catalog {path}, {where}: {field}{msg}")
+    msg = _unit_string_text(err) or _bound_text(err) or err["msg"].removeprefix("Value error, ")
+    return CatalogError(f"catalog {show(path, 200)}, {where}: {field}{msg}")
+
+
+#: A plain number as a catalog writes one (ASCII digits), for a refusal's example.
+_PLAIN = re.compile(r"[+-]?(?:[0-9]+(?:\.[0-9]*)?|\.[0-9]+)(?:[eE][+-]?[0-9]+)?", re.ASCII)
+
+
+def _unit_string_text(err: Any) -> str | None:
+    """pydantic's refusal of text where a number belongs ("125 kg"), worded for a catalog:
+    unlike a requirement, a catalog converts no unit strings; its numbers are plain, in the
+    unit each key names."""
+    text = err.get("input")
+    if err.get("type") not in ("float_type", "int_type") or not isinstance(text, str):
+        return None
+    key = next((p for p in reversed(err["loc"]) if isinstance(p, str)), "")
+    return _plain_numbers_text(text, key, item=err["loc"][-1:] != (key,))
+
+
+def _plain_numbers_text(text: str, key: str, item: bool = False) -> str:
+    """What a catalog takes instead of ``text`` at ``key`` (or an ``item`` of its array)."""
+    number = _as_number(text, key)
+    shown = "" if item else f"{key} = "
+    example = f"e.g. {shown}1.2" if number is None else f"write {shown}{number}"
+    return f"catalogs take plain SI numbers in the unit the key names, no unit strings ({example})"
+
+
+def _as_number(text: str, key: str) -> str | None:
+    """The plain number ``text`` stands for in ``key``'s unit ("125 kg" for mass_kg: 125);
+    None where the key's unit or the text cannot be read."""
+    from advisor.core.questions import unit_of
+    from advisor.core.units import UnitError, to_unit
+
+    if _PLAIN.fullmatch(text.strip(" \t")):
+        return text.strip(" \t")
+    unit = unit_of(key)
+    try:
+        return f"{to_unit(text, unit):.12g}" if unit else None
+    except UnitError:
+        return None
 
 
 def _rows(path: Path, data: dict[str, Any], key: str) -> list[dict[str, Any]]:
@@ -190,6 +229,9 @@ def _supply_frequency(path: Path, data: dict[str, Any]) -> float:
 
     lo, hi = SUPPLY_FREQUENCY_RANGE_HZ
     v = data.get("supply_frequency_Hz", 50)
+    if isinstance(v, str):
+        why = _plain_numbers_text(v, "supply_frequency_Hz")
+        raise CatalogError(f"catalog {path}: supply_frequency_Hz = {show(repr(v))}: {why}")
     if isinstance(v, bool) or not isinstance(v, int | float) or not lo <= v <= hi:
         raise CatalogError(
             f"catalog {path}: supply_frequency_Hz = {show(repr(v))}: must be a number "
@@ -227,6 +269,11 @@ def _load_powers(path: Path) -> tuple[list[float], str]:
     if not isinstance(powers, list) or not powers:
         raise CatalogError(f"catalog {path}: rated_powers_kW must be a non-empty array")
     for i, p in enumerate(powers, start=1):
+        if isinstance(p, str):
+            why = _plain_numbers_text(p, "rated_powers_kW", item=True)
+            from advisor.core.io_safety import show
+
+            raise CatalogError(f"catalog {path}, rated_powers_kW item {i} = {show(repr(p))}: {why}")
         if (
             isinstance(p, bool)
             or not isinstance(p, int | float)
