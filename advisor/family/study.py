@@ -118,7 +118,13 @@ def _read_manifest(out_dir: Path) -> dict[str, Any] | None:
     return old if isinstance(old, dict) else None
 
 
-def _another_study(out_dir: Path) -> InputError:
+def _another_study(out_dir: Path, old: dict[str, Any] | None = None) -> InputError:
+    if old is not None and "catalogs" not in old:  # written before the catalogs were stamped
+        return InputError(
+            f"{out_dir}: holds chunks of another study, made by an older version of the "
+            "advisor (its chunks/study.json has no catalogs stamp); delete its chunks/ "
+            "folder to compute them again, or use another --out DIR"
+        )
     return InputError(
         f"{out_dir}: holds chunks of another study (family, catalogs, chunk size or "
         "--reports differ); use another --out DIR or delete its chunks/ folder"
@@ -143,15 +149,16 @@ def precheck_manifest(
     size = chunk_size or old.get("chunk_size")
     want = make_manifest(family, size, reports, catalog_dir)  # type: ignore[arg-type]
     if old != want:
-        raise _another_study(out_dir)
+        raise _another_study(out_dir, old)
 
 
 def check_manifest(out_dir: Path, manifest: dict[str, Any]) -> None:
     """Write the study's manifest, or refuse a DIR that holds chunks of another study."""
     path = out_dir / "chunks" / MANIFEST
     if path.exists():
-        if _read_manifest(out_dir) != manifest:
-            raise _another_study(out_dir)
+        old = _read_manifest(out_dir)
+        if old != manifest:
+            raise _another_study(out_dir, old)
         return
     path.parent.mkdir(parents=True, exist_ok=True)
     write_atomic(path, json.dumps(manifest, indent=1, sort_keys=True) + "\n")

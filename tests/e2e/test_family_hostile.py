@@ -11,6 +11,7 @@ killed, then two identical studies into one folder at once.
 import contextlib
 import csv
 import io
+import json
 import os
 import signal
 import socket
@@ -312,6 +313,22 @@ def test_a_folder_of_another_study_is_refused_before_the_cluster(tmp_path, capsy
     (tmp_path / "o" / "chunks").mkdir(parents=True)
     (tmp_path / "o" / "chunks" / "study.json").write_text('{"fingerprint": "0", "chunk_size": 1}')
     refused(capsys, [str(fam), "--out", str(tmp_path / "o")], "holds chunks of another study")
+
+
+def test_chunks_of_an_older_version_say_what_to_do(tmp_path, capsys):
+    """A study written before its manifest carried the catalogs stamp: refused in one line
+    (exit 2) that says how to go on, and its chunks are left as they were."""
+    _, argv = _small_study(tmp_path)
+    assert main([*argv, "--quiet"]) == 0
+    out = Path(argv[argv.index("--out") + 1])
+    manifest = out / "chunks" / "study.json"
+    old = json.loads(manifest.read_text(encoding="utf-8"))
+    del old["catalogs"]
+    manifest.write_text(json.dumps(old), encoding="utf-8")
+    chunks = sorted(p.name for p in (out / "chunks").iterdir())
+    line = refused(capsys, argv[1:], "older version", "delete its chunks/", "another --out")
+    assert line.startswith(f"advisor: {out}: holds chunks of another study")
+    assert sorted(p.name for p in (out / "chunks").iterdir()) == chunks
 
 
 def test_a_broken_catalog_dir_is_refused_before_the_cluster(tmp_path, capsys, no_cluster):
