@@ -10,6 +10,7 @@ with numpy broadcasting; :func:`evaluate` evaluates one configuration with the s
 the rule-based design and the optimum are computed alike.
 """
 
+import math
 from typing import NamedTuple
 
 import numpy as np
@@ -185,10 +186,10 @@ class SweepResult(NamedTuple):
         return stage_efficiency ** self.stages.astype(float)
 
     def ratios_out_to_in(self, i: int) -> list[float]:
-        out = [float(self.q_out[i])]
-        out += [float(x) for x in self.q_mid[i] if not np.isnan(x)]
-        if not np.isnan(self.q_in[i]):
-            out.append(float(self.q_in[i]))
+        q_in = float(self.q_in[i])
+        out = [float(self.q_out[i]), *(x for x in self.q_mid[i].tolist() if not math.isnan(x))]
+        if not math.isnan(q_in):
+            out.append(q_in)
         return out
 
 

@@ -135,6 +135,7 @@ def pareto(
         "stages": len(design.stages),
     }
     dominating = None if point is None else point.as_dict()
+    stages = space.stages[shown].tolist()
     trace.apply(
         wavegear_rules.compare_with_front,
         int(front.size),
@@ -149,13 +150,13 @@ def pareto(
         front_size=int(front.size),
         adopted="on the front" if point is None else "dominated",
         dominated_by=point,
-        stages=[int(space.stages[i]) for i in shown],
-        ratios=[space.ratios_out_to_in(int(i)) for i in shown],
-        rows_out=[int(space.rows_out[i]) for i in shown],
-        mass_kg=[float(space.mass_kg[i]) for i in shown],
-        outer_diameter_mm=[float(space.outer_diameter_mm[i]) for i in shown],
-        length_mm=[float(space.length_mm[i]) for i in shown],
-        efficiency=[eta ** int(space.stages[i]) for i in shown],
+        stages=stages,
+        ratios=[space.ratios_out_to_in(i) for i in shown.tolist()],
+        rows_out=space.rows_out[shown].tolist(),
+        mass_kg=space.mass_kg[shown].tolist(),
+        outer_diameter_mm=space.outer_diameter_mm[shown].tolist(),
+        length_mm=space.length_mm[shown].tolist(),
+        efficiency=[eta**n for n in stages],
     )
 
 
