@@ -8,6 +8,7 @@ files and a changed input shows as a readable diff.
 import copy
 import inspect
 import math
+import re
 from typing import Any, ClassVar
 
 from advisor.calc.checks import Check
@@ -229,18 +230,34 @@ class NonFiniteValue(ValueError):
 
 
 def float_text(x: float) -> str:
-    """``repr(round_sig(x))`` in one formatting: ``format(x, ".6g")`` rounds as
-    :func:`round_sig` does (correctly, to six significant digits) and differs from ``repr``
-    only in its layout: no ``.0`` on a whole number, an exponent from 10⁶ on (``repr``'s from
-    10¹⁶), and those few are read back. ``tests/unit/test_report.py`` holds it to ``repr``.
+    """``repr(round_sig(x))`` in one formatting: ``format(x, ".6")`` rounds as
+    :func:`round_sig` does (correctly, to six significant digits) and writes what ``repr``
+    writes but where it writes an exponent (from 10⁵ on, ``repr`` from 10¹⁶; a subnormal
+    number's digits beyond its precision); those few are read back.
+    ``tests/unit/test_report_float_text.py`` holds it to ``repr``.
 
     >>> float_text(5.084934), float_text(1200.0), float_text(1234567.0), float_text(1.5e-5)
     ('5.08493', '1200.0', '1234570.0', '1.5e-05')
     """
-    s = f"{x:.6g}"
-    if "e" in s:
-        return repr(float(s))
-    return s if "." in s else s + ".0"
+    s = f"{x:.6}"
+    return repr(float(s)) if "e" in s else s
+
+
+_EXPONENT = re.compile(r"[-+.\d]+e[-+]\d+")
+
+
+def floats_text(xs: list[float], sep: str) -> str:
+    """``sep.join(map(float_text, xs))`` in one formatting call for the whole array (a curve
+    is hundreds of numbers); the numbers written with an exponent are read back as
+    :func:`float_text` reads them (``sep`` holds no digit, sign or point: TOML's ``",\\n    "``)."""
+    text = sep.join(["{:.6}"] * len(xs)).format(*xs)
+    if "e" not in text:
+        return text
+    return _EXPONENT.sub(lambda m: repr(float(m.group())), text)
+
+
+#: The report's floats in TOML: rounded as they are written.
+ROUNDED_FLOATS = toml_text.Floats(float_text, floats_text)
 
 
 def plain_data(obj: Any, rounded: bool = True) -> Any:
@@ -454,7 +471,7 @@ def to_toml(report: Report) -> str:
     end, as tomli-w writes it (:mod:`advisor.core.toml_text` writes the same bytes faster)."""
     # rounded as written: one formatting per number instead of a round() and a str()
     doc = archive(plain_data(report, rounded=False), none_dropped=True)
-    return toml_text.dumps(doc, float_text)
+    return toml_text.dumps(doc, ROUNDED_FLOATS)
 
 
 def to_json(report: Report) -> str:

@@ -13,7 +13,7 @@ documents.
 
 import re
 from collections.abc import Callable
-from typing import Any
+from typing import Any, NamedTuple
 
 #: tomli-w's: a line of an inline array of tables holds at most this many characters.
 MAX_LINE_LENGTH = 100
@@ -49,69 +49,82 @@ def key(part: str) -> str:
     return out
 
 
-#: How a float is written: tomli-w's ``str``, or a formatter given to :func:`dumps`.
-FloatText = Callable[[float], str]
+def _joined_str(xs: list[float], sep: str) -> str:
+    return sep.join(map(str, xs))
 
 
-def literal(obj: Any, nest: int = 0, ftext: FloatText = str) -> str:
+class Floats(NamedTuple):
+    """How floats are written: ``one(x)`` a float, ``many(xs, sep)`` the floats of an array
+    joined by ``sep`` (what ``sep.join(map(one, xs))`` writes, in fewer calls: a curve is
+    hundreds of them). tomli-w's ``str`` by default."""
+
+    one: Callable[[float], str] = str
+    many: Callable[[list[float], str], str] = _joined_str
+
+
+TOMLI_W = Floats()
+
+
+def literal(obj: Any, nest: int = 0, floats: Floats = TOMLI_W) -> str:
     """A value on the right of ``=`` (arrays one item a line, indented by ``nest``)."""
     t = type(obj)
     if t is str:
         return string(obj)
     if t is float:
-        return ftext(obj)
+        return floats.one(obj)
     if t is int:
         return str(obj)
     if t is bool:
         return "true" if obj else "false"
     if t is list or t is tuple:
-        return array(obj, nest, ftext)
+        return array(obj, nest, floats)
     if t is dict:
-        return inline_table(obj, ftext)
+        return inline_table(obj, floats)
     if isinstance(obj, bool):
         return "true" if obj else "false"
     if isinstance(obj, float):
-        return ftext(obj)
+        return floats.one(obj)
     if isinstance(obj, int):
         return str(obj)
     if isinstance(obj, str):
         return string(obj)
     if isinstance(obj, list | tuple):
-        return array(list(obj), nest, ftext)
+        return array(list(obj), nest, floats)
     if isinstance(obj, dict):
-        return inline_table(obj, ftext)
+        return inline_table(obj, floats)
     raise TypeError(f"Object of type '{type(obj).__qualname__}' is not TOML serializable")
 
 
-def array(obj: list | tuple, nest: int = 0, ftext: FloatText = str) -> str:
+def array(obj: list | tuple, nest: int = 0, floats: Floats = TOMLI_W) -> str:
     """An array, one item a line. An array of one kind of value (a curve of floats, a list of
     words) is written in one join, as :func:`literal` writes each item."""
     if not obj:
         return "[]"
     inner = INDENT * (nest + 1)
     kinds = set(map(type, obj))  # one pass in C: a curve is hundreds of floats
+    sep = f",\n{inner}"
     if kinds == _FLOAT:
-        items = map(ftext, obj)
+        items = floats.many(obj, sep)
     elif kinds == _STR:
-        items = map(string, obj)
+        items = sep.join(map(string, obj))
     else:
-        items = (literal(x, nest + 1, ftext) for x in obj)
-    return f"[\n{inner}" + f",\n{inner}".join(items) + f",\n{INDENT * nest}]"
+        items = sep.join(literal(x, nest + 1, floats) for x in obj)
+    return f"[\n{inner}{items},\n{INDENT * nest}]"
 
 
-def inline_table(obj: dict, ftext: FloatText = str) -> str:
+def inline_table(obj: dict, floats: Floats = TOMLI_W) -> str:
     if not obj:
         return "{}"
-    return "{ " + ", ".join(f"{key(k)} = {literal(v, 0, ftext)}" for k, v in obj.items()) + " }"
+    return "{ " + ", ".join(f"{key(k)} = {literal(v, 0, floats)}" for k, v in obj.items()) + " }"
 
 
-def _inline_tables(tables: list | tuple, ftext: FloatText) -> str | None:
+def _inline_tables(tables: list | tuple, floats: Floats) -> str | None:
     """An array of tables written inline, each on its line, as tomli-w writes one when every
     table fits on a line of :data:`MAX_LINE_LENGTH`; None when one does not (it is written
     as ``[[name]]`` tables)."""
     texts = []
     for t in tables:
-        text = inline_table(t, ftext)
+        text = inline_table(t, floats)
         if len(text) > MAX_LINE_LENGTH - len(INDENT) - 1 or "\n" in text:  # indent + text + ","
             return None
         texts.append(text)
@@ -124,11 +137,11 @@ def _is_aot(v: Any) -> bool:
 
 
 def _table(
-    table: dict, out: list[str], name: str, ftext: FloatText, inside_aot: bool = False
+    table: dict, out: list[str], name: str, floats: Floats, inside_aot: bool = False
 ) -> None:
     literals: list[str] = []
     tables: list[tuple[str, dict, bool]] = []
-    keys, needs_escape = _keys, _ILLEGAL.search
+    keys, needs_escape, one = _keys, _ILLEGAL.search, floats.one
     for k, v in table.items():
         t = type(v)  # the scalars first, as key() and literal() write them: most values are
         if t is str:
@@ -138,19 +151,19 @@ def _table(
             else:
                 literals.append(f"{key_text} = {string(v)}\n")
         elif t is float:
-            literals.append(f"{keys.get(k) or key(k)} = {ftext(v)}\n")
+            literals.append(f"{keys.get(k) or key(k)} = {one(v)}\n")
         elif t is int:
             literals.append(f"{keys.get(k) or key(k)} = {v}\n")
         elif isinstance(v, dict):
             tables.append((k, v, False))
         elif isinstance(v, list | tuple) and _is_aot(v):
-            text = _inline_tables(v, ftext)
+            text = _inline_tables(v, floats)
             if text is None:
                 tables.extend((k, t, True) for t in v)
             else:
                 literals.append(f"{key(k)} = {text}\n")
         else:
-            literals.append(f"{key(k)} = {literal(v, 0, ftext)}\n")
+            literals.append(f"{key(k)} = {literal(v, 0, floats)}\n")
     yielded = False
     if inside_aot or (name and (literals or not tables)):
         yielded = True
@@ -164,13 +177,13 @@ def _table(
         else:
             yielded = True
         part = key(k)
-        _table(v, out, f"{name}.{part}" if name else part, ftext, in_aot)
+        _table(v, out, f"{name}.{part}" if name else part, floats, in_aot)
 
 
-def dumps(doc: dict, ftext: FloatText = str) -> str:
-    """``doc`` as TOML text, as ``tomli_w.dumps(doc)`` writes it; with ``ftext`` each float
-    is written as ``ftext`` says (:func:`advisor.core.report.float_text`: rounded as it is
-    written, in one formatting per number)."""
+def dumps(doc: dict, floats: Floats = TOMLI_W) -> str:
+    """``doc`` as TOML text, as ``tomli_w.dumps(doc)`` writes it; with ``floats`` each float
+    is written as it says (:func:`advisor.core.report.float_text`: rounded as it is written,
+    in one formatting per number)."""
     out: list[str] = []
-    _table(doc, out, "", ftext)
+    _table(doc, out, "", floats)
     return "".join(out)

@@ -32,3 +32,15 @@ def test_float_text_is_the_rounded_number_as_repr_writes_it():
 def test_to_toml_is_the_rounded_report_as_tomli_w_writes_it(example):
     report = advise(read_requirements(example))
     assert to_toml(report) == toml_text.dumps(archive(plain_data(report)))
+
+
+def test_floats_text_writes_an_array_as_float_text_writes_each_number():
+    """The whole-array formatting (one call for a curve) against float_text, item by item:
+    around every power of ten, the ties, subnormals, signed zeros and large whole numbers."""
+    from advisor.core.report import floats_text
+
+    values = [*_values(), 5e-324, -5e-324, 2.2250738585072014e-308, 1e300, -1e-300]
+    sep = ",\n        "
+    assert floats_text(values, sep) == sep.join(map(float_text, values))
+    for x in values:
+        assert floats_text([x], sep) == float_text(x), x
