@@ -336,7 +336,6 @@ class ScrewDemand:
         """:func:`screen_threads` of every thread under this demand."""
         out = []
         for g in geometries:
-            max_speed = _max_speed_rpm(g.d3_m, self.span_m, self.end_fixity, self.material)
             if not _holds_the_load(g, self):
                 nan = math.nan
                 out.extend(
@@ -344,6 +343,7 @@ class ScrewDemand:
                     for z in starts_options
                 )
                 continue
+            max_speed = _max_speed_rpm(g.d3_m, self.span_m, self.end_fixity, self.material)
             out.extend(_screen_lead(g, z, self, max_speed) for z in starts_options)
         return out
 

@@ -116,19 +116,25 @@ def fastest_passing(
     if ok(fastest):
         return fastest, move_and_rms(d, path, fastest, t_cycle)[0]
     grid = _grid(d, fastest)
-    flags = [ok(i) for i in grid]
+    moves, flags = [], []  # each grid point evaluated once: its move time and its verdict
+    for i in grid:
+        t, r = move_and_rms(d, path, i, t_cycle)
+        moves.append(t)
+        flags.append(t <= t_cycle and r <= rated)
     best: tuple[float, float] | None = None
     for k, i in enumerate(grid):
         if not flags[k]:
             continue
-        cands = [i]
+        if best is None or moves[k] < best[1]:
+            best = (i, moves[k])
+        edges = []
         if k > 0 and not flags[k - 1]:
-            cands.append(_refine(ok, i, grid[k - 1]))
+            edges.append(_refine(ok, i, grid[k - 1]))
         if k + 1 < len(grid) and not flags[k + 1]:
-            cands.append(_refine(ok, i, grid[k + 1]))
-        for c in cands:
+            edges.append(_refine(ok, i, grid[k + 1]))
+        for c in edges:
             t = move_and_rms(d, path, c, t_cycle)[0]
-            if best is None or t < best[1]:
+            if t < best[1]:
                 best = (c, t)
     return best
 
