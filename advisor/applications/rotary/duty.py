@@ -335,7 +335,7 @@ def evaluate(
             f"{speed_rpm:g} rpm: peak torque {peak:.4g} N·m above {peak_limit:.4g} N·m "
             f"({req.duty.peak_torque_factor:g} × the continuous {frame.continuous_torque():.4g})"
         )
-    losses = [(sum(frame.phase_losses(p)), p.time_s) for p in phases]
+    losses = [(c + k, dt) for (c, k), dt in parts]
     return CycleResult(phases, problems, copper, core, total, peak, peak_limit, losses)
 
 
