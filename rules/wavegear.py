@@ -40,6 +40,51 @@ def _output_diameter_factor(q: float, rows: int = 3) -> float:
 RATIO_REL_TOL = 1e-6
 
 
+class Split(NamedTuple):
+    """WG-02's split of a total ratio and the case of the seed's rules that gave it (the
+    rule's words follow the case): ``below`` one stage's minimum, ``one`` stage, ``between``
+    20 and 12·q_min (``one``/``two`` the options weighed and their D/∛M), ``two`` stages,
+    ``more`` stages, ``above`` four stages."""
+
+    ratios: list[float] | None
+    case: str
+    options: tuple[list[float] | None, list[float] | None, float, float] | None = None
+
+
+def split_of(total_ratio: float, q_min: float, q_max: float) -> Split:
+    """WG-02's split without its words: :func:`split_ratio` narrates it; the candidate speeds
+    and the loss curve ask it for tens of speeds an advice."""
+    q = total_ratio
+    lo, hi = Q_OUT_RANGE
+    # a ratio within RATIO_REL_TOL of a stage limit is at the limit: a speed typed as a round
+    # number (6400 rpm to 5 rpm: q = 20 × 64) must not change the stage count when rounding
+    # moves it by 1e-15, nor by a 1e-9 change of the requirement (a knife edge)
+    at_least_min = q_min * (1 - RATIO_REL_TOL)
+    at_most_max = q_max * (1 + RATIO_REL_TOL)
+    if q < at_least_min:
+        return Split(None, "below")
+    if q <= hi:
+        return Split([q], "one")
+    if q < lo * q_min:
+        one = [q] if q <= at_most_max else None
+        two = [q / q_min, q_min] if q / q_min >= at_least_min else None
+        d_one = _output_diameter_factor(q) if one else math.inf
+        d_two = _output_diameter_factor(q / q_min) if two else math.inf
+        return Split(one if d_one <= d_two else two, "between", (one, two, d_one, d_two))
+    if q <= Q_OUT_PREFERRED * at_most_max:
+        q_out = Q_OUT_PREFERRED if q / Q_OUT_PREFERRED >= at_least_min else q / q_min
+        return Split([q_out, q / q_out], "two")
+    for n in (3, 4):
+        rest = q / (Q_OUT_PREFERRED * Q_NEXT ** (n - 2))
+        if rest <= at_most_max:
+            mids = [Q_NEXT] * (n - 2)
+            if rest < at_least_min:  # lower the next stage to keep the input stage
+                mids[0] = Q_NEXT * rest / q_min
+                rest = q_min
+            return Split([Q_OUT_PREFERRED, *mids, rest], "more")
+    return Split(None, "above")
+
+
 @rule("WG-02", "Stage count and split of the ratio", SEED_000 + TEXTBOOK)
 def split_ratio(total_ratio: float, q_min: float, q_max: float) -> Finding[list[float] | None]:
     """Output stage q_out = 20 (12…20 gives the smallest outer diameter), the stage next to
@@ -50,116 +95,123 @@ def split_ratio(total_ratio: float, q_min: float, q_max: float) -> Finding[list[
     q_Σ = 12 one stage is all there is (q_out < 12); between 20 and 12·q_min (≈ 78) neither
     one stage (q_out = q_Σ > 20) nor two (q_out = q_Σ/q_min < 12) keeps q_out within 12…20,
     and the option with the smaller outer diameter (eqs. (13), (16), three rows) is taken,
-    the reason the seed gives for its 12…20."""
+    the reason the seed gives for its 12…20. The split is :func:`split_of`'s."""
     q = total_ratio
     lo, hi = Q_OUT_RANGE
-    # a ratio within RATIO_REL_TOL of a stage limit is at the limit: a speed typed as a round
-    # number (6400 rpm to 5 rpm: q = 20 × 64) must not change the stage count when rounding
-    # moves it by 1e-15, nor by a 1e-9 change of the requirement (a knife edge)
-    at_least_min = q_min * (1 - RATIO_REL_TOL)
-    at_most_max = q_max * (1 + RATIO_REL_TOL)
-    if q < at_least_min:
+    split, case, options = split_of(q, q_min, q_max)
+    if case == "below":
         return Finding(
             None,
             f"No reducer: the total ratio {q:.4g} is below one stage's minimum {q_min:g}.",
             "Eq. (14) leaves no bore below q ≈ 6.45.",
         )
-    if q <= hi:
+    if case == "one":
         if q >= lo:
             return Finding(
-                [q],
+                split,
                 f"One stage, q = {q:.4g}.",
                 "The whole ratio fits one output stage.",
-                {"ratios": [q]},
+                {"ratios": split},
             )
         return Finding(
-            [q],
+            split,
             f"One stage, q = {q:.4g}: the rule q_out = {lo:g}…{hi:g} gives way.",
             f"q_Σ = {q:.4g} is below {lo:g}, so one stage carries the whole ratio and its "
             f"q_out lies below the seed's {lo:g}…{hi:g}; a second stage would need a ratio "
             f"below the minimum {q_min:g} (eq. (14)).",
-            {"ratios": [q]},
+            {"ratios": split},
         )
-    if q < lo * q_min:
-        one = [q] if q <= at_most_max else None
-        two = [q / q_min, q_min] if q / q_min >= at_least_min else None
-        d_one = _output_diameter_factor(q) if one else math.inf
-        d_two = _output_diameter_factor(q / q_min) if two else math.inf
-        if d_one <= d_two:
-            split = one
-            decision = f"One stage, q = {q:.4g}: the rule q_out = {lo:g}…{hi:g} gives way."
-        else:
-            split = two
-            decision = (
-                f"Two stages: q_out = {q / q_min:.4g}, q1 = {q_min:g}: the rule "
-                f"q_out = {lo:g}…{hi:g} gives way."
-            )
-        alternatives = []
-        if one:
-            alternatives.append(f"one stage (q_out = {q:.4g} > {hi:g}): D = {d_one:.4g}·∛M")
-        if two:
-            alternatives.append(
-                f"two stages with the input stage at its minimum {q_min:g} "
-                f"(q_out = {q / q_min:.4g} < {lo:g}): D = {d_two:.4g}·∛M"
-            )
-        return Finding(
-            split,
-            decision,
-            f"q_Σ = {q:.4g} lies between {hi:g} and {lo:g} × {q_min:g} = {lo * q_min:.4g}: "
-            f"no split keeps q_out within {lo:g}…{hi:g} and every stage at or above "
-            f"{q_min:g} (eq. (14)). The seed keeps q_out within {lo:g}…{hi:g} for the "
-            "smallest outer diameter, so the option with the smaller outer diameter "
-            "(eqs. (13), (16), three rows at the output) is taken: "
-            + "; ".join(alternatives)
-            + ".",
-            {
-                "ratios": split,
-                "outer_diameter_per_cbrt_torque": {
-                    k: v for k, v in (("one", d_one), ("two", d_two)) if math.isfinite(v)
-                },
-            },
-        )
-    if q <= Q_OUT_PREFERRED * at_most_max:
-        q_out = Q_OUT_PREFERRED if q / Q_OUT_PREFERRED >= at_least_min else q / q_min
-        split = [q_out, q / q_out]
+    if case == "between":
+        assert options is not None
+        return _between(q, q_min, split, *options)
+    if case == "two":
+        assert split is not None
+        q_out, q_in = split
         why = (
             f"q_Σ = {q:.4g} needs two stages: the output stage takes q_out = {q_out:.4g} "
             f"(seed 000: {lo:g}…{hi:g} gives the smallest outer diameter, 20 preferred), the "
-            f"input stage the remaining {q / q_out:.4g} (within {q_min:g}…{q_max:g})."
+            f"input stage the remaining {q_in:.4g} (within {q_min:g}…{q_max:g})."
         )
         return Finding(
             split,
-            f"Two stages: q_out = {q_out:.4g}, q1 = {q / q_out:.4g}.",
+            f"Two stages: q_out = {q_out:.4g}, q1 = {q_in:.4g}.",
             why,
             {"ratios": split},
         )
-    for n in (3, 4):
-        rest = q / (Q_OUT_PREFERRED * Q_NEXT ** (n - 2))
-        if rest <= at_most_max:
-            mids = [Q_NEXT] * (n - 2)
-            gave_way = ""
-            if rest < at_least_min:  # lower the next stage to keep the input stage
-                mids[0] = Q_NEXT * rest / q_min
-                gave_way = (
-                    f" The remainder {rest:.4g} is below the minimum {q_min:g} (eq. (14)), so "
-                    f"the seed's {Q_NEXT:g} for the stage next to the output gives way: it "
-                    f"takes {mids[0]:.4g} and the input stage {q_min:g}."
-                )
-                rest = q_min
-            split = [Q_OUT_PREFERRED, *mids, rest]
-            names = ", ".join(f"{x:.4g}" for x in split)
-            return Finding(
-                split,
-                f"{n} stages: q = {names} (output first).",
-                f"q_Σ = {q:.4g} exceeds what {n - 1} stages give; seed 000 takes "
-                f"q_out = 20, the next stage {Q_NEXT:g} and gives the remainder to the input "
-                f"stage." + gave_way,
-                {"ratios": split},
-            )
+    if case == "more":
+        assert split is not None
+        return _more(q, q_min, split)
     return Finding(
         None,
         f"No reducer of up to four stages reaches q_Σ = {q:.4g}.",
         f"Four stages give at most 20 × 12² × {q_max:g}.",
+    )
+
+
+def _between(
+    q: float,
+    q_min: float,
+    split: list[float] | None,
+    one: list[float] | None,
+    two: list[float] | None,
+    d_one: float,
+    d_two: float,
+) -> Finding[list[float] | None]:
+    """WG-02's words where q_Σ lies between 20 and 12·q_min: no split keeps q_out within
+    12…20, the option with the smaller outer diameter is taken."""
+    lo, hi = Q_OUT_RANGE
+    if d_one <= d_two:  # as split_of decides
+        decision = f"One stage, q = {q:.4g}: the rule q_out = {lo:g}…{hi:g} gives way."
+    else:
+        decision = (
+            f"Two stages: q_out = {q / q_min:.4g}, q1 = {q_min:g}: the rule "
+            f"q_out = {lo:g}…{hi:g} gives way."
+        )
+    alternatives = []
+    if one:
+        alternatives.append(f"one stage (q_out = {q:.4g} > {hi:g}): D = {d_one:.4g}·∛M")
+    if two:
+        alternatives.append(
+            f"two stages with the input stage at its minimum {q_min:g} "
+            f"(q_out = {q / q_min:.4g} < {lo:g}): D = {d_two:.4g}·∛M"
+        )
+    return Finding(
+        split,
+        decision,
+        f"q_Σ = {q:.4g} lies between {hi:g} and {lo:g} × {q_min:g} = {lo * q_min:.4g}: "
+        f"no split keeps q_out within {lo:g}…{hi:g} and every stage at or above "
+        f"{q_min:g} (eq. (14)). The seed keeps q_out within {lo:g}…{hi:g} for the "
+        "smallest outer diameter, so the option with the smaller outer diameter "
+        "(eqs. (13), (16), three rows at the output) is taken: " + "; ".join(alternatives) + ".",
+        {
+            "ratios": split,
+            "outer_diameter_per_cbrt_torque": {
+                k: v for k, v in (("one", d_one), ("two", d_two)) if math.isfinite(v)
+            },
+        },
+    )
+
+
+def _more(q: float, q_min: float, split: list[float]) -> Finding[list[float] | None]:
+    """WG-02's words for three or four stages: q_out = 20, the next stage 12 (lowered where
+    the input stage would fall below its minimum), the remainder to the input stage."""
+    n = len(split)
+    rest = q / (Q_OUT_PREFERRED * Q_NEXT ** (n - 2))
+    gave_way = ""
+    if rest < q_min * (1 - RATIO_REL_TOL):  # as split_of decides
+        gave_way = (
+            f" The remainder {rest:.4g} is below the minimum {q_min:g} (eq. (14)), so "
+            f"the seed's {Q_NEXT:g} for the stage next to the output gives way: it "
+            f"takes {split[1]:.4g} and the input stage {q_min:g}."
+        )
+    names = ", ".join(f"{x:.4g}" for x in split)
+    return Finding(
+        split,
+        f"{n} stages: q = {names} (output first).",
+        f"q_Σ = {q:.4g} exceeds what {n - 1} stages give; seed 000 takes "
+        f"q_out = 20, the next stage {Q_NEXT:g} and gives the remainder to the input "
+        f"stage." + gave_way,
+        {"ratios": split},
     )
 
 

@@ -122,10 +122,10 @@ def _loss_optimum_Hz(at_ref: SpeedCandidate, req: Requirements, params, pole_pai
     for _ in range(4):
         n = f_opt * 60.0 / pole_pairs
         q = n / req.rotary.speed_rpm
-        split = wavegear_rules.split_ratio(q, reducer.STAGE_RATIO_MIN, reducer.STAGE_RATIO_MAX)
-        if not split.value:
+        split = wavegear_rules.split_of(q, reducer.STAGE_RATIO_MIN, reducer.STAGE_RATIO_MAX)
+        if not split.ratios:
             break
-        adopted = params.stage_efficiency ** stage_count(q, split.value, req, params)
+        adopted = params.stage_efficiency ** stage_count(q, split.ratios, req, params)
         if adopted == eta:
             break
         ohmic, eta = ohmic * (eta / adopted) ** 2, adopted

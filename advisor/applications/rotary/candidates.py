@@ -105,9 +105,9 @@ def speed_candidate(
     rot = req.rotary
     ref = model.ref
     q_total = n / rot.speed_rpm
-    split = wavegear_rules.split_ratio(
+    split = wavegear_rules.split_of(
         q_total, reducer.STAGE_RATIO_MIN, reducer.STAGE_RATIO_MAX
-    ).value
+    ).ratios
     stages = stage_count(q_total, split, req, params) if split else 0
     eta = params.stage_efficiency**stages if stages else math.nan
     # the holding device's driving loss is the motor's too: it gives 1/η_d times the torque
