@@ -291,12 +291,15 @@ def _plain_fast(obj: Any, rounded: bool) -> Any:
     if t is str or t is int or t is bool:
         return obj
     if t is list or t is tuple:
-        if obj and set(map(type, obj)) == _FLOAT:  # a curve: checked in C, no call per item
+        kinds = set(map(type, obj))  # one pass in C: a curve is hundreds of floats
+        if kinds == _FLOAT:  # a curve: checked without a call per item
             if not all(map(_isfinite, obj)):
                 raise NonFiniteValue("a report value is not a finite number")
             if not rounded:
                 return list(obj)
             return [round(v, 5 - _floor(_log10(abs(v)))) if v else v for v in obj]
+        if kinds <= _KEPT:  # words, counts: as they are
+            return list(obj)
         return [_plain_fast(v, rounded) for v in obj if v is not None]
     # in tables, words, counts and flags are kept without a call: they are most of the values
     if t is dict:
