@@ -231,9 +231,10 @@ class NonFiniteValue(ValueError):
 
 def float_text(x: float) -> str:
     """``repr(round_sig(x))`` in one formatting: ``format(x, ".6")`` rounds as
-    :func:`round_sig` does (correctly, to six significant digits) and writes what ``repr``
-    writes but where it writes an exponent (from 10⁵ on, ``repr`` from 10¹⁶; a subnormal
-    number's digits beyond its precision); those few are read back.
+    :func:`round_sig` does (correctly, to six significant digits) and writes the rounded
+    number as ``repr`` does, but where it writes an exponent (from 10⁵ on where ``repr``
+    waits for 10¹⁶; a subnormal number's digits beyond its precision): those few are read
+    back.
     ``tests/unit/test_report_float_text.py`` holds it to ``repr``.
 
     >>> float_text(5.084934), float_text(1200.0), float_text(1234567.0), float_text(1.5e-5)
