@@ -215,6 +215,9 @@ _PLAIN = re.compile(r"[+-]?(?:[0-9]+(?:\.[0-9]*)?|\.[0-9]+)(?:[eE][+-]?[0-9]+)?"
 _WHOLE = re.compile(r"[+-]?[0-9]+", re.ASCII)
 #: One item of a list box: in double quotes, as a file writes a string (``"3,5 rpm"`` stays
 #: one item; a quote inside is doubled), or bare up to the next comma or semicolon.
+#: A whole number, a comma and a number with its unit, no space between: "3,5 rpm" typed in
+#: a list is a decimal comma, not the items 3 and 5 rpm.
+_DECIMAL_COMMA = re.compile(r"[+-]?[0-9]+,[0-9][^,;]*", re.ASCII)
 _ITEM = re.compile(r'[ \t]*(?:"((?:[^"]|"")*)"[ \t]*|([^,;"][^,;]*)?)(?:[,;]|$)')
 
 
@@ -262,13 +265,14 @@ def quantity(field: Field, text: str) -> float:
 
 def list_items(text: str) -> list[tuple[str, bool]] | None:
     """The items of a list box's text, each with whether it was quoted; None when a quote
-    is not closed or text follows a closing quote.
+    is not closed or text follows a closing quote. A decimal comma before a unit, ``3,5 rpm``
+    with no space, is one item (refused as a file refuses it), not 3 and 5 rpm.
 
-    >>> list_items('3000 rpm; "3,5 rpm",, 5000')
-    [('3000 rpm', False), ('3,5 rpm', True), ('5000', False)]
+    >>> list_items('3000 rpm; "3,5 rpm",, 5000, 3,5 rpm')
+    [('3000 rpm', False), ('3,5 rpm', True), ('5000', False), ('3,5 rpm', False)]
     """
     items: list[tuple[str, bool]] = []
-    pos = 0
+    pos, bare_from = 0, -1  # where the previous bare item begins (-1: it was not bare)
     while pos < len(text):
         m = _ITEM.match(text, pos)
         if m is None:
@@ -277,8 +281,15 @@ def list_items(text: str) -> list[tuple[str, bool]] | None:
         if quoted is not None:
             items.append((quoted.replace('""', '"'), True))
         elif bare is not None and bare.strip():
-            items.append((bare.strip(), False))
-        pos = m.end()
+            joined = text[bare_from : m.start(2) + len(bare.rstrip())] if bare_from >= 0 else ""
+            if _DECIMAL_COMMA.fullmatch(joined) and not _PLAIN.fullmatch(bare.strip()):
+                items[-1] = (joined, False)
+            else:
+                items.append((bare.strip(), False))
+            bare_from = m.start(2)
+            pos = m.end()
+            continue
+        bare_from, pos = -1, m.end()
     return items
 
 

@@ -125,6 +125,19 @@ def test_the_list_box_takes_items_as_a_files_array_does(text, want):
     assert fields.parse_text(_field("rotary", "motor.candidate_speeds_rpm"), text) == (want, None)
 
 
+@pytest.mark.parametrize("text", ["3000 rpm, 3,5 rpm", "3000 rpm,3,5 rpm", '3000 rpm, "3,5 rpm"'])
+def test_a_decimal_comma_typed_in_the_list_box_is_one_item_refused_as_the_batch_does(
+    text, tmp_path
+):
+    """Typed with no space before a unit, ``3,5 rpm`` is the item a file would hold, not the
+    items 3 and 5 rpm; the batch refuses ``["3000 rpm", "3,5 rpm"]`` in the same words."""
+    src = _rudder_with(SPEEDS, 'candidate_speeds_rpm = ["3000 rpm", "3,5 rpm"]', tmp_path)
+    (line,) = _batch_refusal(src)
+    value, err = fields.parse_text(_field("rotary", "motor.candidate_speeds_rpm"), text)
+    assert value is None
+    assert err == line.replace("motor.candidate_speeds_rpm[2]", "item 2")
+
+
 @pytest.mark.parametrize("text", ['"3,5 rpm', '"3000 rpm" 5'])
 def test_an_unclosed_quote_in_the_list_box_is_said(text):
     value, err = fields.parse_text(_field("rotary", "motor.candidate_speeds_rpm"), text)
@@ -150,6 +163,11 @@ async def test_a_loaded_comma_item_is_fixed_in_its_box_and_computed_as_the_batch
         await pilot.pause()
         assert app.results_version == 0
         box.focus()
+        box.value = ""
+        await pilot.press(*"3000 rpm, 3,5 rpm")
+        await pilot.pause()
+        said = wizard.text(app.query_one(f"{BOX}-err", Static))
+        assert "item 2 = '3,5 rpm'" in said and "',' is not allowed" in said
         box.value = ""
         await pilot.press(*'3000 rpm, "3500 rpm"')
         await pilot.pause()
