@@ -305,9 +305,9 @@ def _feasible_columns(chain: list[np.ndarray], rows: np.ndarray, block: _Block) 
         mids,
         chain[-1][ic] if n > 1 else np.full(ic.size, np.nan),
         rows[ir].astype(int),
-        block.outer_diameter_mm[ic, ir],
-        block.length_mm[ic, ir],
-        block.mass_kg[ic, ir],
+        block.outer_diameter_mm[block.fits],  # as np.nonzero orders them: (ic, ir)
+        block.length_mm[block.fits],
+        block.mass_kg[block.fits],
     )
 
 
