@@ -7,71 +7,14 @@ when asked, the report texts). The scheduler never sees a task per variant.
 
 import csv
 import io
-import json
 import time
-from typing import Any, NamedTuple
+from typing import NamedTuple
 
-from advisor.core.io_safety import printable
 from advisor.family.adapter import advise_one
+from advisor.family.cells import cell
 from advisor.family.outputs import COLUMNS, key_outputs
 from advisor.family.spec import Family
-
-HEAD = ("variant", "member", "application")
-TAIL = ("status", "exit_code", "reason")
-
-
-def columns(family: Family) -> list[str]:
-    """The header of designs.csv: variant, member, application, axes, status, outputs."""
-    return [*HEAD, *(cell(k) for k in family.axis_keys()), *TAIL, *COLUMNS]
-
-
-#: A text cell starting with one of these is read as a formula by spreadsheets (OWASP,
-#: "CSV Injection": = + - @, tab and carriage return).
-FORMULA_START = ("=", "+", "-", "@", "\t", "\r")
-
-
-def neutral(text: str) -> str:
-    """Text as a spreadsheet shows it but never evaluates it: a cell that would start a
-    formula gets a leading single quote (OWASP CSV injection guidance). Text that already
-    starts with quotes before such a character gets one more, so :func:`uncell` gives every
-    text back exactly.
-
-    >>> neutral("=1+1"), neutral("@SUM(A1)"), neutral("-x"), neutral("bldc 3000 rpm")
-    ("'=1+1", "'@SUM(A1)", "'-x", 'bldc 3000 rpm')
-    """
-    return "'" + text if text.lstrip("'").startswith(FORMULA_START) else text
-
-
-def uncell(text: str) -> str:
-    """The text of a cell written by :func:`cell` (the neutralising quote removed).
-
-    >>> uncell("'=1+1"), uncell("''=x"), uncell("'quoted"), uncell("-5")
-    ('=1+1', "'=x", "'quoted", '-5')
-    """
-    if text.startswith("'") and text.lstrip("'").startswith(FORMULA_START):
-        return text[1:]
-    return text
-
-
-def cell(value: Any) -> str:
-    """A CSV cell: blank for none, numbers as Python writes them (``-5`` stays a number),
-    lists as JSON, text neutralised against spreadsheet formulas (:func:`neutral`)."""
-    kind = type(value)
-    if kind is str:  # the common cases first: a cell per column of every variant
-        return neutral(printable(value, newlines=False))
-    if kind is float or kind is int:
-        return str(value)
-    if value is None:
-        return ""
-    if isinstance(value, bool):
-        return "true" if value else "false"
-    if isinstance(value, int | float):
-        return str(value)
-    if isinstance(value, list | dict):
-        return neutral(json.dumps(value))
-    # a control character (a member named "a\x1b[2Jb") is written escaped: raw, it would
-    # reach a terminal that shows the CSV, or end a row in a reader that splits lines
-    return neutral(printable(str(value), newlines=False))
+from advisor.family.summary import Part, read_cells, read_positions, tally_rows
 
 
 def report_name(index: int) -> str:
@@ -82,7 +25,9 @@ class ChunkResult(NamedTuple):
     number: int
     rows: list[list[str]]
     reports: list[tuple[str, str]]  # (file name, report TOML) when asked for
-    seconds: float  # time spent advising, for the cost model
+    seconds: float  # the worker's time on the chunk (advice and tally), for the cost model
+    #: the chunk's summary, tallied while its rows are at hand (the command merges them)
+    parts: list[Part]
 
 
 class MemberCells(NamedTuple):
@@ -134,7 +79,9 @@ def run_chunk(
         )
         if o.text is not None:
             texts.append((report_name(index), o.text))
-    return ChunkResult(number, rows, texts, time.perf_counter() - t0)
+    at = read_positions(family)
+    parts = tally_rows(family, start, [read_cells(r, at) for r in rows])
+    return ChunkResult(number, rows, texts, time.perf_counter() - t0, parts)
 
 
 def rows_csv(rows: list[list[str]], header: list[str] | None = None) -> str:

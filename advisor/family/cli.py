@@ -382,8 +382,10 @@ def chunk_size(args: argparse.Namespace, family: Any, out: Path, workers: int) -
     )
 
 
-def compute(family: Any, out: Path, args: argparse.Namespace) -> tuple[Any, int, int]:
-    """Run the study's chunks; (what was done, the chunk size, the workers)."""
+def compute(family: Any, out: Path, args: argparse.Namespace, summary: Any) -> tuple[Any, int, int]:
+    """Run the study's chunks, each merged into ``summary`` (a
+    :class:`advisor.family.summary.SummaryBuilder`) as it arrives; (what was done, the
+    chunk size, the workers)."""
     from advisor.family.study import Progress, chunk_count, run_study
 
     runner, close = make_runner(args)
@@ -407,6 +409,7 @@ def compute(family: Any, out: Path, args: argparse.Namespace) -> tuple[Any, int,
             reports=args.reports,
             catalog_dir=args.catalog_dir,
             progress=progress,
+            summary=summary,
         )
     except BaseException:
         if progress is not None:
@@ -417,22 +420,32 @@ def compute(family: Any, out: Path, args: argparse.Namespace) -> tuple[Any, int,
     return res, size, workers
 
 
-def write_results(family: Any, out: Path, args: argparse.Namespace, extra: dict) -> dict:
-    """designs.csv (the chunks joined), then summary.toml and family.html from one pass
-    over its rows; the summary document. Each is built before any is replaced: a damaged
-    chunk or a failure leaves the folder's previous results as they were."""
+def new_summary(family: Any, args: argparse.Namespace) -> Any:
+    """The summary the chunks are merged into; it keeps the rows family.html plots."""
+    from advisor.family.summary import SummaryBuilder
+
+    keep = None
+    if not args.no_html:
+        from advisor.family.html import plot_points
+
+        keep = [plot_points(m) for m in family.members]
+    return SummaryBuilder(family, keep)
+
+
+def write_results(
+    family: Any, out: Path, args: argparse.Namespace, extra: dict, builder: Any
+) -> dict:
+    """designs.csv (the chunks joined), then summary.toml and family.html from the summary
+    merged chunk by chunk (``builder``; the chunks of an earlier run are merged as they are
+    joined); the summary document. Each is built before any is replaced: a damaged chunk or
+    a failure leaves the folder's previous results as they were."""
     from advisor.family.adapter import write_atomic
     from advisor.family.study import join_to_temp
-    from advisor.family.summary import build_summary, iter_rows, summary_text
+    from advisor.family.summary import summary_text
 
-    joined = join_to_temp(family, out, extra["chunk_size"])
+    joined = join_to_temp(family, out, extra["chunk_size"], builder)
     try:
-        keep = None
-        if not args.no_html:
-            from advisor.family.html import plot_points
-
-            keep = [plot_points(m) for m in family.members]
-        doc, pictures = build_summary(family, iter_rows(joined), extra, keep)
+        doc, pictures = builder.finish(extra)
         summary = summary_text(doc)
         page = None
         if not args.no_html:
@@ -451,9 +464,10 @@ def write_results(family: Any, out: Path, args: argparse.Namespace, extra: dict)
 
 def run(family: Any, out: Path, args: argparse.Namespace) -> int:
     t0 = time.perf_counter()
-    res, size, workers = compute(family, out, args)
+    summary = new_summary(family, args)
+    res, size, workers = compute(family, out, args, summary)
     extra = {"chunk_size": size, "chunks": res.chunks, "workers": workers}
-    c = write_results(family, out, args, extra)["counts"]
+    c = write_results(family, out, args, extra, summary)["counts"]
     designs = out / "designs.csv"
     print(
         f"{family.size} variants: {c['design']} designs, {c['infeasible']} infeasible, "

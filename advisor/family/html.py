@@ -8,8 +8,6 @@ from collections.abc import Iterator
 from pathlib import Path
 from typing import Any, NamedTuple
 
-import numpy as np
-
 from advisor.family import svg
 from advisor.family.outputs import NUMERIC
 from advisor.family.spec import Family, Member
@@ -143,11 +141,14 @@ def output_plots(member: Member, picture: Picture, cols: list[str]) -> list[str]
 def _status_grid(member: Member, picture: Picture) -> list[list[int]]:
     """The outcome (index into STATUS_COLOURS) over the first two axes, the others at their
     middle value: one row per value of the second axis."""
-    full = picture.status.reshape(tuple(len(a.values) for a in member.axes))
-    if len(member.axes) == 1:
-        return [full.tolist()]
-    mid = [len(a.values) // 2 for a in member.axes]
-    return np.asarray(full[(slice(None), slice(None), *mid[2:])]).T.tolist()
+    axes = member.axes
+    if len(axes) == 1:
+        return [list(picture.status)]
+    mid = [len(a.values) // 2 for a in axes]
+    return [
+        [picture.status[_local(member, [i, j, *mid[2:]])] for i in range(len(axes[0].values))]
+        for j in range(len(axes[1].values))
+    ]
 
 
 def status_map(member: Member, picture: Picture) -> str | None:

@@ -24,8 +24,10 @@ from pathlib import Path
 from typing import Any, NamedTuple, Protocol
 
 from advisor.family.adapter import InputError, write_atomic
-from advisor.family.chunks import ChunkResult, columns, rows_csv, run_chunk
+from advisor.family.cells import columns
+from advisor.family.chunks import ChunkResult, rows_csv, run_chunk
 from advisor.family.spec import Family
+from advisor.family.summary import SummaryBuilder
 
 MANIFEST = "study.json"
 #: (chunk number, first variant, variant after the last)
@@ -390,13 +392,15 @@ def run_study(
     progress: Progress | None = None,
     on_chunk: Callable[[int], None] | None = None,
     window: int | None = None,
+    summary: SummaryBuilder | None = None,
 ) -> StudyResult:
     """Compute every chunk not yet written in ``out_dir/chunks``; return what was done.
 
     ``client`` is a runner (:mod:`advisor.family.local`) or a Dask client (``window``: the
     tasks it keeps on the cluster, see :class:`DaskRunner`). ``on_chunk(n_written_this_run)``
     is called after each chunk is written (tests use it to interrupt a study or kill a
-    worker in mid-study).
+    worker in mid-study). ``summary``: merges each chunk computed (the others are merged
+    from their files when the chunks are joined, :func:`join_to_temp`).
     """
     n_chunks = chunk_count(family.size, chunk_size)
     done, done_variants = start_study(family, out_dir, chunk_size, reports, catalog_dir)
@@ -412,6 +416,9 @@ def run_study(
     try:
         for res in results:
             write_chunk(out_dir, res)
+            if summary is not None:
+                start = chunk_range(res.number, family.size, chunk_size)[0]
+                summary.add_result(res.number, start, res.rows, res.parts)
             computed += 1
             advise_s += res.seconds
             done_chunks += 1
@@ -506,16 +513,22 @@ def new_file(target: Path) -> tuple[int, Path]:
     return fd, tmp
 
 
-def join_to_temp(family: Family, out_dir: Path, chunk_size: int) -> Path:
+def join_to_temp(
+    family: Family, out_dir: Path, chunk_size: int, summary: SummaryBuilder | None = None
+) -> Path:
     """The header, then every chunk in order (each checked), in a temporary file beside
     DIR/designs.csv: the caller renames it over designs.csv once everything built from it
-    is valid. An InputError (nothing left behind) if a chunk is missing or damaged."""
+    is valid. An InputError (nothing left behind) if a chunk is missing or damaged.
+    ``summary``: merges the chunks it has not merged yet (written by an earlier run)."""
     fd, tmp = new_file(out_dir / "designs.csv")
     try:
         with os.fdopen(fd, "w", encoding="utf-8", newline="") as fh:
             fh.write(rows_csv([], columns(family)))
             for n in range(chunk_count(family.size, chunk_size)):
-                fh.write(read_chunk(out_dir, family, n, chunk_size))
+                text = read_chunk(out_dir, family, n, chunk_size)
+                if summary is not None:
+                    summary.add_text(n, chunk_range(n, family.size, chunk_size)[0], text)
+                fh.write(text)
             fh.flush()
             os.fsync(fh.fileno())
     except BaseException:

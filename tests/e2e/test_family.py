@@ -15,7 +15,7 @@ if not os.environ.get("CI"):  # CI installs the [family] extra: there a missing 
     pytest.importorskip("distributed", reason="install the extra: pip install -e '.[family]'")
 
 from advisor.cli import main
-from advisor.family.chunks import cell, columns
+from advisor.family.cells import cell, columns
 from advisor.family.outputs import COLUMNS, key_outputs
 from advisor.family.spec import axis_values, parse_family, read_family
 from advisor.family.study import join_chunks, run_study

@@ -30,7 +30,8 @@ from helpers import EXAMPLES
 from advisor.cli import main
 from advisor.core.errors import InputError
 from advisor.family import cli as family_cli
-from advisor.family.chunks import cell, neutral, rows_csv, run_chunk, uncell
+from advisor.family.cells import cell, neutral, uncell
+from advisor.family.chunks import rows_csv, run_chunk
 from advisor.family.spec import axis_values, parse_family, read_family
 from advisor.family.study import write_replace
 from advisor.family.summary import read_rows
@@ -458,7 +459,7 @@ def test_designs_csv_of_hostile_names_and_values(tmp_path):
     )
     family = read_family(fam)
     res = run_chunk(family, 0, 0, family.size, None, False)
-    from advisor.family.chunks import columns
+    from advisor.family.cells import columns
 
     text = rows_csv(res.rows, columns(family))
     raw = list(csv.reader(io.StringIO(text)))
