@@ -357,6 +357,7 @@ def plain(report: Report) -> dict[str, Any]:
 
 
 _NUMBER_TYPES = frozenset((float, int))  # exact types: a bool is no number here
+_SCALARS = frozenset((str, float, int, bool))
 
 
 def _numbers(v: Any) -> bool:
@@ -401,6 +402,9 @@ def _lift(node: Any, path: str, curves: dict[str, Any]) -> Any:
             curves[path] = part
         out = {}
         for k, v in node.items():
+            if type(v) in _SCALARS:  # most values: never a curve, kept as they are
+                out[k] = v
+                continue
             if v is None or k in part:
                 continue
             if isinstance(v, dict) or (isinstance(v, list) and _holds_containers(v)):
