@@ -131,9 +131,9 @@ def _inline_tables(tables: list | tuple, floats: Floats) -> str | None:
     return "[\n" + "".join(f"{INDENT}{text},\n" for text in texts) + "]"
 
 
-def _is_aot(v: Any) -> bool:
-    """A non-empty array of tables (tomli-w's test)."""
-    return bool(v) and all(issubclass(kind, dict) for kind in set(map(type, v)))
+def _is_aot(v: list | tuple) -> bool:
+    """A non-empty array of tables (tomli-w's test; the first item tells most arrays)."""
+    return bool(v) and isinstance(v[0], dict) and all(isinstance(x, dict) for x in v)
 
 
 def _table(
@@ -156,12 +156,12 @@ def _table(
             literals.append(f"{keys.get(k) or key(k)} = {v}\n")
         elif isinstance(v, dict):
             tables.append((k, v, False))
-        elif isinstance(v, list | tuple) and _is_aot(v):
-            text = _inline_tables(v, floats)
-            if text is None:
+        elif isinstance(v, list | tuple):
+            text = _inline_tables(v, floats) if _is_aot(v) else array(v, 0, floats)
+            if text is None:  # tables too wide to be written inline: [[name]] tables
                 tables.extend((k, t, True) for t in v)
             else:
-                literals.append(f"{key(k)} = {text}\n")
+                literals.append(f"{keys.get(k) or key(k)} = {text}\n")
         else:
             literals.append(f"{key(k)} = {literal(v, 0, floats)}\n")
     yielded = False
