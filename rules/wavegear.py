@@ -126,18 +126,7 @@ def split_ratio(total_ratio: float, q_min: float, q_max: float) -> Finding[list[
         return _between(q, q_min, split, *options)
     if case == "two":
         assert split is not None
-        q_out, q_in = split
-        why = (
-            f"q_Σ = {q:.4g} needs two stages: the output stage takes q_out = {q_out:.4g} "
-            f"(seed 000: {lo:g}…{hi:g} gives the smallest outer diameter, 20 preferred), the "
-            f"input stage the remaining {q_in:.4g} (within {q_min:g}…{q_max:g})."
-        )
-        return Finding(
-            split,
-            f"Two stages: q_out = {q_out:.4g}, q1 = {q_in:.4g}.",
-            why,
-            {"ratios": split},
-        )
+        return _two(q, q_min, q_max, split)
     if case == "more":
         assert split is not None
         return _more(q, q_min, split)
@@ -189,6 +178,24 @@ def _between(
                 k: v for k, v in (("one", d_one), ("two", d_two)) if math.isfinite(v)
             },
         },
+    )
+
+
+def _two(q: float, q_min: float, q_max: float, split: list[float]) -> Finding[list[float] | None]:
+    """WG-02's words for two stages: q_out = 20 (or what keeps the input stage at its
+    minimum), the remainder to the input stage."""
+    lo, hi = Q_OUT_RANGE
+    q_out, q_in = split
+    why = (
+        f"q_Σ = {q:.4g} needs two stages: the output stage takes q_out = {q_out:.4g} "
+        f"(seed 000: {lo:g}…{hi:g} gives the smallest outer diameter, 20 preferred), the "
+        f"input stage the remaining {q_in:.4g} (within {q_min:g}…{q_max:g})."
+    )
+    return Finding(
+        split,
+        f"Two stages: q_out = {q_out:.4g}, q1 = {q_in:.4g}.",
+        why,
+        {"ratios": split},
     )
 
 
