@@ -62,6 +62,7 @@ class Floats(NamedTuple):
     many: Callable[[list[float], str], str] = _joined_str
 
 
+#: tomli-w's floats: ``str``.
 TOMLI_W = Floats()
 
 
