@@ -153,7 +153,8 @@ def test_more_force_never_gives_a_smaller_motor(data, forces):
 
 def _assert_missed_nothing(data, lighter_N, screw, lighter_drive):
     """The thread chosen under a heavier load, imposed under the lighter load ``lighter_N``:
-    infeasible there, or driven by a motor no smaller than the lighter load's own choice."""
+    infeasible there, or a drive (motor, then screw) no smaller than the lighter load's own
+    choice."""
     imposed = {
         **data,
         "linear": {**data["linear"], "force_N": lighter_N},
@@ -163,8 +164,9 @@ def _assert_missed_nothing(data, lighter_N, screw, lighter_drive):
     if rep is None or lighter_drive is None:
         assert rep is None, "a design the lighter load's choice called infeasible"
         return
-    m = rep["design"]["motor"]
-    assert (m["rated_power_kW"], m["rated_torque_Nm"]) >= lighter_drive[0], (lighter_drive, m)
+    m, s = rep["design"]["motor"], rep["design"]["screw"]
+    drive = ((m["rated_power_kW"], m["rated_torque_Nm"]), s["nominal_diameter_mm"])
+    assert drive >= lighter_drive, (lighter_drive, drive)
 
 
 def test_issue_repro_forces_give_a_monotonic_drive():
