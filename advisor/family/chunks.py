@@ -8,11 +8,12 @@ when asked, the report texts). The scheduler never sees a task per variant.
 import csv
 import io
 import time
-from typing import NamedTuple
+from collections.abc import Callable
+from typing import Any, NamedTuple
 
 from advisor.family.adapter import advise_one
 from advisor.family.cells import cell
-from advisor.family.outputs import COLUMNS, key_outputs
+from advisor.family.outputs import COLUMNS, reader
 from advisor.family.spec import Family
 from advisor.family.summary import Part, read_cells, read_positions, tally_rows
 
@@ -57,6 +58,7 @@ def run_chunk(
     """Advise variants ``start`` … ``stop - 1``."""
     t0 = time.perf_counter()
     cells = member_cells(family)
+    readers: dict[str, Callable[[dict[str, Any]], dict[str, Any]]] = {}  # per application
     blank = [""] * len(COLUMNS)
     rows, texts = [], []
     for index in range(start, stop):
@@ -65,7 +67,6 @@ def run_chunk(
         coords = member.coords(local)
         o = advise_one(member.requirement(coords), catalog_dir, with_text=reports)
         mc = cells[n]
-        outputs = key_outputs(o.report) if o.report is not None else None
         rows.append(
             [
                 str(index),
@@ -74,7 +75,7 @@ def run_chunk(
                 o.status,
                 str(int(o.exit_code)),
                 cell(o.reason),
-                *(blank if outputs is None else [cell(outputs.get(c)) for c in COLUMNS]),
+                *(blank if o.report is None else output_cells(o.report, readers)),
             ]
         )
         if o.text is not None:
@@ -82,6 +83,18 @@ def run_chunk(
     at = read_positions(family)
     parts = tally_rows(family, start, [read_cells(r, at) for r in rows])
     return ChunkResult(number, rows, texts, time.perf_counter() - t0, parts)
+
+
+def output_cells(report: dict[str, Any], readers: dict[str, Callable]) -> list[str]:
+    """The key-output cells of a report's row, in :data:`advisor.family.outputs.COLUMNS`
+    order (blank where the application gives none); ``readers``: the application's
+    :func:`advisor.family.outputs.reader` by kind, looked up once a chunk."""
+    kind = report["report"]["application"]
+    read = readers.get(kind)
+    if read is None:
+        read = readers[kind] = reader(kind)
+    outputs = read(report)
+    return ["" if (v := outputs.get(c)) is None else cell(v) for c in COLUMNS]
 
 
 def rows_csv(rows: list[list[str]], header: list[str] | None = None) -> str:

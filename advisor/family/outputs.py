@@ -7,6 +7,7 @@ an application without one gets its lowest margin only.
 The helpers below read the parts every report may have (the checks, a one-way device).
 """
 
+from collections.abc import Callable
 from typing import Any
 
 from advisor.core.registry import family_outputs
@@ -57,10 +58,16 @@ def one_way_mass_kg(design: dict[str, Any]) -> float:
     return (design.get("one_way") or {}).get("mass_kg", 0.0)
 
 
+def reader(kind: str) -> Callable[[dict[str, Any]], Row]:
+    """What reads an application's key outputs from its report: its own ``key_outputs``,
+    or the lowest margin alone (the columns it gives; the others are blank)."""
+    outputs = family_outputs(kind)
+    return outputs.key_outputs if outputs is not None else lowest_margin
+
+
 def key_outputs(report: dict[str, Any]) -> Row:
     """The key outputs of a report, every column present (None where not applicable)."""
-    outputs = family_outputs(report["report"]["application"])
-    row = outputs.key_outputs(report) if outputs is not None else lowest_margin(report)
+    row = reader(report["report"]["application"])(report)
     return {c: row.get(c) for c in COLUMNS}
 
 
