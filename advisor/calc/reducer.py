@@ -602,21 +602,24 @@ def _fewest_stages(result: SweepResult, cand: np.ndarray) -> np.ndarray:
     by_stage = cand[np.lexsort((result.stages[cand], result.rows_out[cand], result.q_out[cand]))]
     qo, rw = result.q_out[by_stage], result.rows_out[by_stage]
     cand = by_stage[np.r_[True, (qo[1:] != qo[:-1]) | (rw[1:] != rw[:-1])]]
-    order = np.lexsort(
-        (
-            result.stages[cand],
-            result.length_mm[cand],
-            result.outer_diameter_mm[cand],
-            result.mass_kg[cand],
+    mass = result.mass_kg[cand]
+    order = np.argsort(mass)  # distinct masses: the order of the lexsort below, faster
+    ascending = mass[order]
+    if (ascending[1:] == ascending[:-1]).any():  # equal masses: the other objectives decide
+        order = np.lexsort(
+            (result.stages[cand], result.length_mm[cand], result.outer_diameter_mm[cand], mass)
         )
-    )
     return cand[order]
 
 
 def _ranks(x: np.ndarray) -> np.ndarray:
     """Each value's rank among ``x`` (equal values, equal ranks) as small integers: they
     order exactly as the values do, and compare faster in the (block, block) arrays."""
-    return np.searchsorted(np.sort(x), x).astype(np.int16 if x.size < 2**15 else np.int32)
+    order = np.argsort(x)
+    ascending = x[order]
+    ranks = np.empty(x.size, np.int16 if x.size < 2**15 else np.int32)
+    ranks[order] = np.cumsum(np.concatenate(([False], ascending[1:] != ascending[:-1])))
+    return ranks
 
 
 def _covered(by: np.ndarray, points: np.ndarray) -> np.ndarray:
