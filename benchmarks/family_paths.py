@@ -1,8 +1,10 @@
 """The family study against a plain loop, and its memory against the number of variants.
 
-    python benchmarks/family_paths.py [--quick] [--only per_cpu,example,memory]
+    python benchmarks/family_paths.py [--quick] [--pairs N] [--only per_cpu,example,memory]
+        [--against CHECKOUT]
 
-Three measurements, each a child process per run, so that imports and start-up count:
+Three measurements, each a child process per run (started in a folder of its own), so
+that imports and start-up count:
 
 - ``per_cpu`` (and ``per_cpu_rotary``: 6,000 variants of the example's family, about 5 ms
   each): ``advisor family FAMILY --out DIR --no-html --quiet`` (worker processes on
@@ -19,6 +21,11 @@ Three measurements, each a child process per run, so that imports and start-up c
 The cheap family is positioning (examples/positioning_drive.toml with three log axes: travel,
 load inertia, load torque; about 0.6 ms a variant), where the study's own costs weigh most;
 the rotary one is the example's. Writes benchmarks/results/family_paths.json.
+
+``--against CHECKOUT`` (an older commit unpacked with ``git archive``) adds that checkout's
+study to every round of ``per_cpu`` and ``example``, the order rotating: its CPU over this
+one's, pair by pair, is the change's own effect, which a shared machine's load blurs less
+than two separate runs of the ratio to the loop.
 """
 
 import argparse
@@ -100,19 +107,27 @@ def valve_family(n: int, folder: Path) -> Path:
     return path
 
 
-def _child(code: str, args: list[str]) -> dict[str, Any]:
+def _child(code: str, args: list[str], checkout: Path | None = None) -> dict[str, Any]:
+    """Run ``code`` in a child (from a folder of its own: ``python -c`` puts the current
+    folder first on sys.path, where a checkout would hide ``checkout``'s advisor)."""
     env = {k: v for k, v in os.environ.items() if k != "PYTHONDONTWRITEBYTECODE"}
-    r = subprocess.run([PY, "-c", code, *args], capture_output=True, text=True, env=env)
+    if checkout is not None:
+        env["PYTHONPATH"] = str(checkout)
+    with tempfile.TemporaryDirectory() as here:
+        r = subprocess.run(
+            [PY, "-c", code, *args], capture_output=True, text=True, env=env, cwd=here
+        )
     last = r.stderr.strip().splitlines()[-1] if r.stderr.strip() else ""
     if not last.startswith("{"):
         raise RuntimeError(f"{args}: {r.stderr[-2000:]}")
     return json.loads(last)
 
 
-def run_study(family: Path, *options: str) -> dict[str, Any]:
-    """One study into a fresh folder; what its process used."""
+def run_study(family: Path, *options: str, checkout: Path | None = None) -> dict[str, Any]:
+    """One study into a fresh folder (the advisor of ``checkout``, e.g. an older commit's
+    ``git archive``, if given); what its process used."""
     with tempfile.TemporaryDirectory() as d:
-        m = _child(STUDY, [str(family), "--out", str(Path(d) / "out"), *options])
+        m = _child(STUDY, [str(family), "--out", str(Path(d) / "out"), *options], checkout)
     m["cpu_s"] = m["parent_cpu_s"] + m["workers_cpu_s"]
     return m
 
@@ -126,25 +141,44 @@ def _spread(xs: list[float]) -> dict[str, float]:
     return {"median": statistics.median(xs), "q1": q[0], "q3": q[2], "min": min(xs), "max": max(xs)}
 
 
-def paired(family: Path, pairs: int, *options: str) -> dict[str, Any]:
-    """Study and loop in turn (A B, B A, …); the ratios pair by pair."""
-    studies, loops = [], []
+def paired(family: Path, pairs: int, *options: str, against: Path | None = None) -> dict[str, Any]:
+    """Study and loop in turn (A B, B A, …); the ratios pair by pair. With ``against`` (a
+    checkout), its study joins each round (the order rotating) and each round gives its
+    CPU over this one's too."""
+    runs = [
+        ("study", lambda: run_study(family, *options)),
+        ("loop", lambda: run_loop(family)),
+        *([("against", lambda: run_study(family, *options, checkout=against))] if against else []),
+    ]
+    got: dict[str, list[dict[str, Any]]] = {name: [] for name, _ in runs}
     for k in range(pairs):
-        if k % 2:
-            loops.append(run_loop(family))
-            studies.append(run_study(family, *options))
-        else:
-            studies.append(run_study(family, *options))
-            loops.append(run_loop(family))
+        for name, run in runs[k % len(runs) :] + runs[: k % len(runs)]:
+            got[name].append(run())
+    studies, loops = got["study"], got["loop"]
     cpu = [lo["cpu_s"] / st["cpu_s"] for st, lo in zip(studies, loops, strict=True)]
     wall = [st["wall_s"] / lo["wall_s"] for st, lo in zip(studies, loops, strict=True)]
+    extra = {}
+    if against:
+        old = got["against"]
+        extra = {
+            "against": str(against),
+            "against_cpu_over_study_cpu": _spread(
+                [a["cpu_s"] / st["cpu_s"] for a, st in zip(old, studies, strict=True)]
+            ),
+            "loop_cpu_over_against_cpu": _spread(
+                [lo["cpu_s"] / a["cpu_s"] for a, lo in zip(old, loops, strict=True)]
+            ),
+            "against_parent_cpu_s": _spread([a["parent_cpu_s"] for a in old]),
+        }
     return {
         "pairs": pairs,
+        **extra,
         "loop_cpu_over_study_cpu": _spread(cpu),
         "study_wall_over_loop_wall": _spread(wall),
         "study_wall_s": _spread([s["wall_s"] for s in studies]),
         "loop_wall_s": _spread([lo["wall_s"] for lo in loops]),
         "study_cpu_s": _spread([s["cpu_s"] for s in studies]),
+        "study_parent_cpu_s": _spread([s["parent_cpu_s"] for s in studies]),
         "loop_cpu_s": _spread([lo["cpu_s"] for lo in loops]),
         "parent_peak_rss_MiB": max(s["parent_peak_rss_MiB"] for s in studies),
         "wall_budget_met": [
@@ -153,15 +187,17 @@ def paired(family: Path, pairs: int, *options: str) -> dict[str, Any]:
     }
 
 
-def per_cpu(pairs: int, n: int = 10_000, kind: str = "positioning") -> dict[str, Any]:
+def per_cpu(
+    pairs: int, n: int = 10_000, kind: str = "positioning", against: Path | None = None
+) -> dict[str, Any]:
     make = positioning_family if kind == "positioning" else valve_family
     with tempfile.TemporaryDirectory() as d:
-        out = paired(make(n, Path(d)), pairs, "--no-html", "--quiet")
+        out = paired(make(n, Path(d)), pairs, "--no-html", "--quiet", against=against)
     return {"variants": n, "family": kind, **out}
 
 
-def example(pairs: int) -> dict[str, Any]:
-    return {"variants": 60, **paired(EXAMPLE, pairs, "--quiet")}
+def example(pairs: int, against: Path | None = None) -> dict[str, Any]:
+    return {"variants": 60, **paired(EXAMPLE, pairs, "--quiet", against=against)}
 
 
 def memory(sizes: tuple[int, ...] = (1_000, 10_000, 100_000)) -> dict[str, Any]:
@@ -221,12 +257,21 @@ def main() -> None:
     ap = argparse.ArgumentParser()
     ap.add_argument("--quick", action="store_true")
     ap.add_argument("--only", help="per_cpu, per_cpu_rotary, example, memory (comma-separated)")
+    ap.add_argument("--pairs", type=int, help="runs of each (default: 7, --quick 3)")
+    ap.add_argument(
+        "--against",
+        type=Path,
+        metavar="CHECKOUT",
+        help="also run the study of another checkout in each round (paired A/B), e.g. "
+        "`git archive OLD | tar -x -C /tmp/old`",
+    )
     args = ap.parse_args()
-    pairs = 3 if args.quick else 7
+    pairs = args.pairs or (3 if args.quick else 7)
+    old = args.against.resolve() if args.against else None
     steps = {
-        "per_cpu": lambda: per_cpu(pairs),
-        "per_cpu_rotary": lambda: per_cpu(pairs, 6_000, "rotary"),
-        "example": lambda: example(pairs),
+        "per_cpu": lambda: per_cpu(pairs, against=old),
+        "per_cpu_rotary": lambda: per_cpu(pairs, 6_000, "rotary", against=old),
+        "example": lambda: example(pairs, against=old),
         "memory": lambda: memory((1_000, 10_000) if args.quick else (1_000, 10_000, 100_000)),
     }
     names = args.only.split(",") if args.only else list(steps)

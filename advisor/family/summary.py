@@ -164,6 +164,8 @@ def axis_changes(
     found: dict[tuple[int, int, int], int] = {}
     for base in range(0, len(codes), n * stride):
         lo, hi = codes[base : base + length], codes[base + stride : base + stride + length]
+        if lo == hi:  # the common case, without a call
+            continue
         for i in differing(lo, hi):
             f, t = lo[i], hi[i]
             if f != blank and t != blank:
