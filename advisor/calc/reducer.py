@@ -637,8 +637,9 @@ def _non_dominated(result: SweepResult, cand: np.ndarray) -> np.ndarray:
 
     In this order whatever dominates a point comes before it, and (dominance being
     transitive) so does a non-dominated point that dominates it: each block is checked
-    against the front so far and against the points before it within the block. A point
-    before another is no heavier, so mass needs no comparison. A point equal in every
+    against the front so far, then what survives against the survivors before it within
+    the block (a point dominated by one the front dominates is dominated by the front). A
+    point before another is no heavier, so mass needs no comparison. A point equal in every
     objective to an earlier one goes too (duplicates are kept once)."""
     obj = np.stack(
         [
@@ -650,13 +651,13 @@ def _non_dominated(result: SweepResult, cand: np.ndarray) -> np.ndarray:
     front_obj = obj[:, :0]
     front = []
     for start in range(0, cand.size, _BLOCK):
-        blk = obj[:, start : start + _BLOCK]
-        b = blk.shape[1]
-        dominated = (_covered(blk, blk) & _BEFORE[:b, :b]).any(axis=0)
-        dominated |= _covered(front_obj, blk).any(axis=0)
-        keep = ~dominated
+        blk, idx = obj[:, start : start + _BLOCK], cand[start : start + _BLOCK]
+        alive = ~_covered(front_obj, blk).any(axis=0)  # most fall to the front so far
+        blk, idx = blk[:, alive], idx[alive]
+        b = idx.size
+        keep = ~(_covered(blk, blk) & _BEFORE[:b, :b]).any(axis=0)
         front_obj = np.concatenate([front_obj, blk[:, keep]], axis=1)
-        front.append(cand[start : start + _BLOCK][keep])
+        front.append(idx[keep])
     return np.concatenate(front) if front else cand[:0]
 
 
