@@ -85,6 +85,10 @@ def run_chunk(
     return ChunkResult(number, rows, texts, time.perf_counter() - t0, parts)
 
 
+#: Where each key output's cell is among the output columns.
+OUTPUT_AT = {c: i for i, c in enumerate(COLUMNS)}
+
+
 def output_cells(report: dict[str, Any], readers: dict[str, Callable]) -> list[str]:
     """The key-output cells of a report's row, in :data:`advisor.family.outputs.COLUMNS`
     order (blank where the application gives none); ``readers``: the application's
@@ -93,8 +97,11 @@ def output_cells(report: dict[str, Any], readers: dict[str, Callable]) -> list[s
     read = readers.get(kind)
     if read is None:
         read = readers[kind] = reader(kind)
-    outputs = read(report)
-    return ["" if (v := outputs.get(c)) is None else cell(v) for c in COLUMNS]
+    cells = [""] * len(COLUMNS)
+    for col, v in read(report).items():  # the few an application fills
+        if v is not None and (i := OUTPUT_AT.get(col)) is not None:
+            cells[i] = cell(v)
+    return cells
 
 
 def rows_csv(rows: list[list[str]], header: list[str] | None = None) -> str:

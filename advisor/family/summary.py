@@ -21,6 +21,7 @@ from bisect import bisect_left
 from collections.abc import Callable, Iterable, Iterator, Sequence
 from dataclasses import dataclass
 from itertools import islice
+from operator import itemgetter
 from pathlib import Path
 from typing import Any, NamedTuple
 
@@ -63,17 +64,18 @@ def read_rows(path: Path) -> list[Row]:
     return list(iter_rows(path))
 
 
-def read_positions(family: Family) -> tuple[int, ...]:
-    """Where the columns the summary reads (:data:`READ`) are in a row of designs.csv
-    (:func:`advisor.family.cells.columns`: head, axes, tail, key outputs)."""
+def read_positions(family: Family) -> Callable[[Sequence[str]], tuple[str, ...]]:
+    """What picks the cells the summary reads (:data:`READ`, in its order) from a row of
+    designs.csv (:func:`advisor.family.cells.columns`: head, axes, tail, key outputs)."""
     tail = len(HEAD) + len(family.axis_keys())
     at = {c: tail + i for i, c in enumerate((*TAIL, *COLUMNS))}
-    return tuple(at[c] for c in READ)
+    return itemgetter(*(at[c] for c in READ))
 
 
-def read_cells(row: list[str], at: tuple[int, ...]) -> list[str]:
-    """The texts the summary reads of a row of cells (:func:`read_positions`)."""
-    return [uncell(row[i]) for i in at]
+def read_cells(row: Sequence[str], pick: Callable[[Sequence[str]], tuple[str, ...]]) -> list[str]:
+    """The texts the summary reads of a row of cells (``pick``: :func:`read_positions`);
+    only a cell that starts with a quote can be a neutralised one."""
+    return [uncell(t) if t.startswith("'") else t for t in pick(row)]
 
 
 def _value(text: str) -> Any:
