@@ -582,17 +582,14 @@ def _shortest_of_groups(result: SweepResult, ok: np.ndarray) -> np.ndarray:
     group = np.cumsum(new_run) * 64 + result.rows_out[ok]
     order = np.argsort(group, kind="stable")
     g = group[order]
-    starts = np.nonzero(np.r_[True, g[1:] != g[:-1]])[0]
+    first = np.concatenate(([True], g[1:] != g[:-1]))  # of its group
+    group_no = np.cumsum(first) - 1
     length = result.length_mm[ok][order]
-    shortest = np.minimum.reduceat(length, starts)
-    ends = np.r_[starts[1:], g.size]
-    is_min = length == np.repeat(shortest, ends - starts)
-    pick = np.zeros(g.size, bool)
-    cand_pos = np.nonzero(is_min)[0]
-    grp_of = np.searchsorted(starts, cand_pos, "right") - 1
-    first_in_group = np.r_[True, grp_of[1:] != grp_of[:-1]]
-    pick[cand_pos[first_in_group]] = True
-    return ok[order[pick]]
+    shortest = np.minimum.reduceat(length, np.flatnonzero(first))
+    at_min = np.flatnonzero(length == shortest[group_no])  # every shortest, in order
+    of = group_no[at_min]
+    first_shortest = at_min[np.concatenate(([True], of[1:] != of[:-1]))]
+    return ok[order[first_shortest]]
 
 
 def _fewest_stages(result: SweepResult, cand: np.ndarray) -> np.ndarray:
