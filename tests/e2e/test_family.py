@@ -394,6 +394,23 @@ def test_cli_end_to_end_with_its_own_local_cluster_then_a_scheduler(client, tmp_
     assert (out / "designs.csv").read_bytes() == before
 
 
+def test_a_cluster_gives_the_summary_of_this_machine(client, family, tmp_path):
+    """The parts of the summary the workers tally travel back through Dask as through the
+    local pipes: on the cluster (2 workers) and on 2 local workers, the same files."""
+    outs = {}
+    for where, how in (("local", ["--workers", "2"]), ("cluster", ["--scheduler"])):
+        if where == "cluster":
+            how = [*how, client.scheduler.address]
+        outs[where] = tmp_path / where
+        argv = ["family", family.source, "--out", str(outs[where]), "--chunk-size", "37"]
+        with contextlib.redirect_stdout(io.StringIO()):
+            assert main([*argv, "--quiet", "--no-html", *how]) == 0
+    for name in ("summary.toml", "designs.csv"):
+        assert (outs["local"] / name).read_bytes() == (outs["cluster"] / name).read_bytes()
+    doc = tomllib.loads((outs["cluster"] / "summary.toml").read_text(encoding="utf-8"))
+    assert sum(doc["counts"].values()) == N_VARIANTS and doc["members"][2]["without_design"]
+
+
 def test_batch_path_imports_no_dask_or_matplotlib():
     code = (
         "import sys, io, contextlib\n"
