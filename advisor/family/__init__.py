@@ -10,11 +10,14 @@ Modules, from the inside out:
 - :mod:`advisor.family.adapter`: the ONE call into the engine (``advise_one``);
 - :mod:`advisor.family.outputs`: the key outputs of each application, from its report;
 - :mod:`advisor.family.spec`: reading the family file, the axes and the variants;
-- :mod:`advisor.family.chunks`: what one task does (advise a block of variants);
+- :mod:`advisor.family.cells`: the columns of ``designs.csv`` and its cells;
+- :mod:`advisor.family.summary`: ``summary.toml``, from the parts each chunk's worker
+  tallies, merged as the chunks arrive;
+- :mod:`advisor.family.chunks`: what one task does (advise a block of variants, tally it);
 - :mod:`advisor.family.local`: the chunks run on this machine (in-process or forked workers);
 - :mod:`advisor.family.study`: the run (locally or on Dask), resume and progress;
-- :mod:`advisor.family.summary`, :mod:`advisor.family.html` and :mod:`advisor.family.svg`:
-  the results, from one pass over the rows.
+- :mod:`advisor.family.html` and :mod:`advisor.family.svg`: ``family.html``, from the
+  summary alone.
 
 Dask is imported only with ``--scheduler``, never on the batch path.
 """
