@@ -55,8 +55,7 @@ def advise_one(
     """Advise one requirement (a TOML document as a dict); every failure becomes an Outcome."""
     from pathlib import Path
 
-    import tomli_w
-
+    from advisor.core import toml_text
     from advisor.core.engine import advise
     from advisor.core.reading import parse_requirements
     from advisor.core.report import archive, plain_data
@@ -65,7 +64,8 @@ def advise_one(
         req = parse_requirements(requirement)
         report = advise(req, Path(catalog_dir) if catalog_dir else None)
         data = plain_data(report)  # what advisor.core.report.to_toml dumps, curves in place
-        text = tomli_w.dumps(archive(data)) if with_text else None  # = to_toml(report)
+        # = to_toml(report): the same writer, on the data already rounded
+        text = toml_text.dumps(archive(data, none_dropped=True)) if with_text else None
         return Outcome(ExitCode.OK, STATUS[ExitCode.OK], "", data, text)
     except InfeasibleError as exc:
         return Outcome(exc.exit_code, STATUS[ExitCode.INFEASIBLE], one_line(str(exc)), None, None)
