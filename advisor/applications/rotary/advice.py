@@ -292,10 +292,20 @@ def _reducer_params(req: Requirements, sf: ServiceFactor) -> reducer.ReducerPara
 
 
 def _offered(req: Requirements, fit: _Fit) -> list[SpeedCandidate]:
-    """BL-02 weighs every reducible speed (those over the limit shown, not chosen), or, with
-    a cycle or a catalog motor, only those that pass it (or lie within its rated speed)."""
-    catalog = getattr(fit.model.ref, "kind", "") == "catalog"
-    return fit.passing if req.duty is not None or catalog else fit.reducible
+    """BL-02 weighs every reducible speed (those over the limit shown, not chosen); with a
+    cycle those that pass it and those over the limit (shown, not chosen, as without one: a
+    speed within the limit that fails the cycle is not offered); with a catalog motor only
+    those that pass (and lie within its rated speed)."""
+    if getattr(fit.model.ref, "kind", "") == "catalog":
+        return fit.passing
+    if req.duty is None:
+        return fit.reducible
+    passing = {c.speed_rpm for c in fit.passing}
+    return [
+        c
+        for c in fit.reducible
+        if c.speed_rpm in passing or not bldc_rules.within_limit(c.losses_W.total, fit.limit)
+    ]
 
 
 def _choose_speed(req: Requirements, fit: _Fit, trace: Trace) -> SpeedCandidate:
@@ -361,7 +371,7 @@ def advise_rotary(req: Requirements, cat: Catalogs, trace: Trace):
     ]
     from advisor.applications.rotary.frames import frame_out
 
-    listed = fit.reducible if req.duty is None else fit.passing
+    listed = _offered(req, fit) if req.duty is not None else fit.reducible
     curve = loss_curve(req, fit.model, params, [c.speed_rpm for c in listed], fit.limit)
     motor_out = _motor_out(working, listed, fit).replace(
         frame=frame_out(choice, fit.model.ref, data),
@@ -486,11 +496,15 @@ def _holder(req: Requirements, q: float, eta: float):
 
     if not req.application.hold_without_power:
         return NO_HOLDER
+    from advisor.calc.one_way import size
     from advisor.one_way.advice import device_passage
 
     at_output = req.one_way.location == "output_side"
     motor_side, output_side = _device_torques(req, q, eta)
-    return Holder(device_passage(req.one_way, motor_side, output_side, at_output), at_output)
+    passage = device_passage(req.one_way, motor_side, output_side, at_output)
+    # the device OW-02 chooses, sized where it sits: its inertia turns in the cycle
+    device = size(passage.type, output_side if at_output else motor_side, req.one_way.rollers)
+    return Holder(passage, at_output, device.inertia_kgm2 if device is not None else 0.0)
 
 
 def _device_torques(req: Requirements, q: float, eta: float) -> tuple[float, float]:
