@@ -33,8 +33,50 @@ def _upper(
     factor: float | None = None,
 ) -> Check:
     """A check of the form factor·value ≤ limit; margin = limit / (factor·value). ``factor``
-    None: no service factor applies (a geometric or thermal check, or none given)."""
-    return Check(id, name, value, limit, unit, _margin(value, limit, factor or 1.0), source, factor)
+    None: no service factor applies (a geometric or thermal check, or none given). Under a
+    service factor the check states the factored demand f_B·value and says so in its name,
+    so that its value, limit and margin agree for a reader: margin = limit / stated value."""
+    if factor is None:
+        return Check(id, name, value, limit, unit, _margin(value, limit), source)
+    return factored_check(id, name, value, limit, unit, source, factor)
+
+
+def factored_check(
+    id: str, name: str, demand: float, limit: float, unit: str, source: Cite, factor: float
+) -> Check:
+    """A strength check under the service factor f_B, stated as the factored demand.
+
+        value = f_B·demand,   margin = limit / value
+
+    Parameters
+    ----------
+    id, name : str
+        The check's id and its name in words (" × f_B = …" is appended)
+    demand : float
+        The demand before the factor [unit]
+    limit : float
+        The capacity [unit]
+    unit : str
+        The unit of demand and limit
+    source : Cite
+        Where the check comes from
+    factor : float
+        The service factor f_B [-], ≥ 1
+
+    Returns
+    -------
+    Check
+        value f_B·demand, margin limit/(f_B·demand) (∞ for no demand); ``factor`` None:
+        the factor is already in the value
+
+    References
+    ----------
+    SEW-EURODRIVE, service factor f_B (``[design] service_factor``).
+    """
+    stated = factor * demand
+    return Check(
+        id, f"{name} × f_B = {factor:g}", stated, limit, unit, _margin(stated, limit), source
+    )
 
 
 def _lower(id: str, name: str, value: float, limit: float, unit: str, source: Cite) -> Check:

@@ -182,3 +182,64 @@ def test_every_device_and_duty_gives_the_inertia_ratio_by_hand(device, duty):
     j_dev = design["one_way"]["inertia_kgm2"] if device is not None else 0.0
     ratio = (J_SCREW + J_NUT) / (design["motor"]["inertia_kgm2"] + j_dev)
     assert design["duty"]["inertia_ratio"] == pytest.approx(ratio, rel=1e-5)
+
+
+# ------------------------------------------------------------------ the service factor
+def test_a_check_under_the_service_factor_states_the_factored_load():
+    """examples/linear_screw_jack_collar.toml, f_B = 1.25, Tr26x3 (d2 = 24.5, d3 = 22.5,
+    H1 = 1.5 mm, 10 nut turns), 5000 N, fixed-free over 0.5 m, E = 2.1e5 MPa, S_b = 3.
+    A reader recomputes margin = limit/value: the value is f_B·load."""
+    from helpers import EXAMPLES
+
+    doc = tomllib.loads((EXAMPLES / "linear_screw_jack_collar.toml").read_text("utf-8"))
+    rep = report(doc)
+    checks = {c["id"]: c for c in rep["checks"]}
+    f_b, force, d3 = 1.25, 5000.0, 0.0225
+    # buckling (Euler, fixed-free, μ = 2): P_cr/S_b = π²·E·I/(2L)²/3 = 8691.56 N
+    limit = math.pi**2 * 2.1e11 * (math.pi * d3**4 / 64.0) / (2.0 * 0.5) ** 2 / 3.0
+    c = checks["buckling"]
+    assert c["value"] == pytest.approx(f_b * force) == 6250.0  # was 5000
+    assert c["limit"] == pytest.approx(limit, rel=1e-5)
+    assert c["margin"] == pytest.approx(limit / 6250.0, rel=1e-5) == pytest.approx(1.39065, 1e-5)
+    assert "× f_B = 1.25" in c["name"]
+    assert "factor" not in c  # the factor is in the value: margin = limit/value
+    # core stress: von Mises of F/(π·d3²/4) and T/(π·d3³/16), T the thread torque 10.6868 N·m
+    sigma = force / (math.pi * d3**2 / 4.0)
+    tau = 10.6868 / (math.pi * d3**3 / 16.0)
+    core_MPa = math.hypot(sigma, math.sqrt(3.0) * tau) / 1e6  # 15.0543
+    c = checks["core_stress"]
+    assert c["value"] == pytest.approx(f_b * core_MPa, rel=1e-5)  # 18.8179, was 15.0543
+    assert c["margin"] == pytest.approx(c["limit"] / c["value"], rel=1e-5)
+    assert c["margin"] == pytest.approx(118.333 / (1.25 * 15.0543), rel=1e-4)  # 6.28836
+    # nut flank pressure p = F/(π·d2·H1·z) = 4.3307 MPa, ×1.25 = 5.4134 against 10 MPa
+    pressure_MPa = force / (math.pi * 24.5 * 1.5 * 10.0)
+    c = checks["nut_pressure"]
+    assert c["value"] == pytest.approx(f_b * pressure_MPa, rel=1e-5)
+    assert c["margin"] == pytest.approx(10.0 / (f_b * pressure_MPa), rel=1e-5)  # 1.84726
+    # the datasheet: the checks table and the required-and-achieved rows agree, and the
+    # service factor names the checks it enters
+    from advisor.datasheet import render
+
+    md = render(advise(parse_requirements(copy.deepcopy(doc))), "md")
+    assert "no check covers this requirement" not in next(
+        line for line in md.splitlines() if line.startswith("| Service factor")
+    )
+    assert "| 6250 against 8692 N | 1.391 |" in md
+    assert "× f\\_B = 1.25 | 6250 | 8692 | N | 1.391 |" in md
+
+
+def test_the_thrust_bearing_check_states_the_factored_load():
+    """A thrust bearing under f_B = 1.5: 7204 BECBP (40° angular contact, C0 = 8.15 kN)
+    under the axial 1500 N alone: P0 = max(F_r, 0.5·F_r + 0.26·F_a) = 390 N (ISO 76), stated
+    as f_B·P0 = 585 N; margin C0/value = 8150/585 = 13.932."""
+    doc = linear_doc(None, None)
+    doc["screw"]["thrust"] = {"kind": "bearing", "bearing": "7204 BECBP"}
+    doc["design"] = {"service_factor": 1.5}
+    try:
+        rep = report(doc)
+    except InfeasibleError as e:
+        pytest.skip(f"no design: {e}")
+    c = next(x for x in rep["checks"] if x["id"] == "thrust_bearing_static")
+    assert c["value"] == pytest.approx(1.5 * 0.26 * 1500.0, rel=1e-6)  # was 390 N
+    assert c["margin"] == pytest.approx(8150.0 / 585.0, rel=1e-5)
+    assert c["name"].endswith("× f_B = 1.5")

@@ -13,7 +13,6 @@ COVERS: dict[str, tuple[str, ...]] = {
         "nut_*",
         "motor_rated_torque",
         "motor_starting_torque",
-        "*service*",
     ),
     "linear.stroke_m": ("travel_time",),
     "linear.travel_time_s": ("travel_time",),
@@ -30,5 +29,6 @@ COVERS: dict[str, tuple[str, ...]] = {
     "application.hold_without_power": ("*hold*", "*self_locking*", "one_way*"),
     "one_way": ("one_way*", "*hold*"),
     "duty": ("duty_*",),
-    "design": ("*service*",),
+    # f_B multiplies the load of every strength check: they state f_B·load as their value
+    "design.service_factor": ("core_stress", "buckling", "nut_pressure", "thrust_bearing_static"),
 }

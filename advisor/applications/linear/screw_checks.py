@@ -19,6 +19,7 @@ from advisor.calc.sizing import (
     MotorEvaluation,
     ThreadEvaluation,
     ThrustFace,
+    factored_check,
 )
 from advisor.core.cite import cite
 from advisor.core.reading import Requirements
@@ -145,17 +146,12 @@ def _thrust_checks(
     b = thrust.bearing
     c0 = b.C0_kN * 1e3
     p0 = c0 / static_safety(b, 0.0, force_N)
-    factor = sf.value if sf.value != 1.0 else None
-    check = Check(
-        "thrust_bearing_static",
-        f"thrust bearing {b.designation}: static equivalent load against C0",
-        p0,
-        c0,
-        "N",
-        c0 / ((factor or 1.0) * p0),
-        cite("iso-76").with_note("P0 = max(F_r, X0·F_r + Y0·F_a)"),
-        factor,
-    )
+    name = f"thrust bearing {b.designation}: static equivalent load against C0"
+    source = cite("iso-76").with_note("P0 = max(F_r, X0·F_r + Y0·F_a)")
+    if sf.value != 1.0:  # stated as the factored load, so that C0/value is the margin
+        check = factored_check("thrust_bearing_static", name, p0, c0, "N", source, sf.value)
+    else:
+        check = Check("thrust_bearing_static", name, p0, c0, "N", c0 / p0, source)
     warnings = []
     if b.d_mm > ev.thread.d3_mm:
         warnings.append(
