@@ -243,3 +243,59 @@ def test_the_thrust_bearing_check_states_the_factored_load():
     assert c["value"] == pytest.approx(1.5 * 0.26 * 1500.0, rel=1e-6)  # was 390 N
     assert c["margin"] == pytest.approx(8150.0 / 585.0, rel=1e-5)
     assert c["name"].endswith("× f_B = 1.5")
+
+
+# ------------------------------------------------------------------ positioning with a duty
+def test_positioning_ratio_check_is_at_the_ratio_the_cycle_builds():
+    """examples/indexing_table_duty.toml: the cycle builds motor C (M_λ = 45 N·m) at
+    i = 7.34461 (design.duty.ratio, MO-06); the load torque 100 N·m only balances at
+    m = M_p/M_λ = 100/45 = 2.22222 (seed 003, eq. (3)): margin i/m = 3.3051, not the
+    2.98044 of the fastest ratio without the cycle (6.6232)."""
+    from helpers import EXAMPLES
+
+    doc = tomllib.loads((EXAMPLES / "indexing_table_duty.toml").read_text("utf-8"))
+    rep = report(doc)
+    duty = rep["design"]["duty"]
+    assert duty["motor"] == "C"
+    assert duty["ratio"] == pytest.approx(7.34461, rel=1e-5)
+    c = next(x for x in rep["checks"] if x["id"] == "ratio_moves_load")
+    m = 100.0 / 45.0
+    assert c["value"] == pytest.approx(duty["ratio"], rel=1e-6)
+    assert c["limit"] == pytest.approx(m, rel=1e-5)
+    assert c["margin"] == pytest.approx(7.34461 / m, rel=1e-5) == pytest.approx(3.3051, 1e-4)
+    assert "6.6232" in c["source"]  # the fastest ratio without the cycle, named
+
+
+@pytest.mark.parametrize("with_duty", [False, True])
+@pytest.mark.parametrize("example", ["positioning_drive.toml", "indexing_table_duty.toml"])
+def test_positioning_with_and_without_a_duty_states_its_built_ratio(example, with_duty):
+    """Positioning with and without a [duty]: the ratio check is at the ratio the design
+    states (design.duty.ratio with a cycle, design.motion.optimal_ratio without), margin i/m,
+    and the inertia ratio is J_L/(i²·J0) of the motor at that ratio (seed 003)."""
+    from helpers import EXAMPLES
+
+    doc = tomllib.loads((EXAMPLES / example).read_text("utf-8"))
+    doc.pop("duty", None)
+    if with_duty:
+        doc["duty"] = {"cycle_time_s": 4.0}
+        for m in doc["positioning"].get("motors", []):  # a cycle needs the S1 torque
+            m.setdefault("rated_torque_Nm", m["accel_torque_Nm"] / 2.0)
+    try:
+        rep = report(doc)
+    except InfeasibleError as e:
+        assert e.reasons
+        return
+    design, pos = rep["design"], doc["positioning"]
+    motion = design["motion"]
+    motor = design["duty"]["motor"] if with_duty else motion["motor"]
+    i = design["duty"]["ratio"] if with_duty else motion["optimal_ratio"]
+    row = next(m for m in pos.get("motors", []) if m["name"] == motor) if "motors" in pos else None
+    c = next((x for x in rep["checks"] if x["id"] == "ratio_moves_load"), None)
+    if row is None or c is None:
+        return
+    m = pos["load_torque_Nm"] / row["accel_torque_Nm"]
+    assert c["value"] == pytest.approx(i, rel=1e-5)
+    assert c["margin"] == pytest.approx(i / m, rel=1e-5)
+    if with_duty:
+        j_ratio = pos["load_inertia_kgm2"] / (i**2 * row["inertia_kgm2"])
+        assert design["duty"]["inertia_ratio"] == pytest.approx(j_ratio, rel=1e-5)
