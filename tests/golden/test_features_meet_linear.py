@@ -299,3 +299,22 @@ def test_positioning_with_and_without_a_duty_states_its_built_ratio(example, wit
     if with_duty:
         j_ratio = pos["load_inertia_kgm2"] / (i**2 * row["inertia_kgm2"])
         assert design["duty"]["inertia_ratio"] == pytest.approx(j_ratio, rel=1e-5)
+
+
+# ------------------------------------------------------------------ a device the screw makes unused
+def test_a_requested_device_left_out_by_a_self_locking_screw_is_said():
+    """Tr16x2, one start: tan ψ = 2/(π·15) → ψ = 2.43°; at the low end of steel–bronze's
+    friction range f = 0.1, φ' = atan(0.1/cos 15°) = 5.91° > ψ: the screw holds by itself
+    (OW-03), so the requested worm is not used, and the report says so in one line."""
+    psi = math.degrees(math.atan(2.0 / (math.pi * 15.0)))
+    phi_low = math.degrees(math.atan(0.1 / math.cos(math.radians(15.0))))
+    assert psi == pytest.approx(2.43, abs=0.01) and phi_low == pytest.approx(5.91, abs=0.01)
+    doc = linear_doc("worm", None)
+    doc["linear"].update(force_N=3500.0, stroke_m=0.2, travel_time_s=5.0, support_span_m=0.4)
+    doc["screw"] = {"thread": "Tr16x2", "starts": 1, "friction_coefficient": 0.15}
+    rep = report(doc)
+    assert rep["design"]["one_way"]["type"] == "none"
+    said = [w for w in rep["warnings"] if w.startswith("ignored: the [one_way] table")]
+    assert len(said) == 1 and "'worm'" in said[0] and "Tr16x2 is self-locking" in said[0]
+    doc.pop("one_way")  # no table given: nothing to say
+    assert not [w for w in report(doc)["warnings"] if "[one_way]" in w]

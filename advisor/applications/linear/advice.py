@@ -31,6 +31,7 @@ from advisor.calc.sizing import (
 )
 from advisor.core.cite import cite
 from advisor.core.errors import InfeasibleError, InputError
+from advisor.core.ignored import IGNORED_PREFIX
 from advisor.core.reading import Requirements
 from advisor.core.rulebook import Trace
 from advisor.duty.report import DutyOut
@@ -117,7 +118,7 @@ def _one_way(
             location="none",
             torque_Nm=ev.torque_Nm,
             basis=f"{thread} is self-locking over the whole friction range of the pair",
-        ), []
+        ), _unused_device(req, thread, friction_low)
     lin, f_b = req.linear, service_factor(getattr(req, "design", None)).value
     force = max(lin.force_N, lin.emergency_stop_force_N or 0.0)
     sized = device_torque(req, drive_torque)
@@ -133,6 +134,21 @@ def _one_way(
         f"{friction_low:g}): a {device.type.replace('_', ' ')} at the motor side holds the load",
     )
     return device.replace(output_side=None), warnings
+
+
+def _unused_device(req: Requirements, thread: str, friction_low: float) -> list[str]:
+    """A [one_way] table given while the screw holds by itself is said as ignored, as one
+    given with hold_without_power = false is: the table chooses the device where one is
+    needed, and a device in series with a self-locking screw would only cost its efficiency
+    (the worm's 0.33), mass and power (OW-03; seed 004 judges self-locking gears not
+    rational)."""
+    if "one_way" not in req.model_fields_set:
+        return []
+    return [
+        f"{IGNORED_PREFIX}the [one_way] table (type = {req.one_way.type!r}), because "
+        f"{thread} is self-locking over the whole friction range of the pair (down to f = "
+        f"{friction_low:g}): the screw holds the load and no device is chosen (OW-03)"
+    ]
 
 
 def device_torque(req: Requirements, drive_torque_Nm: float) -> float:
