@@ -361,7 +361,7 @@ def advise_rotary(req: Requirements, cat: Catalogs, trace: Trace):
     fit, data, choice = _choose_frame(req, cat, params, speeds, trace)
     chosen = _choose_speed(req, fit, trace)
     env = Envelope(req.envelope.max_outer_diameter_mm, req.envelope.max_length_mm)
-    gear = choose_reducer(chosen.total_ratio, req.gearbox, env, params, trace)
+    gear = _reducer_for_cycle(req, fit, chosen, env, (params, sf), trace)
     working = _working_point(req, fit, chosen, gear.design)
     steel_cite = cat.cite_rows(cat.steel_sources, fit.model.steel.source)
     checks = [
@@ -389,6 +389,43 @@ def advise_rotary(req: Requirements, cat: Catalogs, trace: Trace):
         regeneration=rest.regeneration,
     )
     return design_out, checks + rest.checks, gear.warnings + rest.warnings
+
+
+def _reducer_for_cycle(
+    req: Requirements,
+    fit: _Fit,
+    chosen: SpeedCandidate,
+    env: Envelope,
+    sizing: tuple[reducer.ReducerParams, ServiceFactor],
+    trace: Trace,
+) -> ReducerChoice:
+    """The reducer at the chosen ratio, its stages sized by eq. (16) for the rated output
+    torque or, with a [duty] whose cube-mean torque T_av at the output exceeds it, for T_av
+    (WG-07; both × f_B). T_av is found at the ratio and efficiency of the reducer adopted, so
+    the reducer is chosen again while a stage count changing η lifts T_av (at most four
+    passes, until the stage torque no longer grows)."""
+    params, sf = sizing
+    if req.duty is None:
+        return choose_reducer(chosen.total_ratio, req.gearbox, env, params, trace)
+    from advisor.applications.rotary.duty import output_loads
+    from advisor.calc.load_spectrum import cube_mean_torque
+
+    speed, frame = chosen.speed_rpm, fit.frame_for(chosen.speed_rpm)
+    q, eta = chosen.total_ratio, chosen.gearbox_efficiency
+    sized, basis = params, None
+    for _ in range(4):
+        loads = output_loads(req, q, eta, speed, frame, _holder(req, q, eta))
+        t_av = cube_mean_torque(loads)
+        if t_av * sf.value <= sized.torque_Nm:
+            break
+        sized, basis = params._replace(torque_Nm=t_av * sf.value), (t_av, q, eta)
+        design = choose_reducer(chosen.total_ratio, req.gearbox, env, sized, Trace()).design
+        q, eta = design.total_ratio, design.efficiency
+    if basis is not None:
+        t_av, q, eta = basis
+        rated = reducer_output_torque(req)
+        trace.apply(wavegear_rules.size_for_cycle, rated, t_av, sf.value, q, eta)
+    return choose_reducer(chosen.total_ratio, req.gearbox, env, sized, trace)
 
 
 def _losses_check(working: SpeedCandidate, fit: _Fit, steel_cite: Cite) -> Check:

@@ -289,10 +289,12 @@ def _iec_cycle(req, q: float, eta: float, w: float, frame: Frame, holder: Holder
 
 
 def _iec_starts(req, q, eta, w, frame: Frame, holder: Holder, on: float, rest):
-    """S4, S5 and S7: a start at the peak torque, the run, S5's and S7's electric brake, and
-    the rest. The inertia at the motor is J_m + J_dev,motor + (J_L + J_dev,output)/(q²·η·η_d)
-    while the motor accelerates the load, J_m + J_dev,motor + (J_L + J_dev,output)·η/q²
-    while it brakes it (a device turning with the rotor or with the load, seed 004)."""
+    """S4, S5 and S7: a start at the peak torque, the run, S5's and S7's stop at the peak
+    braking torque, and the rest. The inertia at the motor is
+    J = J_m + J_dev,motor + (J_L + J_dev,output)/(q²·η·η_d) while the motor accelerates the
+    load, J_m + J_dev,motor + (J_L + J_dev,output)·η/q² while it brakes it electrically (a
+    device turning with the rotor or with the load, seed 004). Behind a self-locking device
+    nothing comes back: the stop is :func:`_device_stop`'s."""
     duty, t = req.duty, req.duty.duty_type
     jl = duty.load_inertia_kgm2 + holder.output_side_kgm2
     jm = _rotor_inertia(duty, frame) + holder.motor_side_kgm2
@@ -301,10 +303,10 @@ def _iec_starts(req, q, eta, w, frame: Frame, holder: Holder, on: float, rest):
     eta_d = holder.passage.efficiency if holder.passage else 1.0
     j = jm + jl / (q * q * eta * eta_d)
     ta = j * w / (peak - run_torque) if peak > run_torque else math.inf
-    # a self-locking device stops the load by itself: no electric braking through it,
-    # the stop takes as long as the electric one would, at no motor torque
     back = holder.passage is None or holder.passage.back_drivable
-    tb = (jm + jl * eta / (q * q)) * w / (peak + run_torque) if t != "S4" else 0.0
+    tb = 0.0
+    if t != "S4":
+        tb = (jm + jl * eta / (q * q) if back else j) * w / (peak + run_torque)
     if ta + tb > on:
         return [], [
             f"{t}: starting at the peak torque {peak:.3g} N·m takes {ta:.3g} s, braking "
@@ -318,11 +320,36 @@ def _iec_starts(req, q, eta, w, frame: Frame, holder: Holder, on: float, rest):
         out.append(
             duty_calc.Phase("electric brake", tb, w, 0.0, -peak)
             if back
-            else duty_calc.Phase("stop by the self-locking device", tb, w, 0.0, 0.0)
+            else _device_stop(req.rotary.torque_Nm, (jl, jm), q, eta, holder, w, tb, peak)
         )
     if rest.time_s > 0:
         out.append(rest)
     return out, []
+
+
+def _device_stop(
+    load_Nm: float,
+    inertias: tuple[float, float],
+    q: float,
+    eta: float,
+    holder: Holder,
+    w: float,
+    tb: float,
+    peak: float,
+) -> duty_calc.Phase:
+    """The stop of S5 or S7 behind a self-locking device, from ω_m to rest in t_b, as a
+    move's deceleration: M_m = M_load→motor + (J_m + J_dev,motor)·ε_m with ε_m = −ω_m/t_b and
+    the load's part (M_L + (J_L + J_dev,output)·ε_m/q through the reducer and the device,
+    seed 004) held at or above zero by the device's lowering factor. The device sits
+    downstream of the rotor: the motor still brakes the inertia turning with it. While the
+    load's torque outweighs its inertia's the chain runs forward (M_L/(q·η·η_d) helps), so
+    t_b = J·ω_m/(M_peak + M_run) with the start's J brakes at exactly the peak torque; where
+    the load's inertia outweighs, the device holds it back and the motor brakes less."""
+    j_load, j_rotor = inertias
+    eps_m = -w / tb
+    torque = _at_motor(load_Nm + j_load * eps_m / q, q, eta, holder) + j_rotor * eps_m
+    # −M_peak by t_b's choice where the chain runs forward: not beyond it by a rounding
+    return duty_calc.Phase("stop by the self-locking device", tb, w, 0.0, max(torque, -peak))
 
 
 class CycleResult(NamedTuple):
@@ -630,11 +657,11 @@ def output_loads(req, q: float, eta: float, speed_rpm: float, frame: Frame, hold
 
     Moves, holds and dwells give the output torque J_L·ε ± M_L themselves (what
     :func:`_move_phases` reflects to the motor); a hold or the closing rest carries the
-    standing load at standstill. An IEC duty type is read back from its motor phases:
-    M_out = M_m·q·η while the motor drives, M_m·q/η while it brakes; the rotor's own
-    acceleration torque is thereby counted in the output (errs high). A holding device at the
-    output sits between the load and the reducer: the reducer carries what the device asks
-    (T/η_d driving, the lowering torque through a self-locking one) and nothing at rest."""
+    standing load at standstill. An IEC duty type's start and stop likewise, from the load
+    side: M_out = M_L + J_L·ε_out over the phase (:func:`_iec_output_loads`); the rotor's own
+    acceleration torque stays at the motor. A holding device at the output sits between the
+    load and the reducer: the reducer carries what the device asks (T/η_d driving, the
+    lowering torque through a self-locking one) and nothing at rest."""
     from advisor.calc.load_spectrum import Load
 
     duty, rot = req.duty, req.rotary
@@ -685,15 +712,16 @@ def output_loads(req, q: float, eta: float, speed_rpm: float, frame: Frame, hold
 def _iec_output_loads(req, q, eta, speed_rpm, frame, holder, carried, held) -> list:
     """An IEC duty type at the reducer's output: a run or a load share carries the rated
     output torque (through a device at the output, what it asks), exactly as the stages are
-    sized for it; a start or a stop at the motor's peak torque is read back from the motor,
-    M_out = M_m·η_d·q·η while it drives (η_d of a device at the motor side, before the
-    reducer), M_m·q/η while it brakes; a rest carries the rated load standing on the reducer
-    (``held`` 0 where a device at the output holds it), S6's idle run nothing."""
+    sized for it; a start or a stop carries the load's torque and the torque that accelerates
+    or brakes the load's inertia, M_out = M_L + (J_L + J_dev,output)·ε_out with
+    ε_out = Δω_out/t of the phase (negative while braking), as a move's phases do; the
+    rotor's inertia (q² times larger at the output) is the motor's own and never reaches the
+    output. A rest carries the rated load standing on the reducer (``held`` 0 where a device
+    at the output holds it), S6's idle run nothing."""
     from advisor.calc.load_spectrum import Load
 
-    p_dev = holder.passage
-    eta_d = p_dev.efficiency if p_dev is not None and not holder.at_output else 1.0
     rated = req.rotary.torque_Nm
+    jl = req.duty.load_inertia_kgm2 + holder.output_side_kgm2
     shares = {f"load {k}": x.load_share for k, x in enumerate(req.duty.loads or (), 1)}
     out = []
     for p in cycle(req, q, eta, speed_rpm, frame, holder)[0]:
@@ -703,9 +731,9 @@ def _iec_output_loads(req, q, eta, speed_rpm, frame, holder, carried, held) -> l
             torque = rated * held
         elif p.name == "no load":
             torque = 0.0
-        else:  # a start or a stop: the motor's own peak torque
-            m = p.torque_Nm
-            torque = m * eta_d * q * eta if m >= 0 else m * q / eta
+        else:  # a start or a stop: the load's torque and its inertia's, at the output
+            eps_out = (p.speed_end_rad_s - p.speed_start_rad_s) / (q * p.time_s)
+            torque = carried(rated + jl * eps_out)
         out.append(Load(torque, abs(p.mean_speed_rad_s) * RPM / q, p.time_s))
     return out
 
