@@ -287,9 +287,9 @@ def non_finite(doc: Any, path: str = "") -> str | None:
     is never true: |nan − x| > tol is false, so such a file would read as "the same"."""
     if isinstance(doc, float) and not math.isfinite(doc):
         return f"{path} = {doc}"
-    items = doc.items() if isinstance(doc, dict) else enumerate(doc)
     if not isinstance(doc, dict | list):
         return None
+    items = doc.items() if isinstance(doc, dict) else enumerate(doc)
     for key, v in items:
         found = non_finite(v, _where(path, key, isinstance(doc, list)))
         if found is not None:
