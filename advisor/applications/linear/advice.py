@@ -181,6 +181,7 @@ def screw_demand(
         material=material,
         thrust=thrust_face(req, cat),
         service_factor=service_factor(getattr(req, "design", None)).value,
+        stop_force_N=lin.emergency_stop_force_N or 0.0,
     )
     return demand, f_range
 
@@ -509,7 +510,9 @@ def _describe(c: Check) -> str:
     )
 
 
-def _remedy(force_N: float, failed: set[str]) -> str:
+def _remedy(force_N: float, failed_ids: set[str]) -> str:
+    # a check at the emergency stop's force has the rated check's cures
+    failed = {i.removesuffix("_emergency_stop") for i in failed_ids}
     cures = []
     if "buckling" in failed:
         cures.append("a shorter span between supports or stiffer end fixity")
