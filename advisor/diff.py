@@ -8,6 +8,7 @@ changed since the previous result" can use the same code: :func:`changes_between
 """
 
 import argparse
+import math
 import sys
 from dataclasses import dataclass
 from typing import Any
@@ -273,10 +274,34 @@ _ITEMS: dict[str, dict[str, tuple[Any, str, bool]]] = {
 }
 
 
+def _where(path: str, key: Any, in_list: bool) -> str:
+    if in_list:
+        return f"{path}[{key}]"
+    return f"{path}.{key}" if path else str(key)
+
+
+def non_finite(doc: Any, path: str = "") -> str | None:
+    """The first number of ``doc`` that is nan or ±inf, as "key = value" (None if none).
+
+    A report never holds nan or inf (docs/reference/report.md), and a comparison with one
+    is never true: |nan − x| > tol is false, so such a file would read as "the same"."""
+    if isinstance(doc, float) and not math.isfinite(doc):
+        return f"{path} = {doc}"
+    if not isinstance(doc, dict | list):
+        return None
+    items = doc.items() if isinstance(doc, dict) else enumerate(doc)
+    for key, v in items:
+        found = non_finite(v, _where(path, key, isinstance(doc, list)))
+        if found is not None:
+            return found
+    return None
+
+
 def shape_problem(doc: dict[str, Any]) -> str | None:
     """What makes ``doc`` not a report diff can read (None if nothing): the tables and arrays
-    it reads, with their types, so a hand-edited or foreign file is refused in one line
-    instead of failing half-way through the comparison."""
+    it reads, with their types, and no nan or inf anywhere, so a hand-edited or foreign file
+    is refused in one line instead of failing half-way through the comparison or comparing
+    as unchanged."""
     head = doc.get("report")
     if not isinstance(head, dict):
         return "[report] must be a table" if "report" in doc else "no [report] table"
@@ -307,6 +332,9 @@ def shape_problem(doc: dict[str, Any]) -> str | None:
     for i, w in enumerate(warnings):
         if not isinstance(w, str):
             return f"warnings[{i}] must be text, not {_kind(w)}"
+    found = non_finite(doc)
+    if found is not None:
+        return f"{found}: a report's numbers are finite (never nan or inf)"
     return None
 
 

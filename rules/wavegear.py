@@ -440,3 +440,36 @@ def taken_from_space(options: ReducerOptions) -> Finding[Reducer]:
             **({} if rule is None else {f"rule_{k}": v for k, v in rule.items()}),
         },
     )
+
+
+@rule(
+    "WG-07",
+    "Stages sized for the duty's cube-mean torque",
+    SEED_000.at("eq. (16)") + cite("honpine-harmonic", "step 2"),
+)
+def size_for_cycle(
+    rated_Nm: float, mean_Nm: float, service_factor: float, ratio: float, efficiency: float
+) -> Finding[float]:
+    """The torque the stages are sized for by eq. (16): the rated output torque, or the
+    duty's cube-mean torque T_av where it is larger, times the service factor f_B. Applied
+    (and recorded) only where T_av exceeds the rated torque."""
+    sized = max(rated_Nm, mean_Nm) * service_factor
+    return Finding(
+        sized,
+        f"The stages are sized for the cycle's cube-mean torque T_av = {mean_Nm:.6g} N·m > "
+        f"the rated {rated_Nm:.6g} N·m (× f_B = {service_factor:g}: T_N = {sized:.6g} N·m at "
+        f"the output stage; q = {ratio:.6g}, η = {efficiency:.4g}).",
+        "A harmonic reducer is chosen for the load spectrum: its rated torque must carry the "
+        "cycle's cube-mean torque T_av (Honpine, step 2), its repeated peak 98/39 × T_N. "
+        "Sized at the rated torque alone, every start and stop of the cycle would lift T_av "
+        "above it; eq. (16) sizes each stage for the larger torque (the stages before the "
+        "output for its share), found at the ratio and efficiency of the reducer adopted.",
+        {
+            "rated_torque_Nm": rated_Nm,
+            "mean_torque_Nm": mean_Nm,
+            "service_factor": service_factor,
+            "sizing_torque_Nm": sized,
+            "ratio": ratio,
+            "efficiency": efficiency,
+        },
+    )

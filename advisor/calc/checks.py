@@ -12,9 +12,15 @@ if TYPE_CHECKING:  # the citation type; calc imports nothing of the core at run 
 
 
 class Check(NamedTuple):
-    """One strength or function check of a design.
+    """One strength or function check of a design, in one convention for every check:
 
-        margin = limit/value,   or limit/(factor·value) under a service factor
+        margin = limit/value   (value ≤ limit: a load, a stress, a speed)
+        margin = value/limit   (value ≥ limit: a life, a static safety, a ratio)
+
+    Under a service factor f_B a strength check states the factored demand, value =
+    f_B·demand, and its name says "× f_B", so value, limit and margin agree for a reader
+    (the linear chain's :func:`advisor.calc.sizing.factored_check`, the rotary stages'
+    :func:`advisor.applications.rotary.loads.factored_stage_check`).
 
     Attributes
     ----------
@@ -33,8 +39,8 @@ class Check(NamedTuple):
     source : Cite
         The bibliography ids and the place cited
     factor : float or None
-        The service factor the demand was multiplied by (a strength check under
-        ``[design] service_factor``); None where none applies
+        None in every check the advisor makes: a service factor is already in ``value``.
+        Kept so that a check built with one still reads (``margin`` is then as given)
     """
 
     id: str

@@ -447,6 +447,18 @@ class Rotor(NamedTuple):
     aero_k: float  # M_aero = aero_k·ω^1.5
     slew_per_speed: float  # M_gyro = slew_per_speed·ω (H = J·ω, Ω·sin α fixed)
 
+    @property
+    def couple_share(self) -> float:
+        """The share 1/⌊n/2⌋ of one pair's gyroscopic reaction one bearing carries [-].
+
+        Seed 002's eq. (3) is the reaction of one pair of bearings, one a side of the centre
+        of mass. With n bearings, n/2 a side (duplex sets), the bearings of a side share
+        their side's force: each takes F(M)/(n/2) = F(2·M/n), eq. (3) being linear in M. An
+        odd n puts ⌊n/2⌋ on one side, whose bearings then carry F/⌊n/2⌋ each; every bearing
+        is taken at that (the larger) share, so the friction of the other side's is
+        overstated, never understated. The weight is shared by all n (``weight_share_N``)."""
+        return 1.0 / (self.bearings // 2)
+
 
 def resisting_torque(rotor: Rotor, speed: float, slewing: bool) -> float:
     """Bearing friction of all bearings plus aerodynamic drag at a speed, term by term from the
@@ -480,7 +492,7 @@ def resisting_torque(rotor: Rotor, speed: float, slewing: bool) -> float:
     >>> round(resisting_torque(r, 4453.0, True), 5)
     0.01935
     """
-    moment = rotor.slew_per_speed * speed if slewing else 0.0
+    moment = rotor.slew_per_speed * speed * rotor.couple_share if slewing else 0.0
     loads = bearing_loads(rotor.weight_share_N, moment, rotor.balls, rotor.plane_to_cg_m, speed)
     bearing = friction_moment(loads, rotor.balls, rotor.rolling_friction_m).total_Nm
     return rotor.bearings * bearing + rotor.aero_k * max(speed, 0.0) ** 1.5
@@ -562,7 +574,9 @@ def resistance(rotor: Rotor, slewing: bool) -> Resistance:
     # slew_per_speed, with its preload) and the part proportional to ω² (centrifugal)
     still = bearing_loads(rotor.weight_share_N, 0.0, balls, rotor.plane_to_cg_m, 0.0)
     per_speed = (
-        bearing_loads(0.0, rotor.slew_per_speed, balls, rotor.plane_to_cg_m, 0.0)
+        bearing_loads(
+            0.0, rotor.slew_per_speed * rotor.couple_share, balls, rotor.plane_to_cg_m, 0.0
+        )
         if slewing
         else Loads(0.0, 0.0, 0.0)
     )
@@ -603,14 +617,16 @@ def gyroscopic_loads(rotor: Rotor, moment: float, speed: float) -> GyroscopicLoa
         ball plane to centre of mass h [m], drag coefficient k [N·m·s^1.5], and the gyroscopic
         moment per unit of speed J·Ω·sin α [N·m·s]
     moment : float
-        Gyroscopic moment M = H·Ω·sin α [N·m]
+        Gyroscopic moment M = H·Ω·sin α [N·m] on the rotor; one bearing answers
+        M/⌊n/2⌋ of it (:attr:`Rotor.couple_share`)
     speed : float
         Rotor speed ω [rad/s], ≥ 0
 
     Returns
     -------
     GyroscopicLoads
-        The moment [N·m], the axial and radial reaction [N], the loads without and with it
+        The moment M [N·m], one bearing's axial and radial reaction [N] (eq. (3) for
+        M/⌊n/2⌋), the loads without and with it
         (:func:`bearing_loads`) and their friction (:func:`friction_moment`) [N·m]
 
     References
@@ -630,9 +646,11 @@ def gyroscopic_loads(rotor: Rotor, moment: float, speed: float) -> GyroscopicLoa
     (19.1, 60.6)
     """
     balls, h, share = rotor.balls, rotor.plane_to_cg_m, rotor.weight_share_N
-    f_ax, f_rad = reaction_forces(moment, balls.pitch_radius_m, h)
+    # one bearing answers its share of the couple: eq. (3) is one pair's, ⌊n/2⌋ bearings a side
+    m_one = moment * rotor.couple_share
+    f_ax, f_rad = reaction_forces(m_one, balls.pitch_radius_m, h)
     calm = bearing_loads(share, 0.0, balls, h, speed)
-    slewing = bearing_loads(share, moment, balls, h, speed)
+    slewing = bearing_loads(share, m_one, balls, h, speed)
     return GyroscopicLoads(
         moment,
         f_ax,

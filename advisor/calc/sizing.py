@@ -33,8 +33,50 @@ def _upper(
     factor: float | None = None,
 ) -> Check:
     """A check of the form factor·value ≤ limit; margin = limit / (factor·value). ``factor``
-    None: no service factor applies (a geometric or thermal check, or none given)."""
-    return Check(id, name, value, limit, unit, _margin(value, limit, factor or 1.0), source, factor)
+    None: no service factor applies (a geometric or thermal check, or none given). Under a
+    service factor the check states the factored demand f_B·value and says so in its name,
+    so that its value, limit and margin agree for a reader: margin = limit / stated value."""
+    if factor is None:
+        return Check(id, name, value, limit, unit, _margin(value, limit), source)
+    return factored_check(id, name, value, limit, unit, source, factor)
+
+
+def factored_check(
+    id: str, name: str, demand: float, limit: float, unit: str, source: Cite, factor: float
+) -> Check:
+    """A strength check under the service factor f_B, stated as the factored demand.
+
+        value = f_B·demand,   margin = limit / value
+
+    Parameters
+    ----------
+    id, name : str
+        The check's id and its name in words (" × f_B = …" is appended)
+    demand : float
+        The demand before the factor [unit]
+    limit : float
+        The capacity [unit]
+    unit : str
+        The unit of demand and limit
+    source : Cite
+        Where the check comes from
+    factor : float
+        The service factor f_B [-], ≥ 1
+
+    Returns
+    -------
+    Check
+        value f_B·demand, margin limit/(f_B·demand) (∞ for no demand); ``factor`` None:
+        the factor is already in the value
+
+    References
+    ----------
+    SEW-EURODRIVE, service factor f_B (``[design] service_factor``).
+    """
+    stated = factor * demand
+    return Check(
+        id, f"{name} × f_B = {factor:g}", stated, limit, unit, _margin(stated, limit), source
+    )
 
 
 def _lower(id: str, name: str, value: float, limit: float, unit: str, source: Cite) -> Check:
@@ -323,6 +365,13 @@ class ScrewDemand:
     material: ScrewMaterial
     thrust: ThrustFace | None = None
     service_factor: float = 1.0
+    #: the emergency stop's momentary axial force; 0: none given (no stop checks)
+    stop_force_N: float = 0.0
+
+    @property
+    def momentary_force_N(self) -> float:
+        """The force the stop checks take: the stop's, or the rated one where it is larger."""
+        return max(self.force_N, self.stop_force_N)
 
     def evaluate(self, thread: ThreadProfile, starts: int) -> ThreadEvaluation:
         """:func:`evaluate_thread` of one thread with ``starts`` starts under this demand."""
@@ -368,6 +417,9 @@ class _ThreadNumbers(NamedTuple):
     formula: str
     thrust_torque: float = 0.0
     max_speed: float = math.inf
+    #: the core stress and the flank pressure at the emergency stop's force (0: no stop given)
+    stop_core: float = 0.0
+    stop_pressure: float = 0.0
 
 
 def _nut(
@@ -426,7 +478,18 @@ def _thread_numbers(thread: ThreadProfile, starts: int, d: ScrewDemand) -> _Thre
         formula=formula,
         thrust_torque=d.thrust.torque_Nm(force_N, speed) if d.thrust is not None else 0.0,
         max_speed=_max_speed_rpm(d3, d.span_m, d.end_fixity, material),
+        stop_core=_stop_core_stress(d, d2, d3, psi, phi) if d.stop_force_N > 0 else 0.0,
+        stop_pressure=screw.nut_bearing_pressure(d.momentary_force_N, d2, thread.H1_mm * MM, turns)
+        if d.stop_force_N > 0
+        else 0.0,
     )
+
+
+def _stop_core_stress(d: ScrewDemand, d2: float, d3: float, psi: float, phi: float) -> float:
+    """The core's equivalent stress at the emergency stop's force, with the thread torque
+    that force asks (the motor driving into the stop): σ_eq(F_m, M(F_m))  [Pa]."""
+    force = d.momentary_force_N
+    return screw.core_equivalent_stress(force, screw.torque_from_angles(force, d2, psi, phi), d3)
 
 
 def _thread_checks(n: _ThreadNumbers, d: ScrewDemand, d2: float) -> tuple[Check, ...]:
@@ -467,6 +530,80 @@ def _thread_checks(n: _ThreadNumbers, d: ScrewDemand, d2: float) -> tuple[Check,
             src.ivanov,
         ),
         _upper("nut_turns", "engaged nut turns", n.turns, float(m.nut_max_turns), "", src.ivanov),
+        *(_stop_checks(n, d, src) if d.stop_force_N > 0 else ()),
+    )
+
+
+def stop_force_words(force_N: float, stop_force_N: float) -> str:
+    """The force the emergency-stop checks take, in words.
+
+    F_m = max(F, F_stop): a stop below the rated force cannot load the screw less than its
+    work does
+
+    Parameters
+    ----------
+    force_N : float
+        Rated axial force F [N]
+    stop_force_N : float
+        The emergency stop's momentary axial force F_stop [N]
+
+    Returns
+    -------
+    words : str
+        "the emergency stop's F_stop N", or the rated force with the smaller stop's beside it
+
+    Examples
+    --------
+    >>> stop_force_words(5000.0, 30000.0)
+    "the emergency stop's 30000 N"
+    >>> stop_force_words(5000.0, 3000.0)
+    "the rated 5000 N (above the emergency stop's 3000 N)"
+
+    References
+    ----------
+    The key ``linear.emergency_stop_force_N`` (docs/reference/keys.md).
+    """
+    if stop_force_N >= force_N:
+        return f"the emergency stop's {stop_force_N:g} N"
+    return f"the rated {force_N:g} N (above the emergency stop's {stop_force_N:g} N)"
+
+
+def _stop_checks(n: _ThreadNumbers, d: ScrewDemand, src: _CheckSources) -> tuple[Check, ...]:
+    """The strength checks at the emergency stop's momentary force F_m = max(F, F_stop), under
+    the service factor: the same static formulas and limits as at the rated force (buckling
+    keeps its safety factor S_b: an instability is not relieved by a short load; the nut its
+    allowable flank pressure, the sources giving no momentary one)."""
+    m, sf = d.material, (d.service_factor if d.service_factor != 1.0 else None)
+    at = f"at {stop_force_words(d.force_N, d.stop_force_N)}"
+    momentary = "momentary force checked statically"
+    return (
+        _upper(
+            "core_stress_emergency_stop",
+            f"{src.core_name} {at}",
+            n.stop_core / MPA,
+            m.yield_strength_Pa / m.yield_safety_factor / MPA,
+            "MPa",
+            src.core.with_note(f"[σ] = σ_y/{m.yield_safety_factor:g}; {momentary}"),
+            sf,
+        ),
+        _upper(
+            "buckling_emergency_stop",
+            f"{src.buckling_name} {at}",
+            d.momentary_force_N,
+            n.p_cr / d.buckling_safety_factor,
+            "N",
+            src.buckling.with_note(f"safety factor {d.buckling_safety_factor:g}; {momentary}"),
+            sf,
+        ),
+        _upper(
+            "nut_pressure_emergency_stop",
+            f"nut flank bearing pressure {at}",
+            n.stop_pressure / MPA,
+            m.allowable_pressure_Pa / MPA,
+            "MPa",
+            src.ivanov.with_note(f"the nut's turns as sized for the rated force; {momentary}"),
+            sf,
+        ),
     )
 
 
@@ -526,11 +663,19 @@ def _holds_the_load(g: ThreadGeometry, d: ScrewDemand) -> bool:
     p_cr = screw.critical_buckling_load(
         g.d3_m, d.span_m, d.end_fixity, m.elastic_modulus_Pa, m.yield_strength_Pa
     )[0]
-    return (
+    holds = (
         _margin(force_N, p_cr / d.buckling_safety_factor, sf) >= 1.0
         and _margin(pressure / MPA, m.allowable_pressure_Pa / MPA, sf) >= 1.0
         and _margin(turns * p / d2, m.nut_height_ratio_max) >= 1.0
         and _margin(turns, float(m.nut_max_turns)) >= 1.0
+    )
+    if not holds or d.stop_force_N <= 0:
+        return holds
+    # the emergency stop's momentary force, as :func:`_stop_checks` checks it
+    stop_pressure = screw.nut_bearing_pressure(d.momentary_force_N, d2, g.h1_m, turns)
+    return (
+        _margin(d.momentary_force_N, p_cr / d.buckling_safety_factor, sf) >= 1.0
+        and _margin(stop_pressure / MPA, m.allowable_pressure_Pa / MPA, sf) >= 1.0
     )
 
 
@@ -541,12 +686,14 @@ def _screen_lead(
     stress under the torque of that lead decides."""
     m, force_N = d.material, d.force_N
     psi = screw.lead_angle(g.pitch_m, g.d2_m, starts)
-    torque = screw.torque_from_angles(
-        force_N, g.d2_m, psi, screw.friction_angle(m.friction_coefficient, d.friction_model, psi)
-    )
+    phi = screw.friction_angle(m.friction_coefficient, d.friction_model, psi)
+    torque = screw.torque_from_angles(force_N, g.d2_m, psi, phi)
     core = screw.core_equivalent_stress(force_N, torque, g.d3_m)
     stress_limit = m.yield_strength_Pa / m.yield_safety_factor / MPA
     passed = _margin(core / MPA, stress_limit, d.service_factor) >= 1.0
+    if passed and d.stop_force_N > 0:  # the core at the stop's force, as _stop_checks
+        stop_core = _stop_core_stress(d, g.d2_m, g.d3_m, psi, phi)
+        passed = _margin(stop_core / MPA, stress_limit, d.service_factor) >= 1.0
     revs = screw.revolutions(d.stroke_m, g.pitch_m, starts)
     speed = screw.screw_speed_rpm(revs, d.travel_time_s)
     low = screw.friction_angle(m.friction_low, "standard", psi)
@@ -580,6 +727,7 @@ def evaluate_thread(
     material: ScrewMaterial,
     thrust: ThrustFace | None = None,
     service_factor: float = 1.0,
+    stop_force_N: float = 0.0,
 ) -> ThreadEvaluation:
     """Torque, efficiency, self-locking and the five checks of one thread.
 
@@ -597,8 +745,9 @@ def evaluate_thread(
         Rated axial force [N], stroke [m] and its travel time [s]
     span_m, end_fixity : float, str
         Length between the supports [m] and their fixity (a column's end conditions)
-    buckling_safety_factor, service_factor : float
-        Safety factor S_b on buckling [-]; service factor f_B on the strength checks [-]
+    buckling_safety_factor, service_factor, stop_force_N : float
+        Safety factor S_b on buckling [-]; service factor f_B on the strength checks [-];
+        emergency stop's force F_stop [N] (0: none), the first three checked again at it
     starts : int
         Number of thread starts [-]
     friction_model : str
@@ -613,18 +762,8 @@ def evaluate_thread(
     evaluation : ThreadEvaluation
         Angles [rad], torques [N·m], efficiencies [-], speed [rpm], nut, checks
     """
-    demand = ScrewDemand(
-        force_N,
-        stroke_m,
-        travel_time_s,
-        span_m,
-        end_fixity,
-        buckling_safety_factor,
-        friction_model,
-        material,
-        thrust,
-        service_factor,
-    )
+    column = (force_N, stroke_m, travel_time_s, span_m, end_fixity, buckling_safety_factor)
+    demand = ScrewDemand(*column, friction_model, material, thrust, service_factor, stop_force_N)
     return demand.evaluate(thread, starts)
 
 
@@ -642,6 +781,7 @@ def screen_threads(
     material: ScrewMaterial,
     thrust: ThrustFace | None = None,
     service_factor: float = 1.0,
+    stop_force_N: float = 0.0,
 ) -> list[ThreadScreen]:
     """Pass or fail of every thread with every number of starts, its torque and speed.
 
@@ -655,7 +795,7 @@ def screen_threads(
         Numbers of thread starts to screen [-]
     force_N, stroke_m, travel_time_s, span_m, end_fixity, buckling_safety_factor
         As for :func:`evaluate_thread` [N], [m], [s], [m], -, [-]
-    friction_model, material, thrust, service_factor
+    friction_model, material, thrust, service_factor, stop_force_N
         As for :func:`evaluate_thread`
 
     Returns
@@ -670,18 +810,8 @@ def screen_threads(
     starts: a thread that fails one fails with every number of starts, and its torque is
     not computed. Seed 001, eq. (1); Ivanov, «Детали машин», power screws.
     """
-    demand = ScrewDemand(
-        force_N,
-        stroke_m,
-        travel_time_s,
-        span_m,
-        end_fixity,
-        buckling_safety_factor,
-        friction_model,
-        material,
-        thrust,
-        service_factor,
-    )
+    column = (force_N, stroke_m, travel_time_s, span_m, end_fixity, buckling_safety_factor)
+    demand = ScrewDemand(*column, friction_model, material, thrust, service_factor, stop_force_N)
     return demand.screen(geometries, starts_options)
 
 

@@ -118,8 +118,9 @@ def record_fields(
 class CheckOut(ReportTable):
     """A check (:class:`advisor.calc.checks.Check`) as the report writes it: the record's
     fields, the verdict after its margin, its source in words and the source's bibliography
-    ids after it. ``factor``: the service factor a strength check multiplied its demand by
-    (margin = limit / (factor·value)); absent where none applies."""
+    ids after it. margin = limit/value (value/limit for a lower bound); under a service
+    factor the value is the factored demand. ``factor`` is absent from the advisor's own
+    checks (the factor is in the value)."""
 
     __annotations__ = record_fields(
         Check,

@@ -300,6 +300,22 @@ def lookup(tree: Any, path: str) -> Any:
     return node
 
 
+#: Between two report paths: the quantity is the first value over the second.
+RATIO = " / "
+
+
+def report_value(tree: Any, locator: str) -> Any:
+    """The quantity at ``locator`` in a report read as TOML: one path (:func:`lookup`), or
+    the ratio of two, ``a / b`` (a factor the advisor applies, read as the factored value
+    over the value it multiplies: f_B = (f_B·F)/F)."""
+    if RATIO not in locator:
+        return lookup(tree, locator)
+    top, bottom = (lookup(tree, part.strip()) for part in locator.split(RATIO, 1))
+    if not all(_number(x) for x in (top, bottom)) or bottom == 0:
+        raise KeyError(f"{locator}: {top!r} / {bottom!r} is not a ratio of numbers")
+    return top / bottom
+
+
 def _requirement_values(case: Case, catalog_dir: Path | None) -> dict[str, Any]:
     from advisor.core.engine import advise
     from advisor.core.reading import parse_requirements
@@ -309,7 +325,7 @@ def _requirement_values(case: Case, catalog_dir: Path | None) -> dict[str, Any]:
     out: dict[str, Any] = {}
     for q in case.quantities:
         try:
-            out[q.locator] = lookup(report, q.locator)
+            out[q.locator] = report_value(report, q.locator)
         except KeyError as exc:
             out[q.locator] = exc
     return out

@@ -206,3 +206,28 @@ def test_control_characters_in_a_report_are_shown_escaped(tmp_path, capsys, fmt)
     for raw in ("\x1b", "\x07", "\x00", "\u202e"):
         assert raw not in out
     assert "new warning: a\\x1b[2Jb\\x07c\\x00d\\u202ee" in out
+
+
+@pytest.mark.parametrize(
+    ("old", "new", "says"),
+    [
+        ("margin = 3.88", "margin = nan", "checks[0].margin = nan"),
+        ("margin = 3.88", "margin = inf", "checks[0].margin = inf"),
+        ("margin = 3.88", "margin = -inf", "checks[0].margin = -inf"),
+        ("margin = 3.88", "margin = 1e400", "checks[0].margin = inf"),  # overflows to inf
+        ("value = 30.5", "value = nan", "checks[0].value = nan"),
+        ('warnings = ["w1"]', 'warnings = ["w1"]\n[requirements.linear]\nforce_N = inf', None),
+    ],
+)
+def test_a_non_finite_number_is_refused_naming_its_key(tmp_path, capsys, old, new, says):
+    """|nan − 3.88| > tol and |inf − 3.88| > tol·inf are both false: without the refusal
+    such a report read as "the same" as the good one (exit 0). A report never holds nan or
+    inf (docs/reference/report.md): exit 2, one line naming the key and the value."""
+    says = says or "requirements.linear.force_N = inf"
+    good = _file(tmp_path, MINIMAL, "good.toml")
+    bad = _file(tmp_path, MINIMAL.replace(old, new, 1), "bad.toml")
+    for pair in ([good, bad], [bad, good]):
+        assert main(["diff", *map(str, pair)]) == 2
+        out, err = capsys.readouterr()
+        assert out == "" and err.count("\n") == 1
+        assert f"{bad}: not a report of the advisor: {says}: " in err and "finite" in err

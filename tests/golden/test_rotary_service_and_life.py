@@ -233,9 +233,105 @@ def test_service_factor_sizes_the_stages_not_the_motor():
         1.5 ** (1 / 3)
     )
     assert r.design.motor.torque_Nm == pytest.approx(base.design.motor.torque_Nm)
+    # the check states the factored torque: value 1.5·1620 = 2430 N·m against
+    # 98/39·2430 = 6106.2 N·m, margin = limit/value = 98/39 (value 1620 and a separate
+    # factor before, margin limit/(factor·value))
     c = _check(r, "stage_repeated_peak")
-    assert (c.value, c.limit, c.factor) == pytest.approx((1620, 98 / 39 * 2430, 1.5))
-    assert c.margin == pytest.approx(98 / 39 * 2430 / (1.5 * 1620))
+    assert (c.value, c.limit) == pytest.approx((1.5 * 1620, 98 / 39 * 2430))
+    assert c.margin == pytest.approx(c.limit / c.value) == pytest.approx(98 / 39)
+    assert c.factor is None and "× f_B" in c.name and "f_B = 1.5" in c.name
+
+
+def test_every_rotary_check_states_margin_as_limit_over_value():
+    """valve_actuator_hold under f_B = 1.5, an emergency stop of 2500 N·m, a required life
+    and an output bearing: each check's margin is limit/value (an upper bound) or
+    value/limit (static safety, life: lower bounds), with no per-check factor. By hand the
+    momentary peak: value 1.5·2500 = 3750 N·m against 186/39·T_N, T_N = 1.5·1000 = 1500 N·m
+    by eq. (16): 7153.85 N·m, margin 7153.85/3750 = 1.90769 (the report said value 2500,
+    the same margin, and factor = 1.5)."""
+    data = _req(
+        "valve_actuator_hold.toml",
+        rotary={"emergency_stop_torque_Nm": 2500},
+        design={"service_factor": 1.5, "life_h": 3000},
+        output_load={"radial_N": 2000, "bearing": "6309"},
+    )
+    r = _advise(data)
+    c = _check(r, "stage_momentary_peak")
+    assert c.value == pytest.approx(3750.0)
+    assert c.limit == pytest.approx(186 / 39 * 1500)
+    assert c.margin == pytest.approx(186 / 39 * 1500 / 3750) == pytest.approx(1.90769, rel=1e-5)
+    for c in r.checks:
+        assert c.factor is None, c.id
+        upper = c.limit / c.value if c.value else math.inf
+        lower = c.value / c.limit if c.limit else math.inf
+        assert c.margin == pytest.approx(upper, rel=1e-9) or c.margin == pytest.approx(
+            lower, rel=1e-9
+        ), c.id
+
+
+def test_the_emergency_stop_passes_a_device_at_the_output():
+    """A worm at the output sits between the load and the reducer: the stop's torque at the
+    load reaches the output stage as the device's input torque M/η_d, as T_N does
+    (seed 004). Rudder at 300 N·m, stop 600 N·m: T_N = 300/η_d, the momentary peak
+    600/η_d = 600/0.33112 = 1812.0 N·m, margin = 186/39·(300/η_d)/(600/η_d) = 186/78 =
+    2.38462 whatever η_d (the stop raw against T_N gave 186/39·300/(600·η_d) = 7.20)."""
+    data = _req(
+        "rudder_actuator.toml",
+        application={"hold_without_power": True},
+        rotary={"torque_Nm": 300, "emergency_stop_torque_Nm": 600},
+        motor={"frame": "auto"},
+        one_way={"type": "worm", "location": "output_side"},
+    )
+    r = _advise(data)
+    load = r.design.reducer_load
+    eta_d = 300 / load.rated_torque_Nm
+    assert eta_d == pytest.approx(0.33112, rel=1e-4)  # the worm's driving efficiency
+    assert load.momentary_peak_torque_Nm == pytest.approx(600 / eta_d)
+    assert load.momentary_peak_torque_Nm == pytest.approx(1812.0, rel=1e-4)
+    assert "through the worm at the output" in load.momentary_peak_basis
+    c = _check(r, "stage_momentary_peak")
+    assert c.value == pytest.approx(600 / eta_d)
+    assert c.margin == pytest.approx(186 / 78) == pytest.approx(2.38462, rel=1e-5)
+
+
+def test_a_stop_below_the_working_torque_is_taken_at_the_repeated_peak():
+    """A momentary peak is at least the repeated peak: valve 1000 N·m with a stop of 10 N·m
+    is checked at 1000 N·m (f_B = 1.5: value 1500 N·m against 186/39·1500 = 7153.85 N·m,
+    margin 186/39 = 4.76923; the 10 N·m gave margin 477), and the basis says why."""
+    data = _req(
+        "valve_actuator_hold.toml",
+        rotary={"emergency_stop_torque_Nm": 10},
+        design={"service_factor": 1.5},
+    )
+    r = _advise(data)
+    assert r.design.reducer_load.momentary_peak_torque_Nm == pytest.approx(1000.0)
+    assert "below the repeated peak" in r.design.reducer_load.momentary_peak_basis
+    c = _check(r, "stage_momentary_peak")
+    assert (c.value, c.limit) == pytest.approx((1500.0, 186 / 39 * 1500))
+    assert c.margin == pytest.approx(186 / 39) == pytest.approx(4.76923, rel=1e-5)
+
+
+def test_the_datasheet_names_the_checks_of_the_stop_the_life_and_f_B():
+    """The required-and-achieved rows of the emergency-stop torque, the required life, the
+    service factor and the output load name the checks that cover them (each said "no check
+    covers this requirement"). valve_actuator_hold, f_B = 1.5, stop 2500 N·m, 3000 h: the
+    stop's row is stage_momentary_peak, 3750 against 7154 N·m, 1.908 (by hand above)."""
+    from advisor.datasheet import render
+
+    data = _req(
+        "valve_actuator_hold.toml",
+        rotary={"emergency_stop_torque_Nm": 2500},
+        design={"service_factor": 1.5, "life_h": 3000},
+        output_load={"radial_N": 2000, "bearing": "6309"},
+    )
+    md = render(_advise(data), "md")
+    rows = {
+        label: next(x for x in md.splitlines() if x.startswith(f"| {label}"))
+        for label in ("Emergency-stop torque", "Required life", "Service factor", "Radial load")
+    }
+    for label, line in rows.items():
+        assert "no check covers this requirement" not in line, label
+    assert "| 3750 against 7154 N·m | 1.908 |" in rows["Emergency-stop torque"]
 
 
 # ------------------------------------------------------------------ item 6: regeneration

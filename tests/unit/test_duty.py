@@ -315,8 +315,11 @@ def test_rotary_cycle_too_fast_for_the_motor(tmp_path):
 
 
 def test_rotary_s3_by_hand(tmp_path):
-    """S3 25 % at the rated point: 2 N·m at 5000 rpm for 150 s of 600 s, then rest: the mean
-    losses are a quarter of the point's 228.42 W (the motor torque 1620/(1000·0.81) = 2 N·m)."""
+    """S3 25 % at the rated point: 2 N·m at 5000 rpm for 150 s of 600 s (the motor torque
+    1620/(1000·0.81) = 2 N·m), then 450 s at rest with the load standing, held by the motor
+    through the back-driven wave gear (docs/reference/duty.md): 1620·0.81/1000 = 1.3122 N·m,
+    copper only, 68.97·(1.3122/2)² = 29.690 W (the point's ohmic 68.97 W at 2 N·m).
+    Mean losses 228.42·0.25 + 29.690·0.75 = 79.372 W; RMS √(0.25·2² + 0.75·1.3122²)."""
     src = RUDDER.read_text(encoding="utf-8")
     f = tmp_path / "s3.toml"
     f.write_text(
@@ -326,9 +329,13 @@ def test_rotary_s3_by_hand(tmp_path):
         encoding="utf-8",
     )
     d = advise(read_requirements(f)).design.duty
-    assert d.losses_W["total"] == pytest.approx(228.42 / 4.0, rel=1e-5)
-    assert d.thermal_utilisation == pytest.approx(0.25, rel=1e-5)
-    assert d.rms_torque_Nm == pytest.approx(2.0 * math.sqrt(0.25), rel=1e-5)
+    held = 1620.0 * 0.81 / 1000.0
+    total = 228.42 * 0.25 + 68.97 * (held / 2.0) ** 2 * 0.75
+    assert total == pytest.approx(79.372, abs=1e-3)
+    assert d.losses_W["total"] == pytest.approx(total, rel=1e-5)
+    assert d.thermal_utilisation == pytest.approx(total / 228.42, rel=1e-5)
+    assert d.rms_torque_Nm == pytest.approx(math.sqrt(0.25 * 4.0 + 0.75 * held**2), rel=1e-5)
+    assert d.phases[-1].name == "rest" and d.phases[-1].torque_Nm == pytest.approx(held)
 
 
 def test_wizard_plots_of_the_cycle():

@@ -103,3 +103,37 @@ def test_the_report_is_built_from_the_records(steps):
     assert out.bearing.static_safety == rating.static_safety
     assert out.skf_friction_Nm.without_reaction == rating.skf_calm.total_Nm
     assert out.speed_rpm == req.rotor.speed_rad_s * RPM
+
+
+@pytest.mark.parametrize(("count", "per_side"), [(2, 1), (3, 1), (4, 2), (6, 3), (8, 4)])
+def test_more_bearings_share_the_pairs_reaction(count, per_side):
+    """Seed 002's eq. (3) is one pair's reaction; n bearings stand n/2 a side (⌊n/2⌋ on the
+    smaller side of an odd count), and a side's bearings share its force.
+
+    By hand for the example (M = H·Ω·sin α = 1.814·0.0765·1 = 0.138771 N·m, r = 6.6 mm,
+    h = 10 mm, ωt = 0): r² + h² = 4.356e-5 + 1e-4 = 1.4356e-4 m²,
+    F_ax = M·r/(r² + h²) = 0.138771·0.0066/1.4356e-4 = 6.37983 N,
+    F_rad = M·h/(r² + h²) = 0.138771·0.010/1.4356e-4 = 9.66641 N per pair; per bearing
+    F/⌊n/2⌋. The weight 0.56·9.80665 = 5.49172 N is shared n ways."""
+    import tomllib
+
+    from advisor.core.reading import parse_requirements
+
+    data = tomllib.loads(GYRO.read_text(encoding="utf-8"))
+    data["rotor"]["bearing_count"] = count
+    req = parse_requirements(data)
+    cat = load_catalogs()
+    b, angle = chosen_bearing(req, cat)
+    rotor = rotor_model(req, b, angle)
+    loads = gyroscopic_loads(rotor, 1.814 * 0.0765, req.rotor.speed_rad_s)
+    assert loads.moment_Nm == pytest.approx(0.138771)  # the rotor's moment, not a share
+    assert loads.reaction_axial_N == pytest.approx(6.37983 / per_side, rel=1e-5)
+    assert loads.reaction_radial_N == pytest.approx(9.66641 / per_side, rel=1e-5)
+    assert loads.slewing.radial_N == pytest.approx(5.49172 / count + 9.66641 / per_side, rel=1e-5)
+    # the motion equation's resistance uses the same loads: n bearings' friction + drag
+    w = req.rotor.speed_rad_s
+    s = steady_torques(rotor, loads, w)
+    assert s.slewing_Nm == pytest.approx(resisting_torque(rotor, w, True), rel=1e-9)
+    assert s.slewing_Nm == pytest.approx(
+        count * loads.friction_slewing.total_Nm + s.aero_Nm, rel=1e-12
+    )

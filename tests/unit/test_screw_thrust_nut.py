@@ -286,16 +286,19 @@ def test_a_long_span_steers_the_choice_away_from_whirling():
 def test_service_factor_multiplies_the_strength_demands():
     # Tr16x2 at 3500 N, f_B = 1.5: the nut is sized for 5250 N: z = 5250/(π·15·1·10) = 11.14
     # → 12 turns > z_max = 10, so the nut check fails; the core stress margin is
-    # σ_allow/(1.5·σ): 118.33/(1.5·σ).
+    # σ_allow/(1.5·σ): 118.33/(1.5·σ). The check states the factored demand 1.5·σ, so that
+    # its margin is limit/value for a reader.
     one = _evaluate("Tr16x2", 3500.0)
     fb = _evaluate("Tr16x2", 3500.0, sf=1.5)
     assert one.nut_turns == 9 and fb.nut_turns == 12
     core1 = next(c for c in one.checks if c.id == "core_stress")
     core = next(c for c in fb.checks if c.id == "core_stress")
-    assert core.factor == 1.5 and core1.factor is None
-    assert core.value == pytest.approx(core1.value)
+    assert core.factor is None and core1.factor is None  # the factor is in the value
+    assert core.name == f"{core1.name} × f_B = 1.5"
+    assert core.value == pytest.approx(1.5 * core1.value)
     assert core.margin == pytest.approx(core1.margin / 1.5)
     buck = next(c for c in fb.checks if c.id == "buckling")
+    assert buck.value == pytest.approx(1.5 * 3500)
     assert buck.margin == pytest.approx(21120.5 / 3 / (1.5 * 3500), rel=1e-5)
     assert {c.id for c in fb.failed} == {"nut_turns"}
 
@@ -307,10 +310,13 @@ def test_service_factor_in_the_report():
     )
     r = _report(data)
     checks = {c["id"]: c for c in r["checks"]}
+    # the strength checks state f_B·demand (buckling: 1.2 × 3500 N) and say so in their
+    # names: margin = limit/value as a reader recomputes it
+    assert checks["buckling"]["value"] == pytest.approx(1.2 * 3500.0)
     for cid in ("core_stress", "buckling", "nut_pressure"):
         c = checks[cid]
-        assert c["factor"] == 1.2
-        assert c["margin"] == pytest.approx(c["limit"] / (1.2 * c["value"]), rel=1e-5)
+        assert "factor" not in c and c["name"].endswith("× f_B = 1.2")
+        assert c["margin"] == pytest.approx(c["limit"] / c["value"], rel=1e-5)
     # thermal and function checks carry no factor
     assert "factor" not in checks["motor_rated_torque"]
     assert r["design"]["screw"]["service_factor"] == 1.2

@@ -17,7 +17,7 @@ from advisor.applications.linear.report import LinearDesignOut
 from advisor.applications.linear.screw_checks import screw_checks
 from advisor.applications.linear.tables import motor_out, screw_out
 from advisor.calc.induction import synchronous_speed_rpm
-from advisor.calc.one_way import NO_DEVICE, Passage
+from advisor.calc.one_way import NO_DEVICE, Passage, size
 from advisor.calc.screw import WHIRL_ALLOWED_SHARE
 from advisor.calc.service_factor import service_factor
 from advisor.calc.sizing import (
@@ -31,6 +31,7 @@ from advisor.calc.sizing import (
 )
 from advisor.core.cite import cite
 from advisor.core.errors import InfeasibleError, InputError
+from advisor.core.ignored import IGNORED_PREFIX
 from advisor.core.reading import Requirements
 from advisor.core.rulebook import Trace
 from advisor.duty.report import DutyOut
@@ -98,12 +99,14 @@ def _one_way(
     thread: str,
     friction_low: float,
     drive_torque: float,
+    motor_power_W: float,
 ):
     """Seed 004 for a screw drive: no device when the screw holds with margin, otherwise one
     at the motor side carrying the torque that drives the screw (thread and thrust face) — at
     the rated force or, if larger, at the emergency stop's momentary force, times the service
     factor: the device holds the stop by its sizing (a check of it against the same torque
-    could only state a margin of 1.000)."""
+    could only state a margin of 1.000). Its power share is over the motor's mechanical
+    power at the working point, ``motor_power_W``."""
     from advisor.one_way.advice import choose_device
     from advisor.one_way.report import OneWayOut
     from rules import one_way as ow_rules
@@ -115,13 +118,11 @@ def _one_way(
             location="none",
             torque_Nm=ev.torque_Nm,
             basis=f"{thread} is self-locking over the whole friction range of the pair",
-        ), []
+        ), _unused_device(req, thread, friction_low)
     lin, f_b = req.linear, service_factor(getattr(req, "design", None)).value
-    stop = lin.emergency_stop_force_N
-    force = max(lin.force_N, stop or 0.0)
-    sized = drive_torque * force / lin.force_N * f_b  # the screw's torques grow with the force
-    power = drive_torque * ev.speed_rpm * math.pi / 30.0
-    device, warnings = choose_device(req.one_way, sized, sized, power, trace)
+    force = max(lin.force_N, lin.emergency_stop_force_N or 0.0)
+    sized = device_torque(req, drive_torque)
+    device, warnings = choose_device(req.one_way, sized, sized, motor_power_W, trace)
     if force != lin.force_N or f_b != 1.0:
         what = "the emergency stop's" if force != lin.force_N else "the rated"
         device = device.replace(
@@ -133,6 +134,31 @@ def _one_way(
         f"{friction_low:g}): a {device.type.replace('_', ' ')} at the motor side holds the load",
     )
     return device.replace(output_side=None), warnings
+
+
+def _unused_device(req: Requirements, thread: str, friction_low: float) -> list[str]:
+    """A [one_way] table given while the screw holds by itself is said as ignored, as one
+    given with hold_without_power = false is: the table chooses the device where one is
+    needed, and a device in series with a self-locking screw would only cost its efficiency
+    (the worm's 0.33), mass and power (OW-03; seed 004 judges self-locking gears not
+    rational)."""
+    if "one_way" not in req.model_fields_set:
+        return []
+    return [
+        f"{IGNORED_PREFIX}the [one_way] table (type = {req.one_way.type!r}), because "
+        f"{thread} is self-locking over the whole friction range of the pair (down to f = "
+        f"{friction_low:g}): the screw holds the load and no device is chosen (OW-03)"
+    ]
+
+
+def device_torque(req: Requirements, drive_torque_Nm: float) -> float:
+    """The torque a holding device at the motor side is sized for: the torque that drives
+    the screw (thread and thrust face) at the rated force or, if larger, at the emergency
+    stop's momentary force, times the service factor f_B (the screw's torques grow with the
+    force)."""
+    lin, f_b = req.linear, service_factor(getattr(req, "design", None)).value
+    force = max(lin.force_N, lin.emergency_stop_force_N or 0.0)
+    return drive_torque_Nm * force / lin.force_N * f_b
 
 
 def screw_demand(
@@ -155,6 +181,7 @@ def screw_demand(
         material=material,
         thrust=thrust_face(req, cat),
         service_factor=service_factor(getattr(req, "design", None)).value,
+        stop_force_N=lin.emergency_stop_force_N or 0.0,
     )
     return demand, f_range
 
@@ -224,23 +251,30 @@ def _pole_options(
 class Drive(NamedTuple):
     """The chosen screw as the motor sees it: the torque that moves the load (thread and
     thrust face), the same at the motor (through the one-way device's η), the device in
-    the chain where one holds the load, and the motor's plan."""
+    the chain where one holds the load, and the motor's plan; the device's own inertia, which
+    turns with the rotor (0 without a device)."""
 
     screw: ThreadEvaluation
     at_motor: ThreadEvaluation
     passage: Passage | None
     plan: MotorPlan
+    device_inertia_kgm2: float = 0.0
 
 
 def _drive(
     req: Requirements, ev: ThreadEvaluation, motor_model: str, cat: Catalogs, trace: Trace
 ) -> Drive:
-    """The torque the chosen motor gives, and its plan (rules IM-02, IM-03)."""
-    passage = None  # the one-way device in the chain, where one holds the load
+    """The torque the chosen motor gives, and its plan (rules IM-02, IM-03). The one-way
+    device is chosen at the torque it is sized for, as :func:`_one_way` sizes it, so that
+    the device in the chain is the one reported, with its inertia."""
+    passage, j_device = None, 0.0  # the one-way device in the chain, where one holds the load
     if req.application.hold_without_power and not ev.self_locking_at_low_friction:
         from advisor.one_way.advice import device_passage
 
-        passage = device_passage(req.one_way, ev.torque_Nm, ev.torque_Nm)
+        sized = device_torque(req, ev.drive_torque_Nm)
+        passage = device_passage(req.one_way, sized, sized)
+        device = size(passage.type, sized, req.one_way.rollers)
+        j_device = device.inertia_kgm2 if device is not None else 0.0
     # the torque that moves the load: the thread's and the thrust face's; the motor drives
     # the screw through the device: it gives that torque over the device's η
     drive = ev._replace(torque_Nm=ev.drive_torque_Nm, thrust_torque_Nm=0.0)
@@ -249,7 +283,7 @@ def _drive(
     )
     motor = next(m for m in cat.motors if m.model == motor_model)
     plan = plan_motor(at_motor, motor, cat, trace)
-    return Drive(drive, at_motor, passage, plan)
+    return Drive(drive, at_motor, passage, plan, j_device)
 
 
 def _size_for_duty(
@@ -265,7 +299,14 @@ def _size_for_duty(
     holder = holder or ("one_way" if req.application.hold_without_power else None)
     plan = chain.plan
     duty, motor, checks, warnings = advise_duty(
-        req, chain.screw, plan.selected, cat, holder, trace, chain.passage or NO_DEVICE
+        req,
+        chain.screw,
+        plan.selected,
+        cat,
+        holder,
+        trace,
+        chain.passage or NO_DEVICE,
+        chain.device_inertia_kgm2,
     )
     if motor is not plan.selected:
         power = motor.rated_power_kW
@@ -342,13 +383,17 @@ def _holding_device(
     chain: Drive,
     demand: ScrewDemand,
     trace: Trace,
+    sel: MotorEvaluation,
 ):
     """The one-way device of a drive that must hold its load (seed 004), sized for the
     torque that passes it: the screw's (thread and thrust face), the motor's before the
-    device's own loss."""
+    device's own loss; its power share over the motor's mechanical power at the working
+    point, M·ω of the motor (as ``working_power_kW``)."""
     eta_d = chain.passage.efficiency if chain.passage is not None else 1.0
     torque = chain.at_motor.torque_Nm * eta_d
-    return _one_way(req, trace, ev, thread, demand.material.friction_low, torque)
+    speed_rpm = sel.working_speed_rpm or 0.0
+    power_W = chain.at_motor.torque_Nm * speed_rpm * math.pi / 30.0
+    return _one_way(req, trace, ev, thread, demand.material.friction_low, torque, power_W)
 
 
 def _paper_friction_warning(ev: ThreadEvaluation) -> str:
@@ -380,16 +425,16 @@ def advise_linear(
     trace.apply(induction_rules.choose_pole_pairs, chosen.pole_pairs, ev.speed_rpm, poles)
     chain = _drive(req, ev, chosen.motor_model, cat, trace)
     chain, duty, duty_checks, warnings = _size_for_duty(req, ev, chain, cat, trace)
+    plan = chain.plan
+    sel = plan.evaluations[plan.selected.rated_power_kW]
+    assert sel is not None
     one_way = None
     if hold:
-        one_way, device_warnings = _holding_device(req, ev, chosen.label, chain, demand, trace)
+        one_way, device_warnings = _holding_device(req, ev, chosen.label, chain, demand, trace, sel)
         warnings += device_warnings
     if s.friction_model == "paper":
         warnings.append(_paper_friction_warning(ev))
     advisor_choice = trace.find("SCR-04").inputs.get("advisor_choice")
-    plan = chain.plan
-    sel = plan.evaluations[plan.selected.rated_power_kW]
-    assert sel is not None
     design = LinearDesignOut.make(
         screw=screw_out(ev, req, demand.material, f_range, advisor_choice, sel, cat),
         motor=motor_out(plan, chain.at_motor, cat, freq),
@@ -465,7 +510,9 @@ def _describe(c: Check) -> str:
     )
 
 
-def _remedy(force_N: float, failed: set[str]) -> str:
+def _remedy(force_N: float, failed_ids: set[str]) -> str:
+    # a check at the emergency stop's force has the rated check's cures
+    failed = {i.removesuffix("_emergency_stop") for i in failed_ids}
     cures = []
     if "buckling" in failed:
         cures.append("a shorter span between supports or stiffer end fixity")

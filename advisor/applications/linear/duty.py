@@ -386,8 +386,10 @@ def _limit_problems(e: CycleEvaluation) -> list[str]:
 def evaluate(
     req, ev, m, j_load: float, holder: str | None, passage=one_way_calc.NO_DEVICE
 ) -> CycleEvaluation:
-    """The cycle with motor m: phases, RMS, starts and every problem. ``holder``: what holds
-    the load at standstill ('screw', 'one_way' or None); ``passage``: the one-way device's."""
+    """The cycle with motor m: phases, RMS, starts and every problem. ``j_load``: the
+    inertia the motor turns beside its rotor, at its shaft (the screw, the moving mass and a
+    one-way device at the motor side); ``holder``: what holds the load at standstill
+    ('screw', 'one_way' or None); ``passage``: the one-way device's."""
     mot = MotorModel(m, j_load)
     duty = req.duty
     cycle = _cycle(req, ev, mot, holder, passage if holder == "one_way" else one_way_calc.NO_DEVICE)
@@ -696,14 +698,28 @@ REGENERATED_TO = (
 
 
 def advise_duty(
-    req, ev, selected, cat, holder: str | None, trace: Trace, passage=one_way_calc.NO_DEVICE
+    req,
+    ev,
+    selected,
+    cat,
+    holder: str | None,
+    trace: Trace,
+    passage=one_way_calc.NO_DEVICE,
+    device_inertia_kgm2: float = 0.0,
 ):
     """The motor for the cycle: the point's motor, or the next larger of its pole count that
-    passes; the duty table, the motor, the checks and the warnings."""
+    passes; the duty table, the motor, the checks and the warnings.
+
+    ``device_inertia_kgm2``: the one-way device at the motor side turns with the rotor (a
+    1:1 element): its inertia J_d adds to the motor side's, J_Σ = J_M + J_d + J_load, in
+    every start, stop and start count (FI), and the inertia ratio is J_load/(J_M + J_d)."""
     segment_loads_within_rating(req)
     duty = req.duty
     j_load, j_basis = load_inertia(ev, duty.moving_mass_kg, req.linear.support_span_m)
-    e = _motor_for_cycle(req, ev, selected, cat, holder, passage, j_load, j_basis, trace)
+    j_dev = device_inertia_kgm2 if holder == "one_way" else 0.0
+    if j_dev > 0:
+        j_basis += f" + the {passage.type.replace('_', ' ')} at the motor side {j_dev:.3g} kg·m²"
+    e = _motor_for_cycle(req, ev, selected, cat, holder, passage, j_load + j_dev, j_basis, trace)
     m = e.motor
     thermal = _thermal_verdict(duty, e, trace)
     _peak_verdict(e, trace)
@@ -711,7 +727,7 @@ def advise_duty(
         trace.apply(
             duty_rules.starts, e.starts_per_hour, e.allowed_starts_per_hour, _starts_basis(e)
         )
-    inertia_ratio = j_load / m.inertia_kgm2
+    inertia_ratio = j_load / (m.inertia_kgm2 + j_dev)
     within = trace.apply(duty_rules.inertia_ratio, inertia_ratio)
     warnings = _duty_warnings(inertia_ratio, within, m, selected)
     out = _duty_out(duty, ev, e, thermal, inertia_ratio, _held_by(ev, holder, passage))

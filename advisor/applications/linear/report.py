@@ -157,6 +157,22 @@ def headline(report) -> str:
     return f"{s.thread}{starts}, {m.model} {m.rated_power_kW:g} kW, p = {m.pole_pairs}"
 
 
+def _torque_words(s) -> str:
+    """The torque and efficiency that drive the screw: the thread's, and where a thrust face
+    is given the drive torque with the face's friction and the efficiency with it (what the
+    motor drives), the thread's alone beside it."""
+    model = f"{s.friction_model}; standard {s.torque_standard_Nm:.3f}"
+    if s.thrust is None:
+        return f"{s.torque_Nm:.3f} N·m ({model}), η = {s.efficiency:.3f}"
+    t = s.thrust
+    face = "collar" if t.kind == "collar" else "thrust bearing"
+    return (
+        f"{t.drive_torque_Nm:.3f} N·m with the {face}'s {t.torque_Nm:.3f} N·m (thread "
+        f"{s.torque_Nm:.3f}, {model}), η = {t.efficiency:.3f} with the {face} (thread "
+        f"{s.efficiency:.3f})"
+    )
+
+
 def summary_rows(report) -> list[tuple[str, str]]:
     """The screw and the motor, one line each, for the summary after ``--batch -o``."""
     s, m = report.design.screw, report.design.motor
@@ -165,9 +181,8 @@ def summary_rows(report) -> list[tuple[str, str]]:
             "screw",
             f"{s.thread}{' (imposed)' if s.imposed else ''}"
             f"{f', {s.starts} starts, lead {s.lead_mm:g} mm' if s.starts > 1 else ''}, "
-            f"{s.speed_rpm:.0f} rpm, "
-            f"{s.torque_Nm:.3f} N·m ({s.friction_model}; standard {s.torque_standard_Nm:.3f}), "
-            f"η = {s.efficiency:.3f}, {'self-locking' if s.self_locking else 'not self-locking'}",
+            f"{s.speed_rpm:.0f} rpm, {_torque_words(s)}, "
+            f"{'self-locking' if s.self_locking else 'not self-locking'}",
         ),
         (
             "motor",

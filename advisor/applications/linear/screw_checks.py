@@ -19,6 +19,8 @@ from advisor.calc.sizing import (
     MotorEvaluation,
     ThreadEvaluation,
     ThrustFace,
+    factored_check,
+    stop_force_words,
 )
 from advisor.core.cite import cite
 from advisor.core.reading import Requirements
@@ -128,11 +130,31 @@ def _whirl_check(req: Requirements, ev: ThreadEvaluation, n_work: float, cat: Ca
     )
 
 
+def _bearing_static_check(
+    id: str, name: str, bearing, force_N: float, sf: ServiceFactor, note: str = ""
+) -> Check:
+    """A thrust bearing's static equivalent load P0 under an axial force against its C0,
+    stated as the factored load under a service factor (so that C0/value is the margin)."""
+    from advisor.calc.bearing_life import static_safety
+
+    c0 = bearing.C0_kN * 1e3
+    p0 = c0 / static_safety(bearing, 0.0, force_N)
+    source = cite("iso-76").with_note(f"P0 = max(F_r, X0·F_r + Y0·F_a){note}")
+    if sf.value != 1.0:
+        return factored_check(id, name, p0, c0, "N", source, sf.value)
+    return Check(id, name, p0, c0, "N", c0 / p0, source)
+
+
 def _thrust_checks(
-    ev: ThreadEvaluation, thrust: ThrustFace | None, force_N: float, sf: ServiceFactor
+    ev: ThreadEvaluation,
+    thrust: ThrustFace | None,
+    force_N: float,
+    sf: ServiceFactor,
+    stop_force_N: float | None = None,
 ) -> tuple[list[Check], list[str]]:
-    """The thrust bearing's static load against C0 as a check; the thrust face left out, or
-    a bearing wider than the core, as warnings."""
+    """The thrust bearing's static load against C0 as a check, again at the emergency stop's
+    momentary force where one is given (at max(F, F_stop), a static load as C0 is); the
+    thrust face left out, or a bearing wider than the core, as warnings."""
     if thrust is None:
         return [], [
             "the motor margin excludes thrust friction: no [screw.thrust] face is given, so "
@@ -140,22 +162,22 @@ def _thrust_checks(
         ]
     if thrust.kind != "bearing":
         return [], []
-    from advisor.calc.bearing_life import static_safety
-
     b = thrust.bearing
-    c0 = b.C0_kN * 1e3
-    p0 = c0 / static_safety(b, 0.0, force_N)
-    factor = sf.value if sf.value != 1.0 else None
-    check = Check(
-        "thrust_bearing_static",
-        f"thrust bearing {b.designation}: static equivalent load against C0",
-        p0,
-        c0,
-        "N",
-        c0 / ((factor or 1.0) * p0),
-        cite("iso-76").with_note("P0 = max(F_r, X0·F_r + Y0·F_a)"),
-        factor,
-    )
+    what = "static equivalent load against C0"
+    name = f"thrust bearing {b.designation}: {what}"
+    checks = [_bearing_static_check("thrust_bearing_static", name, b, force_N, sf)]
+    if stop_force_N:
+        at = stop_force_words(force_N, stop_force_N)
+        checks.append(
+            _bearing_static_check(
+                "thrust_bearing_static_emergency_stop",
+                f"thrust bearing {b.designation} at {at}: {what}",
+                b,
+                max(force_N, stop_force_N),
+                sf,
+                "; momentary force",
+            )
+        )
     warnings = []
     if b.d_mm > ev.thread.d3_mm:
         warnings.append(
@@ -163,7 +185,7 @@ def _thrust_checks(
             f"wider than the core of {ev.thread.name} (d3 = {ev.thread.d3_mm:g} mm): "
             "the screw end must be upset or the bearing smaller"
         )
-    return [check], warnings
+    return checks, warnings
 
 
 def _nut_warnings(ev: ThreadEvaluation, heat: NutHeat) -> list[str]:
@@ -203,6 +225,7 @@ def screw_checks(
     """The whirling speed and the thrust bearing's static load as checks; the thrust face
     left out, and the nut's wear and heat, as warnings where they need a word."""
     n_work = sel.working_speed_rpm or ev.speed_rpm
-    checks, warnings = _thrust_checks(ev, thrust, req.linear.force_N, sf)
+    lin = req.linear
+    checks, warnings = _thrust_checks(ev, thrust, lin.force_N, sf, lin.emergency_stop_force_N)
     warnings += _nut_warnings(ev, nut_heat(req, ev, n_work))
     return [_whirl_check(req, ev, n_work, cat), *checks], warnings

@@ -209,11 +209,21 @@ def motion_out(
     )
 
 
-def _ratio_checks(best: Solved) -> list[Check]:
-    """The ratio moves the load: above m = M_p/M_λ, where the torque only balances it."""
-    d, i = best.drive, best.solution.ratio
+def _ratio_checks(best: Solved, built_ratio: float | None = None) -> list[Check]:
+    """The ratio moves the load: above m = M_p/M_λ, where the torque only balances it
+    (seed 003, eq. (3)); margin i/m. ``built_ratio``: the ratio the design is built with
+    where a duty cycle chose it (``best`` is then the cycle's motor); the fastest ratio
+    without the cycle is named in the note."""
+    d = best.drive
+    i = best.solution.ratio if built_ratio is None else built_ratio
     if d.torque_ratio <= 0:
         return []
+    source = SEED_003.at("eq. (3)")
+    if built_ratio is not None:
+        source = source.with_note(
+            f"at the duty cycle's ratio i = {i:.6g}; the fastest move alone would take "
+            f"i = {best.solution.ratio:.6g}"
+        )
     return [
         Check(
             "ratio_moves_load",
@@ -222,7 +232,7 @@ def _ratio_checks(best: Solved) -> list[Check]:
             d.torque_ratio,
             "",
             i / d.torque_ratio,
-            SEED_003.at("eq. (3)"),
+            source,
         )
     ]
 
@@ -264,10 +274,13 @@ def advise_positioning(req: Requirements, cat: Catalogs, trace: Trace):
     _explain_ratio(best, pos.profile, path, trace)
     warnings += _ratio_warnings(best, solved, pos.profile)
     motion_table = motion_out(best, solved, pos.profile, path, required)
-    checks = _ratio_checks(best)
     duty = None
-    if req.duty is not None:
+    if req.duty is None:
+        checks = _ratio_checks(best)
+    else:
         duty, duty_checks, duty_warnings = _duty(req, cat, solved, best, required, trace)
-        checks += duty_checks
+        # the design is built at the cycle's motor and ratio: the check states that design
+        built = next(s for s in solved if s.name == duty.motor)
+        checks = _ratio_checks(built, duty.ratio) + duty_checks
         warnings += duty_warnings
     return PositioningDesignOut.make(motion=motion_table, duty=duty), checks, warnings

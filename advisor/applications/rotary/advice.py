@@ -292,10 +292,20 @@ def _reducer_params(req: Requirements, sf: ServiceFactor) -> reducer.ReducerPara
 
 
 def _offered(req: Requirements, fit: _Fit) -> list[SpeedCandidate]:
-    """BL-02 weighs every reducible speed (those over the limit shown, not chosen), or, with
-    a cycle or a catalog motor, only those that pass it (or lie within its rated speed)."""
-    catalog = getattr(fit.model.ref, "kind", "") == "catalog"
-    return fit.passing if req.duty is not None or catalog else fit.reducible
+    """BL-02 weighs every reducible speed (those over the limit shown, not chosen); with a
+    cycle those that pass it and those over the limit (shown, not chosen, as without one: a
+    speed within the limit that fails the cycle is not offered); with a catalog motor only
+    those that pass (and lie within its rated speed)."""
+    if getattr(fit.model.ref, "kind", "") == "catalog":
+        return fit.passing
+    if req.duty is None:
+        return fit.reducible
+    passing = {c.speed_rpm for c in fit.passing}
+    return [
+        c
+        for c in fit.reducible
+        if c.speed_rpm in passing or not bldc_rules.within_limit(c.losses_W.total, fit.limit)
+    ]
 
 
 def _choose_speed(req: Requirements, fit: _Fit, trace: Trace) -> SpeedCandidate:
@@ -351,7 +361,7 @@ def advise_rotary(req: Requirements, cat: Catalogs, trace: Trace):
     fit, data, choice = _choose_frame(req, cat, params, speeds, trace)
     chosen = _choose_speed(req, fit, trace)
     env = Envelope(req.envelope.max_outer_diameter_mm, req.envelope.max_length_mm)
-    gear = choose_reducer(chosen.total_ratio, req.gearbox, env, params, trace)
+    gear = _reducer_for_cycle(req, fit, chosen, env, (params, sf), trace)
     working = _working_point(req, fit, chosen, gear.design)
     steel_cite = cat.cite_rows(cat.steel_sources, fit.model.steel.source)
     checks = [
@@ -361,7 +371,7 @@ def advise_rotary(req: Requirements, cat: Catalogs, trace: Trace):
     ]
     from advisor.applications.rotary.frames import frame_out
 
-    listed = fit.reducible if req.duty is None else fit.passing
+    listed = _offered(req, fit) if req.duty is not None else fit.reducible
     curve = loss_curve(req, fit.model, params, [c.speed_rpm for c in listed], fit.limit)
     motor_out = _motor_out(working, listed, fit).replace(
         frame=frame_out(choice, fit.model.ref, data),
@@ -379,6 +389,43 @@ def advise_rotary(req: Requirements, cat: Catalogs, trace: Trace):
         regeneration=rest.regeneration,
     )
     return design_out, checks + rest.checks, gear.warnings + rest.warnings
+
+
+def _reducer_for_cycle(
+    req: Requirements,
+    fit: _Fit,
+    chosen: SpeedCandidate,
+    env: Envelope,
+    sizing: tuple[reducer.ReducerParams, ServiceFactor],
+    trace: Trace,
+) -> ReducerChoice:
+    """The reducer at the chosen ratio, its stages sized by eq. (16) for the rated output
+    torque or, with a [duty] whose cube-mean torque T_av at the output exceeds it, for T_av
+    (WG-07; both × f_B). T_av is found at the ratio and efficiency of the reducer adopted, so
+    the reducer is chosen again while a stage count changing η lifts T_av (at most four
+    passes, until the stage torque no longer grows)."""
+    params, sf = sizing
+    if req.duty is None:
+        return choose_reducer(chosen.total_ratio, req.gearbox, env, params, trace)
+    from advisor.applications.rotary.duty import output_loads
+    from advisor.calc.load_spectrum import cube_mean_torque
+
+    speed, frame = chosen.speed_rpm, fit.frame_for(chosen.speed_rpm)
+    q, eta = chosen.total_ratio, chosen.gearbox_efficiency
+    sized, basis = params, None
+    for _ in range(4):
+        loads = output_loads(req, q, eta, speed, frame, _holder(req, q, eta))
+        t_av = cube_mean_torque(loads)
+        if t_av * sf.value <= sized.torque_Nm:
+            break
+        sized, basis = params._replace(torque_Nm=t_av * sf.value), (t_av, q, eta)
+        design = choose_reducer(chosen.total_ratio, req.gearbox, env, sized, Trace()).design
+        q, eta = design.total_ratio, design.efficiency
+    if basis is not None:
+        t_av, q, eta = basis
+        rated = reducer_output_torque(req)
+        trace.apply(wavegear_rules.size_for_cycle, rated, t_av, sf.value, q, eta)
+    return choose_reducer(chosen.total_ratio, req.gearbox, env, sized, trace)
 
 
 def _losses_check(working: SpeedCandidate, fit: _Fit, steel_cite: Cite) -> Check:
@@ -486,11 +533,15 @@ def _holder(req: Requirements, q: float, eta: float):
 
     if not req.application.hold_without_power:
         return NO_HOLDER
+    from advisor.calc.one_way import size
     from advisor.one_way.advice import device_passage
 
     at_output = req.one_way.location == "output_side"
     motor_side, output_side = _device_torques(req, q, eta)
-    return Holder(device_passage(req.one_way, motor_side, output_side, at_output), at_output)
+    passage = device_passage(req.one_way, motor_side, output_side, at_output)
+    # the device OW-02 chooses, sized where it sits: its inertia turns in the cycle
+    device = size(passage.type, output_side if at_output else motor_side, req.one_way.rollers)
+    return Holder(passage, at_output, device.inertia_kgm2 if device is not None else 0.0)
 
 
 def _device_torques(req: Requirements, q: float, eta: float) -> tuple[float, float]:

@@ -86,14 +86,19 @@ def device_efficiency(req: Requirements) -> float:
     return one_way.passage(req.one_way.type).efficiency
 
 
-def reducer_output_torque(req: Requirements) -> float:
-    """The torque the reducer's output stage delivers at the rated point: the load's, or with
-    a holding device at the output (between the load and the reducer) the device's input
-    torque, M_out/η_d (seed 004): the stages are sized for it."""
-    torque = req.rotary.torque_Nm
+def output_stage_torque(req: Requirements, torque_Nm: float) -> float:
+    """The torque the reducer's output stage delivers for a torque at the load: the torque
+    itself, or with a holding device at the output (between the load and the reducer) the
+    device's input torque, M/η_d (seed 004)."""
     if req.application.hold_without_power and req.one_way.location == "output_side":
-        return torque / device_efficiency(req)
-    return torque
+        return torque_Nm / device_efficiency(req)
+    return torque_Nm
+
+
+def reducer_output_torque(req: Requirements) -> float:
+    """The torque the reducer's output stage delivers at the rated point
+    (:func:`output_stage_torque` of ``rotary.torque_Nm``): the stages are sized for it."""
+    return output_stage_torque(req, req.rotary.torque_Nm)
 
 
 def speed_candidate(

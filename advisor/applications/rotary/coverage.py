@@ -20,4 +20,12 @@ COVERS: dict[str, tuple[str, ...]] = {
     "application.hold_without_power": ("*hold*", "one_way*"),
     "one_way": ("one_way*", "*hold*"),
     "duty": ("duty_*",),
+    # the stop's torque (through a device at the output) against 186/39 × T_N of the stage
+    "rotary.emergency_stop_torque_Nm": ("stage_momentary_peak",),
+    # the stages' rolling elements and the output bearing live at least this long
+    "design.life_h": ("stage_life", "output_bearing_life"),
+    # f_B multiplies the stages' torques (their checks state f_B·T as the value), the life's
+    # mean torque and the output bearing's loads
+    "design.service_factor": ("stage_*", "output_bearing_static", "output_bearing_life"),
+    "output_load": ("output_bearing_*",),
 }

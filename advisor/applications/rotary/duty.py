@@ -5,7 +5,9 @@ Per phase, the torque the output needs is M_out = J_L·ε_out ± M_L (the load t
 or with the motion); at the motor it is M_out/(q·η) while the motor drives (M_out > 0) and
 M_out·η/q when the load drives back (M_out < 0: braking the load's inertia, a load that
 helps), plus J_M·ε_m (:mod:`advisor.calc.duty`, the reflection convention; the back-driven
-efficiency of the wave gear is taken equal to its forward one). Holding at standstill asks
+efficiency of the wave gear is taken equal to its forward one). A one-way device (seed 004)
+adds its inertia to the rotor's at the motor side, to the load's at the output side. Holding
+at standstill (a hold, a cycle's closing rest, an IEC type's rest after its loaded run) asks
 M_L·η/q (friction helps the motor hold), nothing where a one-way device holds.
 
 Thermal: the cycle-averaged losses (copper from each phase's torque, so from the RMS torque;
@@ -104,15 +106,27 @@ class Frame:
 
 
 class Holder(NamedTuple):
-    """What holds the load at rest: a one-way device (its passage of torque and where it
-    sits), or nothing (the motor holds with power on)."""
+    """What holds the load at rest: a one-way device (its passage of torque, where it sits
+    and its moment of inertia about its own shaft), or nothing (the motor holds with power
+    on)."""
 
     passage: one_way.Passage | None
     at_output: bool = False
+    inertia_kgm2: float = 0.0
 
     @property
     def device(self) -> bool:
         return self.passage is not None
+
+    @property
+    def motor_side_kgm2(self) -> float:
+        """The device's inertia turning with the rotor: all of it at the motor side."""
+        return 0.0 if self.at_output else self.inertia_kgm2
+
+    @property
+    def output_side_kgm2(self) -> float:
+        """The device's inertia turning with the load: all of it at the output side."""
+        return self.inertia_kgm2 if self.at_output else 0.0
 
     def words(self) -> str:
         if self.passage is None:
@@ -162,7 +176,13 @@ def _move_phases(
     eta: float,
     holder: Holder = NO_HOLDER,
 ) -> list[duty_calc.Phase]:
-    """Accelerate, run, decelerate over the segment's angle in its time (output side)."""
+    """Accelerate, run, decelerate over the segment's angle in its time (output side).
+
+    Per phase M_m = M_load→motor + (J_m + J_dev,motor)·ε_m: the load's part
+    ((J_L + J_dev,output)·ε_out ± M_L through the reducer and the device, seed 004) and the
+    inertia turning with the rotor, which the motor accelerates and brakes itself. A
+    self-locking device lets no load torque back (its lowering factor keeps the load's part
+    ≥ 0); it sits downstream of the rotor, so the rotor's braking torque stays negative."""
     theta = math.radians(seg.angle_deg)
     if seg.profile == "triangular":
         ta, tc = seg.time_s / 2.0, 0.0
@@ -173,6 +193,8 @@ def _move_phases(
     eps = w_out / ta
     m_l = load_Nm if seg.direction == "against" else -load_Nm
     w_m = w_out * q
+    j_load_side = j_load + holder.output_side_kgm2
+    j_rotor_side = j_motor + holder.motor_side_kgm2
     out = []
     for name, t, w0, w1, sign in (
         ("accelerate", ta, 0.0, w_m, 1.0),
@@ -181,12 +203,8 @@ def _move_phases(
     ):
         if t <= 0:
             continue
-        load_side = j_load * eps * sign + m_l
-        torque = _at_motor(load_side, q, eta, holder) + j_motor * eps * q * sign
-        if load_side < 0 and holder.passage and not holder.passage.back_drivable:
-            # the load drives against a self-locking device: it brakes the whole chain, the
-            # rotor included, as soon as the motor eases off; nothing is regenerated
-            torque = max(torque, 0.0)
+        load_side = j_load_side * eps * sign + m_l
+        torque = _at_motor(load_side, q, eta, holder) + j_rotor_side * eps * q * sign
         out.append(duty_calc.Phase(f"{label}: {name}", t, w0, w1, torque))
     return out
 
@@ -240,59 +258,98 @@ def _held(load_Nm: float, q: float, eta: float, holder: Holder) -> float:
 
 
 def _iec_cycle(req, q: float, eta: float, w: float, frame: Frame, holder: Holder):
-    """An IEC duty type at the rated point: the output torque at the output speed."""
+    """An IEC duty type at the rated point: the output torque at the output speed.
+
+    The rest of S3, S4 and S5 follows a loaded run: the rated load stands on the drive and
+    is held as in a cycle's closing rest (:func:`_held`: by the device, or by the motor with
+    power on through the back-drivable wave gear, M·η/q), not de-energised as IEC 60034-1
+    has it. S6's idle run is at no load."""
     duty, rot = req.duty, req.rotary
-    jl, jm = duty.load_inertia_kgm2, _rotor_inertia(duty, frame)
-    problems: list[str] = []
     t = duty.duty_type
     run_torque = _at_motor(rot.torque_Nm, q, eta, holder)
     cdf = duty.cyclic_duration_factor or 1.0
     period = 3600.0 / duty.starts_per_hour if t in ("S4", "S5", "S7") else duty.cycle_time_s
     on = cdf * period if t != "S7" else period
+    rest = duty_calc.Phase("rest", period - on, 0.0, 0.0, _held(rot.torque_Nm, q, eta, holder))
     if t in ("S1", "S2"):
-        return [duty_calc.Phase("run", period, w, w, run_torque)], problems
+        return [duty_calc.Phase("run", period, w, w, run_torque)], []
     if t == "S3":
-        return [
-            duty_calc.Phase("run", on, w, w, run_torque),
-            duty_calc.Phase("rest", period - on, 0, 0, 0),
-        ], []
+        return [duty_calc.Phase("run", on, w, w, run_torque), rest], []
     if t == "S6":
         return [
             duty_calc.Phase("run", on, w, w, run_torque),
             duty_calc.Phase("no load", period - on, w, w, 0),
         ], []
     if t in ("S4", "S5", "S7"):
-        peak = duty.peak_torque_factor * frame.continuous_torque()
-        eta_d = holder.passage.efficiency if holder.passage else 1.0
-        j = jm + jl / (q * q * eta * eta_d)
-        ta = j * w / (peak - run_torque) if peak > run_torque else math.inf
-        # a self-locking device stops the load by itself: no electric braking through it,
-        # the stop takes as long as the electric one would, at no motor torque
-        back = holder.passage is None or holder.passage.back_drivable
-        tb = (jm + jl * eta / (q * q)) * w / (peak + run_torque) if t != "S4" else 0.0
-        if ta + tb > on:
-            problems.append(
-                f"{t}: starting at the peak torque {peak:.3g} N·m takes {ta:.3g} s, braking "
-                f"{tb:.3g} s: more than the time under load, {on:.4g} s"
-            )
-            return [], problems
-        out = [
-            duty_calc.Phase("start", ta, 0.0, w, peak),
-            duty_calc.Phase("run", on - ta - tb, w, w, run_torque),
-        ]
-        if tb:
-            out.append(
-                duty_calc.Phase("electric brake", tb, w, 0.0, -peak)
-                if back
-                else duty_calc.Phase("stop by the self-locking device", tb, w, 0.0, 0.0)
-            )
-        if period > on:
-            out.append(duty_calc.Phase("rest", period - on, 0.0, 0.0, 0.0))
-        return out, problems
+        return _iec_starts(req, q, eta, w, frame, holder, on, rest)
     return [
         duty_calc.Phase(f"load {k}", x.time_share * period, w, w, x.load_share * run_torque)
         for k, x in enumerate(duty.loads, 1)
-    ], problems
+    ], []
+
+
+def _iec_starts(req, q, eta, w, frame: Frame, holder: Holder, on: float, rest):
+    """S4, S5 and S7: a start at the peak torque, the run, S5's and S7's stop at the peak
+    braking torque, and the rest. The inertia at the motor is
+    J = J_m + J_dev,motor + (J_L + J_dev,output)/(q²·η·η_d) while the motor accelerates the
+    load, J_m + J_dev,motor + (J_L + J_dev,output)·η/q² while it brakes it electrically (a
+    device turning with the rotor or with the load, seed 004). Behind a self-locking device
+    nothing comes back: the stop is :func:`_device_stop`'s."""
+    duty, t = req.duty, req.duty.duty_type
+    jl = duty.load_inertia_kgm2 + holder.output_side_kgm2
+    jm = _rotor_inertia(duty, frame) + holder.motor_side_kgm2
+    run_torque = _at_motor(req.rotary.torque_Nm, q, eta, holder)
+    peak = duty.peak_torque_factor * frame.continuous_torque()
+    eta_d = holder.passage.efficiency if holder.passage else 1.0
+    j = jm + jl / (q * q * eta * eta_d)
+    ta = j * w / (peak - run_torque) if peak > run_torque else math.inf
+    back = holder.passage is None or holder.passage.back_drivable
+    tb = 0.0
+    if t != "S4":
+        tb = (jm + jl * eta / (q * q) if back else j) * w / (peak + run_torque)
+    if ta + tb > on:
+        return [], [
+            f"{t}: starting at the peak torque {peak:.3g} N·m takes {ta:.3g} s, braking "
+            f"{tb:.3g} s: more than the time under load, {on:.4g} s"
+        ]
+    out = [
+        duty_calc.Phase("start", ta, 0.0, w, peak),
+        duty_calc.Phase("run", on - ta - tb, w, w, run_torque),
+    ]
+    if tb:
+        out.append(
+            duty_calc.Phase("electric brake", tb, w, 0.0, -peak)
+            if back
+            else _device_stop(req.rotary.torque_Nm, (jl, jm), q, eta, holder, w, tb, peak)
+        )
+    if rest.time_s > 0:
+        out.append(rest)
+    return out, []
+
+
+def _device_stop(
+    load_Nm: float,
+    inertias: tuple[float, float],
+    q: float,
+    eta: float,
+    holder: Holder,
+    w: float,
+    tb: float,
+    peak: float,
+) -> duty_calc.Phase:
+    """The stop of S5 or S7 behind a self-locking device, from ω_m to rest in t_b, as a
+    move's deceleration: M_m = M_load→motor + (J_m + J_dev,motor)·ε_m with ε_m = −ω_m/t_b and
+    the load's part (M_L + (J_L + J_dev,output)·ε_m/q through the reducer and the device,
+    seed 004) held at or above zero by the device's lowering factor. The device sits
+    downstream of the rotor: the motor still brakes the inertia turning with it. While the
+    load's torque outweighs its inertia's the chain runs forward (M_L/(q·η·η_d) helps), so
+    t_b = J·ω_m/(M_peak + M_run) with the start's J brakes at exactly the peak torque; where
+    the load's inertia outweighs, the device holds it back and the motor brakes less."""
+    j_load, j_rotor = inertias
+    eps_m = -w / tb
+    torque = _at_motor(load_Nm + j_load * eps_m / q, q, eta, holder) + j_rotor * eps_m
+    # −M_peak by t_b's choice where the chain runs forward: not beyond it by a rounding
+    return duty_calc.Phase("stop by the self-locking device", tb, w, 0.0, max(torque, -peak))
 
 
 class CycleResult(NamedTuple):
@@ -387,7 +444,7 @@ def passing_speeds(req, cands: list, frame_for, holder_for, limit_W: float) -> l
     return ok
 
 
-def _decisions(req, e: CycleResult, frame: Frame, q: float, eta: float, speed_rpm: float, trace):
+def _decisions(req, e: CycleResult, frame: Frame, q, eta, speed_rpm, holder: Holder, trace):
     """DU-01 (the IEC duty type, if given), the thermal and the peak decisions and the
     inertia ratio; returns the inertia ratio and whether it is within the guideline."""
     duty = req.duty
@@ -417,8 +474,40 @@ def _decisions(req, e: CycleResult, frame: Frame, q: float, eta: float, speed_rp
         f"continuous torque of the frame at {speed_rpm:g} rpm, "
         f"{frame.continuous_torque():.4g} N·m (duty.peak_torque_factor).",
     )
-    ir = duty.load_inertia_kgm2 / (q * q * eta) / frame.data.inertia_kgm2
+    ir = inertia_ratio(duty.load_inertia_kgm2, frame.data.inertia_kgm2, q, eta, holder)
     return ir, trace.apply(duty_rules.inertia_ratio, ir)
+
+
+def inertia_ratio(j_load: float, j_motor: float, q: float, eta: float, holder: Holder) -> float:
+    """The load's inertia at the motor over the inertia turning with the rotor.
+
+        ratio = (J_L + J_dev,output)/(q²·η) / (J_m + J_dev,motor)
+
+    Parameters
+    ----------
+    j_load : float
+        Load inertia at the output J_L [kg·m²]
+    j_motor : float
+        Rotor inertia J_m [kg·m²]
+    q : float
+        Reducer ratio [-]
+    eta : float
+        Reducer efficiency η [-]
+    holder : Holder
+        The one-way device: its inertia J_dev [kg·m²] counts with the rotor at the motor
+        side, with the load at the output side
+
+    Returns
+    -------
+    float
+        Inertia ratio [-]
+
+    References
+    ----------
+    Seed 004 (the device's inertia, its ranking by ``one_way.priority = "inertia"``); the
+    reflection J/q² through η of :mod:`advisor.calc.duty`.
+    """
+    return (j_load + holder.output_side_kgm2) / (q * q * eta) / (j_motor + holder.motor_side_kgm2)
 
 
 class _Thermal(NamedTuple):
@@ -451,6 +540,22 @@ def _duty_warnings(ir: float, within: bool, thermal: _Thermal, tau: float) -> li
             "cycle's mean losses pass: the cycle is long against the motor's time constant"
         )
     return warnings
+
+
+def _device_inertia_words(holder: Holder) -> str:
+    """Where the one-way device's inertia enters the cycle, for the report's basis."""
+    if not holder.device or holder.inertia_kgm2 <= 0.0:
+        return ""
+    kind = holder.passage.type.replace("_", " ")
+    if holder.at_output:
+        return (
+            f"; the {kind}'s {holder.inertia_kgm2:.4g} kg·m² at the output side counts with "
+            "the load's inertia"
+        )
+    return (
+        f"; the {kind}'s {holder.inertia_kgm2:.4g} kg·m² at the motor side turns with the rotor "
+        "and counts with it (phase torques, inertia ratio)"
+    )
 
 
 def _duty_checks(e: CycleResult, frame: Frame) -> list[Check]:
@@ -490,7 +595,7 @@ def advise_duty(
             "no feasible design: the adopted drive fails the duty cycle", e.problems
         )
     phases = e.phases
-    ir, within = _decisions(req, e, frame, q, eta, speed_rpm, trace)
+    ir, within = _decisions(req, e, frame, q, eta, speed_rpm, holder, trace)
     t_cycle = duty_calc.cycle_time(phases)
     tau = frame.data.time_constant_s
     thermal = _thermal(e, frame, t_cycle)
@@ -508,7 +613,7 @@ def advise_duty(
         thermal_basis="cycle-averaged losses over the frame's limit",
         inertia_ratio=ir,
         motor_inertia_kgm2=frame.data.inertia_kgm2,
-        motor_inertia_basis=frame.data.inertia_basis,
+        motor_inertia_basis=frame.data.inertia_basis + _device_inertia_words(holder),
         inertia_ratio_guideline=duty_rules.INERTIA_RATIO_GUIDELINE,
         energy_per_cycle_J=out_J,
         regenerated_per_cycle_J=back_J,
@@ -552,11 +657,11 @@ def output_loads(req, q: float, eta: float, speed_rpm: float, frame: Frame, hold
 
     Moves, holds and dwells give the output torque J_L·ε ± M_L themselves (what
     :func:`_move_phases` reflects to the motor); a hold or the closing rest carries the
-    standing load at standstill. An IEC duty type is read back from its motor phases:
-    M_out = M_m·q·η while the motor drives, M_m·q/η while it brakes; the rotor's own
-    acceleration torque is thereby counted in the output (errs high). A holding device at the
-    output sits between the load and the reducer: the reducer carries what the device asks
-    (T/η_d driving, the lowering torque through a self-locking one) and nothing at rest."""
+    standing load at standstill. An IEC duty type's start and stop likewise, from the load
+    side: M_out = M_L + J_L·ε_out over the phase (:func:`_iec_output_loads`); the rotor's own
+    acceleration torque stays at the motor. A holding device at the output sits between the
+    load and the reducer: the reducer carries what the device asks (T/η_d driving, the
+    lowering torque through a self-locking one) and nothing at rest."""
     from advisor.calc.load_spectrum import Load
 
     duty, rot = req.duty, req.rotary
@@ -573,8 +678,8 @@ def output_loads(req, q: float, eta: float, speed_rpm: float, frame: Frame, hold
     # at standstill a device at the output holds the load itself; elsewhere the reducer does
     held = 0.0 if p_dev is not None and holder.at_output else 1.0
     if not duty.segments:
-        return _iec_output_loads(req, q, eta, speed_rpm, frame, holder, carried)
-    jl = duty.load_inertia_kgm2
+        return _iec_output_loads(req, q, eta, speed_rpm, frame, holder, carried, held)
+    jl = duty.load_inertia_kgm2 + holder.output_side_kgm2
     out = []
     standing = 0.0
     for seg in duty.segments:
@@ -604,27 +709,31 @@ def output_loads(req, q: float, eta: float, speed_rpm: float, frame: Frame, hold
     return out
 
 
-def _iec_output_loads(req, q, eta, speed_rpm, frame, holder, carried) -> list:
+def _iec_output_loads(req, q, eta, speed_rpm, frame, holder, carried, held) -> list:
     """An IEC duty type at the reducer's output: a run or a load share carries the rated
     output torque (through a device at the output, what it asks), exactly as the stages are
-    sized for it; a start or a stop at the motor's peak torque is read back from the motor,
-    M_out = M_m·η_d·q·η while it drives (η_d of a device at the motor side, before the
-    reducer), M_m·q/η while it brakes."""
+    sized for it; a start or a stop carries the load's torque and the torque that accelerates
+    or brakes the load's inertia, M_out = M_L + (J_L + J_dev,output)·ε_out with
+    ε_out = Δω_out/t of the phase (negative while braking), as a move's phases do; the
+    rotor's inertia (q² times larger at the output) is the motor's own and never reaches the
+    output. A rest carries the rated load standing on the reducer (``held`` 0 where a device
+    at the output holds it), S6's idle run nothing."""
     from advisor.calc.load_spectrum import Load
 
-    p_dev = holder.passage
-    eta_d = p_dev.efficiency if p_dev is not None and not holder.at_output else 1.0
     rated = req.rotary.torque_Nm
+    jl = req.duty.load_inertia_kgm2 + holder.output_side_kgm2
     shares = {f"load {k}": x.load_share for k, x in enumerate(req.duty.loads or (), 1)}
     out = []
     for p in cycle(req, q, eta, speed_rpm, frame, holder)[0]:
         if p.name == "run" or p.name in shares:
             torque = carried(rated * shares.get(p.name, 1.0))
-        elif p.name in ("rest", "no load"):
+        elif p.name == "rest":  # the rated load stands, held by the reducer or the device
+            torque = rated * held
+        elif p.name == "no load":
             torque = 0.0
-        else:  # a start or a stop: the motor's own peak torque
-            m = p.torque_Nm
-            torque = m * eta_d * q * eta if m >= 0 else m * q / eta
+        else:  # a start or a stop: the load's torque and its inertia's, at the output
+            eps_out = (p.speed_end_rad_s - p.speed_start_rad_s) / (q * p.time_s)
+            torque = carried(rated + jl * eps_out)
         out.append(Load(torque, abs(p.mean_speed_rad_s) * RPM / q, p.time_s))
     return out
 

@@ -42,12 +42,35 @@ SEED_16 = cite("seed-000", "eq. (16)")
 RPM = 30.0 / math.pi
 
 
-def momentary_torque(req) -> tuple[float, str]:
-    """The emergency stop's torque at the output and where it comes from."""
+def momentary_torque(req, repeated_peak_Nm: float) -> tuple[float, str]:
+    """The emergency stop's torque at the reducer's output and where it comes from.
+
+    The stop's torque at the load (``rotary.emergency_stop_torque_Nm``, or the output torque
+    where none is given) reaches the output stage as every torque of the spectrum does:
+    through a holding device at the output as its input torque M/η_d (seed 004). A momentary
+    peak is at least the repeated peak of the cycle: a smaller one given is raised to it."""
+    from advisor.applications.rotary.candidates import device_efficiency, output_stage_torque
+
     given = req.rotary.emergency_stop_torque_Nm
-    if given is not None:
-        return given, "rotary.emergency_stop_torque_Nm (given)"
-    return req.rotary.torque_Nm, "not given: rotary.torque_Nm taken as the momentary peak"
+    at_load = req.rotary.torque_Nm if given is None else given
+    basis = (
+        "not given: rotary.torque_Nm taken as the momentary peak"
+        if given is None
+        else "rotary.emergency_stop_torque_Nm (given)"
+    )
+    torque = output_stage_torque(req, at_load)
+    if torque != at_load:
+        basis += (
+            f", through the {req.one_way.type} at the output: {at_load:g}/η_d = "
+            f"{at_load:g}/{device_efficiency(req):.5g} = {torque:.6g} N·m"
+        )
+    if torque < repeated_peak_Nm:
+        basis += (
+            f"; {torque:.5g} N·m is below the repeated peak {repeated_peak_Nm:.5g} N·m: a "
+            "momentary peak is at least the repeated peak, which is taken"
+        )
+        torque = repeated_peak_Nm
+    return torque, basis
 
 
 class SpectrumFigures(NamedTuple):
@@ -64,10 +87,11 @@ class SpectrumFigures(NamedTuple):
 
 def spectrum_figures(req, design: reducer.Reducer, loads: list[Load]) -> SpectrumFigures:
     """Cube-mean, repeated and momentary peak torques and the speeds of the spectrum."""
-    t_mom, mom_basis = momentary_torque(req)
+    t_rep = load_spectrum.repeated_peak_torque(loads)
+    t_mom, mom_basis = momentary_torque(req, t_rep)
     return SpectrumFigures(
         load_spectrum.cube_mean_torque(loads),
-        load_spectrum.repeated_peak_torque(loads),
+        t_rep,
         t_mom,
         mom_basis,
         load_spectrum.mean_speed_rpm(loads),
@@ -100,9 +124,45 @@ def stage_lives(
     return stages
 
 
+def factored_stage_check(
+    id: str, name: str, demand_Nm: float, limit_Nm: float, f: float, source
+) -> Check:
+    """A stage's torque check under the service factor, stated as the factored demand.
+
+        value = f_B·T,   margin = limit / value   (∞ for no demand)
+
+    Parameters
+    ----------
+    id, name : str
+        The check's id and its name in words (it says "× f_B")
+    demand_Nm : float
+        The torque at the output stage before the factor T [N·m]
+    limit_Nm : float
+        The stage's limit for it [N·m]
+    f : float
+        The service factor f_B [-], ≥ 1
+    source : Cite
+        Where the limit comes from
+
+    Returns
+    -------
+    Check
+        The check with value f_B·T, so that value, limit and margin agree for a reader
+        (the linear strength checks state theirs the same way)
+
+    References
+    ----------
+    Harmonic Drive's CSF ratings (98/39, 186/39 of T_N); seed 000, eq. (16).
+    """
+    value = f * demand_Nm
+    margin = limit_Nm / value if value > 0 else math.inf
+    return Check(id, name, value, limit_Nm, "N·m", margin, source)
+
+
 def torque_checks(figures: SpectrumFigures, f: float, basis: str) -> list[Check]:
-    """The cube-mean torque (over a cycle), the repeated and the momentary peak, each × f_B,
-    against the output stage's T_N and its peak ratios."""
+    """The cube-mean torque (over a cycle), the repeated and the momentary peak, each × f_B
+    (the value states the factored torque), against the output stage's T_N and its peak
+    ratios."""
     rated = figures.rated_Nm
     t_av, t_rep, t_mom = figures.mean_torque_Nm, figures.repeated_peak_Nm, figures.momentary_peak_Nm
     rep_limit = load_spectrum.REPEATED_PEAK_FACTOR * rated
@@ -111,37 +171,31 @@ def torque_checks(figures: SpectrumFigures, f: float, basis: str) -> list[Check]
     checks = []
     if basis == "duty cycle":  # at the working point T_av is the sizing torque itself
         checks.append(
-            Check(
+            factored_stage_check(
                 "stage_average_torque",
                 f"cube-mean torque T_av × f_B within the rated torque ({where})",
                 t_av,
                 rated,
-                "N·m",
-                rated / (f * t_av) if t_av > 0 else math.inf,
-                HONPINE + SEED_16,
                 f,
+                HONPINE + SEED_16,
             )
         )
     checks += [
-        Check(
+        factored_stage_check(
             "stage_repeated_peak",
             f"repeated peak torque × f_B within 98/39 × T_N ({where})",
             t_rep,
             rep_limit,
-            "N·m",
-            rep_limit / (f * t_rep) if t_rep > 0 else math.inf,
-            HD_RATIOS + SEED_16,
             f,
+            HD_RATIOS + SEED_16,
         ),
-        Check(
+        factored_stage_check(
             "stage_momentary_peak",
             f"emergency-stop torque × f_B within 186/39 × T_N ({where})",
             t_mom,
             mom_limit,
-            "N·m",
-            mom_limit / (f * t_mom),
-            (HD_RATIOS + SEED_16).with_note(figures.momentary_basis),
             f,
+            (HD_RATIOS + SEED_16).with_note(figures.momentary_basis),
         ),
     ]
     return checks

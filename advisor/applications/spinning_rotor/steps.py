@@ -91,7 +91,9 @@ def aero_k(req: Requirements) -> float:
 
 
 def rotor_model(req: Requirements, b: Bearing, angle_deg: float) -> Rotor:
-    """Everything the motion equation (5) needs, in SI."""
+    """Everything the motion equation (5) needs, in SI. The bearings share the weight, n
+    ways, and seed 002's eq. (3) reaction of one pair, ⌊n/2⌋ a side
+    (:attr:`advisor.calc.rotor.Rotor.couple_share`)."""
     r = req.rotor
     return Rotor(
         inertia_kgm2=r.inertia,
