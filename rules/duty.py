@@ -10,9 +10,9 @@ KLYUCHEV = cite("klyuchev", "method of equivalent torque")
 INERTIA_GUIDE = (cite("keb-servo") + cite("autoengcalc")).with_note(
     "servo sizing practice: load/motor inertia ≤ 10 for a standard axis, ≤ 5 for high precision"
 )
-#: The duty cycle's own basis, not a published source: the project's own design note, cited in
-#: the reports by the note's tracker name (kept so that archived reports stay comparable).
-ISSUE_15 = note("issue 15")
+#: The duty cycle's own basis, not a published source: the advisor's method, written out in
+#: docs/reference/duty.md, which the reports cite.
+DUTY_METHOD = note("the advisor's duty-cycle method, docs/reference/duty.md")
 SEED_003 = cite("seed-003")
 #: SEW-EURODRIVE's table of the power increasing factor K for S2 and S3 (p. 95).
 SEW_K = cite("sew-gearmotors", "§7.5, p. 95, power increasing factor K")
@@ -20,7 +20,7 @@ SEW_K = cite("sew-gearmotors", "§7.5, p. 95, power increasing factor K")
 INERTIA_RATIO_GUIDELINE = 10.0
 
 
-@rule("DU-01", "Motor and ratio for the cycle", SEED_003.at("the move") + ISSUE_15)
+@rule("DU-01", "Motor and ratio for the cycle", SEED_003.at("the move") + DUTY_METHOD)
 def motor_for_cycle(rows: dict[str, tuple[float, float, bool, str]]) -> Finding[str]:
     """rows: name -> (move time, ratio, passes the cycle, why not)."""
     ok = {n: r for n, r in rows.items() if r[2]}
@@ -41,7 +41,7 @@ def motor_for_cycle(rows: dict[str, tuple[float, float, bool, str]]) -> Finding[
     )
 
 
-@rule("DU-08", "Induction motor for the cycle", IEC_60034_1 + ISSUE_15)
+@rule("DU-08", "Induction motor for the cycle", IEC_60034_1 + DUTY_METHOD)
 def motor_for_cycle_linear(
     rows: dict[str, tuple[float, list[str]]], point_motor: str, inertia_basis: str
 ) -> Finding[str]:
@@ -63,7 +63,7 @@ def motor_for_cycle_linear(
     )
 
 
-@rule("DU-02", "Ratio of least RMS torque", SEED_003.at("phase torques") + ISSUE_15)
+@rule("DU-02", "Ratio of least RMS torque", SEED_003.at("phase torques") + DUTY_METHOD)
 def least_rms_ratio(
     motor: str, ratio: float, rms_Nm: float, chosen: float, chosen_rms_Nm: float
 ) -> Finding[float]:
@@ -110,7 +110,7 @@ def thermal(utilisation: float, basis: str) -> Finding[float]:
     )
 
 
-@rule("DU-05", "Peak torque of the cycle", SEED_003 + ISSUE_15)
+@rule("DU-05", "Peak torque of the cycle", SEED_003 + DUTY_METHOD)
 def peak(
     peak_Nm: float, limit_Nm: float, basis: str, cycle_peak_Nm: float | None = None
 ) -> Finding[float]:

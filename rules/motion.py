@@ -8,7 +8,9 @@ from advisor.core.rulebook import Finding, rule
 SEED_003 = cite("seed-003")
 #: Sizing by a required time is the project's own method, not a published source; the note's
 #: text is what every report prints as that basis.
-REQUIRED_TIME = note("issue 25")
+REQUIRED_TIME = note(
+    "the advisor's sizing by a required move time, docs/reference/requirement-file.md"
+)
 
 
 @rule("MO-01", "Gear ratio of each motor", SEED_003)

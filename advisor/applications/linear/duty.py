@@ -610,7 +610,7 @@ def _duty_checks(duty, e: CycleEvaluation) -> list[Check]:
             "N·m",
             duty_rules.SEW_K + duty_rules.IEC_60034_1
             if s2
-            else duty_rules.KLYUCHEV + duty_rules.ISSUE_15,
+            else duty_rules.KLYUCHEV + duty_rules.DUTY_METHOD,
         ),
         _upper_check(
             "duty_peak_torque",
@@ -618,7 +618,7 @@ def _duty_checks(duty, e: CycleEvaluation) -> list[Check]:
             e.peak_load_Nm,
             e.starting_torque_Nm,
             "N·m",
-            cite("4a-table", "M_start/M_n") + duty_rules.ISSUE_15,
+            cite("4a-table", "M_start/M_n") + duty_rules.DUTY_METHOD,
         ),
     ]
     if duty.duty_type == "S3":

@@ -71,9 +71,9 @@ class LinearReq(StrictModel):
             ge=1,
             le=5e6,
             desc="momentary peak axial force in an emergency stop or a collision, {range}; "
-            "the screw's core stress, buckling, nut pressure and a thrust bearing's static load are "
-            "checked again at the larger of it and the rated force (× f_B), and the holding "
-            "device is sized for the larger; left out: the rated force",
+            "the screw's core stress, buckling, nut pressure and a thrust bearing's static "
+            "load are checked again at the larger of it and the rated force (× f_B), and the "
+            "holding device is sized for the larger; left out: the rated force",
             label="Emergency-stop force",
             step=1,
         ),

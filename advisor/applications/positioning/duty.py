@@ -333,7 +333,7 @@ def cycle_checks(c: CycleAtRatio, cycle_time_s: float) -> list[Check]:
             cycle_time_s,
             "s",
             cycle_time_s / c.move_time_s,
-            SEED_003.at("eq. (4)") + rules.duty.ISSUE_15,
+            SEED_003.at("eq. (4)") + rules.duty.DUTY_METHOD,
         ),
         Check(
             "duty_rms_torque",
@@ -342,7 +342,7 @@ def cycle_checks(c: CycleAtRatio, cycle_time_s: float) -> list[Check]:
             rated,
             "N·m",
             rated / rms if rms > 0 else math.inf,
-            rules.duty.KLYUCHEV + rules.duty.ISSUE_15,
+            rules.duty.KLYUCHEV + rules.duty.DUTY_METHOD,
         ),
     ]
 

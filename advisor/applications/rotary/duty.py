@@ -568,7 +568,8 @@ def _duty_checks(e: CycleResult, frame: Frame) -> list[Check]:
             e.total,
             frame.limit_W,
             cite("seed-000", "eqs. (4), (5), (9)").with_note(
-                "issue 15; the frame's limit of the point check"
+                "the advisor's duty-cycle method, docs/reference/duty.md; "
+                "the frame's limit of the point check"
             ),
         ),
         Check(
@@ -578,7 +579,9 @@ def _duty_checks(e: CycleResult, frame: Frame) -> list[Check]:
             e.peak_limit,
             "N·m",
             e.peak_limit / e.peak if e.peak > 0 else math.inf,
-            note("issue 15; duty.peak_torque_factor"),
+            note(
+                "the advisor's duty-cycle method, docs/reference/duty.md; duty.peak_torque_factor"
+            ),
         ),
     ]
 
