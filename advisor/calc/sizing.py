@@ -8,6 +8,7 @@ from typing import Any, NamedTuple, Protocol
 
 from advisor.calc import induction, screw
 from advisor.calc.checks import Check as Check  # re-exported: the linear chain's checks
+from advisor.calc.checks import factored
 from advisor.core.cite import Cite, cite
 from catalogs.threads import ThreadProfile
 
@@ -73,10 +74,7 @@ def factored_check(
     ----------
     SEW-EURODRIVE, service factor f_B (``[design] service_factor``).
     """
-    stated = factor * demand
-    return Check(
-        id, f"{name} × f_B = {factor:g}", stated, limit, unit, _margin(stated, limit), source
-    )
+    return factored(id, f"{name} × f_B = {factor:g}", demand, limit, unit, factor, source)
 
 
 def _lower(id: str, name: str, value: float, limit: float, unit: str, source: Cite) -> Check:

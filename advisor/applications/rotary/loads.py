@@ -27,7 +27,7 @@ from advisor.applications.rotary.report import (
     RegenerationOut,
     StageLifeOut,
 )
-from advisor.calc import bearing_life, load_spectrum, reducer, regen
+from advisor.calc import bearing_life, checks, load_spectrum, reducer, regen
 from advisor.calc.checks import Check
 from advisor.calc.duty import Phase
 from advisor.calc.load_spectrum import Load
@@ -127,36 +127,10 @@ def stage_lives(
 def factored_stage_check(
     id: str, name: str, demand_Nm: float, limit_Nm: float, f: float, source
 ) -> Check:
-    """A stage's torque check under the service factor, stated as the factored demand.
-
-        value = f_B·T,   margin = limit / value   (∞ for no demand)
-
-    Parameters
-    ----------
-    id, name : str
-        The check's id and its name in words (it says "× f_B")
-    demand_Nm : float
-        The torque at the output stage before the factor T [N·m]
-    limit_Nm : float
-        The stage's limit for it [N·m]
-    f : float
-        The service factor f_B [-], ≥ 1
-    source : Cite
-        Where the limit comes from
-
-    Returns
-    -------
-    Check
-        The check with value f_B·T, so that value, limit and margin agree for a reader
-        (the linear strength checks state theirs the same way)
-
-    References
-    ----------
-    Harmonic Drive's CSF ratings (98/39, 186/39 of T_N); seed 000, eq. (16).
-    """
-    value = f * demand_Nm
-    margin = limit_Nm / value if value > 0 else math.inf
-    return Check(id, name, value, limit_Nm, "N·m", margin, source)
+    """A stage's torque check under the service factor: value = f_B·T, margin = limit/value
+    (:func:`advisor.calc.checks.factored`; the name says "× f_B"). Harmonic Drive's CSF
+    ratings (98/39, 186/39 of T_N); seed 000, eq. (16)."""
+    return checks.factored(id, name, demand_Nm, limit_Nm, "N·m", f, source)
 
 
 def torque_checks(figures: SpectrumFigures, f: float, basis: str) -> list[Check]:
