@@ -307,15 +307,38 @@ def through_output_device(c: Chain, m_out: float) -> float:
     return m_out * c.eta_d if c.back else c.k * abs(m_out)
 
 
+def electric_stop_time(m_l, j_rot, j_load, q, eta, w, peak) -> float:
+    """The electric stop by hand: the t_b at which the motor gives exactly −M_peak, with one
+    direction of power flow for the load's torque and its inertia's, T_out = M_L −
+    J_load·ω_m/(q·t_b): forward (T_out ≥ 0) t_b = (J_rot + J_load/(q²·η))·ω_m/(M_peak +
+    M_L/(q·η)), back (T_out < 0) t_b = (J_rot + J_load·η/q²)·ω_m/(M_peak + M_L·η/q), η with
+    the device's η_d. Exactly one of the two is consistent with its own T_out's sign."""
+    fwd = (j_rot + j_load / (q * q * eta)) * w / (peak + m_l / (q * eta))
+    back = (j_rot + j_load * eta / (q * q)) * w / (peak + m_l * eta / q)
+    fwd_ok = m_l - j_load * w / (q * fwd) >= 0.0
+    back_ok = m_l - j_load * w / (q * back) < 0.0
+    assert fwd_ok != back_ok
+    return fwd if fwd_ok else back
+
+
+def motor_stop_torque(m_l, j_rot, j_load, q, eta, w, t_b) -> float:
+    """The motor torque of a stop in t_b through a back-drivable chain: T_out/(q·η) while
+    T_out = M_L − J_load·ω_m/(q·t_b) ≥ 0, T_out·η/q below, and the rotor's −J_rot·ω_m/t_b."""
+    t_out = m_l - j_load * w / (q * t_b)
+    return (t_out / (q * eta) if t_out >= 0 else t_out * eta / q) - j_rot * w / t_b
+
+
 def check_iec_starts(rep: dict, c: Chain, duty_key: str) -> None:
     """S4, S5, S7 of the matrix by hand: ω_m = 3000 rpm = 314.16 rad/s, ω_out = ω_m/q,
     M_peak = 3 × the frame's continuous torque (the report's peak_torque_limit_Nm), M_run =
     300/(q·η·η_d); t_a = J·ω_m/(M_peak − M_run), J = J_rot + J_load/(q²·η·η_d). The output
     carries, from the load side, M_L + J_load·ε_out: 300 + J_load·ω_out/t_a in the start,
-    300 − J_load·ω_out/t_b in the stop (t_b = (J_rot + J_load·η/q²)·ω_m/(M_peak + M_run)
-    braking electrically, J·ω_m/(M_peak + M_run) behind a self-locking device, where the
-    motor then brakes at −M_peak too: (300 − J_load·ω_out/t_b)/(q·η·η_d) − J_rot·ω_m/t_b
-    = M_run − (M_peak + M_run)), the rated 300 in the run (through a device at the output,
+    300 − J_load·ω_out/t_b in the stop (t_b = J·ω_m/(M_peak + M_run): 300 N·m outweighs
+    J_load·ε_out here, the chain runs forward and the motor brakes at −M_peak,
+    (300 − J_load·ω_out/t_b)/(q·η·η_d) − J_rot·ω_m/t_b = M_run − (M_peak + M_run), whether
+    electrically (:func:`electric_stop_time`; the reverse flow's J_rot + J_load·η/q² over the
+    forward M_run was taken before, braking 0.4 % (clutch) to 0.7 % beyond the peak) or behind a self-locking
+    device), the rated 300 in the run (through a device at the output,
     what it asks). T_av = (Σ n·t·T³/Σ n·t)^(1/3) with n = ω_out/2 in a ramp, ω_out in the
     run, 0 at rest (Honpine, step 2); the stages are sized for T_av where it exceeds the
     rated output torque (WG-07) and the check stage_average_torque then holds with margin 1."""
@@ -330,8 +353,10 @@ def check_iec_starts(rep: dict, c: Chain, duty_key: str) -> None:
     spans = [(start, w_out / 2, t_a)]
     t_b = 0.0
     if duty_key != "S4":
-        j_b = c.j_rotor + c.j_load * c.eta / c.q**2 if c.back else j
-        t_b = j_b * w / (peak + run)
+        t_b = j * w / (peak + run)
+        if c.back:
+            eta_t = c.eta * c.eta_d
+            assert electric_stop_time(300.0, c.j_rotor, c.j_load, c.q, eta_t, w, peak) == t_b
         stop = through_output_device(c, 300.0 - c.j_load * w_out / t_b)
         assert rl["phases_torque_Nm"][2] == pytest.approx(stop, rel=1e-5)
         motor_stop = d["phases"][2]
@@ -357,9 +382,10 @@ def check_iec_starts(rep: dict, c: Chain, duty_key: str) -> None:
 def test_iec_starts_count_the_device_inertia(device, where, duty_key):
     """S4/S5 at the cycle level, at a frame of 2 N·m continuous: start time
     t_a = J·ω_m/(M_peak − M_run) with J = J_m + J_dev,motor + (J_L + J_dev,out)/(q²·η·η_d);
-    S5's electric stop t_b = (J_m + J_dev,motor + (J_L + J_dev,out)·η/q²)·ω_m/(M_peak + M_run),
-    behind a self-locking device J·ω_m/(M_peak + M_run) (the chain runs forward, the load's
-    torque helping through it); the rest after the loaded run holds 300·η/q where the motor
+    S5's stop J·ω_m/(M_peak + M_run) electrically and behind a self-locking device alike: the
+    300 N·m outweigh the load's inertia, the chain runs forward for both (it was
+    (J_m + J_dev,motor + (J_L + J_dev,out)·η/q²)·ω_m/(M_peak + M_run) electrically: the
+    inertia's reverse flow with the load's forward one); the rest after the loaded run holds 300·η/q where the motor
     holds, 0 behind a device."""
     if device == "em_clutch" and where == "output_side":
         pytest.skip("no electromagnetic clutch of the seed's range carries 300 N·m")
@@ -386,11 +412,10 @@ def test_iec_starts_count_the_device_inertia(device, where, duty_key):
     t_a = (j_rot + j_load / (q * q * eta * eta_d)) * w / (peak - run)
     assert by["start"].time_s == pytest.approx(t_a, rel=1e-12)
     if duty_key == "S5":
-        back = not holder.device or holder.passage.back_drivable
-        j_b = j_rot + j_load * eta / (q * q) if back else j_rot + j_load / (q * q * eta * eta_d)
-        t_b = j_b * w / (peak + run)
+        t_b = (j_rot + j_load / (q * q * eta * eta_d)) * w / (peak + run)
         stop = next(p for p in ph if p.name not in ("start", "run", "rest"))
         assert stop.time_s == pytest.approx(t_b, rel=1e-12)
+        assert stop.torque_Nm == pytest.approx(-peak, rel=1e-12)
     held = 0.0 if holder.device else 300.0 * eta / q
     assert by["rest"].torque_Nm == pytest.approx(held, rel=1e-12, abs=0.0)
 
@@ -493,3 +518,116 @@ def test_s5_stop_behind_a_worm_brakes_the_rotor_where_the_load_overruns():
     torque = abs(load_side) * ETA / Q - (J_M + j_w) * w / t_b
     assert stop.torque_Nm == pytest.approx(torque, rel=1e-12)
     assert -6.0 < stop.torque_Nm < 0.0
+
+
+# ------------------------------------------------------ the electric stop's flow of power
+def s5_clutch_doc(torque_Nm: float, j_load: float, sf: float) -> dict:
+    """The audit's r8.toml / r6.toml: S5 50 % at 300 starts/h, seed 000's reference frame at
+    4000 rpm for 4 rpm (q = 1000, η = 0.9² = 0.81), an electromagnetic clutch at the motor
+    side, J_m = 2e-4 kg·m²."""
+    return {
+        "application": {"kind": "rotary", "hold_without_power": True, "title": "h8 r1"},
+        "rotary": {"torque_Nm": torque_Nm, "speed_rpm": 4},
+        "motor": {"kind": "bldc", "frame": "reference", "candidate_speeds_rpm": [4000]},
+        "gearbox": {"rolling_body": "ball", "stage_efficiency": 0.9},
+        "one_way": {"type": "em_clutch"},
+        "design": {"service_factor": sf},
+        "duty": {"duty_type": "S5", "cyclic_duration_factor": 0.5, "starts_per_hour": 300,
+                 "load_inertia_kgm2": j_load, "motor_inertia_kgm2": 0.0002,
+                 "thermal_time_constant_s": 900},
+    }  # fmt: skip
+
+
+def clutch_stop(torque_Nm: float, j_load: float, sf: float):
+    """The report, its electric brake at the motor and (q, η, J_rot, M_peak) from it."""
+    rep = report(s5_clutch_doc(torque_Nm, j_load, sf))
+    gb, d = rep["design"]["gearbox"], rep["design"]["duty"]
+    assert gb["total_ratio"] == pytest.approx(1000.0, rel=1e-9)
+    assert gb["efficiency"] == pytest.approx(0.81, rel=1e-9)
+    j_rot = 0.0002 + rep["design"]["one_way"]["inertia_kgm2"]
+    return rep, phase(rep, "electric brake"), j_rot, d["peak_torque_limit_Nm"]
+
+
+def test_electric_stop_with_the_load_driving_back_brakes_at_the_peak():
+    """r8: 1500 N·m, J_L = 150 kg·m², J_dev = 1.50555e-4 kg·m² (the clutch's), M_peak =
+    8.12169 N·m, ω_m = 418.879 rad/s. The load's inertia outweighs its torque in the stop:
+    T_out = 1500 − 150·ω_out/t_b < 0 drives the chain back, so both terms flow back:
+    t_b = (3.50555e-4 + 150·0.81/1000²)·418.879/(8.12169 + 1500·0.81/1000) = 0.0211782 s,
+    T_out = −1466.82 N·m, M_m = −1466.82·0.81/1000 − 3.50555e-4·418.879/t_b = −8.12169 N·m
+    = −M_peak. It was t_b = (J_rot + J_L·η/q²)·ω_m/(M_peak + M_L/(q·η)) = 0.0198259 s, the
+    inertia back and the load's torque forward: T_out = −1669.19 N·m and the motor needed
+    −1.35204 − 7.40650 = −8.75854 N·m, 7.8 % beyond the peak (true margin 0.927) where the
+    report printed −M_peak and margin 1.000."""
+    rep, brake, j_rot, peak = clutch_stop(1500.0, 150.0, 1.0)
+    assert peak == pytest.approx(8.12169, rel=1e-6)
+    w = 4000.0 * math.pi / 30.0
+    t_b = electric_stop_time(1500.0, j_rot, 150.0, 1000.0, 0.81, w, peak)
+    assert t_b == pytest.approx(0.0211782, rel=1e-5)
+    assert 1500.0 - 150.0 * w / 1000.0 / t_b < 0.0  # back: consistent
+    assert brake["time_s"] == pytest.approx(t_b, rel=1e-5)
+    assert brake["torque_Nm"] == pytest.approx(-peak, rel=1e-9)
+    torque = motor_stop_torque(1500.0, j_rot, 150.0, 1000.0, 0.81, w, t_b)
+    assert torque == pytest.approx(-peak, rel=1e-12)
+    old = (j_rot + 150.0 * 0.81 / 1000.0**2) * w / (peak + 1500.0 / 810.0)
+    assert old == pytest.approx(0.0198259, rel=1e-5)
+    over = motor_stop_torque(1500.0, j_rot, 150.0, 1000.0, 0.81, w, old)
+    assert over == pytest.approx(-8.75854, rel=1e-5)
+    assert peak / -over == pytest.approx(0.927288, rel=1e-5)
+    rl = rep["design"]["reducer_load"]
+    assert rl["phases_torque_Nm"][2] == pytest.approx(1500.0 - 150.0 * w / 1000.0 / t_b, rel=1e-5)
+    assert rl["phases_torque_Nm"][2] == pytest.approx(-1466.82, abs=0.01)
+    check = next(x for x in rep["checks"] if x["id"] == "duty_peak_torque")
+    assert check["margin"] == pytest.approx(1.0, rel=1e-6)
+
+
+def test_electric_stop_with_the_load_still_driven_brakes_at_the_peak():
+    """r6: 400 N·m, J_L = 3 kg·m², service factor 1.3 (the same frame and clutch). The
+    load's torque outweighs its inertia's in the stop: T_out = 400 − 3·ω_out/t_b > 0, the
+    chain runs forward for both: t_b = (3.50555e-4 + 3/(1000²·0.81))·418.879/(8.12169 +
+    400/810) = 0.0172238 s, T_out = 327.04 N·m, M_m = 327.04/810 − 3.50555e-4·418.879/t_b
+    = −M_peak. It was 0.0171618 s (the inertia reflected back, J_L·η/q²): T_out = 326.777
+    N·m and the motor needed −8.15278 N·m against −8.12169."""
+    rep, brake, j_rot, peak = clutch_stop(400.0, 3.0, 1.3)
+    assert peak == pytest.approx(8.12169, rel=1e-6)
+    w = 4000.0 * math.pi / 30.0
+    t_b = electric_stop_time(400.0, j_rot, 3.0, 1000.0, 0.81, w, peak)
+    assert t_b == pytest.approx(0.0172238, rel=1e-5)
+    assert 400.0 - 3.0 * w / 1000.0 / t_b > 0.0  # forward: consistent
+    assert brake["time_s"] == pytest.approx(t_b, rel=1e-5)
+    assert brake["torque_Nm"] == pytest.approx(-peak, rel=1e-9)
+    torque = motor_stop_torque(400.0, j_rot, 3.0, 1000.0, 0.81, w, t_b)
+    assert torque == pytest.approx(-peak, rel=1e-12)
+    old = (j_rot + 3.0 * 0.81 / 1000.0**2) * w / (peak + 400.0 / 810.0)
+    assert old == pytest.approx(0.0171618, rel=1e-5)
+    assert motor_stop_torque(400.0, j_rot, 3.0, 1000.0, 0.81, w, old) == pytest.approx(
+        -8.15278, rel=1e-5
+    )
+    rl = rep["design"]["reducer_load"]
+    assert rl["phases_torque_Nm"][2] == pytest.approx(327.04, abs=0.01)
+
+
+@pytest.mark.parametrize("j_load", [0.5, 3.0, 30.0, 150.0, 1500.0])
+@pytest.mark.parametrize("device", [None, "em_clutch"])
+def test_electric_stop_is_exactly_at_the_peak_either_way(device, j_load):
+    """At the cycle level (a frame of 2 N·m continuous, M_peak = 6 N·m; q = 600, η =
+    0.79995, 300 N·m): whether the load's inertia drives the chain back or not, the motor's
+    torque in the stop, by hand from the stop's t_b, is −M_peak to rounding, and t_b is the
+    hand's consistent direction (:func:`electric_stop_time`)."""
+    doc = matrix_doc(device, "motor_side", DUTIES["S5"])
+    doc["duty"]["load_inertia_kgm2"] = j_load
+    req = parse_requirements(doc)
+    holder, j_dev = rotary_duty.NO_HOLDER, 0.0
+    if device is not None:
+        p = device_passage(req.one_way, 300.0 / (Q * ETA), 300.0, False)
+        j_dev = ow.size(p.type, 300.0 / (Q * ETA)).inertia_kgm2
+        holder = rotary_duty.Holder(p, False, j_dev)
+    frame = SimpleNamespace(continuous_torque=lambda: 2.0)
+    ph, problems = rotary_duty.cycle(req, Q, ETA, 3000.0, frame, holder)
+    assert not problems
+    stop = next(x for x in ph if x.name == "electric brake")
+    w = 3000.0 * math.pi / 30.0
+    j_rot = J_M + j_dev
+    t_b = electric_stop_time(300.0, j_rot, j_load, Q, ETA, w, 6.0)
+    assert stop.time_s == pytest.approx(t_b, rel=1e-12)
+    assert stop.torque_Nm == -6.0
+    assert motor_stop_torque(300.0, j_rot, j_load, Q, ETA, w, t_b) == pytest.approx(-6.0, rel=1e-12)

@@ -292,9 +292,9 @@ def _iec_starts(req, q, eta, w, frame: Frame, holder: Holder, on: float, rest):
     """S4, S5 and S7: a start at the peak torque, the run, S5's and S7's stop at the peak
     braking torque, and the rest. The inertia at the motor is
     J = J_m + J_dev,motor + (J_L + J_dev,output)/(q²·η·η_d) while the motor accelerates the
-    load, J_m + J_dev,motor + (J_L + J_dev,output)·η/q² while it brakes it electrically (a
-    device turning with the rotor or with the load, seed 004). Behind a self-locking device
-    nothing comes back: the stop is :func:`_device_stop`'s."""
+    load (a device turning with the rotor or with the load, seed 004); the electric stop
+    takes :func:`_electric_stop_time`. Behind a self-locking device nothing comes back: the
+    stop is :func:`_device_stop`'s."""
     duty, t = req.duty, req.duty.duty_type
     jl = duty.load_inertia_kgm2 + holder.output_side_kgm2
     jm = _rotor_inertia(duty, frame) + holder.motor_side_kgm2
@@ -306,7 +306,9 @@ def _iec_starts(req, q, eta, w, frame: Frame, holder: Holder, on: float, rest):
     back = holder.passage is None or holder.passage.back_drivable
     tb = 0.0
     if t != "S4":
-        tb = (jm + jl * eta / (q * q) if back else j) * w / (peak + run_torque)
+        tb = j * w / (peak + run_torque)
+        if back:
+            tb = _electric_stop_time(req.rotary.torque_Nm, (jl, jm), q, eta * eta_d, w, peak, tb)
     if ta + tb > on:
         return [], [
             f"{t}: starting at the peak torque {peak:.3g} N·m takes {ta:.3g} s, braking "
@@ -325,6 +327,63 @@ def _iec_starts(req, q, eta, w, frame: Frame, holder: Holder, on: float, rest):
     if rest.time_s > 0:
         out.append(rest)
     return out, []
+
+
+def _electric_stop_time(
+    load_Nm: float,
+    inertias: tuple[float, float],
+    q: float,
+    eta: float,
+    w: float,
+    peak: float,
+    forward_s: float,
+) -> float:
+    """The time t_b in which the motor brakes from ω_m to rest at exactly −M_peak, with the
+    power through the reducer and a back-drivable device flowing one way for both the load's
+    torque and its inertia's.
+
+    The output carries T_out = M_L − J_L·ω_m/(q·t_b) (J_L with a device at the output) and
+    the motor gives T_out/(q·η) + … while T_out ≥ 0 (the chain runs forward), T_out·η/q + …
+    once the load's inertia outweighs its torque and drives the chain back, plus the rotor's
+    −(J_m + J_dev,motor)·ω_m/t_b (η with the device's η_d). Set equal to −M_peak:
+
+        t_b = (J_m + J_L/(q²·η))·ω_m/(M_peak + M_L/(q·η))    forward  (T_out ≥ 0)
+        t_b = (J_m + J_L·η/q²)·ω_m/(M_peak + M_L·η/q)        back     (T_out < 0)
+
+    The motor torque falls steadily as t_b shortens, so one of the two is consistent: the
+    forward one (``forward_s``, the start's J over M_peak + M_run) where its T_out ≥ 0, else
+    the back one.
+
+    Parameters
+    ----------
+    load_Nm : float
+        The load torque M_L at the output, against the motion [N·m]
+    inertias : tuple[float, float]
+        The load side's J_L and the rotor side's J_m [kg·m²]
+    q : float
+        Reducer ratio [-]
+    eta : float
+        Efficiency of the reducer and the device, η·η_d [-]
+    w : float
+        Motor speed ω_m [rad/s]
+    peak : float
+        The motor's peak torque M_peak [N·m], > 0
+    forward_s : float
+        The forward flow's t_b [s]
+
+    Returns
+    -------
+    float
+        Braking time t_b [s]
+
+    References
+    ----------
+    Seed 004 (the device's passage); the reflection convention of :mod:`advisor.calc.duty`.
+    """
+    j_load, j_rotor = inertias
+    if load_Nm - j_load * w / (q * forward_s) >= 0.0:
+        return forward_s
+    return (j_rotor + j_load * eta / (q * q)) * w / (peak + load_Nm * eta / q)
 
 
 def _device_stop(
