@@ -129,6 +129,58 @@ def nut_whole_turns(turns_for_pressure: float, turns_for_height: float) -> int:
     return max(math.ceil(turns_for_pressure), by_height, 1)
 
 
+def nut_turns_for_stop(
+    turns_rated: int, turns_for_stop_pressure: float, max_turns: int, turns_for_height_max: float
+) -> int:
+    """Engaged turns of a nut that must also carry an emergency stop's force, whole.
+
+    z = max(z_F, min(⌈z_p,m⌉, z_max, ⌊ψ_max·d2/P⌋))
+
+    Parameters
+    ----------
+    turns_rated : int
+        Turns sized at the rated force, z_F (:func:`nut_whole_turns`) [-]
+    turns_for_stop_pressure : float
+        Turns the flank pressure needs at the momentary force,
+        z_p,m = f_B·max(F, F_stop)/(π·d2·H1·[p]) [-]
+    max_turns : int
+        Most engaged turns allowed, z_max [-]
+    turns_for_height_max : float
+        Turns of the highest nut allowed, ψ_max·d2/P [-]
+
+    Returns
+    -------
+    turns : int
+        Engaged turns of the nut z [-]
+
+    Notes
+    -----
+    The nut is lengthened for the stop only as far as the longest nut allowed (z_max and the
+    height ratio ψ_max): where even that nut is overloaded in the stop, its flank-pressure
+    check at the stop's force fails and says so, and the rated nut's own checks are left as
+    they were. A height count within :data:`WHOLE_TURN_TOLERANCE` of a whole number counts
+    as whole.
+
+    Examples
+    --------
+    Tr24x5 bronze nut, f_B = 1.2, F = 2500 N, F_stop = 9000 N: 6 turns at the rated force
+    (the height ratio 1.2·21.5/5 = 5.16 → 6); at the stop z_p = 10800/(π·21.5·2.5·10) = 6.40
+    → 7, within z_max = 10 and 2.5·21.5/5 = 10.75:
+
+    >>> nut_turns_for_stop(6, 6.396, 10, 2.5 * 21.5 / 5)
+    7
+    >>> nut_turns_for_stop(6, 12.4, 10, 10.75)
+    10
+
+    References
+    ----------
+    Ivanov, «Детали машин», power screws: z = F/(π·d2·H1·[p]), H/d2 ≤ ψ_max, z ≤ z_max.
+    """
+    by_height = math.floor(turns_for_height_max * (1.0 + WHOLE_TURN_TOLERANCE))
+    longest = min(max_turns, by_height)
+    return max(turns_rated, min(math.ceil(turns_for_stop_pressure), longest))
+
+
 class ThrustFace(NamedTuple):
     """The face that takes the screw's axial force: a plain collar (Shigley,
     eq. (8-6)) or a rolling bearing of the SKF catalog (its friction moment by the SKF model
@@ -226,6 +278,9 @@ class ThreadEvaluation(NamedTuple):
     service_factor: float = 1.0
     #: the fastest the screw may turn: a share of its whirling speed
     max_speed_rpm: float = math.inf
+    #: the turns the rated force alone gives the nut; fewer than ``nut_turns`` where the
+    #: emergency stop's force lengthens it (0: not stated)
+    nut_turns_rated: float = 0.0
 
     @property
     def drive_torque_Nm(self) -> float:
@@ -418,18 +473,34 @@ class _ThreadNumbers(NamedTuple):
     #: the core stress and the flank pressure at the emergency stop's force (0: no stop given)
     stop_core: float = 0.0
     stop_pressure: float = 0.0
+    turns_rated: float = 0.0
 
 
-def _nut(
-    force_N: float, d2: float, p: float, h1: float, material: ScrewMaterial, service_factor: float
-) -> tuple[float, float]:
+class _NutSize(NamedTuple):
+    """The nut of one thread: its turns, its flank pressure at the rated force, and the turns
+    the rated force alone gives it."""
+
+    turns: float
+    pressure: float
+    turns_rated: float
+
+
+def _nut(d: ScrewDemand, d2: float, p: float, h1: float) -> _NutSize:
     """The nut's whole engaged turns, enough for the flank pressure under the service factor
-    and for the minimum height ratio, and its flank pressure under the force."""
-    z_req = screw.nut_turns_required(
-        service_factor * force_N, d2, h1, material.allowable_pressure_Pa
+    at the larger of the rated and the emergency stop's force (up to the longest nut
+    allowed) and for the minimum height ratio, and its flank pressure under the rated force."""
+    m, sf = d.material, d.service_factor
+    turns = nut_whole_turns(
+        screw.nut_turns_required(sf * d.force_N, d2, h1, m.allowable_pressure_Pa),
+        m.nut_height_ratio_min * d2 / p,
     )
-    turns = float(nut_whole_turns(z_req, material.nut_height_ratio_min * d2 / p))
-    return turns, screw.nut_bearing_pressure(force_N, d2, h1, turns)
+    turns_rated = turns
+    if d.stop_force_N > d.force_N:
+        z_stop = screw.nut_turns_required(sf * d.stop_force_N, d2, h1, m.allowable_pressure_Pa)
+        turns = nut_turns_for_stop(turns, z_stop, m.nut_max_turns, m.nut_height_ratio_max * d2 / p)
+    return _NutSize(
+        float(turns), screw.nut_bearing_pressure(d.force_N, d2, h1, turns), float(turns_rated)
+    )
 
 
 def _max_speed_rpm(d3: float, span_m: float, end_fixity: str, material: ScrewMaterial) -> float:
@@ -455,7 +526,7 @@ def _thread_numbers(thread: ThreadProfile, starts: int, d: ScrewDemand) -> _Thre
     torque = screw.torque_from_angles(force_N, d2, psi, phi)
     revs = screw.revolutions(d.stroke_m, p, starts)
     speed = screw.screw_speed_rpm(revs, d.travel_time_s)
-    turns, pressure = _nut(force_N, d2, p, thread.H1_mm * MM, material, d.service_factor)
+    nut = _nut(d, d2, p, thread.H1_mm * MM)
     p_cr, slenderness, formula = screw.critical_buckling_load(
         d3, d.span_m, d.end_fixity, material.elastic_modulus_Pa, material.yield_strength_Pa
     )
@@ -467,9 +538,9 @@ def _thread_numbers(thread: ThreadProfile, starts: int, d: ScrewDemand) -> _Thre
         torque=torque,
         revs=revs,
         speed=speed,
-        turns=turns,
-        height=turns * p,
-        pressure=pressure,
+        turns=nut.turns,
+        height=nut.turns * p,
+        pressure=nut.pressure,
         core=screw.core_equivalent_stress(force_N, torque, d3),
         p_cr=p_cr,
         slenderness=slenderness,
@@ -477,9 +548,12 @@ def _thread_numbers(thread: ThreadProfile, starts: int, d: ScrewDemand) -> _Thre
         thrust_torque=d.thrust.torque_Nm(force_N, speed) if d.thrust is not None else 0.0,
         max_speed=_max_speed_rpm(d3, d.span_m, d.end_fixity, material),
         stop_core=_stop_core_stress(d, d2, d3, psi, phi) if d.stop_force_N > 0 else 0.0,
-        stop_pressure=screw.nut_bearing_pressure(d.momentary_force_N, d2, thread.H1_mm * MM, turns)
+        stop_pressure=screw.nut_bearing_pressure(
+            d.momentary_force_N, d2, thread.H1_mm * MM, nut.turns
+        )
         if d.stop_force_N > 0
         else 0.0,
+        turns_rated=nut.turns_rated,
     )
 
 
@@ -599,9 +673,17 @@ def _stop_checks(n: _ThreadNumbers, d: ScrewDemand, src: _CheckSources) -> tuple
             n.stop_pressure / MPA,
             m.allowable_pressure_Pa / MPA,
             "MPa",
-            src.ivanov.with_note(f"the nut's turns as sized for the rated force; {momentary}"),
+            src.ivanov.with_note(f"{_stop_nut_words(m)}; {momentary}"),
             sf,
         ),
+    )
+
+
+def _stop_nut_words(m: ScrewMaterial) -> str:
+    """How the nut that the stop's flank-pressure check takes was sized, in words."""
+    return (
+        "the nut's turns sized for this force, up to the longest nut allowed "
+        f"(z ≤ {m.nut_max_turns}, H/d2 ≤ {m.nut_height_ratio_max:g})"
     )
 
 
@@ -648,6 +730,7 @@ def _evaluation(
         thrust=d.thrust,
         service_factor=d.service_factor,
         max_speed_rpm=n.max_speed,
+        nut_turns_rated=n.turns_rated,
     )
 
 
@@ -657,7 +740,7 @@ def _holds_the_load(g: ThreadGeometry, d: ScrewDemand) -> bool:
     :func:`evaluate_thread`)."""
     m, sf, force_N = d.material, d.service_factor, d.force_N
     p, d2 = g.pitch_m, g.d2_m
-    turns, pressure = _nut(force_N, d2, p, g.h1_m, m, sf)
+    turns, pressure, _ = _nut(d, d2, p, g.h1_m)
     p_cr = screw.critical_buckling_load(
         g.d3_m, d.span_m, d.end_fixity, m.elastic_modulus_Pa, m.yield_strength_Pa
     )[0]
@@ -731,7 +814,8 @@ def evaluate_thread(
 
     M = F·d2/2·tan(ψ + φ');  f_B·σ_eq ≤ σ_y/S,  f_B·F ≤ P_cr/S_b,  f_B·p ≤ [p],
     H/d2 ≤ ψ_max,  z ≤ z_max  (each margin = allowed / actual). The nut has
-    :func:`nut_whole_turns` turns for f_B·F, H = z·P; the core between the nut and the
+    :func:`nut_whole_turns` turns for f_B·F, lengthened by :func:`nut_turns_for_stop` for
+    f_B·F_stop where the stop's force is the larger, H = z·P; the core between the nut and the
     thrust face carries the thread torque alone. Seed 001, eq. (1); Ivanov, «Детали
     машин», power screws.
 

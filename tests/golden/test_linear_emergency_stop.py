@@ -222,3 +222,102 @@ def test_verify_reads_the_service_factor_as_the_factored_load_over_the_force():
     assert report_value(tree, "checks[id=buckling].value") == 5250.0
     with pytest.raises(KeyError):
         report_value(tree, "checks[id=buckling].value / requirements.linear.nothing")
+
+
+# The nut sized for the stop: Tr24x5 with 3 starts (d2 = 21.5 mm, H1 = 2.5 mm, P = 5 mm;
+# GOST 24737-81), F = 2500 N, F_stop = 9000 N, f_B = 1.2, a bronze nut ([p] = 10 MPa,
+# z ≤ 10, 1.2 ≤ H/d2 ≤ 2.5; Ivanov, power screws: z = f_B·F/(π·d2·H1·[p]))
+TR24_D2_M, TR24_H1_M, TR24_P_M = 0.0215, 0.0025, 0.005
+
+
+def _tr24x5(stop_force_N: float):
+    case = dict(
+        force_N=2500.0,
+        stroke_m=0.25,
+        travel_time_s=2.5,
+        span_m=0.6,
+        end_fixity="pinned-pinned",
+        buckling_safety_factor=S_BUCKLING,
+        friction_model="standard",
+        material=_material(),
+        service_factor=1.2,
+        stop_force_N=stop_force_N,
+    )
+    thread = load_catalogs().thread("Tr24x5")
+    assert (thread.d2_mm, thread.H1_mm, thread.pitch_mm) == (21.5, 2.5, 5.0)
+    screen = screen_threads([thread_geometry(thread)], (3,), **case)[0]
+    ev = evaluate_thread(thread, starts=3, **case)
+    assert screen.passed == ev.passed  # the thread screen agrees with the full evaluation
+    return ev, {c.id: c for c in ev.checks}
+
+
+def test_the_stop_force_sizes_the_nut_where_a_longer_nut_carries_it():
+    # rated: z_p = 3000/(π·21.5·2.5·10) = 1.78 → 2; height 1.2·21.5/5 = 5.16 → 6 turns
+    rated, _ = _tr24x5(0.0)
+    assert rated.nut_turns == rated.nut_turns_rated == 6
+    # stop: z_p = 1.2·9000/(π·21.5·2.5·10) = 6.40 → 7 turns (6 turns gave 10.66 MPa, margin
+    # 0.938); p = 10800/(π·21.5·2.5·7) = 9.137 MPa, margin 10/9.137 = 1.094
+    ev, checks = _tr24x5(9000.0)
+    assert (ev.nut_turns, ev.nut_turns_rated) == (7, 6)
+    stop = checks["nut_pressure_emergency_stop"]
+    p_mpa = 1.2 * 9000.0 / (math.pi * TR24_D2_M * TR24_H1_M * 7) / 1e6
+    assert stop.value == pytest.approx(p_mpa, rel=1e-12) and p_mpa == pytest.approx(9.1369, 1e-4)
+    assert stop.margin == pytest.approx(1.0945, rel=1e-4)
+    assert checks["nut_height"].value == pytest.approx(7 * TR24_P_M / TR24_D2_M)  # 1.628 ≤ 2.5
+    assert checks["nut_turns"].value == 7 and ev.passed
+    # the rated pressure falls with the longer nut: 3000/(π·21.5·2.5·7) = 2.538 MPa
+    assert checks["nut_pressure"].value == pytest.approx(
+        1.2 * 2500.0 / (math.pi * TR24_D2_M * TR24_H1_M * 7) / 1e6, rel=1e-12
+    )
+
+
+def test_the_nut_is_lengthened_only_to_the_longest_allowed():
+    # 20 kN: z_p = 24000/(π·21.5·2.5·10) = 14.2 turns > z_max = 10 (H/d2 allows 10.75): the
+    # nut stops at 10 turns, its rated checks pass, the stop's pressure fails
+    # 24000/(π·21.5·2.5·10) = 14.21 MPa, margin 0.7036 (the column and the core fail too)
+    ev, checks = _tr24x5(20000.0)
+    assert (ev.nut_turns, ev.nut_turns_rated) == (10, 6)
+    assert checks["nut_turns"].passed and checks["nut_height"].passed
+    assert checks["nut_pressure_emergency_stop"].margin == pytest.approx(0.70364, rel=1e-4)
+    failed = {c.id for c in ev.failed}
+    assert "nut_pressure_emergency_stop" in failed and not failed & {"nut_turns", "nut_height"}
+
+
+def _l2_doc() -> dict:
+    doc = _doc(force_N=2500.0, stroke_m=0.25, travel_time_s=2.5, emergency_stop_force_N=9000.0)
+    doc["linear"].update(support_span_m=0.6, end_fixity="pinned-pinned")
+    doc["screw"] = {"thread": "Tr24x5", "starts": 3, "friction_coefficient": 0.08}
+    doc["design"] = {"service_factor": 1.2}
+    return doc
+
+
+def test_an_imposed_thread_whose_longer_nut_holds_the_stop_is_accepted():
+    rep = _report(_l2_doc())
+    nut = rep["design"]["screw"]["nut"]
+    assert nut["turns"] == 7.0 and nut["height_mm"] == pytest.approx(35.0)
+    assert "sized by the emergency stop's 9000 N × f_B = 1.2" in nut["turns_basis"]
+    assert "the rated 2500 N alone gives 6" in nut["turns_basis"]
+    stop = next(c for c in rep["checks"] if c["id"] == "nut_pressure_emergency_stop")
+    assert stop["passed"] and stop["margin"] == pytest.approx(1.0945, rel=1e-4)
+    # without the stop the nut keeps its 6 turns and states no basis
+    plain = _l2_doc()
+    del plain["linear"]["emergency_stop_force_N"]
+    nut = _report(plain)["design"]["screw"]["nut"]
+    assert nut["turns"] == 6.0 and "turns_basis" not in nut
+
+
+def test_the_free_choice_takes_a_smaller_thread_with_a_longer_nut():
+    # F = 8000 N, F_stop = 20 kN, f_B = 1.4, fixed–pinned 0.8 m, a collar: Tr34x6 (d2 = 31 mm,
+    # H1 = 3 mm) with z_p = 28000/(π·31·3·10) = 9.58 → 10 turns, 9.584 MPa, margin 1.043;
+    # with the rated force's 7 turns the choice was Tr40x7
+    doc = _doc(force_N=8000.0, stroke_m=0.4, travel_time_s=12.0, emergency_stop_force_N=20000.0)
+    doc["linear"].update(support_span_m=0.8, end_fixity="fixed-pinned")
+    doc["screw"] = {"material_pair": "steel_bronze"}
+    doc["screw"]["thrust"] = {"kind": "collar", "mean_diameter_mm": 50, "friction_coefficient": 0.1}
+    doc["design"] = {"service_factor": 1.4}
+    rep = _report(doc)
+    screw_out = rep["design"]["screw"]
+    assert screw_out["thread"] == "Tr34x6" and screw_out["nut"]["turns"] == 10.0
+    stop = next(c for c in rep["checks"] if c["id"] == "nut_pressure_emergency_stop")
+    assert stop["value"] == pytest.approx(28000.0 / (math.pi * 0.031 * 0.003 * 10) / 1e6)
+    assert stop["margin"] == pytest.approx(1.0434, rel=1e-4)

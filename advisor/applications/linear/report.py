@@ -8,6 +8,7 @@ from advisor.one_way.report import OneWayOut
 class NutOut(ReportTable):
     height_mm: float
     turns: float
+    turns_basis: str | None = None  # stated where the emergency stop's force lengthens the nut
     height_ratio: float
     bearing_pressure_MPa: float
     allowable_pressure_MPa: float

@@ -73,11 +73,32 @@ def _thrust_out(ev: ThreadEvaluation, force_N: float) -> ThrustOut | None:
     )
 
 
-def _nut_out(ev: ThreadEvaluation, material: ScrewMaterial, heat: NutHeat) -> NutOut:
-    """The nut's table: its proportions, flank pressure, wear and heat."""
+def _turns_basis(ev: ThreadEvaluation, req: Requirements, material: ScrewMaterial) -> str | None:
+    """Why the nut has more turns than the rated force gives it: the emergency stop's force
+    sizes it (Ivanov, power screws: z = f_B·F_m/(π·d2·H1·[p])); None where the rated force
+    or the minimum height sizes it."""
+    if ev.nut_turns <= ev.nut_turns_rated:
+        return None
+    lin = req.linear
+    assert lin is not None and lin.emergency_stop_force_N is not None
+    return (
+        f"{ev.nut_turns:g} turns, sized by the emergency stop's {lin.emergency_stop_force_N:g} N "
+        f"× f_B = {ev.service_factor:g}: z = f_B·F_stop/(π·d2·H1·[p]) rounded up, within "
+        f"z ≤ {material.nut_max_turns} and H/d2 ≤ {material.nut_height_ratio_max:g} (the rated "
+        f"{lin.force_N:g} N alone gives {ev.nut_turns_rated:g}); Ivanov, Детали машин, power "
+        "screws"
+    )
+
+
+def _nut_out(
+    ev: ThreadEvaluation, req: Requirements, material: ScrewMaterial, heat: NutHeat
+) -> NutOut:
+    """The nut's table: its proportions (and what sized its turns where the stop did), flank
+    pressure, wear and heat."""
     return NutOut.make(
         height_mm=ev.nut_height_mm,
         turns=ev.nut_turns,
+        turns_basis=_turns_basis(ev, req, material),
         height_ratio=ev.nut_height_mm / ev.thread.d2_mm,
         bearing_pressure_MPa=ev.nut_pressure_Pa / 1e6,
         allowable_pressure_MPa=material.allowable_pressure_Pa / 1e6,
@@ -150,7 +171,7 @@ def screw_out(
         revolutions=ev.revolutions,
         speed_rpm=ev.speed_rpm,
         output_power_W=lin.force_N * v,
-        nut=_nut_out(ev, material, heat),
+        nut=_nut_out(ev, req, material, heat),
         buckling=_buckling_out(ev, req, cat),
         thrust=_thrust_out(ev, lin.force_N),
         critical_speed_rpm=whirling_speed_rpm(req, t, cat),
