@@ -40,7 +40,10 @@ class Outcome(NamedTuple):
     status: str  # design, infeasible, invalid or internal_error
     reason: str  # empty for a design; else the batch command's message in one line
     report: dict[str, Any] | None  # the report as TOML data (what the batch TOML parses to)
-    text: str | None  # the report TOML, byte for byte the batch output (when asked for)
+    #: the report TOML, byte for byte what ``advisor --batch --out-dir`` writes (when asked
+    #: for): a design's, or an infeasible variant's; None for an invalid variant (the batch
+    #: writes no report for it either)
+    text: str | None
 
 
 def one_line(message: str) -> str:
@@ -62,7 +65,13 @@ def advise_one(
 
     try:
         req = parse_requirements(requirement)
-        report = advise(req, Path(catalog_dir) if catalog_dir else None)
+        try:
+            report = advise(req, Path(catalog_dir) if catalog_dir else None)
+        except InfeasibleError as exc:  # its report says why, as advisor --batch --out-dir
+            text = _infeasible_text(req, exc) if with_text else None
+            return Outcome(
+                exc.exit_code, STATUS[ExitCode.INFEASIBLE], one_line(str(exc)), None, text
+            )
         data = plain_data(report)  # what advisor.core.report.to_toml dumps, curves in place
         # = to_toml(report): the same writer, on the data already rounded
         text = toml_text.dumps(archive(data, none_dropped=True)) if with_text else None
@@ -80,6 +89,15 @@ def advise_one(
             None,
             None,
         )
+
+
+def _infeasible_text(req: Any, exc: InfeasibleError) -> str:
+    """The report TOML of a variant no design satisfies, as ``advisor --batch --out-dir``
+    writes it for the same file (``status = "infeasible"``)."""
+    from advisor.core.report import to_toml
+    from advisor.infeasible import infeasible_report
+
+    return to_toml(infeasible_report(req, exc))
 
 
 class FieldProblem(NamedTuple):

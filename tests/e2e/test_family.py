@@ -446,3 +446,50 @@ def test_the_example_family_file():
     fam = read_family(EXAMPLES / "families" / "valve_actuators.toml")
     assert fam.size == 60 and fam.members[0].application == "rotary"
     assert [a.key for a in fam.members[0].axes] == ["rotary.torque_Nm", "rotary.speed_rpm"]
+
+
+def _one_variant_family(tmp_path, base, axis: str):
+    fam = tmp_path / "one.toml"
+    fam.write_text(
+        f'[family]\nname = "one"\n[[family.members]]\nname = "m"\nbase = "{base}"\n'
+        f"[family.members.axes]\n{axis}\n",
+        encoding="utf-8",
+    )
+    out = tmp_path / "study"
+    quiet = io.StringIO()
+    with contextlib.redirect_stdout(quiet), contextlib.redirect_stderr(quiet):
+        assert main(["family", str(fam), "--out", str(out), "--reports", "--workers", "1"]) == 0
+        batch = tmp_path / "batch"
+        rc = main(["--batch", str(base), "--out-dir", str(batch)])
+    return out, batch, rc
+
+
+@pytest.mark.parametrize("base", sorted((EXAMPLES / "infeasible").glob("*.toml")), ids=str)
+def test_an_infeasible_variant_gets_the_report_the_batch_writes(tmp_path, base):
+    """--reports writes every variant's report: an infeasible one's is byte for byte what
+    ``advisor --batch FILE --out-dir DIR`` writes for the same file (status = infeasible)."""
+    doc = tomllib.loads(base.read_text(encoding="utf-8"))
+    kind = doc["application"]["kind"]  # one axis of one value: the file's own first number
+    key, value = next((k, v) for k, v in doc[kind].items() if isinstance(v, int | float))
+    out, batch, rc = _one_variant_family(tmp_path, base, f'"{kind}.{key}" = [{value!r}]')
+    assert rc == 3
+    assert read_rows(out / "designs.csv")[0]["status"] == "infeasible"
+    (alone,) = batch.iterdir()
+    report = (out / "reports" / "v0000000.report.toml").read_bytes()
+    assert report == alone.read_bytes()
+    assert tomllib.loads(report.decode())["report"]["status"] == "infeasible"
+
+
+def test_an_invalid_variant_gets_no_report_as_the_batch_writes_none(tmp_path):
+    # the rudder at 6000 rpm: not below the motor's slowest candidate speed (a cross-field
+    # refusal, so the family advises the variant and records it invalid)
+    base = tmp_path / "rudder.toml"
+    base.write_text(
+        (EXAMPLES / "rudder_actuator.toml")
+        .read_text()
+        .replace("speed_rpm = 5\n", "speed_rpm = 6000\n")
+    )
+    out, batch, rc = _one_variant_family(tmp_path, base, '"rotary.torque_Nm" = [1620]')
+    assert rc == 2
+    assert read_rows(out / "designs.csv")[0]["status"] == "invalid"
+    assert list((out / "reports").iterdir()) == [] and list(batch.iterdir()) == []
