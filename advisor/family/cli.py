@@ -55,7 +55,10 @@ def build_parser() -> argparse.ArgumentParser:
         help="variants per task (default: family.chunk_size, else from the cost model)",
     )
     p.add_argument(
-        "--reports", action="store_true", help="also write every variant's report to DIR/reports/"
+        "--reports",
+        action="store_true",
+        help="also write each variant's report to DIR/reports/ (a design's or an infeasible one's, "
+        "as --batch --out-dir writes them; an invalid variant has its reason in designs.csv)",
     )
     p.add_argument("--no-html", action="store_true", help="skip family.html")
     p.add_argument("--quiet", action="store_true", help="no progress bar")
