@@ -92,6 +92,10 @@ class Sheet:
     bars: list[Bar] = field(default_factory=list)
     parts: list[list[str]] = field(default_factory=list)
     probability: "Probability | None" = None  # with an [uncertainty] table
+    #: What the datasheet says where it has no probability of passing
+    no_probability: str = (
+        "No [uncertainty] table: every margin above is at the nominal inputs only."
+    )
 
 
 @dataclass
@@ -348,7 +352,19 @@ def sheet(
         bars=utilisation(doc),
         parts=parts(doc),
         probability=probability(doc.get("uncertainty"), labels),
+        no_probability=no_probability(doc),
     )
+
+
+def no_probability(doc: dict[str, Any]) -> str:
+    """Why a report has no probability of passing: no ``[uncertainty]`` table asked for one,
+    or no design passed, and P(pass) is computed for a design only."""
+    if isinstance(doc.get("requirements", {}).get("uncertainty"), dict):
+        return (
+            "The requirement has an [uncertainty] table, but no design passes the checks: "
+            "the probability of passing is computed for a design only."
+        )
+    return "No [uncertainty] table: every margin above is at the nominal inputs only."
 
 
 def _tally(checks: list[Check]) -> str:

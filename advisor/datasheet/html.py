@@ -105,11 +105,11 @@ def _figure(p: Plot, index: int) -> str:
     )
 
 
-def _probability(p: Probability | None) -> str:
+def _probability(p: Probability | None, absent: str) -> str:
     """P(pass) of the design and of each check, and the tornado chart of the drivers of the
-    least probable checks."""
+    least probable checks (``absent``: what to say where there is none)."""
     if p is None:
-        return "<p>No [uncertainty] table: every margin above is at the nominal inputs only.</p>"
+        return f"<p>{_e(absent)}</p>"
     out = [f"<p>{_e(p.statement)}</p>", _table(p.inputs, 3), _table(p.checks, 3)]
     out += [f'<p class="note">{_e(n)}</p>' for n in p.notes]
     for i, t in enumerate(p.tornadoes, 1):
@@ -219,7 +219,7 @@ def render(s: Sheet, plots: list[Plot]) -> str:
         "<table><tr><th></th><th>id</th><th>check</th><th>value</th><th>limit</th>"
         f"<th>unit</th><th>margin</th><th>source</th></tr>{rows}</table>"
     )
-    body["uncertainty"] = _probability(s.probability)
+    body["uncertainty"] = _probability(s.probability, s.no_probability)
     body["plots"] = "\n".join(_figure(p, i) for i, p in enumerate(plots, 1)) or (
         "<p>This report has no curves to plot.</p>"
     )

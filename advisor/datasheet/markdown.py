@@ -165,16 +165,13 @@ def _review(s: Sheet) -> list[str]:
     return out
 
 
-def _probability(p: Probability | None) -> list[str]:
+def _probability(p: Probability | None, absent: str) -> list[str]:
     """P(pass) of the design and of each check, and the tornado charts' data as tables: each
-    input's ρ with a bar of ten cells either side of zero."""
+    input's ρ with a bar of ten cells either side of zero (``absent``: what to say where
+    there is none)."""
     out = ["## Probability of passing", ""]
     if p is None:
-        return [
-            *out,
-            r"No \[uncertainty\] table: every margin above is at the nominal inputs only.",
-            "",
-        ]
+        return [*out, absent.replace("[", r"\[").replace("]", r"\]"), ""]
     out += [lead(p.statement), ""]
     out += _tables(p.inputs, 3)
     out += _tables(p.checks, 3)
@@ -224,7 +221,7 @@ def render(s: Sheet) -> str:
             for c in s.checks
         ],
     )
-    out += _probability(s.probability)
+    out += _probability(s.probability, s.no_probability)
     out += ["## Decisions", ""]
     for d in s.decisions:
         out += [f"{_heading(3, d.id)} — {text(d.title).strip()}", ""]

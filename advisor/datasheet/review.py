@@ -15,7 +15,16 @@ from advisor.datasheet.labels import number, split_key
 TIGHT_MARGIN = 1.1
 
 #: Requirement fields that are no requirement of the design: what it is, its name, the header.
-NOT_REQUIRED = (("application", "kind"), ("application", "title"), ("project",))
+#: The [uncertainty] table's samples, seed and input laws describe the analysis, not the design;
+#: its ``target`` is a requirement, met by the design's P(pass) (:func:`_probability_row`).
+NOT_REQUIRED = (
+    ("application", "kind"),
+    ("application", "title"),
+    ("project",),
+    ("uncertainty", "samples"),
+    ("uncertainty", "seed"),
+    ("uncertainty", "inputs"),
+)
 
 #: The header's fields, in the order a title block lists them.
 PROJECT_FIELDS = (
@@ -118,7 +127,9 @@ def required_vs_achieved(
             continue
         label, unit = labels.get(path) or split_key(path[-1])
         ids = covering(path, covers, list(checks))
-        if ids:
+        if path == ("uncertainty", "target") and (row := _probability_row(doc, label, v)):
+            rows.append(row)
+        elif ids:
             c = min((checks[i] for i in ids), key=lambda c: c["margin"])
             achieved = f"{number(c['value'])} against {number(c['limit'])} {c['unit']}".strip()
             rows.append(
@@ -151,6 +162,32 @@ def required_vs_achieved(
                 )
             )
     return rows, at_default
+
+
+def _probability_row(doc: dict, label: str, target: Any) -> Required | None:
+    """The target P(pass) against the design's: the robust choice takes a design whose
+    interval's lower end reaches the target, so that end is what is achieved (None: the
+    report has no probability of passing, e.g. no design passed)."""
+    u = doc.get("uncertainty")
+    if not isinstance(u, dict) or "p_pass_low" not in u or not isinstance(target, int | float):
+        return None
+    low = u["p_pass_low"]
+    margin = low / target
+    # a probability's margin cannot exceed 1/target: "tight" would say nothing here
+    status = "fails" if margin < 1.0 else "passes"
+    conf = f"{u.get('confidence', 0.95) * 100:g} %"
+    return Required(
+        "uncertainty.target",
+        label,
+        number(target),
+        "",
+        f"P(pass) of the design, the lower end of its {conf} interval",
+        "",
+        f"{number(low)} against {number(target)}",
+        f"{margin:.3f}",
+        status,
+        0,
+    )
 
 
 def _same(default: Any, value: Any) -> bool:
