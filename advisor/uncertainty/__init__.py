@@ -102,12 +102,15 @@ def check_probabilities(report: Any, results: list, varied: set[str]) -> list:
         drivers = [
             DriverOut.make(input=k, rank_correlation=rho) for k, rho in r.drivers if k in varied
         ]
+        modelled = any(abs(d.rank_correlation) > 0 for d in drivers)
+        if not modelled:  # a constant margin has no rank correlation (not a ρ of 0)
+            drivers = []
         out.append(
             CheckProbabilityOut.make(
                 id=c.id,
                 name=c.name,
                 nominal_margin=c.margin,
-                modelled=any(abs(d.rank_correlation) > 0 for d in drivers),
+                modelled=modelled,
                 p_pass=r.probability.p,
                 p_pass_low=r.probability.low,
                 p_pass_high=r.probability.high,
