@@ -482,7 +482,7 @@ def summary_lines(outcomes: list[Outcome], out_dir: Path) -> list[str]:
         printable(n, newlines=False) for n in display_names([Path(o.source) for o in outcomes])
     ]
     rows = [
-        (name, STATUS[o.code], str(o.code), printable(o.headline, newlines=False))
+        (name + _renamed(o), STATUS[o.code], str(o.code), printable(o.headline, newlines=False))
         for o, name in zip(outcomes, names, strict=True)
     ]
     head = ("file", "result", "exit", "design or reason")
@@ -494,6 +494,16 @@ def summary_lines(outcomes: list[Outcome], out_dir: Path) -> list[str]:
         f"{counts[0]} designs, {counts[3]} infeasible, {counts[2]} invalid"
         + (f", {counts[1]} internal errors" if counts[1] else ""),
     ]
+
+
+def _renamed(o: Outcome) -> str:
+    """`` → name-2.report.toml`` for a file whose report took another name than its own
+    (a second input of the same name), so the summary says which report is whose."""
+    from advisor.core.io_safety import printable
+
+    if o.report is None or Path(o.report).name == f"{Path(o.source).stem}.report.toml":
+        return ""
+    return f" → {printable(Path(o.report).name, newlines=False)}"
 
 
 def print_summary(outcomes: list[Outcome], out_dir: Path) -> None:

@@ -87,6 +87,21 @@ def test_same_name_twice_gets_two_reports(tmp_path):
     assert report_name(tmp_path / "a.toml", taken) == "a-2.report.toml"
 
 
+def test_the_summary_names_a_report_that_took_another_name(tmp_path, capsys):
+    # two inputs called a.toml: the second's report is a-2.report.toml, and the summary
+    # says so on its line (the first keeps its own name and needs no word)
+    for sub in ("x", "y"):
+        (tmp_path / sub).mkdir()
+        shutil.copy(EXAMPLES / "positioning_drive.toml", tmp_path / sub / "a.toml")
+    files = [str(tmp_path / "x" / "a.toml"), str(tmp_path / "y" / "a.toml")]
+    assert main(["--batch", *files, "--out-dir", str(tmp_path / "o")]) == ExitCode.OK
+    lines = capsys.readouterr().out.splitlines()
+    first = next(line for line in lines if "x/a.toml" in line)
+    second = next(line for line in lines if "y/a.toml" in line)
+    assert "→" not in first and "y/a.toml → a-2.report.toml" in second
+    assert (tmp_path / "o" / "a-2.report.toml").exists()
+
+
 def test_expand_keeps_files_and_sorts_directories(tmp_path):
     d = _corpus(tmp_path)
     got = [p.name for p in expand([d])]
