@@ -149,7 +149,7 @@ class DriveAdvisorApp(StartUp, KeysInOrder, StepPages, StepChecks, ResultViews, 
             self._show_step(focus=False)
 
     def _changed(self) -> None:
-        now = fields.prune(self.doc)
+        now = self._draft_doc()
         if now == self._last_doc:  # a widget reporting what it already showed: no change
             return
         self._last_doc = copy.deepcopy(now)
@@ -158,13 +158,25 @@ class DriveAdvisorApp(StartUp, KeysInOrder, StepPages, StepChecks, ResultViews, 
         if self.report is not None:
             self._show_result_status()
 
+    def _draft_doc(self) -> dict[str, Any]:
+        """The document as the draft keeps it: a field whose text is refused holds no value
+        in the document (what is computed is what the fields show), but the draft keeps its
+        text as typed, so a resumed draft shows it again in its field with its message."""
+        doc = fields.prune(self.doc)  # new tables at every level: the document stays as is
+        for wid in self.field_errors:
+            f = self._field_by_id(wid)
+            text = self._synced.get(wid, "")
+            if f is not None and text.strip():
+                fields.put(doc, f.path, fields.kept_text(f, text))
+        return doc
+
     def _save_draft(self) -> None:
         """Save the draft; when it cannot be (its directory is a file, read-only, full …),
         say so once, as a notice and on the status line under the steps, and keep the input
         in memory: a notice at every keystroke would bury the screen. The line stays while
         the saves fail, and goes at the first save that works again."""
         try:
-            drafts.save_draft(fields.prune(self.doc), self.source)
+            drafts.save_draft(self._draft_doc(), self.source)
         except OSError as exc:
             why = f"{exc.strerror or type(exc).__name__}"
             if exc.filename:

@@ -255,6 +255,30 @@ def parse_text(field: Field, text: str) -> tuple[Any, str | None]:
     return value, None
 
 
+def kept_text(field: Field, text: str) -> Any:
+    """A refused field's text as a draft keeps it, in the form a loaded file shows again in
+    the field with the same message: text in a number's place, and a list's items each as
+    typed (a plain number as a number, anything else as text; a list that cannot be split
+    into items, its whole text as one item).
+
+    >>> kept_text(Field(("t",), "T", kind="float"), "1,5")
+    '1,5'
+    >>> kept_text(Field(("s",), "S", kind="floats"), '5000, "3,5 rpm"')
+    [5000.0, '3,5 rpm']
+    """
+    text = text.strip()
+    if field.kind != "floats":
+        return text
+    items = list_items(text)
+    if items is None:
+        return [text]
+    plain = [not quoted and _PLAIN.fullmatch(item) for item, quoted in items]
+    return [
+        float(item) if bare and math.isfinite(float(item)) else item
+        for (item, _), bare in zip(items, plain, strict=True)
+    ]
+
+
 def quantity(field: Field, text: str) -> float:
     """A string of a file (``"3000 rpm"``) in the field's unit, as the batch reads it: a
     :class:`~advisor.core.units.UnitError` in the batch's words when it is no quantity."""
