@@ -1,6 +1,7 @@
 """How the wizard shows a linear-actuator report: its components and its plots."""
 
-from typing import Any
+import re
+from typing import Any, NamedTuple
 
 from advisor.tui.views import PlotData, kv
 
@@ -58,11 +59,27 @@ def plots(report) -> list[PlotData]:
 
 def compare(report) -> list[Any]:
     """The candidate motors of the catalog, the runners-up of the thread–motor choice where
-    the report has them, and the one-way device types."""
-    from advisor.tui.compare import Option, Section, decision, mark, one_way, table
+    the report has them (the inputs of decision SCR-04), and the one-way device types."""
+    from advisor.tui.compare import Section, decision, one_way
 
-    d = report.design
-    m = d.motor
+    imposed = (report.requirements.get("screw") or {}).get("thread")
+    note = (
+        "The motor follows from the thread and the catalog; the requirement imposes the thread."
+        if imposed
+        else "The thread and the motor are chosen together (SCR-04); the catalog gives the motor."
+    )
+    why = " ".join(x for x in (decision(report, "IM-02"), decision(report, "IM-03")) if x)
+    out = [Section("Candidate motors", _motors(report.design.motor), why, (), note)]
+    runners = _runners_up(report)
+    if runners and not imposed:
+        out.append(_runners_section(report, runners))
+    return out + one_way(report)
+
+
+def _motors(m) -> Any:
+    """The catalog's candidate motors, the chosen one marked."""
+    from advisor.tui.compare import mark, table
+
     t = table("motor", "kW", "speed rpm", "travel s", "start margin", "suitable")
     for c in m.candidates:
         chosen = c.model == m.model and c.rated_power_kW == m.rated_power_kW
@@ -74,41 +91,60 @@ def compare(report) -> list[Any]:
             "—" if c.starting_torque_margin is None else f"{c.starting_torque_margin:.3g}",
             "yes" if c.suitable else "no: " + "; ".join(c.problems)[:40],
         )
-    out = [
-        Section(
-            "Candidate motors",
-            t,
-            " ".join(x for x in (decision(report, "IM-02"), decision(report, "IM-03")) if x),
-            (),
-            "The motor follows from the thread and the catalog; the requirement imposes the "
-            "thread.",
-        )
-    ]
-    runners = getattr(d, "runners_up", None) or getattr(d.screw, "runners_up", None) or []
-    if runners:
-        r = table("thread", "motor", "travel s", "why not chosen")
-        options = []
-        r.add_row(mark(True, d.screw.thread), m.model, f"{m.travel_time_s:.3g}", "chosen")
-        for x in runners:
-            thread = getattr(x, "thread", "?")
-            r.add_row(
-                mark(False, str(thread)),
-                str(getattr(x, "motor", None) or getattr(x, "model", "") or "—"),
-                _num(getattr(x, "travel_time_s", None)),
-                str(getattr(x, "reason", None) or getattr(x, "why", "") or ""),
-            )
-            if thread != d.screw.thread and all(o.label != f"Use {thread}" for o in options):
-                options.append(Option(f"Use {thread}", ((("screw", "thread"), thread),)))
-        out.append(
-            Section(
-                "Thread and motor: the runners-up",
-                r,
-                decision(report, "SCR-04"),
-                tuple(options),
-                "“Use” imposes the thread (screw.thread).",
-            )
-        )
-    return out + one_way(report)
+    return t
+
+
+class RunnerUp(NamedTuple):
+    """One runner-up of the thread–motor choice as decision SCR-04 states it."""
+
+    thread: str
+    motor: str
+    detail: str  # rated power and poles, in the report's words
+    travel_time_s: float | None
+
+
+#: "Tr16x2 + 4A71B4 (0.75 kW, 4-pole, stroke in 4.31 s)", as SCR-04 lists its runners-up.
+_RUNNER = re.compile(r"(?P<thread>\S+) \+ (?P<motor>.+?) \((?P<detail>.*)\)")
+_STROKE = re.compile(r",? *stroke in (?P<t>[0-9.eE+-]+) s")
+
+
+def _runners_up(report) -> list[RunnerUp]:
+    """The runners-up SCR-04 keeps in its inputs (``runners_up``), read from its text;
+    an entry in another form is shown whole as the thread's row."""
+    scr04 = next((d for d in report.decisions if d.id == "SCR-04"), None)
+    out = []
+    for text in (scr04.inputs.get("runners_up") or []) if scr04 is not None else []:
+        m = _RUNNER.fullmatch(str(text))
+        if m is None:
+            out.append(RunnerUp(str(text), "—", "", None))
+            continue
+        stroke = _STROKE.search(m["detail"])
+        detail = _STROKE.sub("", m["detail"]).strip(", ")
+        out.append(RunnerUp(m["thread"], m["motor"], detail, stroke and float(stroke["t"])))
+    return out
+
+
+def _runners_section(report, runners: list[RunnerUp]) -> Any:
+    """The chosen thread and motor above the runners-up, each runner-up's thread a "Use"."""
+    from advisor.tui.compare import Option, Section, decision, mark, table
+
+    s, m = report.design.screw, report.design.motor
+    r = table("thread", "motor", "motor rating", "travel s")
+    rating = f"{m.rated_power_kW:g} kW, {2 * m.pole_pairs}-pole"
+    r.add_row(mark(True, s.thread), m.model, rating, _num(m.travel_time_s))
+    options: list[Any] = []
+    for x in runners:
+        r.add_row(mark(False, x.thread), x.motor, x.detail, _num(x.travel_time_s))
+        label = f"Use {x.thread}"
+        if x.thread != s.thread and x.motor != "—" and all(o.label != label for o in options):
+            options.append(Option(label, ((("screw", "thread"), x.thread),)))
+    return Section(
+        "Thread and motor: the runners-up",
+        r,
+        decision(report, "SCR-04"),
+        tuple(options),
+        "“Use” imposes the thread (screw.thread); the motor then follows from it.",
+    )
 
 
 def _num(v) -> str:
