@@ -169,6 +169,7 @@ class ResultViews:
         box = self.query_one("#compare-box", VerticalScroll)
         box.remove_children()
         self.use_options.clear()
+        box.can_focus = True
         if report is None:
             box.mount(Static(f"Nothing to compare: {self.no_result_why}.", classes="note"))
             return
@@ -192,6 +193,10 @@ class ResultViews:
             if buttons:  # one per line: a row of long labels runs off a narrow screen
                 widgets.append(Vertical(*buttons, classes="uses"))
             widgets.append(Static(""))
+        # with "Use" buttons, tab goes from the view's tabs straight to the first of them (a
+        # focused box shows no mark, so the first tab seemed to go nowhere); arrows still
+        # scroll the box from a button. Without buttons the box takes the focus to scroll.
+        box.can_focus = not self.use_options
         box.mount(*widgets)
 
     def _show_result_status(self) -> None:
