@@ -478,6 +478,31 @@ def test_iec_start_loads_the_output_from_the_load_side():
     )
 
 
+def test_a_start_peak_above_98_39_of_the_rated_torque_sizes_the_stages_for_it():
+    """The same S4 at 47.3 N·m: the start carries M_L + J_L·ε_out, far above the rated
+    torque, while T_av stays near it. Sized at T_av alone the repeated peak would exceed
+    98/39 × T_N (245.9 against 119.5 N·m: refused). WG-07 sizes the stages so that it does
+    not: T_N = T_rep·39/98 (Harmonic Drive's CSF ratings, repeated peak 98 of rated 39)."""
+    doc = rot_s4_doc()
+    doc["rotary"]["torque_Nm"] = 47.3
+    rep = report(doc)
+    d, rl = rep["design"]["duty"], rep["design"]["reducer_load"]
+    peak, run = d["peak_torque_limit_Nm"], 47.3 / (Q * ETA)
+    j = 1.5e-4 + 2.0 / (Q * Q * ETA)
+    w, w_out = 3000.0 * math.pi / 30.0, 5.0 * math.pi / 30.0
+    start = 47.3 + 2.0 * w_out / (j * w / (peak - run))  # M_L + J_L·ω_out/t_a
+    assert rl["repeated_peak_torque_Nm"] == pytest.approx(start, rel=1e-5)
+    assert rl["rated_torque_Nm"] == pytest.approx(start * 39 / 98, rel=1e-5)
+    assert rl["rated_torque_Nm"] > rl["mean_torque_Nm"] > 47.3
+    checks = {x["id"]: x for x in rep["checks"]}
+    assert checks["stage_repeated_peak"]["passed"]
+    assert checks["stage_repeated_peak"]["margin"] == pytest.approx(1.0, rel=1e-9)
+    assert checks["stage_average_torque"]["margin"] > 1.0
+    wg7 = next(x for x in rep["decisions"] if x["id"] == "WG-07")
+    assert "repeated peak T_rep" in wg7["decision"]
+    assert wg7["inputs"]["repeated_peak_torque_Nm"] == pytest.approx(start, rel=1e-5)
+
+
 def test_a_cycle_within_the_rated_torque_keeps_the_reducer_at_the_rated_torque():
     """examples/rudder_actuator_duty.toml: its cycle's T_av stays at or below the rated
     torque, so no WG-07 and T_N = the rated torque (its report byte for byte as before)."""

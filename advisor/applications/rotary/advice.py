@@ -400,31 +400,34 @@ def _reducer_for_cycle(
     trace: Trace,
 ) -> ReducerChoice:
     """The reducer at the chosen ratio, its stages sized by eq. (16) for the rated output
-    torque or, with a [duty] whose cube-mean torque T_av at the output exceeds it, for T_av
-    (WG-07; both × f_B). T_av is found at the ratio and efficiency of the reducer adopted, so
-    the reducer is chosen again while a stage count changing η lifts T_av (at most four
-    passes, until the stage torque no longer grows)."""
+    torque or, with a [duty] that asks more of them, for the cycle: its cube-mean torque T_av
+    and its repeated peak T_rep within 98/39 × T_N (WG-07; × f_B). The cycle is found at the
+    ratio and efficiency of the reducer adopted, so the reducer is chosen again while a stage
+    count changing η lifts it (at most four passes, until the stage torque no longer grows)."""
     params, sf = sizing
     if req.duty is None:
         return choose_reducer(chosen.total_ratio, req.gearbox, env, params, trace)
     from advisor.applications.rotary.duty import output_loads
-    from advisor.calc.load_spectrum import cube_mean_torque
+    from advisor.calc import load_spectrum
 
     speed, frame = chosen.speed_rpm, fit.frame_for(chosen.speed_rpm)
     q, eta = chosen.total_ratio, chosen.gearbox_efficiency
     sized, basis = params, None
     for _ in range(4):
         loads = output_loads(req, q, eta, speed, frame, _holder(req, q, eta))
-        t_av = cube_mean_torque(loads)
-        if t_av * sf.value <= sized.torque_Nm:
+        t_av = load_spectrum.cube_mean_torque(loads)
+        t_rep = load_spectrum.repeated_peak_torque(loads)
+        need = max(t_av * sf.value, t_rep * sf.value / load_spectrum.REPEATED_PEAK_FACTOR)
+        while load_spectrum.REPEATED_PEAK_FACTOR * need < t_rep * sf.value:
+            need = math.nextafter(need, math.inf)  # sized for its peak: never a bit short of it
+        if need <= sized.torque_Nm:
             break
-        sized, basis = params._replace(torque_Nm=t_av * sf.value), (t_av, q, eta)
+        sized, basis = params._replace(torque_Nm=need), (t_av, t_rep, q, eta)
         design = choose_reducer(chosen.total_ratio, req.gearbox, env, sized, Trace()).design
         q, eta = design.total_ratio, design.efficiency
     if basis is not None:
-        t_av, q, eta = basis
         rated = reducer_output_torque(req)
-        trace.apply(wavegear_rules.size_for_cycle, rated, t_av, sf.value, q, eta)
+        trace.apply(wavegear_rules.size_for_cycle, rated, *basis[:2], sf.value, *basis[2:])
     return choose_reducer(chosen.total_ratio, req.gearbox, env, sized, trace)
 
 
