@@ -161,6 +161,54 @@ class KlossCurve(NamedTuple):
             / (slip / sk + sk / slip + 2.0 * self.epsilon)
         )
 
+    def mean_torque(self, slip_from: float, slip_to: float, intervals: int = 64) -> float:
+        """Mean torque of the refined Kloss characteristic between two slips, by Simpson's
+        rule.
+
+        M_m = 1/(b − a) · h/3 · [M(a) + 4·M(a + h) + 2·M(a + 2h) + … + M(b)],  h = (b − a)/N
+
+        Parameters
+        ----------
+        slip_from : float
+            Slip a [-] where the mean starts (the working slip of a start)
+        slip_to : float
+            Slip b [-] where it ends, b > a (1: standstill)
+        intervals : int, optional
+            Number of Simpson intervals N [-], even
+
+        Returns
+        -------
+        torque_Nm : float
+            Mean motor torque M_m over [a, b] [N·m]
+
+        Notes
+        -----
+        The torque is :meth:`torque`'s expression written out in the loop, with its constant
+        factors computed once: the same floats, about three times faster (a duty cycle asks
+        this mean of every motor it tries, for every move).
+
+        Examples
+        --------
+        >>> c = KlossCurve(22.27, 0.2, 0.1)
+        >>> round(c.mean_torque(0.05, 1.0), 2)
+        15.37
+
+        References
+        ----------
+        The mean starting torque of a direct-on-line start (Chilikin, «Общий курс
+        электропривода», ch. 2) on the refined Kloss formula [3].
+        """
+        a, b, n = slip_from, slip_to, intervals
+        h = (b - a) / n
+        sk = self.critical_slip
+        top = 2.0 * self.max_torque_Nm * (1.0 + self.epsilon)
+        two_eps = 2.0 * self.epsilon
+        total = self.torque(a) + self.torque(b)
+        for k in range(1, n):
+            s = a + k * h  # > 0: a ≥ 0 and h > 0
+            total += (4 if k % 2 else 2) * (top / (s / sk + sk / s + two_eps))
+        return total * h / 3.0 / (b - a)
+
     def stable_slip(self, load_torque_Nm: float) -> float | None:
         """Slip of the steady working point under a load torque, on the stable branch.
 

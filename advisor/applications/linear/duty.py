@@ -24,8 +24,7 @@ from typing import Any, NamedTuple
 from advisor.calc import duty as duty_calc
 from advisor.calc import one_way as one_way_calc
 from advisor.calc.duty import Phase
-from advisor.calc.induction import fit_kloss
-from advisor.calc.sizing import Check
+from advisor.calc.sizing import Check, fit_motor
 from advisor.core.cite import cite
 from advisor.core.errors import InfeasibleError, InputError
 from advisor.core.rulebook import Trace
@@ -76,9 +75,7 @@ class MotorModel:
 
     def __init__(self, m, j_load: float) -> None:
         self.m = m
-        self.curve = fit_kloss(
-            m.rated_torque_Nm, m.rated_slip, m.breakdown_torque_ratio, m.starting_torque_ratio
-        )
+        self.curve = fit_motor(m).curve  # the fit is cached by the ratings it depends on
         self.w0 = m.synchronous_speed_rpm * math.pi / 30.0
         self.j = m.inertia_kgm2 + j_load
 
@@ -91,12 +88,7 @@ class MotorModel:
 
     def mean_start_torque(self, s_work: float) -> float:
         """Mean of M(s) from standstill to the working slip (Simpson, 64 intervals)."""
-        a, b, n = max(s_work, 0.0), 1.0, 64
-        h = (b - a) / n
-        tot = self.curve.torque(a) + self.curve.torque(b)
-        for k in range(1, n):
-            tot += (4 if k % 2 else 2) * self.curve.torque(a + k * h)
-        return tot * h / 3.0 / (b - a)
+        return self.curve.mean_torque(max(s_work, 0.0), 1.0, 64)
 
     def move(self, name: str, path_rad: float, load: float) -> tuple[list[Phase], float, float]:
         """Start, run, coast over a path at the motor: (phases, mean start torque, k_L)."""
