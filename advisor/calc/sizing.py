@@ -437,8 +437,9 @@ class ScrewDemand:
     ) -> list[ThreadScreen]:
         """:func:`screen_threads` of every thread under this demand."""
         out = []
+        shared = _screen_constants(self)
         for g in geometries:
-            if not _holds_the_load(g, self):
+            if not _holds_the_load(g, self, shared):
                 nan = math.nan
                 out.extend(
                     ThreadScreen(g.thread, g.name, z, False, nan, nan, nan, False)
@@ -446,7 +447,7 @@ class ScrewDemand:
                 )
                 continue
             max_speed = _max_speed_rpm(g.d3_m, self.span_m, self.end_fixity, self.material)
-            out.extend(_screen_lead(g, z, self, max_speed) for z in starts_options)
+            out.extend(_screen_lead(g, z, self, max_speed, shared) for z in starts_options)
         return out
 
 
@@ -734,19 +735,49 @@ def _evaluation(
     )
 
 
-def _holds_the_load(g: ThreadGeometry, d: ScrewDemand) -> bool:
+class _ScreenConstants(NamedTuple):
+    """What the screen of every thread under one demand shares, computed once per screen:
+    the allowed core stress, the reduced friction angles that do not depend on the lead
+    (the standard model's, and the low end of the friction range's, which is always the
+    standard one), and the flank pressure allowed."""
+
+    stress_limit_MPa: float
+    pressure_limit_MPa: float
+    #: the friction angle of the demand's model where it does not depend on the lead angle
+    #: (the standard model); None for the paper's f/cos(ψ/2)
+    phi_fixed: float | None
+    phi_low: float
+
+
+def _screen_constants(d: ScrewDemand) -> _ScreenConstants:
+    """The constants of :func:`_holds_the_load` and :func:`_screen_lead` under a demand:
+    the same expressions as they had inside, so the same floats."""
+    m, model = d.material, d.friction_model
+    return _ScreenConstants(
+        m.yield_strength_Pa / m.yield_safety_factor / MPA,
+        m.allowable_pressure_Pa / MPA,
+        screw.friction_angle(m.friction_coefficient, model, 0.0) if model == "standard" else None,
+        screw.friction_angle(m.friction_low, "standard", 0.0),
+    )
+
+
+def _holds_the_load(g: ThreadGeometry, d: ScrewDemand, k: _ScreenConstants) -> bool:
     """Whether a thread passes the four checks that do not depend on its number of starts:
     buckling, flank pressure, nut height and nut turns (the margins of
-    :func:`evaluate_thread`)."""
-    m, sf, force_N = d.material, d.service_factor, d.force_N
+    :func:`evaluate_thread`). Buckling first: it needs no nut."""
+    m, sf = d.material, d.service_factor
+    p_cr_allowed = (
+        screw.critical_buckling_load(
+            g.d3_m, d.span_m, d.end_fixity, m.elastic_modulus_Pa, m.yield_strength_Pa
+        )[0]
+        / d.buckling_safety_factor
+    )
+    if _margin(d.force_N, p_cr_allowed, sf) < 1.0:
+        return False
     p, d2 = g.pitch_m, g.d2_m
     turns, pressure, _ = _nut(d, d2, p, g.h1_m)
-    p_cr = screw.critical_buckling_load(
-        g.d3_m, d.span_m, d.end_fixity, m.elastic_modulus_Pa, m.yield_strength_Pa
-    )[0]
     holds = (
-        _margin(force_N, p_cr / d.buckling_safety_factor, sf) >= 1.0
-        and _margin(pressure / MPA, m.allowable_pressure_Pa / MPA, sf) >= 1.0
+        _margin(pressure / MPA, k.pressure_limit_MPa, sf) >= 1.0
         and _margin(turns * p / d2, m.nut_height_ratio_max) >= 1.0
         and _margin(turns, float(m.nut_max_turns)) >= 1.0
     )
@@ -755,42 +786,40 @@ def _holds_the_load(g: ThreadGeometry, d: ScrewDemand) -> bool:
     # the emergency stop's momentary force, as :func:`_stop_checks` checks it
     stop_pressure = screw.nut_bearing_pressure(d.momentary_force_N, d2, g.h1_m, turns)
     return (
-        _margin(d.momentary_force_N, p_cr / d.buckling_safety_factor, sf) >= 1.0
-        and _margin(stop_pressure / MPA, m.allowable_pressure_Pa / MPA, sf) >= 1.0
+        _margin(d.momentary_force_N, p_cr_allowed, sf) >= 1.0
+        and _margin(stop_pressure / MPA, k.pressure_limit_MPa, sf) >= 1.0
     )
 
 
 def _screen_lead(
-    g: ThreadGeometry, starts: int, d: ScrewDemand, max_speed_rpm: float
+    g: ThreadGeometry, starts: int, d: ScrewDemand, max_speed_rpm: float, k: _ScreenConstants
 ) -> ThreadScreen:
     """The screen of a thread that holds the load, with one number of starts: its core
-    stress under the torque of that lead decides."""
-    m, force_N = d.material, d.force_N
+    stress under the torque of that lead decides; a thread that fails it is not driven,
+    and its speed is not computed."""
+    force_N, sf = d.force_N, d.service_factor
     psi = screw.lead_angle(g.pitch_m, g.d2_m, starts)
-    phi = screw.friction_angle(m.friction_coefficient, d.friction_model, psi)
+    phi = k.phi_fixed
+    if phi is None:
+        phi = screw.friction_angle(d.material.friction_coefficient, d.friction_model, psi)
     torque = screw.torque_from_angles(force_N, g.d2_m, psi, phi)
     core = screw.core_equivalent_stress(force_N, torque, g.d3_m)
-    stress_limit = m.yield_strength_Pa / m.yield_safety_factor / MPA
-    passed = _margin(core / MPA, stress_limit, d.service_factor) >= 1.0
+    passed = _margin(core / MPA, k.stress_limit_MPa, sf) >= 1.0
     if passed and d.stop_force_N > 0:  # the core at the stop's force, as _stop_checks
         stop_core = _stop_core_stress(d, g.d2_m, g.d3_m, psi, phi)
-        passed = _margin(stop_core / MPA, stress_limit, d.service_factor) >= 1.0
+        passed = _margin(stop_core / MPA, k.stress_limit_MPa, sf) >= 1.0
+    if not passed:
+        nan = math.nan
+        return ThreadScreen(
+            g.thread, g.name, starts, False, nan, nan, nan, False, 1.0, 0.0, max_speed_rpm
+        )
     revs = screw.revolutions(d.stroke_m, g.pitch_m, starts)
     speed = screw.screw_speed_rpm(revs, d.travel_time_s)
-    low = screw.friction_angle(m.friction_low, "standard", psi)
+    thrust = d.thrust.torque_Nm(force_N, speed) if d.thrust is not None else 0.0
+    locking = screw.is_self_locking(psi, k.phi_low)
+    # positional, in the order of its fields (faster)
     return ThreadScreen(
-        g.thread,
-        g.name,
-        starts,
-        passed,
-        torque if passed else math.nan,
-        revs if passed else math.nan,
-        speed if passed else math.nan,
-        passed and screw.is_self_locking(psi, low),
-        thrust_torque_Nm=d.thrust.torque_Nm(force_N, speed)
-        if passed and d.thrust is not None
-        else 0.0,
-        max_speed_rpm=max_speed_rpm,
+        g.thread, g.name, starts, True, torque, revs, speed, locking, 1.0, thrust, max_speed_rpm
     )
 
 
