@@ -450,25 +450,24 @@ def thermal_history(
     prefix = _phase_maps(losses_W, resistance_K_W, time_constant_s)
     cycle_s, _, b_cycle = prefix[-1]
     x = cycle_s / time_constant_s  # the cycle's A = e^(−x)
-
-    def rise(i: int) -> float:
-        if i == 0:
-            return 0.0
-        c, j = divmod(i - 1, m)
-        _, a_j, b_j = prefix[j + 1]
-        start = b_cycle * math.expm1(-c * x) / math.expm1(-x) if c and x > 0 else c * b_cycle
-        return start * a_j + b_j
+    one_cycle = math.expm1(-x)  # A − 1, the denominator of every cycle's start
 
     n = cycles * m + 1
     step = max(1, n // max_points)
-    kept = list(range(0, n, step))
+    kept = list(range(step, n, step))
     if (n - 1) % step:
         kept.append(n - 1)
     # The clock is the durations summed one after another, as thermal_rise sums them: c·t_c + t_j
     # differs from that sum in the last bit, which decides a time printed to 6 digits.
     durations = itertools.chain.from_iterable(itertools.repeat([d for _, d in losses_W], cycles))
     times = list(itertools.accumulate(durations, initial=0.0))
-    return [(times[i], rise(i)) for i in kept]
+    out = [(0.0, 0.0)]
+    for i in kept:  # point i ends phase j of cycle c
+        c, j = divmod(i - 1, m)
+        _, a_j, b_j = prefix[j + 1]
+        start = b_cycle * math.expm1(-c * x) / one_cycle if c and x > 0 else c * b_cycle
+        out.append((times[i], start * a_j + b_j))
+    return out
 
 
 def periodic_peak_rise(

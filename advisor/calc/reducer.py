@@ -62,27 +62,40 @@ class Reducer(NamedTuple):
     mass_kg: float
 
 
+class _Own(NamedTuple):
+    """A stage's own rolling body and diameters at its torque [mm] (eqs. (13), (14), (16))."""
+
+    rolling_body_diameter_mm: float
+    outer_diameter_mm: float
+    inner_diameter_mm: float
+
+
+def _own(torque_Nm: float, q: float, rows: int, p: ReducerParams) -> _Own:
+    d_rb = float(wavegear.rolling_body_diameter(torque_Nm, q, rows, p.k_rb))
+    return _Own(
+        d_rb, float(wavegear.outer_diameter(q, d_rb)), float(wavegear.inner_diameter(q, d_rb))
+    )
+
+
 def _stage(
     position: str,
     q: float,
     rows: int,
     torque_Nm: float,
+    own: _Own,
     common: tuple[float, float, float],
     p: ReducerParams,
 ) -> Stage:
-    """One stage at its torque: its own diameters by eqs. (13), (14), (16), the common outer
-    and inner diameters and its length (``common``), its mass by eqs. (12), (19)."""
+    """One stage at its torque: its own diameters (``own``), the common outer and inner
+    diameters and its length (``common``), its mass by eqs. (12), (19)."""
     D, d, length = common
-    d_rb = float(wavegear.rolling_body_diameter(torque_Nm, q, rows, p.k_rb))
     vol = float(wavegear.hollow_cylinder_volume(D, d, length))
     return Stage(
         position,
         q,
         rows,
         torque_Nm,
-        d_rb,
-        float(wavegear.outer_diameter(q, d_rb)),
-        float(wavegear.inner_diameter(q, d_rb)),
+        *own,
         D,
         d,
         length,
@@ -117,17 +130,16 @@ def evaluate(ratios_out_to_in: list[float], rows_out_to_in: list[int], p: Reduce
     """
     n = len(ratios_out_to_in)
     torque = p.torque_Nm
-    q0 = ratios_out_to_in[0]
-    d_out = float(wavegear.rolling_body_diameter(torque, q0, rows_out_to_in[0], p.k_rb))
-    D = float(wavegear.outer_diameter(q0, d_out))
-    d = float(wavegear.inner_diameter(q0, d_out))
+    out = _own(torque, ratios_out_to_in[0], rows_out_to_in[0], p)  # sets the diameters
+    d_out, D, d = out
     L_out = float(wavegear.stage_length(rows_out_to_in[0], d_out))
     stages = []
     downstream = 1.0  # product of the ratios between this stage and the output
     for i, (q, rows) in enumerate(zip(ratios_out_to_in, rows_out_to_in, strict=True)):
         position = "output" if i == 0 else ("input" if i == n - 1 else "intermediate")
         length = float(wavegear.equal_diameter_length(L_out, downstream))
-        stages.append(_stage(position, q, rows, torque, (D, d, length), p))
+        own = out if i == 0 else _own(torque, q, rows, p)
+        stages.append(_stage(position, q, rows, torque, own, (D, d, length), p))
         downstream *= q
         torque = torque / (q * p.stage_efficiency)
     length = sum(s.length_mm for s in stages)

@@ -2,6 +2,7 @@
 the design space it stands against (sweep, optima, Pareto front: WG-04, WG-05), the one
 adopted (WG-06), its checks and its report table."""
 
+import functools
 from typing import NamedTuple
 
 import numpy as np
@@ -293,14 +294,22 @@ def summary_fields(r: reducer.Reducer) -> dict:
     }
 
 
-def fig1(k_rb: float) -> Fig1Out:
-    """Seed 000, fig. 1: one stage's volume per unit load torque against q, per row count."""
+@functools.cache
+def _fig1_curves(k_rb: float) -> tuple[tuple[float, ...], tuple[tuple[float, ...], ...]]:
+    """Seed 000, fig. 1 (q, and W/M [cm³/(N·m)] per row count): the seed's figure for one
+    rolling body, the same in every design, so computed once."""
     q = np.arange(7.0, 41.0)
     table = wavegear.volume_per_torque(q[None, :], np.array(FIG1_ROWS)[:, None], k_rb) / 1e3
+    return tuple(float(x) for x in q), tuple(tuple(float(x) for x in row) for row in table)
+
+
+def fig1(k_rb: float) -> Fig1Out:
+    """Seed 000, fig. 1: one stage's volume per unit load torque against q, per row count."""
+    q, table = _fig1_curves(k_rb)
     return Fig1Out.make(
-        q=[float(x) for x in q],
+        q=list(q),
         rows=FIG1_ROWS,
-        volume_per_torque_cm3_per_Nm=[[float(x) for x in row] for row in table],
+        volume_per_torque_cm3_per_Nm=[list(row) for row in table],
     )
 
 
