@@ -1,5 +1,6 @@
 """Rules of the sliding screw–nut stage (seed 001 and the power-screw design texts)."""
 
+import heapq
 from collections.abc import Callable
 from operator import attrgetter
 from typing import NamedTuple
@@ -169,10 +170,15 @@ def choose_drive(
     requirement leaves free, and every pole count: the smallest motor first, then the
     lightest screw that it drives. A heavier load can only remove options, so more force
     never gives a smaller motor."""
-    free = [o for o in options if imposed_starts is None or o.starts == imposed_starts]
-    pool = [o for o in free if imposed is None or o.thread == imposed]
-    # sorted is stable: the first of equals comes first, as min would take it
-    ranked = sorted(pool, key=drive_order_key(hold_without_power))
+    free = (
+        [o for o in options if o.starts == imposed_starts]
+        if imposed_starts is not None
+        else options
+    )
+    pool = [o for o in free if o.thread == imposed] if imposed is not None else free
+    # the best and its runners-up only, in the order of a stable sort (nsmallest is
+    # sorted(...)[:n]): the first of equals comes first, as min would take it
+    ranked = heapq.nsmallest(1 + RUNNERS_UP, pool, key=drive_order_key(hold_without_power))
     best = ranked[0] if ranked else None
     own = best if imposed is None else _best(free, hold_without_power)
     inputs: dict = {
@@ -204,7 +210,9 @@ def choose_drive(
             "runners_up": runners,
         }
     )
-    smaller = [o for o in pool if o.motor_size < best.motor_size]
+    # the count is stated only where holding is asked: without it the best has the
+    # smallest motor of all
+    smaller = [o for o in pool if o.motor_size < best.motor_size] if hold_without_power else []
     lighter_same_motor = "; it is the lightest screw this motor drives"
     why = (
         (

@@ -23,11 +23,15 @@ from rules import screw as screw_rules
 
 class MotorLine(NamedTuple):
     """The catalog's motors of one pole count, in order of rated power, fitted, with the
-    running maximum along the line of the smaller of rated and starting torque (``reach``)."""
+    running maximum along the line of the smaller of rated and starting torque (``reach``),
+    their rated powers, and the fastest synchronous speed of the line."""
 
     pole_pairs: int
     fits: list[MotorFit]
     reach: list[float]
+    powers_kW: list[float]
+    #: no motor of the line turns faster: its working speed is n₀·(1 − s) ≤ n₀  [rpm]
+    top_speed_rpm: float
 
 
 def motor_line(pole_pairs: int, fits: list[MotorFit]) -> MotorLine:
@@ -36,7 +40,8 @@ def motor_line(pole_pairs: int, fits: list[MotorFit]) -> MotorLine:
     for fit in fits:
         top = max(top, min(fit.rated_torque_Nm, fit.starting_torque_Nm))
         reach.append(top)
-    return MotorLine(pole_pairs, fits, reach)
+    powers = [fit.motor.rated_power_kW for fit in fits]
+    return MotorLine(pole_pairs, fits, reach, powers, max(f.synchronous_speed_rpm for f in fits))
 
 
 class CatalogParts(NamedTuple):
@@ -86,13 +91,17 @@ def line_option(
     A motor whose rated or starting torque is below the screw torque cannot drive it (the
     first test of :func:`drive_working_speed`); the line's reach is the running maximum of
     the smaller of the two, and a bisection on it skips those motors at once instead of
-    testing them one by one (the joint choice screens every thread, so this runs often)."""
-    torque, fits = ev.motor_torque_Nm, line.fits
+    testing them one by one (the joint choice screens every thread, so this runs often).
+    A screw faster than the line's fastest synchronous speed has no motor in it."""
+    speed = ev.speed_rpm
+    if speed > line.top_speed_rpm:
+        return None
+    torque, fits, powers = ev.motor_torque_Nm, line.fits, line.powers_kW
     for i in range(bisect_left(line.reach, torque), len(fits)):
-        fit = fits[i]
-        if fit.motor.rated_power_kW > max_power_kW:
+        if powers[i] > max_power_kW:
             return None
-        n = drive_working_speed(fit, torque, ev.speed_rpm)
+        fit = fits[i]
+        n = drive_working_speed(fit, torque, speed)
         if n is None or n > ev.max_speed_rpm:  # too slow, or above the whirling limit
             continue
         m, thread = fit.motor, ev.thread
@@ -144,26 +153,30 @@ def first_drive_option(
     :func:`drive_options`, a later one replacing the best only when it comes strictly
     first."""
     best, best_key = None, None
+    best_flag, best_power = True, math.inf  # (flag, power) ≤ these: every option so far
     for ev in screens:
         if not ev.passed:
             continue
         flag = not ev.self_locking_at_low_friction if hold else False
+        if flag > best_flag:
+            continue  # (flag, any power) compares above the best option's
+        torque = ev.motor_torque_Nm
         for line in lines:
-            i = bisect_left(line.reach, ev.motor_torque_Nm)
-            if i == len(line.fits):
+            i = bisect_left(line.reach, torque)
+            if i == len(line.reach):
                 continue  # no motor of the line drives it
             cap = math.inf
-            if best_key is not None:
-                if (flag, line.fits[i].motor.rated_power_kW) > best_key[:2]:
+            if best_key is not None and flag == best_flag:
+                if line.powers_kW[i] > best_power:
                     continue
-                if flag == best_key[0]:
-                    cap = best_key[1]
+                cap = best_power
             option = line_option(ev, line, cap)
             if option is None:
                 continue
             key = screw_rules.drive_order(option, hold)
             if best_key is None or key < best_key:
                 best, best_key = option, key
+                best_flag, best_power = key[0], key[1]
     return best
 
 
