@@ -32,5 +32,4 @@ def test_move_and_rms_bit_identical_to_the_phases():
             10 ** rng.uniform(0, 3),
             10 ** rng.uniform(-1, 1),
         )
-        move_and_rms.cache_clear()
         assert move_and_rms(d, path, i, t_cycle) == _from_phases(d, path, i, t_cycle)

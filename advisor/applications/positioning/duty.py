@@ -8,8 +8,8 @@ whose move is fastest among those that pass, each at the fastest ratio that pass
 """
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
-from functools import lru_cache
 
 import rules.duty
 from advisor.applications.positioning.candidates import Solved
@@ -49,37 +49,45 @@ def cycle(d: Drive, path_rad: float, i: float, cycle_time_s: float) -> list[Phas
     return phases
 
 
-@lru_cache(maxsize=8192)
-def move_and_rms(d: Drive, path: float, i: float, t_cycle: float) -> tuple[float, float]:
-    """(move time [s], RMS torque over the cycle [N·m]) at ratio i; the RMS is inf where the
-    move does not fit in the cycle, both are inf where the load cannot move (i ≤ m).
+def cycle_figures(d: Drive, path: float, t_cycle: float) -> Callable[[float], tuple[float, float]]:
+    """(move time [s], RMS torque over the cycle [N·m]) as a function of the ratio i, for one
+    drive, path and cycle; the RMS is inf where the move does not fit in the cycle, both are
+    inf where the load cannot move (i ≤ m).
 
     The figures of :func:`cycle` and :func:`~advisor.calc.duty.rms_torque` to the last bit
     (the same operations in the same order) without building the phases: the ratio scans
-    evaluate about a thousand cycles per advice. A term of zero is left out of a sum (x + 0.0
-    is x): the run when the move is a triangle, the rest at zero torque. Cached within one
-    advice (:func:`advise_duty` clears it first): the fastest passing ratio and the least-RMS
-    ratio scan the same grid."""
-    load = d.load_torque_Nm / i
-    torque = d.accel_torque_Nm
-    if torque <= load:
-        return math.inf, math.inf
-    j = d.inertia_kgm2 + reflected_inertia(d.load_inertia_kgm2, i)
-    e1, e2 = (torque - load) / j, (torque + load) / j  # trapezoid_phases
-    speed, path_i = d.speed_rad_s, path * i
-    ramps = speed**2 / (2.0 * e1) + speed**2 / (2.0 * e2)
-    if path_i >= ramps:
-        t_run, v = (path_i - ramps) / speed, speed
-    else:
-        t_run, v = 0.0, math.sqrt(2.0 * path_i * e1 * e2 / (e1 + e2))
-    t_accel, t_brake = v / e1, v / e2
-    move = t_accel + t_run + t_brake
-    if move > t_cycle:
-        return move, math.inf
-    square = torque**2
-    num = square * t_accel + load**2 * t_run + square * t_brake
-    den = move + (t_cycle - move) if t_cycle - move > 0 else move  # with the rest, if any
-    return move, math.sqrt(num / den)
+    evaluate about a thousand cycles per advice, so what does not depend on i is read once.
+    A term of zero is left out of a sum (x + 0.0 is x): the run when the move is a triangle,
+    the rest at zero torque."""
+    speed, inertia, torque, load_inertia, load_torque = d
+    speed_2, square = speed**2, torque**2
+
+    def at(i: float) -> tuple[float, float]:
+        load = load_torque / i
+        if torque <= load:
+            return math.inf, math.inf
+        j = inertia + reflected_inertia(load_inertia, i)
+        e1, e2 = (torque - load) / j, (torque + load) / j  # trapezoid_phases
+        path_i = path * i
+        ramps = speed_2 / (2.0 * e1) + speed_2 / (2.0 * e2)
+        if path_i >= ramps:
+            t_run, v = (path_i - ramps) / speed, speed
+        else:
+            t_run, v = 0.0, math.sqrt(2.0 * path_i * e1 * e2 / (e1 + e2))
+        t_accel, t_brake = v / e1, v / e2
+        move = t_accel + t_run + t_brake
+        if move > t_cycle:
+            return move, math.inf
+        num = square * t_accel + load**2 * t_run + square * t_brake
+        den = move + (t_cycle - move) if t_cycle - move > 0 else move  # with the rest, if any
+        return move, math.sqrt(num / den)
+
+    return at
+
+
+def move_and_rms(d: Drive, path: float, i: float, t_cycle: float) -> tuple[float, float]:
+    """:func:`cycle_figures` at one ratio i."""
+    return cycle_figures(d, path, t_cycle)(i)
 
 
 def _grid(d: Drive, fastest: float) -> list[float]:
@@ -109,16 +117,17 @@ def fastest_passing(
     The unconstrained optimum when it passes; otherwise the constraint binds, and the best
     ratio lies on the boundary of the passing set, found by bisection from a grid."""
 
+    at = cycle_figures(d, path, t_cycle)
+
     def ok(i: float) -> bool:
-        t, r = move_and_rms(d, path, i, t_cycle)
+        t, r = at(i)
         return t <= t_cycle and r <= rated
 
     if ok(fastest):
-        return fastest, move_and_rms(d, path, fastest, t_cycle)[0]
+        return fastest, at(fastest)[0]
     grid = _grid(d, fastest)
     moves, flags = [], []  # each grid point evaluated once: its move time and its verdict
-    for i in grid:
-        t, r = move_and_rms(d, path, i, t_cycle)
+    for t, r in map(at, grid):
         moves.append(t)
         flags.append(t <= t_cycle and r <= rated)
     best: tuple[float, float] | None = None
@@ -133,7 +142,7 @@ def fastest_passing(
         if k + 1 < len(grid) and not flags[k + 1]:
             edges.append(_refine(ok, i, grid[k + 1]))
         for c in edges:
-            t = move_and_rms(d, path, c, t_cycle)[0]
+            t = at(c)[0]
             if t < best[1]:
                 best = (c, t)
     return best
@@ -144,21 +153,20 @@ def least_rms(d: Drive, path: float, t_cycle: float, fastest: float) -> tuple[fl
     a golden-section search on log i around the grid's minimum, or, where the minimum lies
     at the edge of the fitting ratios (the move filling the whole cycle), bisection on that
     edge."""
+    at = cycle_figures(d, path, t_cycle)
     grid = _grid(d, fastest)
-    vals = [move_and_rms(d, path, i, t_cycle)[1] for i in grid]
+    vals = [rms for _, rms in map(at, grid)]
     k = min(range(len(grid)), key=vals.__getitem__)
     best = (grid[k], vals[k])
     for j in (k - 1, k + 1):
         if 0 <= j < len(grid) and math.isinf(vals[j]):
-            edge = _refine(
-                lambda i: move_and_rms(d, path, i, t_cycle)[0] <= t_cycle, grid[k], grid[j]
-            )
-            r = move_and_rms(d, path, edge, t_cycle)[1]
+            edge = _refine(lambda i: at(i)[0] <= t_cycle, grid[k], grid[j])
+            r = at(edge)[1]
             if r < best[1]:
                 best = (edge, r)
     if 0 < k < len(grid) - 1 and math.isfinite(vals[k - 1]) and math.isfinite(vals[k + 1]):
         a, b = math.log(grid[k - 1]), math.log(grid[k + 1])
-        f = lambda x: move_and_rms(d, path, math.exp(x), t_cycle)[1]  # noqa: E731
+        f = lambda x: at(math.exp(x))[1]  # noqa: E731
         x = golden_min(f, a, b, iterations=100)
         if f(x) < best[1]:
             best = (math.exp(x), f(x))
@@ -388,7 +396,6 @@ def advise_duty(
     ``required_s`` — a required move time: a motor passes only if its move at the cycle's
     ratio also meets it, and the smallest that passes is chosen (MO-06); without it, the
     fastest that passes (DU-01)."""
-    move_and_rms.cache_clear()  # one advice's evaluations are shared, never a previous advice's
     best, i = choose_for_cycle(solved, rated, path, cycle_time_s, required_s, trace)
     c = cycle_at(best, i, rated[best.name], path, cycle_time_s)
     within = explain_cycle(c, trace)
