@@ -446,8 +446,7 @@ class ScrewDemand:
                     for z in starts_options
                 )
                 continue
-            max_speed = _max_speed_rpm(g.d3_m, self.span_m, self.end_fixity, self.material)
-            out.extend(_screen_lead(g, z, self, max_speed, shared) for z in starts_options)
+            out += _screen_leads(g, starts_options, self, shared)
         return out
 
 
@@ -747,10 +746,13 @@ class _ScreenConstants(NamedTuple):
     #: (the standard model); None for the paper's f/cos(ψ/2)
     phi_fixed: float | None
     phi_low: float
+    #: the thrust face's torque where it does not depend on the speed (none: 0, a collar);
+    #: None for a rolling bearing
+    thrust_Nm: float | None
 
 
 def _screen_constants(d: ScrewDemand) -> _ScreenConstants:
-    """The constants of :func:`_holds_the_load` and :func:`_screen_lead` under a demand:
+    """The constants of :func:`_holds_the_load` and :func:`_screen_leads` under a demand:
     the same expressions as they had inside, so the same floats."""
     m, model = d.material, d.friction_model
     return _ScreenConstants(
@@ -758,6 +760,11 @@ def _screen_constants(d: ScrewDemand) -> _ScreenConstants:
         m.allowable_pressure_Pa / MPA,
         screw.friction_angle(m.friction_coefficient, model, 0.0) if model == "standard" else None,
         screw.friction_angle(m.friction_low, "standard", 0.0),
+        0.0
+        if d.thrust is None
+        else d.thrust.torque_Nm(d.force_N, 0.0)
+        if d.thrust.kind == "collar"
+        else None,
     )
 
 
@@ -791,36 +798,45 @@ def _holds_the_load(g: ThreadGeometry, d: ScrewDemand, k: _ScreenConstants) -> b
     )
 
 
-def _screen_lead(
-    g: ThreadGeometry, starts: int, d: ScrewDemand, max_speed_rpm: float, k: _ScreenConstants
-) -> ThreadScreen:
-    """The screen of a thread that holds the load, with one number of starts: its core
-    stress under the torque of that lead decides; a thread that fails it is not driven,
-    and its speed is not computed."""
-    force_N, sf = d.force_N, d.service_factor
-    psi = screw.lead_angle(g.pitch_m, g.d2_m, starts)
-    phi = k.phi_fixed
-    if phi is None:
-        phi = screw.friction_angle(d.material.friction_coefficient, d.friction_model, psi)
-    torque = screw.torque_from_angles(force_N, g.d2_m, psi, phi)
-    core = screw.core_equivalent_stress(force_N, torque, g.d3_m)
-    passed = _margin(core / MPA, k.stress_limit_MPa, sf) >= 1.0
-    if passed and d.stop_force_N > 0:  # the core at the stop's force, as _stop_checks
-        stop_core = _stop_core_stress(d, g.d2_m, g.d3_m, psi, phi)
-        passed = _margin(stop_core / MPA, k.stress_limit_MPa, sf) >= 1.0
-    if not passed:
-        nan = math.nan
-        return ThreadScreen(
-            g.thread, g.name, starts, False, nan, nan, nan, False, 1.0, 0.0, max_speed_rpm
+def _screen_leads(
+    g: ThreadGeometry, starts_options: tuple[int, ...], d: ScrewDemand, k: _ScreenConstants
+) -> list[ThreadScreen]:
+    """The screens of a thread that holds the load, one per number of starts: its core
+    stress under the torque of that lead decides; a lead that fails it is not driven, and
+    its speed is not computed."""
+    force_N, sf, p, d2, d3 = d.force_N, d.service_factor, g.pitch_m, g.d2_m, g.d3_m
+    max_speed = _max_speed_rpm(d3, d.span_m, d.end_fixity, d.material)
+    out = []
+    for starts in starts_options:
+        psi = screw.lead_angle(p, d2, starts)
+        phi = k.phi_fixed
+        if phi is None:
+            phi = screw.friction_angle(d.material.friction_coefficient, d.friction_model, psi)
+        torque = screw.torque_from_angles(force_N, d2, psi, phi)
+        core = screw.core_equivalent_stress(force_N, torque, d3)
+        passed = _margin(core / MPA, k.stress_limit_MPa, sf) >= 1.0
+        if passed and d.stop_force_N > 0:  # the core at the stop's force, as _stop_checks
+            stop_core = _stop_core_stress(d, d2, d3, psi, phi)
+            passed = _margin(stop_core / MPA, k.stress_limit_MPa, sf) >= 1.0
+        if not passed:
+            nan = math.nan
+            out.append(
+                ThreadScreen(
+                    g.thread, g.name, starts, False, nan, nan, nan, False, 1.0, 0.0, max_speed
+                )
+            )
+            continue
+        revs = screw.revolutions(d.stroke_m, p, starts)
+        speed = screw.screw_speed_rpm(revs, d.travel_time_s)
+        thrust = k.thrust_Nm if k.thrust_Nm is not None else d.thrust.torque_Nm(force_N, speed)
+        locking = screw.is_self_locking(psi, k.phi_low)
+        # positional, in the order of its fields (faster)
+        out.append(
+            ThreadScreen(
+                g.thread, g.name, starts, True, torque, revs, speed, locking, 1.0, thrust, max_speed
+            )
         )
-    revs = screw.revolutions(d.stroke_m, g.pitch_m, starts)
-    speed = screw.screw_speed_rpm(revs, d.travel_time_s)
-    thrust = d.thrust.torque_Nm(force_N, speed) if d.thrust is not None else 0.0
-    locking = screw.is_self_locking(psi, k.phi_low)
-    # positional, in the order of its fields (faster)
-    return ThreadScreen(
-        g.thread, g.name, starts, True, torque, revs, speed, locking, 1.0, thrust, max_speed_rpm
-    )
+    return out
 
 
 def evaluate_thread(
