@@ -240,7 +240,8 @@ class KlossCurve(NamedTuple):
         if load_torque_Nm > self.max_torque_Nm:
             return None
         c = 2.0 * self.max_torque_Nm * (1.0 + self.epsilon) / load_torque_Nm - 2.0 * self.epsilon
-        x = (c - math.sqrt(max(c * c - 4.0, 0.0))) / 2.0
+        d = c * c - 4.0  # ≥ 0 but for rounding at the maximum; max(d, 0.0) written out (faster)
+        x = (c - math.sqrt(0.0 if d < 0.0 else d)) / 2.0
         return x * self.critical_slip
 
 
