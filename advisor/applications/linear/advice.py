@@ -473,6 +473,7 @@ def _too_fast(
     passing = [e for e in screens if e.passed]
     finest = min(passing, key=lambda e: e.thread.pitch_mm * e.starts)
     finest_lead = finest.thread.pitch_mm * finest.starts
+    finest_name = screw_rules.thread_label(finest.thread.name, finest.starts)
     text = (
         f"the motor makes the stroke in {sel.travel_time_s:.3g} s, much faster than the "
         f"{travel_time_s:g} s asked for: an induction motor on 50 Hz has no speed between its "
@@ -482,7 +483,7 @@ def _too_fast(
         text += (
             f". No lead suits: even the slowest catalog motor ({slowest.rated_speed_rpm:g} rpm) "
             f"would need a lead of {lead_needed_mm:.3g} mm, and the finest that passes the "
-            f"checks is {finest_lead:g} mm ({finest.thread.name})"
+            f"checks is {finest_lead:g} mm ({finest_name})"
         )
     ratio = sel.working_speed_rpm / ev.speed_rpm
     need_kW = plan.required_power_kW / REDUCER_EFFICIENCY

@@ -46,7 +46,8 @@ class BucklingOut(ReportTable):
 
 
 class ScrewOut(ReportTable):
-    thread: str
+    thread: str  # the profile (GOST 24737-81): Tr14x2
+    designation: str  # with its starts (GOST 24739-81): Tr14x8(P2); as thread for one start
     imposed: bool
     advisor_choice: str | None = None
     nominal_diameter_mm: float

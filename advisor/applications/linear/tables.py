@@ -28,6 +28,7 @@ from advisor.calc.sizing import MotorEvaluation, ScrewMaterial, ThreadEvaluation
 from advisor.core.cite import text
 from advisor.core.reading import Requirements
 from catalogs import Catalogs
+from rules import screw as screw_rules
 
 
 def _buckling_out(ev: ThreadEvaluation, req: Requirements, cat: Catalogs) -> BucklingOut:
@@ -134,6 +135,7 @@ def screw_out(
     v = screw_calc.linear_speed(lin.stroke_m, lin.travel_time_s)
     return ScrewOut.make(
         thread=t.name,
+        designation=screw_rules.thread_label(t.name, ev.starts),
         imposed=s.thread is not None,
         advisor_choice=advisor_choice,
         nominal_diameter_mm=t.d_mm,

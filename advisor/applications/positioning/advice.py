@@ -237,6 +237,30 @@ def _ratio_checks(best: Solved, built_ratio: float | None = None) -> list[Check]
     ]
 
 
+def move_time_checks(required_s: float | None, move_time_s: float) -> list[Check]:
+    """The built drive's move within the required move time (positioning.move_time_s):
+    value its move time t_Σ at the ratio it is built with (seed 003, eqs. (3)–(4), the speed
+    graph that happens there), limit the required time, margin t_req/t_Σ. No time asked, no
+    check: a duty cycle's own ``duty_move_fits`` holds the move to the cycle time.
+
+    >>> [round(c.margin, 4) for c in move_time_checks(0.8, 0.305658)]  # 0.8/0.305658
+    [2.6173]
+    """
+    if required_s is None:
+        return []
+    return [
+        Check(
+            "move_time",
+            "move time within the required move time",
+            move_time_s,
+            required_s,
+            "s",
+            required_s / move_time_s,
+            SEED_003.at("eqs. (3)–(4)"),
+        )
+    ]
+
+
 def _duty(
     req: Requirements,
     cat: Catalogs,
@@ -276,11 +300,15 @@ def advise_positioning(req: Requirements, cat: Catalogs, trace: Trace):
     motion_table = motion_out(best, solved, pos.profile, path, required)
     duty = None
     if req.duty is None:
-        checks = _ratio_checks(best)
+        checks = _ratio_checks(best) + move_time_checks(pos.move_time_s, best.solution.move_time_s)
     else:
         duty, duty_checks, duty_warnings = _duty(req, cat, solved, best, required, trace)
-        # the design is built at the cycle's motor and ratio: the check states that design
+        # the design is built at the cycle's motor and ratio: the checks state that design
         built = next(s for s in solved if s.name == duty.motor)
-        checks = _ratio_checks(built, duty.ratio) + duty_checks
+        checks = (
+            _ratio_checks(built, duty.ratio)
+            + move_time_checks(pos.move_time_s, duty.move_time_s)
+            + duty_checks
+        )
         warnings += duty_warnings
     return PositioningDesignOut.make(motion=motion_table, duty=duty), checks, warnings

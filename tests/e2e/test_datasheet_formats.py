@@ -1,0 +1,107 @@
+"""How the datasheet and the family study name and print what the report holds: a
+multi-start screw by its full designation, units of every key suffix, tables of a
+decision's inputs, the requirements at their defaults, an infeasible report's rows."""
+
+import math
+
+import pytest
+from helpers import seed001_requirement
+
+from advisor.applications.linear.family import key_outputs
+from advisor.core.engine import advise
+from advisor.core.reading import parse_requirements
+from advisor.datasheet import _sheet
+
+pytest.importorskip("matplotlib")
+
+
+def _four_start_screw() -> dict:
+    """Seed 001's actuator held without power by a roller clutch, 3 s asked, four starts
+    imposed: the joint choice takes Tr14x2 with four starts."""
+    data = seed001_requirement(friction_coefficient=0.06, starts=4)
+    data["application"]["hold_without_power"] = True
+    data["linear"]["travel_time_s"] = 3
+    data["one_way"] = {"type": "roller_clutch"}
+    return data
+
+
+def test_a_multi_start_screw_is_named_with_its_lead_everywhere():
+    # GOST 24739-81: a multi-start trapezoidal thread is written Tr d x lead (P pitch);
+    # Tr14x2 with 4 starts: lead = 4 × 2 mm = 8 mm, so Tr14x8(P2).
+    report = advise(parse_requirements(_four_start_screw()))
+    sheet, doc = _sheet(report)
+    screw = doc["design"]["screw"]
+    assert (screw["thread"], screw["starts"], screw["lead_mm"]) == ("Tr14x2", 4, 8)
+    assert screw["designation"] == "Tr14x8(P2)"
+    # the family's column: a change of starts is a change of screw
+    assert key_outputs(doc)["screw_thread"] == "Tr14x8(P2)"
+    parts = {r[0]: r for r in sheet.parts}
+    assert parts["screw"][1] == "Tr14x8(P2)" and "lead 8 mm" in parts["screw"][3]
+    # the warning that no lead suits names the finest passing screw the same way
+    too_fast = next(w for w in doc["warnings"] if "No lead suits" in w)
+    assert "is 8 mm (Tr14x8(P2))" in too_fast
+
+
+def _positioning(duty: bool) -> dict:
+    """Two listed motors, a 90° move of 2 kg·m² against 20 N·m within 0.8 s; with a
+    3 s cycle where ``duty``."""
+    data = {
+        "application": {"kind": "positioning"},
+        "positioning": {
+            "profile": "triangular",
+            "travel_rad": math.pi / 2,
+            "load_inertia_kgm2": 2.0,
+            "load_torque_Nm": 20.0,
+            "move_time_s": 0.8,
+            "motors": [
+                {
+                    "name": "A",
+                    "speed_rad_s": 50 * math.pi,
+                    "inertia_kgm2": 0.001,
+                    "accel_torque_Nm": 9.0,
+                    "rated_torque_Nm": 3.0,
+                },
+                {
+                    "name": "B",
+                    "speed_rad_s": 300.0,
+                    "inertia_kgm2": 0.004,
+                    "accel_torque_Nm": 20.0,
+                    "rated_torque_Nm": 7.0,
+                },
+            ],
+        },
+    }
+    if duty:
+        data["duty"] = {"cycle_time_s": 3.0}
+    return data
+
+
+@pytest.mark.parametrize("duty", [False, True])
+def test_the_required_move_time_is_checked_against_the_move(duty):
+    report = advise(parse_requirements(_positioning(duty)))
+    sheet, doc = _sheet(report)
+    i = doc["design"]["motion"]["optimal_ratio"]  # the duty cycle keeps it: 19.299
+    # seed 003, eq. (4), motor A (ω0 = 1500 rpm = 157.08 rad/s, J0 = 0.001 kg·m²,
+    # M_λ = 9 N·m) at its ratio i = 19.299: I = J_p/J0 = 2000, m = M_p/M_λ = 20/9,
+    # t = α·i/ω0 + ω0·J0/M_λ·(i² + I)/(i² − m²) = 0.19299 + 0.017453·6.4554 = 0.30566 s
+    w0, m = 50 * math.pi, 20 / 9
+    t = (math.pi / 2) * i / w0 + w0 * 0.001 / 9 * (i * i + 2000) / (i * i - m * m)
+    assert t == pytest.approx(0.305658, rel=1e-5)
+    check = next(c for c in doc["checks"] if c["id"] == "move_time")
+    assert check["value"] == pytest.approx(t, rel=1e-5) and check["limit"] == 0.8
+    assert check["margin"] == pytest.approx(0.8 / 0.305658, rel=1e-5)  # 2.617
+    row = next(r for r in sheet.required if r.path == "positioning.move_time_s")
+    assert (row.check_id, row.achieved, row.margin) == (
+        "move_time",
+        "0.3057 against 0.8 s",
+        "2.617",
+    )
+
+
+def test_without_a_required_move_time_no_move_time_check():
+    data = _positioning(duty=True)
+    del data["positioning"]["move_time_s"]
+    report = advise(parse_requirements(data))
+    sheet, doc = _sheet(report)
+    assert "move_time" not in {c["id"] for c in doc["checks"]}
+    assert "positioning.move_time_s" not in {r.path for r in sheet.required}
