@@ -35,6 +35,7 @@ UNIT_SUFFIXES = {
     "deg": "deg",
     "W": "W",
     "A": "A",
+    "V": "V",
     "T": "T",
     "ohm": "Ω",
 }

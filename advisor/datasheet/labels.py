@@ -24,7 +24,9 @@ UNITS = {
     "pct": "%",
     "cm3": "cm³",
     "MPa": "MPa",
+    "MPa_m_s": "MPa·m/s",
     "m_s": "m/s",
+    "uF": "µF",
     "W_kg": "W/kg",
     "cm3_per_Nm": "cm³/(N·m)",
     "per_hour": "1/h",
@@ -35,6 +37,7 @@ UNITS = {
 REPORT_LABELS: dict[str, tuple[str, str]] = {
     "p15_50_W_kg": ("specific loss at 1.5 T, 50 Hz", "W/kg"),
     "p10_50_W_kg": ("specific loss at 1.0 T, 50 Hz", "W/kg"),
+    "pv_MPa_m_s": ("p·v", "MPa·m/s"),
     "d2_mm": ("pitch diameter of the screw d2", "mm"),
     "d3_mm": ("minor diameter of the screw d3", "mm"),
     "D1_mm": ("minor diameter of the nut D1", "mm"),
@@ -111,7 +114,8 @@ def requirement_labels(model: Any) -> dict[tuple[str, ...], tuple[str, str]]:
             path = (*prefix, name)
             extra = field_extra(info)
             label = extra.get("x-label") or short_description(info.description or "") or name
-            unit = extra.get("x-unit", unit_of(name))
+            # a unit the parser does not take (µF) is named by the report's suffixes
+            unit = extra.get("x-unit") or unit_of(name) or split_key(name)[1]
             args = getattr(ann, "__args__", ())
             if is_model(ann):
                 walk(ann, path)

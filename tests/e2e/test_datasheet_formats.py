@@ -5,12 +5,13 @@ decision's inputs, the requirements at their defaults, an infeasible report's ro
 import math
 
 import pytest
-from helpers import seed001_requirement
+from helpers import EXAMPLES, seed001_requirement
 
 from advisor.applications.linear.family import key_outputs
 from advisor.core.engine import advise
-from advisor.core.reading import parse_requirements
+from advisor.core.reading import parse_requirements, read_requirements
 from advisor.datasheet import _sheet
+from advisor.datasheet.labels import REPORT_LABELS, for_application, split_key
 
 pytest.importorskip("matplotlib")
 
@@ -105,3 +106,57 @@ def test_without_a_required_move_time_no_move_time_check():
     sheet, doc = _sheet(report)
     assert "move_time" not in {c["id"] for c in doc["checks"]}
     assert "positioning.move_time_s" not in {r.path for r in sheet.required}
+
+
+#: The unit tokens a key's suffix is built of (docs/reference/units.md, the report's own).
+UNIT_TOKENS = {
+    "N", "Nm", "m", "mm", "mm2", "m2", "cm3", "s", "h", "rpm", "Hz", "kg", "kgm2", "m3", "W",
+    "kW", "kN", "A", "V", "T", "K", "J", "MPa", "ohm", "rad", "deg", "pct", "uF", "hour",
+}  # fmt: skip
+
+
+def _keys(x, out: set[str]) -> set[str]:
+    if isinstance(x, dict):
+        for k, v in x.items():
+            out.add(k)
+            _keys(v, out)
+    elif isinstance(x, list):
+        for v in x:
+            _keys(v, out)
+    return out
+
+
+def test_unit_suffixes_read_as_their_units():
+    # the nut's p·v: 8.25248 MPa × 1.09456 m/s = 9.033 MPa·m/s, a product, not a speed
+    assert split_key("pv_MPa_m_s") == ("p·v", "MPa·m/s")
+    assert split_key("bus_voltage_V") == ("bus voltage", "V")
+    assert split_key("bus_max_voltage_V") == ("bus max voltage", "V")
+    assert split_key("capacitance_for_largest_uF") == ("capacitance for largest", "µF")
+    assert split_key("sliding_speed_m_s") == ("sliding speed", "m/s")
+    assert split_key("angular_momentum_kgm2_s") == ("angular momentum", "kg·m²/s")
+
+
+def test_every_key_of_every_example_report_has_its_unit():
+    """A key ending in a unit token has a unit, and no unit token is left in its label
+    (``pv MPa`` with m/s, ``bus voltage V`` without a unit were the failures)."""
+    keys: set[str] = set()
+    for path in sorted(EXAMPLES.glob("*.toml")):
+        _keys(_sheet(advise(read_requirements(path)))[1], keys)
+    assert {"pv_MPa_m_s", "bus_voltage_V", "capacitance_for_largest_uF"} <= keys
+    wrong = []
+    for k in sorted(keys):
+        if k in REPORT_LABELS or "_" not in k:
+            continue
+        label, unit = split_key(k)
+        if k.split("_")[-1] in UNIT_TOKENS and not unit:
+            wrong.append((k, label, unit))
+        if label.split()[-1] in UNIT_TOKENS:
+            wrong.append((k, label, unit))
+    assert wrong == []
+
+
+def test_requirement_rows_have_the_units_of_their_keys():
+    labels, _ = for_application("rotary")
+    assert labels[("drive", "bus_voltage_V")] == ("nominal DC-bus voltage", "V")
+    assert labels[("drive", "bus_capacitance_uF")][1] == "µF"
+    assert labels[("duty", "cycles_per_hour")][1] == "1/h"

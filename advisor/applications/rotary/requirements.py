@@ -148,14 +148,14 @@ class DriveReq(StrictModel):
     """The servo drive's DC bus ([drive]): where the energy the motor gives back goes."""
 
     bus_voltage_V: Annotated[
-        float, number_field(ge=12, le=2000, desc="nominal DC-bus voltage, {range} V")
+        float, number_field(ge=12, le=2000, desc="nominal DC-bus voltage, {range}")
     ] = 300.0
     bus_max_voltage_V: Annotated[
         float,
         number_field(
             ge=12,
             le=2500,
-            desc="largest DC-bus voltage (the braking chopper's threshold), {range} V",
+            desc="largest DC-bus voltage (the braking chopper's threshold), {range}",
         ),
     ] = 400.0
     bus_capacitance_uF: Annotated[
