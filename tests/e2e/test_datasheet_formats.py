@@ -10,7 +10,8 @@ from helpers import EXAMPLES, seed001_requirement
 from advisor.applications.linear.family import key_outputs
 from advisor.core.engine import advise
 from advisor.core.reading import parse_requirements, read_requirements
-from advisor.datasheet import _sheet
+from advisor.datasheet import _sheet, render
+from advisor.datasheet.content import input_value
 from advisor.datasheet.labels import REPORT_LABELS, for_application, split_key
 
 pytest.importorskip("matplotlib")
@@ -160,3 +161,22 @@ def test_requirement_rows_have_the_units_of_their_keys():
     assert labels[("drive", "bus_voltage_V")] == ("nominal DC-bus voltage", "V")
     assert labels[("drive", "bus_capacitance_uF")][1] == "µF"
     assert labels[("duty", "cycles_per_hour")][1] == "1/h"
+
+
+def test_a_table_among_a_decisions_inputs_is_printed():
+    report = advise(read_requirements(EXAMPLES / "positioning_drive.toml"))
+    sheet, doc = _sheet(report)
+    mo02 = next(d for d in sheet.decisions if d.id == "MO-02")
+    times = next(d for d in doc["decisions"] if d["id"] == "MO-02")["inputs"]["move_time_s"]
+    # the report's move times 1.20588, 1.15159, 1.02287 s, four significant digits
+    assert times == {"A": 1.20588, "B": 1.15159, "C": 1.02287}
+    assert mo02.inputs == "motor = C; move_time_s = (A = 1.206, B = 1.152, C = 1.023)"
+    assert "{…}" not in render(report, "md")
+
+
+def test_a_long_table_of_inputs_is_cut_with_a_count():
+    # 20 items: the first 8 (INPUT_ITEMS) and "… 12 more"
+    long = {f"m{n}": float(n) for n in range(20)}
+    text = input_value(long)
+    assert text.startswith("(m0 = 0, m1 = 1,") and text.endswith("m7 = 7, … 12 more)")
+    assert input_value({"rows": [{"a": 1}, {"a": 2}]}) == "(rows = [(a = 1), (a = 2)])"
