@@ -13,6 +13,7 @@ the rest imports the errors and the report helpers from here.
 from typing import Any, NamedTuple
 
 from advisor.core.errors import AdvisorError, ExitCode, InfeasibleError, InputError
+from advisor.core.io_safety import OutputError, show
 from advisor.core.report import round_sig, write_atomic
 
 __all__ = [
@@ -21,9 +22,11 @@ __all__ = [
     "InfeasibleError",
     "InputError",
     "Outcome",
+    "OutputError",
     "advise_one",
     "field_problems",
     "round_sig",
+    "show",
     "write_atomic",
 ]
 
