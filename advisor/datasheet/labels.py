@@ -129,6 +129,16 @@ def requirement_labels(model: Any) -> dict[tuple[str, ...], tuple[str, str]]:
     return out
 
 
+def _plain(v: Any) -> Any:
+    """A default as the report writes it: a model's instance (a row of a list of tables) as
+    its table, None fields left out as the report leaves them out."""
+    if hasattr(v, "model_dump"):
+        return v.model_dump(exclude_none=True)
+    if isinstance(v, list | tuple):
+        return type(v)(_plain(x) for x in v)
+    return v
+
+
 def requirement_defaults(model: Any) -> dict[tuple[str, ...], Any]:
     """The default of every leaf field of a requirement model that has one, by its path: a
     value equal to it is one the file could have left out (a field with one allowed value,
@@ -147,7 +157,7 @@ def requirement_defaults(model: Any) -> dict[tuple[str, ...], Any]:
             elif get_origin(ann) is Literal and len(get_args(ann)) == 1:
                 out[(*prefix, name)] = get_args(ann)[0]
             elif not info.is_required():
-                out[(*prefix, name)] = info.get_default(call_default_factory=True)
+                out[(*prefix, name)] = _plain(info.get_default(call_default_factory=True))
 
     walk(model, ())
     return out
@@ -159,10 +169,12 @@ COMPILED_FILE = "compiled_labels.py"
 
 
 def literal_default(v: Any) -> bool:
-    """A default written as a Python literal (a model's instance is none: it never equals a
-    report's plain data, so leaving its field out of the table changes nothing)."""
+    """A default written as a Python literal: a number, a string, None, and lists and tables
+    of them (a model's instance is one after :func:`requirement_defaults` made it plain)."""
     if v is None or type(v) in (str, int, float, bool):
         return True
+    if isinstance(v, dict):
+        return all(type(k) is str and literal_default(x) for k, x in v.items())
     return isinstance(v, list | tuple) and all(literal_default(x) for x in v)
 
 

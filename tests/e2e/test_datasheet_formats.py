@@ -180,3 +180,17 @@ def test_a_long_table_of_inputs_is_cut_with_a_count():
     text = input_value(long)
     assert text.startswith("(m0 = 0, m1 = 1,") and text.endswith("m7 = 7, … 12 more)")
     assert input_value({"rows": [{"a": 1}, {"a": 2}]}) == "(rows = [(a = 1), (a = 2)])"
+
+
+def test_a_list_of_tables_at_its_default_counts_as_at_its_default():
+    # rudder_actuator gives no motor.reference.magnet_losses: the model's default
+    # [{5000 rpm, 60 W}, {10000 rpm, 100 W}] is in the report's requirements; with the 31
+    # other fields at their defaults it makes 32
+    report = advise(read_requirements(EXAMPLES / "rudder_actuator.toml"))
+    sheet, doc = _sheet(report)
+    lines = (EXAMPLES / "rudder_actuator.toml").read_text().splitlines()
+    assert not any("magnet_losses" in line.split("#")[0] for line in lines)
+    given = doc["requirements"]["motor"]["reference"]["magnet_losses"]
+    assert given == [{"speed_rpm": 5000.0, "loss_W": 60.0}, {"speed_rpm": 10000.0, "loss_W": 100.0}]
+    assert "motor.reference.magnet_losses" not in {r.path for r in sheet.required}
+    assert sheet.at_default == 32
