@@ -195,7 +195,8 @@ def smallest_for_cycle(
         f"Motor {best} at i = {rows[best].ratio:.4g}: the smallest that passes the cycle and "
         f"moves the load within {required_s:g} s ({rows[best].move_time_s:.4g} s).",
         "Each motor at the fastest ratio where its RMS torque over the cycle stays within its "
-        "rated torque and the move fits; ranked by power, then inertia. The next smaller ones "
+        "rated torque and the move fits (a catalog induction motor's starts per hour within "
+        "those it allows, DU-06, too); ranked by power, then inertia. The next smaller ones "
         f"fail — {why or 'none: it is the smallest candidate'}.",
         {
             "motor": best,

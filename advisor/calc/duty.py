@@ -744,6 +744,11 @@ def start_energy_J(
     )
 
 
+#: k_b of an electric (DC-injection) stop: its heat taken equal to a start's, the same kinetic
+#: energy being dissipated in the rotor (Chilikin, ch. 9); plugging would be 3.
+DC_BRAKING_HEAT = 1.0
+
+
 def allowed_starts_per_hour(
     no_load_starts_per_hour: float,
     fi: float,

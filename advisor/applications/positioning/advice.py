@@ -270,7 +270,7 @@ def _duty(
     trace: Trace,
 ):
     """The move repeated every cycle_time_s: the motor and ratio for the cycle."""
-    from advisor.applications.positioning.duty import advise_duty, rated_torques
+    from advisor.applications.positioning.duty import advise_duty, rated_torques, start_heats
 
     return advise_duty(
         solved,
@@ -280,6 +280,7 @@ def _duty(
         best.name,
         trace,
         required_s=None if required is None else required[0],
+        heats=start_heats(req, cat),
     )
 
 
