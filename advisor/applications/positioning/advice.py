@@ -187,9 +187,11 @@ def motion_out(
     required: tuple[float, str] | None,
 ) -> MotionOut:
     """The report's motion table: the chosen motor's move, every candidate's beside it, and
-    with a required time the fastest motor."""
+    with a required time the fastest motor by the rule that chooses (MO-05: an estimated
+    inertia at the top of its band), so that the time it states is one the advisor accepts."""
     d, s = best.drive, best.solution
-    fastest = min(solved, key=lambda x: x.solution.move_time_s)
+    decisive = {x.name: _decisive_time(x, path, profile, INERTIA_BAND) for x in solved}
+    fastest = min(solved, key=lambda x: decisive[x.name])
     return MotionOut.make(
         motor=best.name,
         ratio_i0=s.ratio_i0,
@@ -202,7 +204,7 @@ def motion_out(
         torque_ratio=d.torque_ratio,
         required_move_time_s=None if required is None else required[0],
         fastest_motor=None if required is None else fastest.name,
-        fastest_move_time_s=None if required is None else fastest.solution.move_time_s,
+        fastest_move_time_s=None if required is None else decisive[fastest.name],
         candidates=[candidate_out(x) for x in sorted(solved, key=lambda x: x.solution.move_time_s)],
         curve=curve_out(d, path, s.ratio),
         **_solution_fields(s),
