@@ -368,7 +368,7 @@ def sheet(
         requirements=[
             block(_words(k), v, "", labels, (k,))
             for k, v in doc["requirements"].items()
-            if isinstance(v, dict) and k != "project"
+            if isinstance(v, dict) and v and k != "project"  # an empty table heads nothing
         ],
         components=[block(_words(k), v) for k, v in doc["design"].items() if isinstance(v, dict)],
         decisions=decisions,
@@ -384,6 +384,14 @@ def sheet(
         probability=probability(doc.get("uncertainty"), labels),
         no_probability=no_probability(doc),
     )
+
+
+def no_checks(status: str) -> str:
+    """What the Utilisation section says where the report has no check: an infeasible one
+    has no design whose checks could be shown."""
+    if status == "infeasible":
+        return "No check: no design was reached (see why in the Summary)."
+    return "No check applies."
 
 
 def no_probability(doc: dict[str, Any]) -> str:

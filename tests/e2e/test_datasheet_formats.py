@@ -8,11 +8,15 @@ import pytest
 from helpers import EXAMPLES, seed001_requirement
 
 from advisor.applications.linear.family import key_outputs
+from advisor.calc.checks import Check
+from advisor.core.cite import cite
 from advisor.core.engine import advise
+from advisor.core.errors import InfeasibleError
 from advisor.core.reading import parse_requirements, read_requirements
 from advisor.datasheet import _sheet, render
 from advisor.datasheet.content import input_value
 from advisor.datasheet.labels import REPORT_LABELS, for_application, split_key
+from advisor.infeasible import infeasible_report
 
 pytest.importorskip("matplotlib")
 
@@ -194,3 +198,46 @@ def test_a_list_of_tables_at_its_default_counts_as_at_its_default():
     assert given == [{"speed_rpm": 5000.0, "loss_W": 60.0}, {"speed_rpm": 10000.0, "loss_W": 100.0}]
     assert "motor.reference.magnet_losses" not in {r.path for r in sheet.required}
     assert sheet.at_default == 32
+
+
+def _infeasible(path):
+    """The infeasible report the batch writes for ``path``."""
+    req = read_requirements(path)
+    with pytest.raises(InfeasibleError) as exc:
+        advise(req)
+    return infeasible_report(req, exc.value)
+
+
+def _infeasible_sheet(exc: InfeasibleError):
+    report = infeasible_report(read_requirements(EXAMPLES / "linear_screw_actuator.toml"), exc)
+    return _sheet(report)
+
+
+def test_an_infeasible_report_without_a_design_says_its_checks_were_not_reached():
+    sheet, _ = _sheet(_infeasible(EXAMPLES / "infeasible" / "screw_buckles.toml"))
+    rows = {r.path: r for r in sheet.required}
+    force = rows["linear.force_N"]  # covered by core_stress, buckling, nut_* in a design
+    assert force.check == "not reached: the requirement is infeasible (see why)"
+    assert force.status == "unreached" and force.achieved == ""
+    assert not any(r.check == "no check covers this requirement" for r in sheet.required)
+    md = render(_infeasible(EXAMPLES / "infeasible" / "screw_buckles.toml"), "md")
+    assert "No check: no design was reached (see why in the Summary)." in md
+    assert "| check | utilisation |" not in md
+
+
+def test_an_infeasible_report_with_checks_maps_them():
+    # the nearest design's failing check: 15 nut turns where 10 are allowed, margin 10/15
+    bad = Check("nut_turns", "engaged nut turns", 15.0, 10.0, "", 10.0 / 15.0, cite("GOST"))
+    exc = InfeasibleError("no feasible design: the chosen parts fail checks", ["x"], checks=[bad])
+    sheet, _ = _infeasible_sheet(exc)
+    force = next(r for r in sheet.required if r.path == "linear.force_N")
+    assert (force.check_id, force.achieved, force.margin) == ("nut_turns", "15 against 10", "0.667")
+    assert force.status == "fails"
+
+
+def test_an_empty_requirement_table_heads_nothing():
+    report = advise(read_requirements(EXAMPLES / "linear_screw_actuator.toml"))
+    sheet, doc = _sheet(report)
+    assert doc["requirements"]["design"] == {}  # the report's empty [requirements.design]
+    assert "design" not in {b.title for b in sheet.requirements}
+    assert "### design\n" not in render(report, "md")
