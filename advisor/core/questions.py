@@ -36,6 +36,7 @@ UNIT_SUFFIXES = {
     "W": "W",
     "A": "A",
     "V": "V",
+    "uF": "µF",
     "T": "T",
     "ohm": "Ω",
 }

@@ -163,7 +163,7 @@ class DriveReq(StrictModel):
         number_field(
             gt=0,
             le=1e6,
-            desc="the drive's DC-bus capacitance, {range} µF; left out: the resistor is "
+            desc="the drive's DC-bus capacitance, {range}; left out: the resistor is "
             "sized as if the bus took nothing",
         ),
     ] = None
