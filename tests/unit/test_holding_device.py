@@ -3,9 +3,11 @@ a device whose efficiency is below 1, the check that it holds the load with the 
 and the words the report says about it. Every expected number is a hand calculation written
 beside it."""
 
+import fnmatch
 import math
 
 import pytest
+from helpers import seed001_requirement
 
 from advisor.applications.linear import duty as linear_duty
 from advisor.calc import one_way as ow
@@ -80,3 +82,91 @@ def test_ramps_of_a_load_lowered_through_a_self_locking_device():
     )
     assert e1 == pytest.approx((20 - 3 / 0.33112) / (0.005 + 0.001 / 0.33112), rel=1e-4)
     assert e2 == pytest.approx(3 / 0.33112 / (0.005 + 0.001 / 0.33112), rel=1e-4)
+
+
+def _check(rep, cid: str):
+    return next(c for c in rep.checks if c.id == cid)
+
+
+def _linear_device(kind: str) -> dict:
+    data = _linear_worm(type=kind)
+    del data["duty"]
+    return data
+
+
+def test_linear_device_holds_the_back_driving_torque():
+    # Tr14x4(P2): d2 = 13 mm, lead 4 mm, ψ = atan(4/(π·13)) = 5.5939°; the low end of the
+    # friction range f = 0.05: φ' = atan(0.05/cos 15°) = 2.9632° (standard reduced friction).
+    # The load gives the device F·d2/2·tan(ψ − φ') = 3500·0.0065·tan(2.6307°) = 1.04524 N·m;
+    # the device is sized for the screw torque F·d2/2·tan(ψ + φ') = 3500·0.0065·tan(8.5571°)
+    # = 3.42315 N·m (f_B = 1): margin 3.42315/1.04524 = 3.275
+    for kind in ("roller_clutch", "worm", "em_clutch", "inverse_gear"):
+        rep = advise(parse_requirements(_linear_device(kind)))
+        c = _check(rep, "one_way_holds_load")
+        assert (c.value, c.limit) == pytest.approx((1.04524, 3.42315), rel=1e-5), kind
+        assert c.margin == pytest.approx(3.2750, rel=1e-4)
+        assert "with the power off" in c.name
+    # the worm's self-locking: γ = 0.5·φ, φ = atan 0.1 = 5.711°, γ = 2.856°: γ/φ = 0.5, φ/γ = 2
+    worm = _check(advise(parse_requirements(_linear_device("worm"))), "one_way_self_locking")
+    assert (worm.value, worm.limit, worm.margin) == pytest.approx((0.5, 1.0, 2.0))
+    # the braking-profile gear: η = γ/(γ + φ) = 0.45 ⇒ γ/φ = 0.45/0.55 = 0.81818, margin 1.2222
+    gear = _check(
+        advise(parse_requirements(_linear_device("inverse_gear"))), "one_way_self_locking"
+    )
+    assert (gear.value, gear.margin) == pytest.approx((0.81818, 1.22222), rel=1e-5)
+    roller = advise(parse_requirements(_linear_device("roller_clutch")))
+    assert not any(c.id == "one_way_self_locking" for c in roller.checks)  # holds by wedging
+
+
+def test_self_locking_screw_states_its_own_margin():
+    # seed 001's Tr14x2, f = 0.15 (range 0.10 … 0.16): ψ = atan(2/(π·13)) = 2.8036°,
+    # φ' = atan(0.10/cos 15°) = 5.9108° at the low end: ψ/φ' = 0.47433, margin 2.1082
+    data = seed001_requirement()
+    data["application"]["hold_without_power"] = True
+    rep = advise(parse_requirements(data))
+    assert rep.design.one_way.type == "none"
+    c = _check(rep, "screw_self_locking")
+    assert (c.value, c.margin) == pytest.approx((0.47433, 2.1082), rel=1e-4)
+    assert not any(c.id.startswith("one_way") for c in rep.checks)
+
+
+def _rotary(kind: str, location: str = "motor_side") -> dict:
+    return {
+        "application": {"kind": "rotary", "hold_without_power": True, "title": "valve"},
+        "rotary": {"torque_Nm": 1000, "speed_rpm": 5},
+        "motor": {
+            "kind": "bldc",
+            "frame": "reference",
+            "candidate_speeds_rpm": [3000],
+            "max_losses_W": 1500,
+        },
+        "gearbox": {"stage_efficiency": 0.8944},
+        "one_way": {"type": kind, "location": location},
+    }
+
+
+def test_rotary_device_holds_the_load_back_through_the_wave_gear():
+    # q = 600, η = 0.8944² = 0.799951: the device at the motor side is sized for
+    # M/(q·η) = 1000/(600·0.799951) = 2.08346 N·m; the standing load gives it, back through
+    # the wave gear (its back-driven η taken equal to the forward one), M·η/q =
+    # 1000·0.799951/600 = 1.33325 N·m: margin 1/η² = 1.56269
+    for kind in ("roller_clutch", "em_clutch"):
+        c = _check(advise(parse_requirements(_rotary(kind))), "one_way_holds_load")
+        assert (c.value, c.limit, c.margin) == pytest.approx((1.33325, 2.08346, 1.56269), rel=1e-5)
+    # a worm at the output holds exactly the torque it is sized for (a capacity check would
+    # only say 1.000): its self-locking is checked, γ/φ = 0.5
+    rep = advise(parse_requirements(_rotary("worm", "output_side")))
+    assert not any(c.id == "one_way_holds_load" for c in rep.checks)
+    assert _check(rep, "one_way_self_locking").margin == pytest.approx(2.0)
+
+
+def test_datasheet_covers_hold_without_power():
+    from advisor.core.registry import covers
+
+    patterns = covers("linear")["application.hold_without_power"]
+    for cid in ("one_way_holds_load", "one_way_self_locking", "screw_self_locking"):
+        assert any(fnmatch.fnmatch(cid, p) for p in patterns), cid
+    assert any(
+        fnmatch.fnmatch("one_way_holds_load", p)
+        for p in covers("rotary")["application.hold_without_power"]
+    )
