@@ -308,7 +308,10 @@ def em_clutch(torque_Nm: float, p: EmClutchDesign = EM_CLUTCH) -> Device | None:
                 power,
                 f"seed 004 eqs. (14)–(19), D = {dia:g} mm, j = {p.current_density_A_mm2:g} "
                 f"A/mm², δ = {p.air_gap_mm:g} mm, f = {p.friction:g}, k_з = {p.reserve:g}, "
-                f"B = {b:.2f} T; mass and inertia from assumed proportions",
+                f"B = {b:.2f} T; mass and inertia from assumed proportions; a clutch-brake: "
+                "energised it couples the motor (drawing power_W while the drive moves), "
+                "de-energised a spring presses the armature against a fixed face and holds the "
+                "load (no power in holds)",
             )
     return None
 
@@ -601,7 +604,9 @@ def passage(kind: str) -> Passage:
     when the output drives): self-locking, its release taking only the rollers' friction,
     neglected (lowering factor 0). The worm and the braking-profile gear are self-locking
     gears (:func:`worm_lowering_factor`, :func:`self_braking_lowering_factor`); the
-    energised electromagnetic clutch passes torque both ways.
+    energised electromagnetic clutch passes torque both ways. The advisor takes it as a
+    clutch-brake: seed 004's fig. 4 clutch engages when energised, and de-energised a spring
+    presses its armature against a fixed face, which holds the load with no power.
 
     Parameters
     ----------

@@ -12,6 +12,7 @@ from helpers import seed001_requirement
 from advisor.applications.linear import duty as linear_duty
 from advisor.calc import one_way as ow
 from advisor.core.engine import advise
+from advisor.core.errors import InfeasibleError
 from advisor.core.reading import parse_requirements
 
 
@@ -170,3 +171,45 @@ def test_datasheet_covers_hold_without_power():
         fnmatch.fnmatch("one_way_holds_load", p)
         for p in covers("rotary")["application.hold_without_power"]
     )
+
+
+def test_ow02_states_the_seeds_inertia_claim_beside_the_sizes_here():
+    # the valve (2.08346 N·m at the motor side): roller clutch, seed 004 eqs. (1)–(9),
+    # J = 3.82948e-6 kg·m²; em clutch D = 80 mm, armature disc 0.06·D thick:
+    # m = 7800·π·0.08²/4·0.0048 = 0.188195 kg, J = m·D²/8 = 1.50556e-4 kg·m²:
+    # 1.50556e-4/3.82948e-6 = 39.3 times the roller clutch's
+    rep = advise(parse_requirements(_rotary("auto") | {"one_way": {"priority": "inertia"}}))
+    ow02 = next(d for d in rep.decisions if d.id == "OW-02")
+    assert ow02.decision.startswith("roller irreversible clutch")
+    assert "seed 004, fig. 8 and conclusion 5, finds its inertia the least" in ow02.rationale
+    assert "its inertia is 39.3× the roller clutch's" in ow02.rationale
+
+
+def test_em_clutch_holds_as_a_clutch_brake():
+    rep = advise(parse_requirements(_rotary("em_clutch")))
+    basis = rep.design.one_way.basis
+    assert "clutch-brake" in basis and "no power in holds" in basis
+
+
+def test_linear_warning_names_the_device_with_its_article():
+    rep = advise(parse_requirements(_linear_device("em_clutch")))
+    assert any(
+        "an electromagnetic clutch at the motor side holds the load" in w for w in rep.warnings
+    )
+    rep = advise(parse_requirements(_linear_device("inverse_gear")))
+    assert any("a gear with braking (inverse) profile at the motor side" in w for w in rep.warnings)
+
+
+def test_unheld_screw_in_a_cycle_is_refused_for_its_real_cause():
+    # Tr14x4(P2) at f = 0.05 is back-driven (ψ 5.59° > φ' 2.96°) and nothing holds it: no
+    # motor size cures that, so the refusal names the cause and the remedies
+    data = _linear_worm()
+    data["application"]["hold_without_power"] = False
+    del data["one_way"]
+    with pytest.raises(InfeasibleError) as info:
+        advise(parse_requirements(data))
+    err = info.value
+    assert "the load back-drives the screw" in str(err) and "nothing holds it" in str(err)
+    text = " ".join(err.reasons)
+    assert "hold_without_power = true" in text and "brake" in text
+    assert "larger motors of the same pole count" not in text

@@ -134,7 +134,7 @@ def _one_way(
     warnings.insert(
         0,
         f"{thread} is not self-locking at the low end of the friction range (f = "
-        f"{friction_low:g}): a {device.type.replace('_', ' ')} at the motor side holds the load",
+        f"{friction_low:g}): {ow_rules.with_article(device.type)} at the motor side holds the load",
     )
     return device.replace(output_side=None), warnings
 

@@ -195,8 +195,8 @@ def _unheld(ev, n: int, force: float, when: str) -> str:
     return (
         f"segment {n}: {when} the load of {force:g} N back-drives the screw "
         f"{ev.thread.name} (not self-locking at the low end of its friction range) and an "
-        "induction motor on the line cannot hold a load at standstill; set "
-        "application.hold_without_power = true for a one-way device"
+        f"induction motor on the line cannot hold a load at standstill; {UNHELD_REMEDY} for "
+        "a one-way device"
     )
 
 
@@ -389,8 +389,7 @@ def _cycle(req, ev, mot: MotorModel, holder: str | None, passage) -> CycleLoads:
             f"{req.duty.duty_type}: the load of {req.linear.force_N:g} N back-drives the screw "
             f"{ev.thread.name} (not self-locking at the low end of its friction range) "
             "whenever the motor stops, and an induction motor on the line cannot hold a "
-            "load at standstill; set application.hold_without_power = true for a one-way "
-            "device"
+            f"load at standstill; {UNHELD_REMEDY} for a one-way device"
         )
     return cycle
 
@@ -543,6 +542,38 @@ def segment_loads_within_rating(req) -> None:
             )
 
 
+#: The words of :func:`_unheld`'s remedy, by which a refusal tells its cause.
+UNHELD_REMEDY = "set application.hold_without_power = true"
+
+
+def _no_motor_for_cycle(ev, tried: list) -> InfeasibleError:
+    """The refusal when no motor passes the cycle. Where every motor fails because the load
+    back-drives an unheld screw (:func:`_unheld`), no motor size or travel time cures it:
+    the refusal names that cause and its remedies instead of larger motors."""
+    shown = [tried[0], tried[-1]] if len(tried) > 1 else tried
+    lines = [f"{e.motor.model}: " + "; ".join(e.problems) for e in shown]
+    if all(any(UNHELD_REMEDY in p for p in e.problems) for e in tried):
+        return InfeasibleError(
+            f"no feasible design: the load back-drives the screw {ev.thread.name} whenever the "
+            "motor is off, and nothing holds it",
+            [
+                *lines,
+                "no motor size or travel time cures this: set application.hold_without_power = "
+                "true (a one-way device at the motor side holds the load), choose a thread "
+                "that is self-locking at the low end of its friction range (fewer starts, a finer "
+                "pitch, or a pair of higher friction), or hold it with a brake",
+            ],
+        )
+    return InfeasibleError(
+        "no feasible design: no motor of the chosen pole count passes the duty cycle",
+        [
+            *lines,
+            "larger motors of the same pole count were tried; the moves run at the speed "
+            "chosen for linear.travel_time_s (a shorter one picks a faster motor)",
+        ],
+    )
+
+
 def _motor_for_cycle(req, ev, selected, cat, holder, passage, inertias, j_basis, trace: Trace):
     """The point's motor, or the next larger of its pole count, the first that passes the
     cycle (rule DU-08); infeasible when none does. ``inertias``: the screw side's J_L and
@@ -563,15 +594,7 @@ def _motor_for_cycle(req, ev, selected, cat, holder, passage, inertias, j_basis,
             _iec_how(duty),
         )
     if not ok:
-        shown = [tried[0], tried[-1]] if len(tried) > 1 else tried
-        raise InfeasibleError(
-            "no feasible design: no motor of the chosen pole count passes the duty cycle",
-            [
-                *(f"{e.motor.model}: " + "; ".join(e.problems) for e in shown),
-                "larger motors of the same pole count were tried; the moves run at the speed "
-                "chosen for linear.travel_time_s (a shorter one picks a faster motor)",
-            ],
-        )
+        raise _no_motor_for_cycle(ev, tried)
     rows = {x.motor.model: (x.motor.rated_power_kW, x.problems) for x in tried}
     trace.apply(duty_rules.motor_for_cycle_linear, rows, selected.model, j_basis)
     return ok[0]
