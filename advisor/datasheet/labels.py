@@ -9,6 +9,7 @@ from its words and the unit its suffix names (``outer_diameter_mm`` → "outer d
 
 import math
 import re
+from decimal import Decimal
 from typing import Any
 
 from advisor.core.questions import UNIT_SUFFIXES
@@ -226,12 +227,28 @@ if __name__ == "__main__":
     write_compiled()
 
 
+def _tie(x: float, decimals: int) -> bool:
+    """Whether ``x`` as written ends in a single 5 just past ``decimals`` decimals."""
+    digits = Decimal(repr(x)).as_tuple()
+    return (
+        isinstance(digits.exponent, int)
+        and -digits.exponent == decimals + 1
+        and digits.digits[-1] == 5
+    )
+
+
 def number(x: Any) -> str:
     """A value as a reader wants it: four significant digits, no exponent between 0.001 and
     a million, yes/no for booleans.
 
-    >>> number(5.08485), number(21120.5), number(442937), number(1.5e-05), number(True)
+    >>> number(5.08485), number(21120.4), number(442937), number(1.5e-05), number(True)
     ('5.085', '21120', '442937', '1.5e-05', 'yes')
+
+    A value the report rounded to a tie at the shown digit (10282.5 of 10282.524) keeps the
+    digit: rounding it again would say 10282 (half to even) where the value is 10283.
+
+    >>> number(10282.5), number(5.1525), number(2.5)
+    ('10282.5', '5.1525', '2.5')
     """
     if isinstance(x, bool):
         return "yes" if x else "no"
@@ -242,6 +259,8 @@ def number(x: Any) -> str:
             return f"{x:g}"
         if 1e-3 <= abs(x) < 1e6:
             decimals = max(0, 3 - math.floor(math.log10(abs(x))))
+            if _tie(x, decimals):  # the report's own rounding made it one: say it unrounded
+                decimals += 1
             text = f"{x:.{decimals}f}"
             return text.rstrip("0").rstrip(".") if "." in text else text
         return f"{x:.4g}"

@@ -15,7 +15,7 @@ from advisor.core.errors import InfeasibleError
 from advisor.core.reading import parse_requirements, read_requirements
 from advisor.datasheet import _sheet, render
 from advisor.datasheet.content import input_value
-from advisor.datasheet.labels import REPORT_LABELS, for_application, split_key
+from advisor.datasheet.labels import REPORT_LABELS, for_application, number, split_key
 from advisor.infeasible import infeasible_report
 
 pytest.importorskip("matplotlib")
@@ -241,3 +241,15 @@ def test_an_empty_requirement_table_heads_nothing():
     assert doc["requirements"]["design"] == {}  # the report's empty [requirements.design]
     assert "design" not in {b.title for b in sheet.requirements}
     assert "### design\n" not in render(report, "md")
+
+
+def test_a_value_the_report_rounded_to_a_tie_is_not_rounded_again():
+    # seed 001's screw whirls at n_cr = 10282.524 rpm: the check's source says 10283 (one
+    # rounding), the report stores 10282.5 (six digits); rounding that again to 4 digits
+    # would say 10282 (half to even), so the datasheet keeps the stored digit
+    report = advise(read_requirements(EXAMPLES / "linear_screw_actuator.toml"))
+    sheet, doc = _sheet(report)
+    assert doc["design"]["screw"]["critical_speed_rpm"] == 10282.5
+    screw = next(b for b in sheet.components if b.title == "screw")
+    assert ("critical speed", "10282.5", "rpm") in screw.rows
+    assert number(10282.4) == "10282" and number(10282.6) == "10283"
