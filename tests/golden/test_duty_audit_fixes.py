@@ -1,0 +1,86 @@
+"""Duty-cycle verdicts a reviewer checked by hand: the winding's peak rise decides a cycle long
+against its time constant, a load share above 1 loads the screw, keys said "ignored" are not
+used, and the heat of an electric stop is counted once."""
+
+import math
+import tomllib
+
+import pytest
+from helpers import EXAMPLES
+
+from advisor.core.engine import advise
+from advisor.core.errors import InfeasibleError
+from advisor.core.reading import parse_requirements
+
+#: seed 000's frame at 5000 rpm: copper 68.97 W at its 2 N·m, iron + magnets 159.45 W, limit
+#: 228.42 W; R = 105 K / 228.42 W maps the limit onto class F's rise
+COPPER_W, CORE_W, LIMIT_W = 68.97, 159.45, 228.42
+R_K_W = 105.0 / LIMIT_W
+
+
+def _rotary_s9(tau_s: float) -> dict:
+    doc = tomllib.loads((EXAMPLES / "rudder_actuator_duty.toml").read_text(encoding="utf-8"))
+    doc["duty"] = {
+        "load_inertia_kgm2": 2.0,
+        "motor_inertia_kgm2": 0.00015,
+        "thermal_time_constant_s": tau_s,
+        "duty_type": "S9",
+        "cycle_time_s": 6000.0,
+        "loads": [
+            {"load_share": 1.2, "time_share": 0.3},
+            {"load_share": 0.5, "time_share": 0.7},
+        ],
+    }
+    return doc
+
+
+def test_a_cycle_long_against_tau_is_refused_on_the_windings_peak_rise():
+    # load 1: 1.2 × 2 N·m at the motor for 1800 s = 30 τ: P = 68.97·1.2² + 159.45 = 258.77 W,
+    # the winding settles at P·R = 258.77·105/228.42 = 118.95 K > 105 K (class F); the mean
+    # losses 0.3·258.77 + 0.7·(68.97·0.25 + 159.45) = 201.3 W pass the 228.42 W limit
+    p1 = COPPER_W * 1.2**2 + CORE_W
+    assert p1 * R_K_W == pytest.approx(118.95, abs=0.01)
+    with pytest.raises(InfeasibleError) as e:
+        advise(parse_requirements(_rotary_s9(60.0)))
+    assert any("5000 rpm: within a cycle the winding peaks at 118.9 K" in r for r in e.value.reasons)
+
+
+def test_the_peak_rise_is_a_check_with_the_losses_allowance():
+    # τ = 6000 s: periodic steady state of two phases, ΔT₀ = B/(1 − A) with A = e^(−6000/τ),
+    # B = (P1·R·(1 − a1))·a2 + P2·R·(1 − a2), a1 = e^(−1800/τ), a2 = e^(−4200/τ); the peak is
+    # at the end of load 1: ΔT₀·a1 + P1·R·(1 − a1)
+    tau = 6000.0
+    p1, p2 = COPPER_W * 1.2**2 + CORE_W, COPPER_W * 0.5**2 + CORE_W
+    a1, a2 = math.exp(-1800.0 / tau), math.exp(-4200.0 / tau)
+    b = p1 * R_K_W * (1 - a1) * a2 + p2 * R_K_W * (1 - a2)
+    start = b / (1 - a1 * a2)
+    hand = start * a1 + p1 * R_K_W * (1 - a1)  # 96.69 K: passes
+    r = advise(parse_requirements(_rotary_s9(tau)))
+    check = next(c for c in r.checks if c.id == "duty_peak_rise")
+    assert check.value == pytest.approx(hand, rel=1e-3)
+    assert check.limit == pytest.approx(105.0 * 1.001)
+    assert r.design.duty.thermal.peak_rise_K == pytest.approx(hand, rel=1e-3)
+
+
+def test_the_thermal_history_reaches_the_settled_cycle():
+    # rudder_actuator_duty with τ = 1e5 s: steady rise 17.647 K (its losses 38.39 W × R). The
+    # history runs ⌈5τ/t_c⌉ = 50000 cycles of 10 s from cold, so it ends within e^(−5) = 0.7 %
+    # of the settled rise, 17.647·(1 − e^(−5)) = 17.528 K (it stopped at 2000 cycles, 3.2 K)
+    doc = tomllib.loads((EXAMPLES / "rudder_actuator_duty.toml").read_text(encoding="utf-8"))
+    doc["duty"]["thermal_time_constant_s"] = 1e5
+    th = advise(parse_requirements(doc)).design.duty.thermal
+    assert th.steady_rise_K == pytest.approx(17.647, abs=1e-3)
+    assert th.time_s[-1] == pytest.approx(5e5, rel=1e-9)
+    assert th.rise_K[-1] >= 17.647 * (1 - math.exp(-5.0)) - 1e-3
+    assert len(th.time_s) <= 1000  # thinned
+
+
+def test_a_long_history_keeps_its_clock_and_its_cost_with_the_points_kept():
+    # 10⁶ cycles of (100 W, 1 s), (0 W, 1 s), R = 0.5 K/W, τ = 4e5 s: the last point is at
+    # 2e6 s, and the cycle starts from cold at B·(1 − A^c)/(1 − A) ≈ 25 K·(1 − e^(−5)) there
+    from advisor.calc.duty import thermal_history
+
+    hist = thermal_history([(100.0, 1.0), (0.0, 1.0)], 0.5, 4e5, 1_000_000, max_points=400)
+    assert len(hist) <= 402
+    assert hist[-1][0] == pytest.approx(2e6, rel=1e-12)
+    assert hist[-1][1] == pytest.approx(25.0 * (1 - math.exp(-5.0)), rel=1e-4)
