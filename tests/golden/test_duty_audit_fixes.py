@@ -84,3 +84,24 @@ def test_a_long_history_keeps_its_clock_and_its_cost_with_the_points_kept():
     assert len(hist) <= 402
     assert hist[-1][0] == pytest.approx(2e6, rel=1e-12)
     assert hist[-1][1] == pytest.approx(25.0 * (1 - math.exp(-5.0)), rel=1e-4)
+
+
+def _linear(**duty) -> dict:
+    doc = tomllib.loads((EXAMPLES / "valve_actuator_duty.toml").read_text(encoding="utf-8"))
+    doc["duty"] = duty
+    return doc
+
+
+def test_a_linear_load_share_above_one_is_refused_as_a_segment_force_above_rating_is():
+    # valve example, Tr16x2 at 3500 N: nut flank pressure 8.25248 MPa (p = F/(π·d2·H1·z),
+    # linear in F). An S9 share of 1.5 loads the screw with 5250 N: p = 8.25248 × 1.5 =
+    # 12.379 MPa > [p] = 10 MPa, which the checks at 3500 N passed (margin 1.212)
+    from advisor.core.errors import InputError
+
+    r = advise(parse_requirements(_linear(duty_type="S3", cyclic_duration_factor=0.4)))
+    nut = next(c for c in r.checks if c.id == "nut_pressure")
+    assert nut.value == pytest.approx(8.25248, rel=1e-5)
+    assert nut.value * 1.5 == pytest.approx(12.379, abs=1e-3) and nut.value * 1.5 > nut.limit
+    loads = [{"load_share": 1.5, "time_share": 0.1}, {"load_share": 0.5, "time_share": 0.9}]
+    with pytest.raises(InputError, match=r"load_share = 1\.5: loads the screw with 5250 N"):
+        advise(parse_requirements(_linear(duty_type="S9", loads=loads)))

@@ -529,10 +529,19 @@ def _mean_start(phases: list[Phase]) -> float | None:
 
 def segment_loads_within_rating(req) -> None:
     """A segment's force above linear.force_N is refused: the screw, the nut and the holding
-    device are sized for the rated force, and a larger one in the cycle would pass unchecked."""
+    device are sized for the rated force, and a larger one in the cycle would pass unchecked.
+    So is an S9 or S10 load share above 1: it loads the screw with share × linear.force_N."""
+    rated = req.linear.force_N
+    for k, x in enumerate(req.duty.loads or (), 1):
+        if req.duty.duty_type in ("S9", "S10") and x.load_share > 1.0:
+            raise InputError(
+                f"duty.loads[{k}].load_share = {x.load_share:g}: loads the screw with "
+                f"{x.load_share * rated:g} N, above linear.force_N = {rated:g}, the force the "
+                "screw, nut and holding device are sized for; raise linear.force_N to the "
+                "largest force of the cycle and give the shares of it (at most 1)"
+            )
     if not req.duty.segments:
         return
-    rated = req.linear.force_N
     for n, seg in enumerate(req.duty.segments, 1):
         if seg.force_N is not None and seg.force_N > rated:
             raise InputError(
