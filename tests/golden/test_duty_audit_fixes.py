@@ -105,3 +105,19 @@ def test_a_linear_load_share_above_one_is_refused_as_a_segment_force_above_ratin
     loads = [{"load_share": 1.5, "time_share": 0.1}, {"load_share": 0.5, "time_share": 0.9}]
     with pytest.raises(InputError, match=r"load_share = 1\.5: loads the screw with 5250 N"):
         advise(parse_requirements(_linear(duty_type="S9", loads=loads)))
+
+
+@pytest.mark.parametrize("duty_type", ["S3", "S6"])
+def test_s3_and_s6_starts_are_ignored_as_said(duty_type):
+    # IEC 60034-1: in S3 and S6 starting does not significantly affect the temperature; the
+    # key is said ignored, so 30000 starts/h (above the 6334 the 4A71B4 allows by z = z0·(1 −
+    # u²)/(FI·k_L)) neither enters a check nor refuses the design
+    r = advise(
+        parse_requirements(
+            _linear(duty_type=duty_type, cyclic_duration_factor=0.25, starts_per_hour=30000.0)
+        )
+    )
+    assert any(w.startswith("ignored: duty.starts_per_hour") for w in r.warnings)
+    assert not any(c.id == "duty_starts_per_hour" for c in r.checks)
+    assert r.design.duty.starts_per_hour == 0.0
+    assert r.design.duty.allowed_starts_per_hour is None

@@ -357,7 +357,8 @@ def _iec_phases(duty, mot: MotorModel, load: float, w: float, mean_start: float,
 def _iec_cycle(req, ev, mot: MotorModel, passage=one_way_calc.NO_DEVICE) -> CycleLoads:
     """One cycle of an IEC 60034-1 duty type at the rated force's screw torque (through the
     holding device's efficiency where one sits at the motor). Starts are counted where the
-    duty type starts the motor, or gives starts per hour with a cyclic duration (S3, S6)."""
+    duty type starts the motor (S4, S5, S7): in S3 and S6 starting does not significantly
+    affect the temperature (IEC 60034-1), and their starts_per_hour is said ignored."""
     duty = req.duty
     load = one_way_calc.motor_torque_through(passage, ev.torque_Nm)
     slip = mot.slip(load)
@@ -369,7 +370,7 @@ def _iec_cycle(req, ev, mot: MotorModel, passage=one_way_calc.NO_DEVICE) -> Cycl
     mean_start = mot.mean_start_torque(slip)
     k_l = mean_start / (mean_start - load)
     phases, braking, problems = _iec_phases(duty, mot, load, w, mean_start, period)
-    if duty.duty_type not in (*START_STOP_TYPES, "S3", "S6"):
+    if duty.duty_type not in START_STOP_TYPES:
         starts_h = 0.0
     # the load's torque: the motor's own starting and braking torques are not a demand
     peak = max(
