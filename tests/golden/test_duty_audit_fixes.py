@@ -121,3 +121,29 @@ def test_s3_and_s6_starts_are_ignored_as_said(duty_type):
     assert not any(c.id == "duty_starts_per_hour" for c in r.checks)
     assert r.design.duty.starts_per_hour == 0.0
     assert r.design.duty.allowed_starts_per_hour is None
+
+
+def _nut_heat_words(duty: dict) -> str:
+    doc = tomllib.loads((EXAMPLES / "valve_actuator_duty.toml").read_text(encoding="utf-8"))
+    doc["linear"]["force_N"] = 3500.0
+    doc["screw"]["thread"] = "Tr16x2"
+    doc["duty"] = duty
+    r = advise(parse_requirements(doc))
+    return next(w for w in r.warnings if w.startswith("the nut overheats"))
+
+
+@pytest.mark.parametrize(
+    "duty",
+    [
+        {"duty_type": "S7", "starts_per_hour": 60.0},
+        {"duty_type": "S2", "duration_min": 30.0},
+    ],
+)
+def test_the_nut_heat_takes_the_running_share_of_the_duty_type_not_an_ignored_cdf(duty):
+    # S7 runs throughout (start, load, electric stop, no rest: IEC 60034-1 4.2.7), S2 for its
+    # whole run: mean thread friction = P·1 (579 W here), not P·cdf = 579 × 0.2 = 116 W from
+    # a cdf the report says it ignores
+    without = _nut_heat_words(duty)
+    with_cdf = _nut_heat_words({**duty, "cyclic_duration_factor": 0.2})
+    assert "running share 1)" in with_cdf
+    assert with_cdf == without

@@ -68,7 +68,12 @@ def _mean_friction_power(req: Requirements, ev: ThreadEvaluation, power_W: float
             f"duty segments: {work:.4g} J of thread friction a cycle × "
             f"{duty.cycles_per_hour:g} cycles/h",
         )
-    share = 1.0 if duty.duty_type in ("S1",) else (duty.cyclic_duration_factor or 1.0)
+    # the running share the duty type has: its cdf where it uses one (S3 to S6); S1, S2 and S7
+    # run throughout, S9 and S10 taken at the rated load throughout (the larger side)
+    from advisor.core.ignored import DUTY_KEYS_USED
+
+    uses_cdf = duty.duty_type in DUTY_KEYS_USED["cyclic_duration_factor"]
+    share = duty.cyclic_duration_factor if uses_cdf and duty.cyclic_duration_factor else 1.0
     return power_W * share, f"duty {duty.duty_type}, running share {share:g}"
 
 
