@@ -42,7 +42,9 @@ def test_a_cycle_long_against_tau_is_refused_on_the_windings_peak_rise():
     assert p1 * R_K_W == pytest.approx(118.95, abs=0.01)
     with pytest.raises(InfeasibleError) as e:
         advise(parse_requirements(_rotary_s9(60.0)))
-    assert any("5000 rpm: within a cycle the winding peaks at 118.9 K" in r for r in e.value.reasons)
+    assert any(
+        "5000 rpm: within a cycle the winding peaks at 118.9 K" in r for r in e.value.reasons
+    )
 
 
 def test_the_peak_rise_is_a_check_with_the_losses_allowance():
@@ -123,12 +125,17 @@ def test_s3_and_s6_starts_are_ignored_as_said(duty_type):
     assert r.design.duty.allowed_starts_per_hour is None
 
 
-def _nut_heat_words(duty: dict) -> str:
+def _nut_heat_doc(**duty) -> dict:
+    """The valve example's screw, Tr16x2 at 3500 N, under a duty type."""
     doc = tomllib.loads((EXAMPLES / "valve_actuator_duty.toml").read_text(encoding="utf-8"))
     doc["linear"]["force_N"] = 3500.0
     doc["screw"]["thread"] = "Tr16x2"
     doc["duty"] = duty
-    r = advise(parse_requirements(doc))
+    return doc
+
+
+def _nut_heat_words(duty: dict) -> str:
+    r = advise(parse_requirements(_nut_heat_doc(**duty)))
     return next(w for w in r.warnings if w.startswith("the nut overheats"))
 
 
@@ -147,3 +154,19 @@ def test_the_nut_heat_takes_the_running_share_of_the_duty_type_not_an_ignored_cd
     with_cdf = _nut_heat_words({**duty, "cyclic_duration_factor": 0.2})
     assert "running share 1)" in with_cdf
     assert with_cdf == without
+
+
+def test_an_electric_stop_is_counted_once_by_the_starts_not_again_in_the_rms():
+    # valve example screw (Tr16x2, 3500 N), S5 at cdf 0.4, 600 starts/h, 4A71B4 (Klyuchev §11,
+    # β0 = 0.5): start 0.0476126 s and electric stop 0.014231 s both at zero torque (β 0.75),
+    # run 2.33816 s at 5.08485 N·m, rest 3.6 s (β 0.5):
+    # M_eq = √(5.08485²·2.33816/(0.75·(0.0476126 + 0.014231) + 2.33816 + 0.5·3.6)) = 3.80095
+    # z = z0·(1 − u²)/(FI·k_L·(1 + k_b)) = 22797.3·(1 − (3.80095/5.1525)²)/(1.01115·2.17285·2)
+    #   = 2364.8 /h (the stop's −M_m in the RMS counted its heat again: 3.84044, 2305.8)
+    m_eq = math.sqrt(5.08485**2 * 2.33816 / (0.75 * (0.0476126 + 0.014231) + 2.33816 + 1.8))
+    assert m_eq == pytest.approx(3.80095, abs=2e-5)
+    z = 22797.3 * (1 - (m_eq / 5.1525) ** 2) / (1.01115 * 2.17285 * 2)
+    doc = _nut_heat_doc(duty_type="S5", cyclic_duration_factor=0.4, starts_per_hour=600.0)
+    duty = advise(parse_requirements(doc)).design.duty
+    assert duty.rms_torque_Nm == pytest.approx(m_eq, rel=1e-5)
+    assert duty.allowed_starts_per_hour == pytest.approx(z, rel=1e-4)

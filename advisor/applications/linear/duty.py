@@ -473,9 +473,10 @@ def evaluate(
     duty = req.duty
     cycle = _cycle(req, ev, mot, holder, passage)
     phases = cycle.phases
-    # a start's heat, the load's share included (k_L), is counted by the starts per hour:
-    # in the equivalent torque it counts as a ramp at zero torque
-    thermal = [p._replace(torque_Nm=0.0) if p.name.endswith("start") else p for p in phases]
+    # a start's heat, the load's share included (k_L), and an electric stop's (k_b) are
+    # counted by the starts per hour: in the equivalent torque each counts as a ramp at zero
+    # torque, else the heat would be counted twice
+    thermal = [p._replace(torque_Nm=0.0) if _counted_by_starts(p) else p for p in phases]
     rms = duty_calc.rms_torque(thermal, duty.standstill_cooling_factor) if phases else 0.0
     rated = m.rated_torque_Nm
     # S2: SEW's power increasing factor K raises the thermal limit to K·M_n (same speed)
@@ -512,6 +513,24 @@ def evaluate(
         problems=[],
     )
     return replace(record, problems=[*cycle.problems, *_limit_problems(record)])
+
+
+def _zero_torque_words(phases: list[Phase]) -> str:
+    """Which phases the equivalent torque counts at zero torque, and why, in words."""
+    if any(p.name == "electric brake" for p in phases):
+        return (
+            "A start and an electric stop count at zero torque: their heat, the load's share "
+            "included, is counted by the starts per hour (k_b for the stop)."
+        )
+    return (
+        "A start counts at zero torque: its heat, the load's share included, is counted by "
+        "the starts per hour."
+    )
+
+
+def _counted_by_starts(p: Phase) -> bool:
+    """A start or an electric stop: its heat is counted by the starts per hour."""
+    return p.name.endswith("start") or p.name == "electric brake"
 
 
 def _held_by(ev, holder: str | None, passage) -> str:
@@ -629,8 +648,7 @@ def _thermal_verdict(duty, e: CycleEvaluation, trace: Trace) -> tuple[float, str
         thermal_how = (
             f"Equivalent torque √(Σ M²·t / Σ β·t) = {rms:.4g} N·m against the rated "
             f"{rated:.4g} N·m of {m.model}; β = 1 at speed, β0 = {beta0:g} at standstill, "
-            f"(1 + β0)/2 in a ramp (a self-ventilated motor, IP44). A start counts at zero "
-            "torque: its heat, the load's share included, is counted by the starts per hour."
+            f"(1 + β0)/2 in a ramp (a self-ventilated motor, IP44). " + _zero_torque_words(e.phases)
         )
         basis = f"equivalent torque (β0 = {beta0:g} at standstill) over the rated torque"
     if duty.duty_type == "S3":
