@@ -65,7 +65,7 @@ DUTY_KEYS_USED: dict[str, set[str | None]] = {
 
 def duty_keys_used(kind: str) -> dict[str, set[str | None]]:
     """:data:`DUTY_KEYS_USED` with the duty types an application also reads a key for (its
-    registry entry's ``duty_uses``: a drive whose S2 runs as S1 over ``cycle_time_s``)."""
+    registry entry's ``duty_uses``)."""
     from advisor.core.registry import application
 
     uses = dict(DUTY_KEYS_USED)

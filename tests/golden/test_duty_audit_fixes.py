@@ -170,3 +170,33 @@ def test_an_electric_stop_is_counted_once_by_the_starts_not_again_in_the_rms():
     duty = advise(parse_requirements(doc)).design.duty
     assert duty.rms_torque_Nm == pytest.approx(m_eq, rel=1e-5)
     assert duty.allowed_starts_per_hour == pytest.approx(z, rel=1e-4)
+
+
+def _rotary_iec(**duty) -> dict:
+    doc = tomllib.loads((EXAMPLES / "rudder_actuator_duty.toml").read_text(encoding="utf-8"))
+    keep = ("load_inertia_kgm2", "motor_inertia_kgm2", "thermal_time_constant_s")
+    doc["duty"] = {k: doc["duty"][k] for k in keep} | duty
+    return doc
+
+
+@pytest.mark.parametrize("minutes", [2.0, 30.0])
+def test_a_rotary_s2_run_lasts_its_duration_and_does_not_repeat(minutes):
+    # S2 (IEC 60034-1): one run of duration_min from cold: a run of 60·minutes s, no cycles per
+    # hour (it was a 600 s run 6 times an hour whatever the duration); checked as S1, so the
+    # losses are the rated point's whatever the duration
+    r = advise(parse_requirements(_rotary_iec(duty_type="S2", duration_min=minutes)))
+    d = r.design.duty
+    assert [(p.name, p.time_s) for p in d.phases] == [("run", pytest.approx(60.0 * minutes))]
+    assert d.cycles_per_hour is None
+    assert not any(w.startswith("ignored") for w in r.warnings)
+    r = advise(parse_requirements(_rotary_iec(duty_type="S2", duration_min=2, cycle_time_s=60)))
+    assert "ignored: duty.cycle_time_s, because duty_type = 'S2' does not use it" in r.warnings
+
+
+def test_s1_reports_no_cycles_per_hour():
+    # S1 runs continuously: the default cycle_time_s of 600 s is no cycle (it said 6 an hour)
+    assert (
+        advise(parse_requirements(_rotary_iec(duty_type="S1"))).design.duty.cycles_per_hour is None
+    )
+    linear = advise(parse_requirements(_nut_heat_doc(duty_type="S1")))
+    assert linear.design.duty.cycles_per_hour is None

@@ -787,6 +787,8 @@ def _duty_out(duty, ev, e: CycleEvaluation, thermal, inertia_ratio: float, held_
     _, back_J = duty_calc.energies([p for p in phases if p.name != "electric brake"])
     t_cycle = duty_calc.cycle_time(phases)
     counted = e.starts_per_hour > 0  # allowed starts mean something only where counted
+    # S1 runs continuously and S2 is one run from cold: no cycle that repeats
+    per_hour = None if duty.duty_type in ("S1", "S2") else 3600.0 / t_cycle if t_cycle else 0.0
     return DutyOut.make(
         motor=e.motor.model,
         ratio=2.0 * math.pi / _lead_m(ev),
@@ -806,8 +808,7 @@ def _duty_out(duty, ev, e: CycleEvaluation, thermal, inertia_ratio: float, held_
         energy_per_cycle_J=out_J,
         regenerated_per_cycle_J=back_J,
         mean_speed_rpm=duty_calc.mean_speed(phases) * RPM,
-        # S2 is one run from cold, not a cycle that repeats
-        cycles_per_hour=None if duty.duty_type == "S2" else 3600.0 / t_cycle if t_cycle else 0.0,
+        cycles_per_hour=per_hour,
         duty_type=duty.duty_type or "cycle",
         held_by=held_by,
         regenerated_to=REGENERATED_TO if back_J > 0 else None,

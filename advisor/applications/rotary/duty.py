@@ -269,6 +269,8 @@ def _iec_cycle(req, q: float, eta: float, w: float, frame: Frame, holder: Holder
     run_torque = _at_motor(rot.torque_Nm, q, eta, holder)
     cdf = duty.cyclic_duration_factor or 1.0
     period = 3600.0 / duty.starts_per_hour if t in ("S4", "S5", "S7") else duty.cycle_time_s
+    if t == "S2":  # one run of duration_min, checked as S1 (its losses against the limit)
+        period = duty.duration_min * 60.0
     on = cdf * period if t != "S7" else period
     rest = duty_calc.Phase("rest", period - on, 0.0, 0.0, _held(rot.torque_Nm, q, eta, holder))
     if t in ("S1", "S2"):
@@ -734,7 +736,8 @@ def advise_duty(
         energy_per_cycle_J=out_J,
         regenerated_per_cycle_J=back_J,
         mean_speed_rpm=duty_calc.mean_speed(phases) * RPM,
-        cycles_per_hour=3600.0 / t_cycle,
+        # S1 and S2 run without a cycle that repeats
+        cycles_per_hour=None if duty.duty_type in ("S1", "S2") else 3600.0 / t_cycle,
         duty_type=duty.duty_type or "cycle",
         held_by=holder.words(),
         losses_W={"copper": e.copper, "iron_and_magnets": e.core, "total": e.total},
