@@ -87,6 +87,7 @@ def ignored(req: Any) -> list[str]:
             "false: no holding device is chosen (set it true to choose one)"
         )
     duty = getattr(req, "duty", None)
+    out += _unused_rated_torques(req, duty)
     if duty is not None and hasattr(duty, "duty_type"):
         form = duty.duty_type
         uses = duty_keys_used(req.application.kind)
@@ -100,3 +101,17 @@ def ignored(req: Any) -> list[str]:
                 + ("it" if len(unused) == 1 else "them")
             )
     return out
+
+
+def _unused_rated_torques(req: Any, duty: Any) -> list[str]:
+    """A positioning motor's rated (S1) torque given without a [duty]: only the cycle's RMS
+    torque is held against it, so without one it checks nothing."""
+    motors = getattr(getattr(req, "positioning", None), "motors", None) or ()
+    given = [m.name for m in motors if "rated_torque_Nm" in m.model_fields_set]
+    if duty is not None or not given:
+        return []
+    return [
+        IGNORED_PREFIX
+        + f"positioning.motors[].rated_torque_Nm ({', '.join(given)}), because no [duty] is "
+        "given: only a duty cycle's RMS torque is held against it (add [duty] cycle_time_s)"
+    ]

@@ -200,3 +200,19 @@ def test_s1_reports_no_cycles_per_hour():
     )
     linear = advise(parse_requirements(_nut_heat_doc(duty_type="S1")))
     assert linear.design.duty.cycles_per_hour is None
+
+
+def test_a_positioning_rated_torque_without_a_duty_is_said_ignored():
+    # the rated (S1) torque is held only against a duty cycle's RMS torque: without [duty]
+    # it checks nothing, and the report says so rather than drop it silently
+    doc = tomllib.loads((EXAMPLES / "indexing_table_duty.toml").read_text(encoding="utf-8"))
+    del doc["duty"]
+    r = advise(parse_requirements(doc))
+    said = [w for w in r.warnings if w.startswith("ignored: positioning.motors[].rated_torque_Nm")]
+    assert said and "(A, B, C)" in said[0]
+    r = advise(
+        parse_requirements(
+            tomllib.loads((EXAMPLES / "indexing_table_duty.toml").read_text(encoding="utf-8"))
+        )
+    )
+    assert not any("rated_torque_Nm" in w for w in r.warnings)
