@@ -216,3 +216,12 @@ def test_a_positioning_rated_torque_without_a_duty_is_said_ignored():
         )
     )
     assert not any("rated_torque_Nm" in w for w in r.warnings)
+
+
+def test_each_rotary_refusal_line_names_its_speed():
+    # S4, cdf 0.001 at 600 starts/h: 6 s cycles, 0.006 s under load; the 5000 rpm start takes
+    # t_a = J·ω/(M_peak − M_run) = 0.02 s, longer: its line names its speed as the others do
+    doc = _rotary_iec(duty_type="S4", cyclic_duration_factor=0.001, starts_per_hour=600.0)
+    with pytest.raises(InfeasibleError) as e:
+        advise(parse_requirements(doc))
+    assert any(r.startswith("5000 rpm: S4: starting at the peak torque") for r in e.value.reasons)

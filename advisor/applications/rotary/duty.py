@@ -313,8 +313,8 @@ def _iec_starts(req, q, eta, w, frame: Frame, holder: Holder, on: float, rest):
             tb = _electric_stop_time(req.rotary.torque_Nm, (jl, jm), q, eta * eta_d, w, peak, tb)
     if ta + tb > on:
         return [], [
-            f"{t}: starting at the peak torque {peak:.3g} N·m takes {ta:.3g} s, braking "
-            f"{tb:.3g} s: more than the time under load, {on:.4g} s"
+            f"{w * RPM:.6g} rpm: {t}: starting at the peak torque {peak:.3g} N·m takes "
+            f"{ta:.3g} s, braking {tb:.3g} s: more than the time under load, {on:.4g} s"
         ]
     out = [
         duty_calc.Phase("start", ta, 0.0, w, peak),
