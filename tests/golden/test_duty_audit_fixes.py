@@ -225,3 +225,15 @@ def test_each_rotary_refusal_line_names_its_speed():
     with pytest.raises(InfeasibleError) as e:
         advise(parse_requirements(doc))
     assert any(r.startswith("5000 rpm: S4: starting at the peak torque") for r in e.value.reasons)
+
+
+def test_the_s6_idle_run_is_at_the_no_load_speed():
+    # S6 cdf 0.4 of 600 s, 4A71B4 (1500 rpm synchronous): loaded at 1392.47 rpm for 240 s, the
+    # idle run at slip 0, 1500 rpm, for 360 s: mean speed 0.4·1392.47 + 0.6·1500 = 1456.99 rpm
+    d = advise(
+        parse_requirements(_nut_heat_doc(duty_type="S6", cyclic_duration_factor=0.4))
+    ).design.duty
+    idle = next(p for p in d.phases if p.name == "no load")
+    assert idle.speed_rpm == pytest.approx(1500.0)
+    assert d.mean_speed_rpm == pytest.approx(0.4 * 1392.47 + 0.6 * 1500.0, rel=1e-5)
+    assert d.rms_torque_Nm == pytest.approx(5.08485 * math.sqrt(0.4), rel=1e-5)  # 3.21594

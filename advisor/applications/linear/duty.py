@@ -347,8 +347,9 @@ def _iec_phases(duty, mot: MotorModel, load: float, w: float, mean_start: float,
         return [Phase("run", duty.duration_min * 60.0, w, w, load)], 0.0, []
     if t == "S3":
         return [Phase("run", on, w, w, load), Phase("rest", period - on, 0.0, 0.0, 0.0)], 0.0, []
-    if t == "S6":
-        return [Phase("run", on, w, w, load), Phase("no load", period - on, w, w, 0.0)], 0.0, []
+    if t == "S6":  # unloaded, the cage motor runs at its synchronous speed (slip 0)
+        idle = Phase("no load", period - on, mot.w0, mot.w0, 0.0)
+        return [Phase("run", on, w, w, load), idle], 0.0, []
     if t in START_STOP_TYPES:
         return _start_stop_phases(t, mot, load, w, mean_start, period, on)
     return _shared_load_phases(duty, mot, load, period)
