@@ -31,6 +31,7 @@ UNITS = {
     "W_kg": "W/kg",
     "cm3_per_Nm": "cm³/(N·m)",
     "per_hour": "1/h",
+    "Mrev": "10⁶ rev",
 }
 
 #: Report keys whose name is a symbol: what it means and its unit (GOST 24737-81 for the
@@ -54,6 +55,7 @@ REPORT_LABELS: dict[str, tuple[str, str]] = {
     "C0_kN": ("basic static load rating C0", "kN"),
     "factor_X": ("radial load factor X", ""),
     "factor_Y": ("axial load factor Y", ""),
+    "life_speed_rpm": ("mean speed the life is counted at", "rpm"),
     "cos_phi": ("power factor cos φ", ""),
     "efficiency_pct": ("efficiency", "%"),
     "kloss_epsilon": ("Kloss formula ε", ""),
