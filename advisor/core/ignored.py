@@ -104,14 +104,20 @@ def ignored(req: Any) -> list[str]:
 
 
 def _unused_rated_torques(req: Any, duty: Any) -> list[str]:
-    """A positioning motor's rated (S1) torque given without a [duty]: only the cycle's RMS
-    torque is held against it, so without one it checks nothing."""
-    motors = getattr(getattr(req, "positioning", None), "motors", None) or ()
-    given = [m.name for m in motors if "rated_torque_Nm" in m.model_fields_set]
-    if duty is not None or not given:
+    """A listed motor's rated (S1) torque given without a [duty] (a drive whose candidate
+    motors carry one): only the cycle's RMS torque is held against it, so without one it
+    checks nothing."""
+    if duty is not None:
         return []
-    return [
-        IGNORED_PREFIX
-        + f"positioning.motors[].rated_torque_Nm ({', '.join(given)}), because no [duty] is "
-        "given: only a duty cycle's RMS torque is held against it (add [duty] cycle_time_s)"
-    ]
+    out = []
+    for table in sorted(req.model_fields_set):
+        motors = getattr(getattr(req, table), "motors", None) or ()
+        given = [m.name for m in motors if "rated_torque_Nm" in m.model_fields_set]
+        if given:
+            out.append(
+                IGNORED_PREFIX
+                + f"{table}.motors[].rated_torque_Nm ({', '.join(given)}), because no [duty] "
+                "is given: only a duty cycle's RMS torque is held against it (add [duty] "
+                "cycle_time_s)"
+            )
+    return out
