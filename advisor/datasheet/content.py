@@ -253,7 +253,7 @@ def block(
     b = Block(title)
     plotted = curve_part(data)
     for k, v in data.items():
-        label, own = (labels or {}).get((*path, k)) or split_key(k)
+        label, own = (labels or {}).get((*path, k)) or split_key(k, path[-1] if path else None)
         if is_curve(v) or k in plotted:
             continue
         if _scalar(v):
@@ -370,7 +370,11 @@ def sheet(
             for k, v in doc["requirements"].items()
             if isinstance(v, dict) and v and k != "project"  # an empty table heads nothing
         ],
-        components=[block(_words(k), v) for k, v in doc["design"].items() if isinstance(v, dict)],
+        components=[
+            block(_words(k), v, "", None, (k,))
+            for k, v in doc["design"].items()
+            if isinstance(v, dict)
+        ],
         decisions=decisions,
         checks=checks,
         warnings=list(doc.get("warnings", [])),

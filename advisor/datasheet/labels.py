@@ -71,13 +71,26 @@ REPORT_LABELS: dict[str, tuple[str, str]] = {
 }
 
 
-def split_key(key: str) -> tuple[str, str]:
-    """A report key as a label and a unit: a symbol from :data:`REPORT_LABELS`, else its
-    words with the longest unit suffix as the unit.
+#: Report keys whose meaning depends on the table that holds them, keyed by (table, key):
+#: positioning's motion states seed 003's I = J_p/J0 (the load over the motor, the reducer
+#: left out), a duty cycle the load reflected to the motor over the motor (the report keys
+#: stay the same: they are a stable interface).
+REPORT_TABLE_LABELS: dict[tuple[str, str], tuple[str, str]] = {
+    ("motion", "inertia_ratio"): ("load/motor inertia I = J_p/J0 (seed 003, no reducer)", ""),
+    ("duty", "inertia_ratio"): ("load/motor inertia at the motor J_L/(i²·J_m)", ""),
+}
+
+
+def split_key(key: str, table: str | None = None) -> tuple[str, str]:
+    """A report key as a label and a unit: the table's own from :data:`REPORT_TABLE_LABELS`,
+    a symbol from :data:`REPORT_LABELS`, else its words with the longest unit suffix as the
+    unit.
 
     >>> split_key("outer_diameter_mm"), split_key("p15_50_W_kg"), split_key("rows")
     (('outer diameter', 'mm'), ('specific loss at 1.5 T, 50 Hz', 'W/kg'), ('rows', ''))
     """
+    if (table, key) in REPORT_TABLE_LABELS:
+        return REPORT_TABLE_LABELS[(table, key)]
     if key in REPORT_LABELS:
         return REPORT_LABELS[key]
     parts = key.split("_")
