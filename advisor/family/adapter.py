@@ -121,6 +121,7 @@ def field_problems(requirement: dict[str, Any]) -> list[FieldProblem]:
         walk_location,
     )
 
+    written = requirement  # echoed as typed where a refused value was a quantity string
     try:
         kind = RequirementHead.model_validate(requirement).application.kind
         model: Any = requirements_model(kind)
@@ -139,7 +140,9 @@ def field_problems(requirement: dict[str, Any]) -> list[FieldProblem]:
         except ValidationError as exc:
             errors = exc
     out = []
-    for err, line in zip(errors.errors(), format_validation_error(errors, model), strict=True):
+    for err, line in zip(
+        errors.errors(), format_validation_error(errors, model, written), strict=True
+    ):
         loc, info, _ = walk_location(tuple(err["loc"]), model)
         holds_table = info is not None and hasattr(info.annotation, "model_fields")
         cross = err["type"] == "value_error" and (not loc or holds_table)
