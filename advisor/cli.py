@@ -64,7 +64,6 @@ def build_parser() -> argparse.ArgumentParser:
         "-o",
         "--output",
         metavar="OUT.toml",
-        type=Path,
         help="write the report here (atomically) and print a summary instead",
     )
     p.add_argument(
@@ -414,6 +413,25 @@ def _is_terminal(stream) -> bool:
         return False
 
 
+def _output_problem(output: str | None, out_dir: Path | None) -> str | None:
+    """What is wrong with the outputs asked for, said before anything is read: both -o and
+    --out-dir, an empty -o (a Path of '' is '.', which would be refused as a directory the
+    user never typed), an --out-dir that exists and is no folder."""
+    from advisor.core.io_safety import show
+
+    if output is not None and out_dir is not None:
+        return (
+            "-o/--output and --out-dir exclude each other: -o writes one input's report to "
+            "a file, --out-dir one report per input into a folder"
+        )
+    if output == "":
+        return "-o/--output: an empty output path; give the report's file name"
+    if out_dir is not None and out_dir.exists() and not out_dir.is_dir():
+        what = "a file, not a directory" if out_dir.is_file() else "not a directory"
+        return f"--out-dir {show(out_dir, 200)}: is {what}; give a folder for the reports"
+    return None
+
+
 def _dispatch(args: argparse.Namespace) -> int:
     inputs = args.batch
     if inputs is None:
@@ -438,6 +456,10 @@ def _dispatch(args: argparse.Namespace) -> int:
     if args.jobs < 1:
         print_error(f"-j/--jobs = {args.jobs}: must be at least 1")
         return ExitCode.INVALID_INPUT
+    wrong = _output_problem(args.output, args.out_dir)
+    if wrong is not None:
+        print_error(wrong)
+        return ExitCode.INVALID_INPUT
     many = len(inputs) > 1 or inputs[0].is_dir() or args.out_dir is not None
     if many:
         if args.output is not None:
@@ -452,4 +474,5 @@ def _dispatch(args: argparse.Namespace) -> int:
             )
             return ExitCode.INVALID_INPUT
         return run_many(inputs, args.out_dir, args.catalog_dir, args.jobs)
-    return run_batch(inputs[0], args.output, args.catalog_dir, args.format)
+    output = Path(args.output) if args.output is not None else None
+    return run_batch(inputs[0], output, args.catalog_dir, args.format)

@@ -342,7 +342,7 @@ def read_report(path: Any) -> dict:
     """A report file as plain data; an InputError (exit 2) for a file that is none."""
     from advisor.core.io_safety import read_toml, show
 
-    doc = read_toml(path)
+    doc = read_toml(path, wanted="a report file (written by advisor --batch -o)")
     head = doc.get("report")
     if not isinstance(head, dict) or "application" not in head:
         raise InputError(

@@ -118,27 +118,32 @@ def smallest_meeting(
     """The smallest motor (power, then inertia) whose move at its own optimal ratio (seed 003,
     eq. (4) or the triangular law) takes no longer than the requirement; a motor with an
     estimated inertia must meet it with that inertia at the top of its band. The fastest
-    motor is stated beside it: faster is not the requirement, and costs size."""
+    motor is stated beside it, by the same rule (an estimated inertia at the top of its band:
+    the time a requirement would be held to): faster is not the requirement, and costs size."""
     ok = {n: r for n, r in rows.items() if r.decisive_time_s <= required_s}
     order = sorted(rows, key=lambda n: (rows[n].power_W, rows[n].inertia_kgm2, n))
     best = min(ok, key=lambda n: (ok[n].power_W, ok[n].inertia_kgm2, n))
-    fastest = min(rows, key=lambda n: rows[n].move_time_s)
+    fastest = min(rows, key=lambda n: rows[n].decisive_time_s)
     smaller = [n for n in order[: order.index(best)]][-3:]
     r = rows[best]
 
-    def show(n: str) -> str:
+    def time_of(n: str) -> str:
         x = rows[n]
         t = f"{x.move_time_s:.4g} s"
         if x.decisive_time_s != x.move_time_s:
             t += f" ({x.decisive_time_s:.4g} s with its inertia {band * 100:.0f} % higher)"
-        return f"{n} ({x.power_W / 1e3:.4g} kW, J0 = {x.inertia_kgm2:.3g} kg·m²): {t}"
+        return t
+
+    def show(n: str) -> str:
+        x = rows[n]
+        return f"{n} ({x.power_W / 1e3:.4g} kW, J0 = {x.inertia_kgm2:.3g} kg·m²): {time_of(n)}"
 
     fails = "; ".join(show(n) for n in smaller) or "none: it is the smallest candidate"
     return Finding(
         best,
         f"Motor {best}, the smallest that moves the load within {required_s:g} s "
         f"({r.move_time_s:.4g} s at its optimal ratio); the fastest, {fastest}, takes "
-        f"{rows[fastest].move_time_s:.4g} s.",
+        f"{time_of(fastest)}.",
         f"Candidates ranked by {power_basis}, then rotor inertia; each at its own optimal "
         f"ratio (seed 003). The motor chosen — {show(best)}. The next smaller ones fail the "
         f"time — {fails}. {len(ok)} of {len(rows)} candidates meet it; an estimated inertia "
@@ -152,7 +157,7 @@ def smallest_meeting(
             "inertia_kgm2": r.inertia_kgm2,
             "smaller_failing": {n: rows[n].decisive_time_s for n in smaller},
             "fastest_motor": fastest,
-            "fastest_move_time_s": rows[fastest].move_time_s,
+            "fastest_move_time_s": rows[fastest].decisive_time_s,
             "meeting": len(ok),
         },
     )
@@ -195,7 +200,8 @@ def smallest_for_cycle(
         f"Motor {best} at i = {rows[best].ratio:.4g}: the smallest that passes the cycle and "
         f"moves the load within {required_s:g} s ({rows[best].move_time_s:.4g} s).",
         "Each motor at the fastest ratio where its RMS torque over the cycle stays within its "
-        "rated torque and the move fits; ranked by power, then inertia. The next smaller ones "
+        "rated torque and the move fits (a catalog induction motor's starts per hour within "
+        "those it allows, DU-06, too); ranked by power, then inertia. The next smaller ones "
         f"fail — {why or 'none: it is the smallest candidate'}.",
         {
             "motor": best,

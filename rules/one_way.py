@@ -14,6 +14,13 @@ NAMES = {
 }
 
 
+def with_article(kind: str) -> str:
+    """A device's name with its indefinite article: "an electromagnetic clutch", "a
+    self-locking worm"."""
+    name = NAMES[kind]
+    return f"{'an' if name[0] in 'aeiou' else 'a'} {name}"
+
+
 @rule("OW-01", "Place of the one-way device", SEED_004)
 def placement(
     output_torque_Nm: float, ratio: float, efficiency: float, asked: str = "motor_side"
@@ -66,6 +73,12 @@ def device_type(asked: str, priority: str, options: dict[str, Device]) -> Findin
             {"type": asked},
         )
     clutches = {k: v for k, v in options.items() if k in ("roller_clutch", "em_clutch")}
+    em, roller = options.get("em_clutch"), options.get("roller_clutch")
+    # seed 004's claim on the em clutch's inertia, and what the sizes computed here give
+    here = ""
+    if em is not None and roller is not None:
+        times = em.inertia_kgm2 / roller.inertia_kgm2
+        here = f"; by the proportions assumed here its inertia is {times:.3g}× the roller clutch's"
     key = {"mass": "mass_kg", "inertia": "inertia_kgm2", "power": "power_W"}[priority]
     best = min(clutches, key=lambda k: (getattr(clutches[k], key), clutches[k].mass_kg))
     table = "; ".join(
@@ -78,8 +91,10 @@ def device_type(asked: str, priority: str, options: dict[str, Device]) -> Findin
         f"{NAMES[best]} (least {priority.replace('_', ' ')} of the clutches).",
         "Seed 004: self-locking gears (worm, spiroid, braking profile) drive with η < 0.5 "
         "when self-locking, so they are not rational in a new drive; the roller clutch (no "
-        "power, no loss) and the electromagnetic clutch (a few watts, least inertia at the "
-        "larger torques) remain, and the one best on the stated priority is taken. "
+        "power, no loss) and the electromagnetic clutch (a few watts; seed 004, fig. 8 and "
+        "conclusion 5, finds its inertia the least at the larger torques, the roller clutch's "
+        f"growing above 20 N·m{here}) remain, and the one best on the stated priority is "
+        "taken. "
         f"Sized for this torque: {table}."
         + "".join(
             f" No {NAMES[k]} of the seed's range carries this torque."

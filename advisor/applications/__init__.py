@@ -32,7 +32,6 @@ SHIPPED = (
         covers="advisor.applications.rotary.coverage:COVERS",
         plots="advisor.applications.rotary.plots",
         family="advisor.applications.rotary.family",
-        duty_uses={"cycle_time_s": ("S2",)},  # its S2 runs as S1 over cycle_time_s
         steps=("Torque and speed", "Envelope and holding", "Motor and reducer", "Duty cycle"),
     ),
     dict(

@@ -457,17 +457,34 @@ def thermal_history(
     kept = list(range(step, n, step))
     if (n - 1) % step:
         kept.append(n - 1)
-    # The clock is the durations summed one after another, as thermal_rise sums them: c·t_c + t_j
-    # differs from that sum in the last bit, which decides a time printed to 6 digits.
-    durations = itertools.chain.from_iterable(itertools.repeat([d for _, d in losses_W], cycles))
-    times = list(itertools.accumulate(durations, initial=0.0))
+    times = _clock(losses_W, cycles, prefix, kept)
     out = [(0.0, 0.0)]
-    for i in kept:  # point i ends phase j of cycle c
+    for i, t_i in zip(kept, times, strict=True):  # point i ends phase j of cycle c
         c, j = divmod(i - 1, m)
         _, a_j, b_j = prefix[j + 1]
         start = b_cycle * math.expm1(-c * x) / one_cycle if c and x > 0 else c * b_cycle
-        out.append((times[i], start * a_j + b_j))
+        out.append((t_i, start * a_j + b_j))
     return out
+
+
+#: Up to this many points the clock is summed phase by phase; beyond, c·t_c + t_j.
+_SUMMED_CLOCK_POINTS = 200_000
+
+
+def _clock(losses_W, cycles: int, prefix, kept: list[int]) -> list[float]:
+    """The times of the kept points. The durations summed one after another, as thermal_rise
+    sums them: c·t_c + t_j differs from that sum in the last bit, which decides a time printed
+    to 6 digits. A history of very many points (a cycle short against 5τ) takes c·t_c + t_j,
+    so its cost stays with the points kept."""
+    m = len(losses_W)
+    if cycles * m + 1 <= _SUMMED_CLOCK_POINTS:
+        durations = itertools.chain.from_iterable(
+            itertools.repeat([d for _, d in losses_W], cycles)
+        )
+        times = list(itertools.accumulate(durations, initial=0.0))
+        return [times[i] for i in kept]
+    cycle_s = prefix[-1][0]
+    return [c * cycle_s + prefix[j + 1][0] for c, j in (divmod(i - 1, m) for i in kept)]
 
 
 def periodic_peak_rise(
@@ -742,6 +759,11 @@ def start_energy_J(
         * load_share
         * (1.0 + stator_to_rotor_resistance)
     )
+
+
+#: k_b of an electric (DC-injection) stop: its heat taken equal to a start's, the same kinetic
+#: energy being dissipated in the rotor (Chilikin, ch. 9); plugging would be 3.
+DC_BRAKING_HEAT = 1.0
 
 
 def allowed_starts_per_hour(

@@ -308,7 +308,10 @@ def em_clutch(torque_Nm: float, p: EmClutchDesign = EM_CLUTCH) -> Device | None:
                 power,
                 f"seed 004 eqs. (14)–(19), D = {dia:g} mm, j = {p.current_density_A_mm2:g} "
                 f"A/mm², δ = {p.air_gap_mm:g} mm, f = {p.friction:g}, k_з = {p.reserve:g}, "
-                f"B = {b:.2f} T; mass and inertia from assumed proportions",
+                f"B = {b:.2f} T; mass and inertia from assumed proportions; a clutch-brake: "
+                "energised it couples the motor (drawing power_W while the drive moves), "
+                "de-energised a spring presses the armature against a fixed face and holds the "
+                "load (no power in holds)",
             )
     return None
 
@@ -601,7 +604,9 @@ def passage(kind: str) -> Passage:
     when the output drives): self-locking, its release taking only the rollers' friction,
     neglected (lowering factor 0). The worm and the braking-profile gear are self-locking
     gears (:func:`worm_lowering_factor`, :func:`self_braking_lowering_factor`); the
-    energised electromagnetic clutch passes torque both ways.
+    energised electromagnetic clutch passes torque both ways. The advisor takes it as a
+    clutch-brake: seed 004's fig. 4 clutch engages when energised, and de-energised a spring
+    presses its armature against a fixed face, which holds the load with no power.
 
     Parameters
     ----------
@@ -686,3 +691,75 @@ def motor_torque_through(p: Passage, torque_Nm: float) -> float:
     if p.back_drivable:
         return torque_Nm * p.efficiency
     return p.lowering_factor * -torque_Nm
+
+
+# ------------------------------------------------------------------ holding with the power off
+def self_locking_ratio(kind: str) -> float | None:
+    """The lead angle over the friction angle, γ/φ, of a self-locking gear of seed 004:
+    below 1 the load cannot drive it back.
+
+        worm:                 γ/φ = lead_share (γ = 0.5·φ, the aviation margin)
+        braking-profile gear: η = γ/(γ + φ) (small angles)  ⇒  γ/φ = η/(1 − η)
+
+    Parameters
+    ----------
+    kind : str
+        One of :data:`TYPES`
+
+    Returns
+    -------
+    float or None
+        γ/φ [-]; None for the clutches, which hold by wedging rollers or a spring, not by
+        a friction angle
+
+    References
+    ----------
+    Seed 004 (self-locking worms and braking-profile gears; γ < 0.5·φ in aviation).
+
+    Examples
+    --------
+    >>> self_locking_ratio("worm"), round(self_locking_ratio("inverse_gear"), 4)
+    (0.5, 0.8182)
+    """
+    if kind == "worm":
+        return WORM.lead_share
+    if kind == "inverse_gear":
+        eta = INVERSE_GEAR.pair_efficiency
+        return eta / (1.0 - eta)
+    return None
+
+
+def screw_back_driving_torque(
+    force_N: float, d2_m: float, lead_angle_rad: float, friction_angle_rad: float
+) -> float:
+    """The torque an axial load gives a sliding screw that is not self-locking: what a
+    holding device at the screw's shaft must hold with the power off.
+
+        T = F·d2/2·tan(ψ − φ')   (> 0 where ψ > φ': the load drives the screw back)
+
+    Parameters
+    ----------
+    force_N : float
+        Axial load F [N]
+    d2_m : float
+        Pitch diameter d2 [m]
+    lead_angle_rad : float
+        Lead angle ψ [rad]
+    friction_angle_rad : float
+        Reduced friction angle φ' [rad], at the low end of the friction range for a holding
+
+    Returns
+    -------
+    float
+        Back-driving torque T [N·m]; ≤ 0 for a self-locking screw (nothing to hold)
+
+    References
+    ----------
+    Seed 001 (the thread torque with the load, F·d2/2·tan(φ' − ψ)); seed 004 (holding).
+
+    Examples
+    --------
+    >>> round(screw_back_driving_torque(3500.0, 0.013, 0.097632, 0.051717), 3)
+    1.045
+    """
+    return force_N * d2_m / 2.0 * math.tan(lead_angle_rad - friction_angle_rad)

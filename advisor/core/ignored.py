@@ -65,7 +65,7 @@ DUTY_KEYS_USED: dict[str, set[str | None]] = {
 
 def duty_keys_used(kind: str) -> dict[str, set[str | None]]:
     """:data:`DUTY_KEYS_USED` with the duty types an application also reads a key for (its
-    registry entry's ``duty_uses``: a drive whose S2 runs as S1 over ``cycle_time_s``)."""
+    registry entry's ``duty_uses``)."""
     from advisor.core.registry import application
 
     uses = dict(DUTY_KEYS_USED)
@@ -87,6 +87,7 @@ def ignored(req: Any) -> list[str]:
             "false: no holding device is chosen (set it true to choose one)"
         )
     duty = getattr(req, "duty", None)
+    out += _unused_rated_torques(req, duty)
     if duty is not None and hasattr(duty, "duty_type"):
         form = duty.duty_type
         uses = duty_keys_used(req.application.kind)
@@ -98,5 +99,25 @@ def ignored(req: Any) -> list[str]:
                 + ", ".join(f"duty.{k}" for k in unused)
                 + f", because {what} does not use "
                 + ("it" if len(unused) == 1 else "them")
+            )
+    return out
+
+
+def _unused_rated_torques(req: Any, duty: Any) -> list[str]:
+    """A listed motor's rated (S1) torque given without a [duty] (a drive whose candidate
+    motors carry one): only the cycle's RMS torque is held against it, so without one it
+    checks nothing."""
+    if duty is not None:
+        return []
+    out = []
+    for table in sorted(req.model_fields_set):
+        motors = getattr(getattr(req, table), "motors", None) or ()
+        given = [m.name for m in motors if "rated_torque_Nm" in m.model_fields_set]
+        if given:
+            out.append(
+                IGNORED_PREFIX
+                + f"{table}.motors[].rated_torque_Nm ({', '.join(given)}), because no [duty] "
+                "is given: only a duty cycle's RMS torque is held against it (add [duty] "
+                "cycle_time_s)"
             )
     return out

@@ -100,14 +100,16 @@ def _kind_of(mode: int) -> str:
     return "not a regular file"
 
 
-def read_input(path: Path, limit: int = MAX_INPUT_BYTES, what: str = "") -> bytes:
+def read_input(path: Path, limit: int = MAX_INPUT_BYTES, what: str = "", wanted: str = "") -> bytes:
     """The bytes of a requirement file; an :class:`InputError` naming the problem otherwise.
 
     Opened without blocking (a FIFO with no writer must not hang the run) and refused unless
     it is a regular file; at most ``limit`` bytes are read (``/dev/zero`` never ends).
+    ``wanted``: what the file should have been, for a refusal (default: a requirement file,
+    or a catalog file when ``what`` names one).
     """
     where = what + show(path, 200)
-    wanted = f"a {what.strip() or 'requirement'} file (.toml)"  # a catalog is named as such
+    wanted = wanted or f"a {what.strip() or 'requirement'} file (.toml)"
     flags = os.O_RDONLY | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_NOCTTY", 0)
     try:
         fd = os.open(path, flags | getattr(os, "O_CLOEXEC", 0))
@@ -188,9 +190,10 @@ def parse_toml(raw: bytes, where: str) -> dict[str, Any]:
     return data
 
 
-def read_toml(path: Path) -> dict[str, Any]:
-    """A requirement document read safely from ``path`` (see :func:`read_input`)."""
-    return parse_toml(read_input(path), show(path, 200))
+def read_toml(path: Path, wanted: str = "") -> dict[str, Any]:
+    """A requirement document read safely from ``path`` (see :func:`read_input`; ``wanted``
+    as there: a report for ``advisor diff``)."""
+    return parse_toml(read_input(path, wanted=wanted), show(path, 200))
 
 
 # ------------------------------------------------------------------ writing

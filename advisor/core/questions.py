@@ -35,6 +35,8 @@ UNIT_SUFFIXES = {
     "deg": "deg",
     "W": "W",
     "A": "A",
+    "V": "V",
+    "uF": "µF",
     "T": "T",
     "ohm": "Ω",
 }

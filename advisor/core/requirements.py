@@ -358,8 +358,11 @@ def dotted_location(loc: tuple[Any, ...]) -> str:
     return out
 
 
-def format_validation_error(exc: ValidationError, root: Any) -> list[str]:
-    """One line per problem: the field, the value given and what is allowed."""
+def format_validation_error(exc: ValidationError, root: Any, typed: Any = None) -> list[str]:
+    """One line per problem: the field, the value given and what is allowed. ``typed`` is the
+    document as written, before its unit strings were converted: a refused value typed as a
+    quantity is echoed as typed with its SI value beside it ('3500 µN' (0.0035 N)), so the
+    reader finds what they wrote."""
     lines: list[str] = []
     unknown: list[str] = []
     for err in exc.errors():
@@ -384,6 +387,9 @@ def format_validation_error(exc: ValidationError, root: Any) -> list[str]:
             continue
         value = err.get("input")
         shown = _show(value)
+        written = _written_at(typed, loc) if typed is not None else None
+        if isinstance(written, str) and _is_number(value):
+            shown = _as_written(written, value, _field_unit(loc, info))
         if typ == "literal_error":
             what = f"must be one of {ctx.get('expected')}"
         elif typ in _FRIENDLY:
@@ -399,6 +405,40 @@ def format_validation_error(exc: ValidationError, root: Any) -> list[str]:
     if len(unknown) > MAX_UNKNOWN_SHOWN:
         lines.append(f"… and {len(unknown) - MAX_UNKNOWN_SHOWN:,} more unknown keys")
     return capped(lines)
+
+
+def _is_number(value: Any) -> bool:
+    return isinstance(value, int | float) and not isinstance(value, bool)
+
+
+def _written_at(doc: Any, loc: tuple[Any, ...]) -> Any:
+    """The value at a (tag-free) location of the document as written; None where it has none."""
+    node = doc
+    for part in loc:
+        if isinstance(part, int) and isinstance(node, list) and 0 <= part < len(node):
+            node = node[part]
+        elif isinstance(part, str) and isinstance(node, dict) and part in node:
+            node = node[part]
+        else:
+            return None
+    return node
+
+
+def _field_unit(loc: tuple[Any, ...], info: Any) -> str:
+    """The SI unit a field's quantity strings are converted to ('' where it names none)."""
+    from advisor.core.questions import field_extra, unit_of
+
+    names = [p for p in loc if isinstance(p, str)]
+    if info is None or not names:
+        return ""
+    return field_extra(info).get("x-unit") or unit_of(names[-1])
+
+
+def _as_written(text: str, value: float, unit: str) -> str:
+    """A quantity string as typed, with the SI number it was read as where that says more:
+    '3500 µN' (0.0035 N); '60 Hz' alone."""
+    si = f"{_num_text(value)} {unit}".strip()
+    return _show(text) if " ".join(text.split()) == si else f"{_show(text)} ({si})"
 
 
 def capped(lines: list[str]) -> list[str]:
@@ -445,6 +485,7 @@ def validate_with_models(data: dict[str, Any]) -> Requirements:
     from advisor.core.ignored import contradictions
     from advisor.core.units import convert
 
+    written = data
     try:
         data = convert(data, model)  # "5 kN" → 5000 by the strict quantity grammar
     except InputError as exc:
@@ -453,7 +494,7 @@ def validate_with_models(data: dict[str, Any]) -> Requirements:
     try:
         req = model.model_validate(data)
     except ValidationError as exc:
-        raise InputError(*conflicts, *format_validation_error(exc, model)) from None
+        raise InputError(*conflicts, *format_validation_error(exc, model, written)) from None
     if conflicts:
         raise InputError(*conflicts)
     return req

@@ -69,6 +69,7 @@ _POWER: Dims = (2, 1, -3, 0, 0)
 _PRESSURE: Dims = (-1, 1, -2, 0, 0)
 _TESLA: Dims = (0, 1, -2, -1, 0)
 _VOLT: Dims = (2, 1, -3, -1, 0)
+_FARAD: Dims = (-2, -1, 4, 2, 0)
 _OHM: Dims = (2, 1, -3, -2, 0)
 _HERTZ: Dims = (0, 0, -1, 0, 0)
 _ROTATION: Dims = (0, 0, -1, 0, 1)  # rad/s
@@ -91,6 +92,7 @@ _PREFIXED: dict[str, tuple[Unit, str]] = {
     "Pa": (Unit(1.0, _PRESSURE), "GMk"),
     "bar": (Unit(1e5, _PRESSURE), "m"),
     "V": (Unit(1.0, _VOLT), "kmuµμ"),
+    "F": (Unit(1.0, _FARAD), "muµμn"),  # a drive's bus capacitance: µF, uF
     "ohm": (Unit(1.0, _OHM), "GMkm"),
     "Ω": (Unit(1.0, _OHM), "GMkm"),
     "J": (Unit(1.0, _ENERGY, True), "GMkm"),
@@ -163,13 +165,15 @@ _WORDS: dict[Dims, str] = {
     _PRESSURE: "a pressure",
     _TESLA: "a flux density",
     _VOLT: "a voltage",
+    _FARAD: "a capacitance",
     _OHM: "a resistance",
 }
 
 #: A few units of each kind to name in a refusal ("what is allowed").
 _SHOWN = (
     "N kN MN mN lbf kgf N·m kN·m N·cm N·mm lbf·ft m mm cm km µm in ft s ms min h rpm rad/s "
-    "deg/s rev/s Hz kHz rad deg rev kg g t lb W kW MW hp A mA T mT G Ω kΩ mΩ Pa kPa MPa "
+    "deg/s rev/s Hz kHz rad deg rev kg g t lb W kW MW hp A mA V kV mV F mF µF nF T mT G Ω "
+    "kΩ mΩ Pa kPa MPa "
     "kg·m² kg·cm² kg·m²/s kg/m³ g/cm³ m²/s mm²/s cSt mm² cm² m²"
 ).split()
 
@@ -186,9 +190,11 @@ PATTERN = (
     + r")*[ \t]*$"
 )
 
-#: Spaces a quantity copied from a typeset page holds (SI Brochure 5.4.3: a thin space
-#: between number and unit), read as a plain space.
-_SPACES = str.maketrans({"\u00a0": " ", "\u2009": " ", "\u202f": " "})
+#: What a quantity copied from a typeset page holds, read as what it stands for: the spaces
+#: (SI Brochure 5.4.3: a thin space between number and unit) as a plain space, the dot
+#: operator (LaTeX's \\cdot, the SI Brochure's half-high dot in its PDF) as ·, the ohm sign
+#: as the Greek capital omega it is canonically (Unicode: U+2126 ≡ U+03A9).
+_SPACES = str.maketrans({"\u00a0": " ", "\u2009": " ", "\u202f": " ", "\u22c5": "·", "\u2126": "Ω"})
 _ALLOWED = set("0123456789.+-eE*/^ \t·²³¹⁴⁻µμΩ°")
 _NUMBER_RE = re.compile(r"[+-]?(?:[0-9]+(?:\.[0-9]*)?|\.[0-9]+)(?:[eE][+-]?[0-9]+)?", re.ASCII)
 _NAME_RE = re.compile(r"[A-Za-zµμΩ°]+")
@@ -234,11 +240,25 @@ def _char_problem(text: str) -> str | None:
             continue
         if ch in "()[]{}":
             return "parentheses are not allowed"
-        if ch.isprintable() and not unicodedata.category(ch).startswith(("C", "Z")):
+        if ch.isascii() and ch.isprintable():
             return f"{ch!r} is not allowed"
-        name = unicodedata.name(ch, "a control character")
-        return f"U+{ord(ch):04X} ({name}) is not allowed"
+        return _named(ch)
     return None
+
+
+def _named(ch: str) -> str:
+    """A refused character by its code point and Unicode name (a look-alike prints as the
+    character it resembles), and that character where Unicode says it is one (NFKC: the
+    fullwidth ｋ is k)."""
+    name = unicodedata.name(ch, "a control character")
+    if ch.isprintable() and unicodedata.category(ch)[0] not in "CZ":
+        out = f"{ch!r} (U+{ord(ch):04X} {name}) is not allowed"
+    else:  # nothing to see: the code point alone
+        out = f"U+{ord(ch):04X} ({name}) is not allowed"
+    same = unicodedata.normalize("NFKC", ch)
+    if len(same) == 1 and same != ch and (same in _ALLOWED or (same.isascii() and same.isalnum())):
+        out += f"; use {same!r} (U+{ord(same):04X})"
+    return out
 
 
 def _power(text: str, pos: int) -> tuple[int, int]:
@@ -344,7 +364,8 @@ def allowed(unit: str) -> str:
 def to_unit(text: str, unit: str) -> float:
     """The value of ``text`` (``"5 kN"``) in ``unit`` (a key's unit, as
     :func:`advisor.core.questions.unit_of` names it), rounded to 12 significant digits so
-    that a decimal conversion reads as typed (200 mm → 0.2 m, not 0.20000000000000004).
+    that a decimal conversion reads as typed (200 mm → 0.2 m, not 0.20000000000000004); a
+    number in the key's own unit is taken as typed (no conversion: nothing to round).
 
     >>> to_unit("5 kN", "N"), to_unit("200 mm", "m"), to_unit("1500 rpm", "rad/s")
     (5000.0, 0.2, 157.079632679)
@@ -380,6 +401,8 @@ def to_unit(text: str, unit: str) -> float:
     if wrong:
         what = "a torque" if dims == _ENERGY else _kind(dims, False)
         raise UnitError(_expected(unit, f"{q.unit_text} is {_kind(q.dims, q.energy)}, not {what}"))
+    if q.factor == factor:  # the key's own unit: the number as typed, nothing to round
+        return q.number
     value = q.number * (q.factor / factor)
     if not math.isfinite(value):
         raise UnitError(_expected(unit, "must be finite"))
@@ -422,6 +445,25 @@ def _model_for(ann: Any, value: dict) -> "type[BaseModel] | None":
     return None
 
 
+#: Lists of tables whose numbers without a unit of their own are in the unit of the key
+#: each row's ``name`` names: an ``[[uncertainty.inputs]]`` row of ``linear.force_N`` takes
+#: ``sd = "175 N"`` (keys.md: "in the input's unit").
+UNIT_OF_NAME = frozenset({("uncertainty", "inputs")})
+
+
+def _row_unit(table: tuple[Any, ...], row: Any) -> str:
+    """The unit of a row of ``table`` by its ``name`` ('' for none: pure numbers)."""
+    if (
+        table not in UNIT_OF_NAME
+        or not isinstance(row, dict)
+        or not isinstance(row.get("name"), str)
+    ):
+        return ""
+    from advisor.core.questions import unit_of
+
+    return unit_of(row["name"].rsplit(".", 1)[-1])
+
+
 def _where(path: tuple[Any, ...]) -> str:
     out = ""
     for part in path:
@@ -450,7 +492,13 @@ def convert(data: Any, model: "type[BaseModel]") -> Any:
     return out
 
 
-def _convert(data: Any, model: "type[BaseModel]", path: tuple[Any, ...], errors: list[str]) -> Any:
+def _convert(
+    data: Any,
+    model: "type[BaseModel]",
+    path: tuple[Any, ...],
+    errors: list[str],
+    row_unit: str = "",
+) -> Any:
     if not isinstance(data, dict):
         return data
     out = dict(data)
@@ -461,7 +509,7 @@ def _convert(data: Any, model: "type[BaseModel]", path: tuple[Any, ...], errors:
         ann = strip_optional(info.annotation)
         here = (*path, name)
         if isinstance(value, str) and _is_number(ann):
-            out[name] = _one(value, _unit(name, info), here, errors)
+            out[name] = _one(value, _unit(name, info) or row_unit, here, errors)
         elif isinstance(value, list) and get_origin(ann) is list:
             item = strip_optional(get_args(ann)[0])
             item = get_args(item)[0] if get_origin(item) is not None and get_args(item) else item
@@ -473,7 +521,7 @@ def _convert(data: Any, model: "type[BaseModel]", path: tuple[Any, ...], errors:
                 ]
             elif _models(item):
                 out[name] = [
-                    _convert(v, m, (*here, i), errors)
+                    _convert(v, m, (*here, i), errors, _row_unit(here, v))
                     if isinstance(v, dict) and (m := _model_for(item, v))
                     else v
                     for i, v in enumerate(value)

@@ -253,7 +253,7 @@ def block(
     b = Block(title)
     plotted = curve_part(data)
     for k, v in data.items():
-        label, own = (labels or {}).get((*path, k)) or split_key(k)
+        label, own = (labels or {}).get((*path, k)) or split_key(k, path[-1] if path else None)
         if is_curve(v) or k in plotted:
             continue
         if _scalar(v):
@@ -272,10 +272,40 @@ def _words(key: str) -> str:
 _status = status_of
 
 
+#: How many items of a table (or list) in a decision's inputs are shown before "… N more".
+INPUT_ITEMS = 8
+
+
+def _bounded(items: list[str], brackets: str) -> str:
+    """``items`` in ``brackets`` ("()" or "[]"), the first :data:`INPUT_ITEMS` of them and
+    how many more; "none" for no item."""
+    if not items:
+        return "none"
+    more = len(items) - INPUT_ITEMS
+    shown = items[:INPUT_ITEMS] + ([f"… {more} more"] if more > 0 else [])
+    return f"{brackets[0]}{', '.join(shown)}{brackets[1]}"
+
+
+def input_value(v: Any, nested: bool = False) -> str:
+    """A decision's input as its line shows it: a number rounded as the datasheet rounds; a
+    table as ``(key = value, …)`` and, within one, a list as ``[…]``; each bounded.
+
+    >>> input_value({"A": 1.20588, "B": 1.15159, "C": 1.02287})
+    '(A = 1.206, B = 1.152, C = 1.023)'
+    >>> input_value({"stages": 2, "ratios": [40.0, 25.0]}), input_value({})
+    ('(stages = 2, ratios = [40, 25])', 'none')
+    """
+    if isinstance(v, dict):
+        return _bounded(
+            [f"{k} = {input_value(x, True)}" for k, x in v.items() if x is not None], "()"
+        )
+    if isinstance(v, list) and (nested or not _scalar(v)):
+        return _bounded([input_value(x, True) for x in v], "[]")
+    return number(v)
+
+
 def _inputs(inputs: dict) -> str:
-    return "; ".join(
-        f"{k} = {number(v) if _scalar(v) else '{…}'}" for k, v in inputs.items() if v is not None
-    )
+    return "; ".join(f"{k} = {input_value(v)}" for k, v in inputs.items() if v is not None)
 
 
 def _check(c: dict[str, Any]) -> Check:
@@ -338,9 +368,13 @@ def sheet(
         requirements=[
             block(_words(k), v, "", labels, (k,))
             for k, v in doc["requirements"].items()
-            if isinstance(v, dict) and k != "project"
+            if isinstance(v, dict) and v and k != "project"  # an empty table heads nothing
         ],
-        components=[block(_words(k), v) for k, v in doc["design"].items() if isinstance(v, dict)],
+        components=[
+            block(_words(k), v, "", None, (k,))
+            for k, v in doc["design"].items()
+            if isinstance(v, dict)
+        ],
         decisions=decisions,
         checks=checks,
         warnings=list(doc.get("warnings", [])),
@@ -354,6 +388,14 @@ def sheet(
         probability=probability(doc.get("uncertainty"), labels),
         no_probability=no_probability(doc),
     )
+
+
+def no_checks(status: str) -> str:
+    """What the Utilisation section says where the report has no check: an infeasible one
+    has no design whose checks could be shown."""
+    if status == "infeasible":
+        return "No check: no design was reached (see why in the Summary)."
+    return "No check applies."
 
 
 def no_probability(doc: dict[str, Any]) -> str:

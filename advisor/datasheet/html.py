@@ -4,7 +4,15 @@ script, no link to anything outside it (it can be mailed or attached to a review
 from html import escape
 
 from advisor.core.io_safety import printable
-from advisor.datasheet.content import Bar, Block, Probability, Required, Sheet, Table
+from advisor.datasheet.content import (
+    Bar,
+    Block,
+    Probability,
+    Required,
+    Sheet,
+    Table,
+    no_checks,
+)
 from advisor.datasheet.plots import Plot, svg, tornado_svg
 
 #: The sections, in order: their ids are what a reader (and the test) finds.
@@ -61,7 +69,13 @@ section#summary { break-after: auto; }
   #required { break-after: page; } tr, figure { break-inside: avoid; } }
 """
 
-MARK = {"fails": "✗ fails", "tight": "⚠ tight", "passes": "✓", "none": "no check"}
+MARK = {
+    "fails": "✗ fails",
+    "tight": "⚠ tight",
+    "passes": "✓",
+    "none": "no check",
+    "unreached": "not reached",
+}
 
 
 def _e(text: object) -> str:
@@ -198,7 +212,7 @@ def render(s: Sheet, plots: list[Plot]) -> str:
     body: dict[str, str] = {}
     body["header"] = _header(s)
     body["required"] = _required(s.required, s.at_default)
-    body["utilisation"] = _bars(s.bars) if s.bars else "<p>No check applies.</p>"
+    body["utilisation"] = _bars(s.bars) if s.bars else f"<p>{_e(no_checks(s.status))}</p>"
     body["load-cycle"] = _cycle(s)
     body["parts"] = _parts(s.parts)
     summary = "".join(f"<tr><th>{_e(k)}</th><td>{_e(v)}</td></tr>" for k, v in s.summary)

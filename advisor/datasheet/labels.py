@@ -9,6 +9,7 @@ from its words and the unit its suffix names (``outer_diameter_mm`` → "outer d
 
 import math
 import re
+from decimal import Decimal
 from typing import Any
 
 from advisor.core.questions import UNIT_SUFFIXES
@@ -24,10 +25,13 @@ UNITS = {
     "pct": "%",
     "cm3": "cm³",
     "MPa": "MPa",
+    "MPa_m_s": "MPa·m/s",
     "m_s": "m/s",
+    "uF": "µF",
     "W_kg": "W/kg",
     "cm3_per_Nm": "cm³/(N·m)",
     "per_hour": "1/h",
+    "Mrev": "10⁶ rev",
 }
 
 #: Report keys whose name is a symbol: what it means and its unit (GOST 24737-81 for the
@@ -35,6 +39,7 @@ UNITS = {
 REPORT_LABELS: dict[str, tuple[str, str]] = {
     "p15_50_W_kg": ("specific loss at 1.5 T, 50 Hz", "W/kg"),
     "p10_50_W_kg": ("specific loss at 1.0 T, 50 Hz", "W/kg"),
+    "pv_MPa_m_s": ("p·v", "MPa·m/s"),
     "d2_mm": ("pitch diameter of the screw d2", "mm"),
     "d3_mm": ("minor diameter of the screw d3", "mm"),
     "D1_mm": ("minor diameter of the nut D1", "mm"),
@@ -50,6 +55,7 @@ REPORT_LABELS: dict[str, tuple[str, str]] = {
     "C0_kN": ("basic static load rating C0", "kN"),
     "factor_X": ("radial load factor X", ""),
     "factor_Y": ("axial load factor Y", ""),
+    "life_speed_rpm": ("mean speed the life is counted at", "rpm"),
     "cos_phi": ("power factor cos φ", ""),
     "efficiency_pct": ("efficiency", "%"),
     "kloss_epsilon": ("Kloss formula ε", ""),
@@ -65,13 +71,26 @@ REPORT_LABELS: dict[str, tuple[str, str]] = {
 }
 
 
-def split_key(key: str) -> tuple[str, str]:
-    """A report key as a label and a unit: a symbol from :data:`REPORT_LABELS`, else its
-    words with the longest unit suffix as the unit.
+#: Report keys whose meaning depends on the table that holds them, keyed by (table, key):
+#: positioning's motion states seed 003's I = J_p/J0 (the load over the motor, the reducer
+#: left out), a duty cycle the load reflected to the motor over the motor (the report keys
+#: stay the same: they are a stable interface).
+REPORT_TABLE_LABELS: dict[tuple[str, str], tuple[str, str]] = {
+    ("motion", "inertia_ratio"): ("load/motor inertia I = J_p/J0 (seed 003, no reducer)", ""),
+    ("duty", "inertia_ratio"): ("load/motor inertia at the motor J_L/(i²·J_m)", ""),
+}
+
+
+def split_key(key: str, table: str | None = None) -> tuple[str, str]:
+    """A report key as a label and a unit: the table's own from :data:`REPORT_TABLE_LABELS`,
+    a symbol from :data:`REPORT_LABELS`, else its words with the longest unit suffix as the
+    unit.
 
     >>> split_key("outer_diameter_mm"), split_key("p15_50_W_kg"), split_key("rows")
     (('outer diameter', 'mm'), ('specific loss at 1.5 T, 50 Hz', 'W/kg'), ('rows', ''))
     """
+    if (table, key) in REPORT_TABLE_LABELS:
+        return REPORT_TABLE_LABELS[(table, key)]
     if key in REPORT_LABELS:
         return REPORT_LABELS[key]
     parts = key.split("_")
@@ -111,7 +130,8 @@ def requirement_labels(model: Any) -> dict[tuple[str, ...], tuple[str, str]]:
             path = (*prefix, name)
             extra = field_extra(info)
             label = extra.get("x-label") or short_description(info.description or "") or name
-            unit = extra.get("x-unit", unit_of(name))
+            # a unit the parser does not take (µF) is named by the report's suffixes
+            unit = extra.get("x-unit") or unit_of(name) or split_key(name)[1]
             args = getattr(ann, "__args__", ())
             if is_model(ann):
                 walk(ann, path)
@@ -123,6 +143,16 @@ def requirement_labels(model: Any) -> dict[tuple[str, ...], tuple[str, str]]:
 
     walk(model, ())
     return out
+
+
+def _plain(v: Any) -> Any:
+    """A default as the report writes it: a model's instance (a row of a list of tables) as
+    its table, None fields left out as the report leaves them out."""
+    if hasattr(v, "model_dump"):
+        return v.model_dump(exclude_none=True)
+    if isinstance(v, list | tuple):
+        return type(v)(_plain(x) for x in v)
+    return v
 
 
 def requirement_defaults(model: Any) -> dict[tuple[str, ...], Any]:
@@ -143,7 +173,7 @@ def requirement_defaults(model: Any) -> dict[tuple[str, ...], Any]:
             elif get_origin(ann) is Literal and len(get_args(ann)) == 1:
                 out[(*prefix, name)] = get_args(ann)[0]
             elif not info.is_required():
-                out[(*prefix, name)] = info.get_default(call_default_factory=True)
+                out[(*prefix, name)] = _plain(info.get_default(call_default_factory=True))
 
     walk(model, ())
     return out
@@ -155,10 +185,12 @@ COMPILED_FILE = "compiled_labels.py"
 
 
 def literal_default(v: Any) -> bool:
-    """A default written as a Python literal (a model's instance is none: it never equals a
-    report's plain data, so leaving its field out of the table changes nothing)."""
+    """A default written as a Python literal: a number, a string, None, and lists and tables
+    of them (a model's instance is one after :func:`requirement_defaults` made it plain)."""
     if v is None or type(v) in (str, int, float, bool):
         return True
+    if isinstance(v, dict):
+        return all(type(k) is str and literal_default(x) for k, x in v.items())
     return isinstance(v, list | tuple) and all(literal_default(x) for x in v)
 
 
@@ -210,12 +242,28 @@ if __name__ == "__main__":
     write_compiled()
 
 
+def _tie(x: float, decimals: int) -> bool:
+    """Whether ``x`` as written ends in a single 5 just past ``decimals`` decimals."""
+    digits = Decimal(repr(x)).as_tuple()
+    return (
+        isinstance(digits.exponent, int)
+        and -digits.exponent == decimals + 1
+        and digits.digits[-1] == 5
+    )
+
+
 def number(x: Any) -> str:
     """A value as a reader wants it: four significant digits, no exponent between 0.001 and
     a million, yes/no for booleans.
 
-    >>> number(5.08485), number(21120.5), number(442937), number(1.5e-05), number(True)
+    >>> number(5.08485), number(21120.4), number(442937), number(1.5e-05), number(True)
     ('5.085', '21120', '442937', '1.5e-05', 'yes')
+
+    A value the report rounded to a tie at the shown digit (10282.5 of 10282.524) keeps the
+    digit: rounding it again would say 10282 (half to even) where the value is 10283.
+
+    >>> number(10282.5), number(5.1525), number(2.5)
+    ('10282.5', '5.1525', '2.5')
     """
     if isinstance(x, bool):
         return "yes" if x else "no"
@@ -226,6 +274,8 @@ def number(x: Any) -> str:
             return f"{x:g}"
         if 1e-3 <= abs(x) < 1e6:
             decimals = max(0, 3 - math.floor(math.log10(abs(x))))
+            if _tie(x, decimals):  # the report's own rounding made it one: say it unrounded
+                decimals += 1
             text = f"{x:.{decimals}f}"
             return text.rstrip("0").rstrip(".") if "." in text else text
         return f"{x:.4g}"

@@ -21,9 +21,15 @@ rules are CommonMark's (https://spec.commonmark.org/0.31.2/) and GitHub's table 
 
 import re
 
-from advisor.datasheet.content import Block, Probability, Sheet, Table
+from advisor.datasheet.content import Block, Probability, Sheet, Table, no_checks
 
-MARK = {"fails": "✗ FAILS", "tight": "⚠ tight", "passes": "✓", "none": "no check"}
+MARK = {
+    "fails": "✗ FAILS",
+    "tight": "⚠ tight",
+    "passes": "✓",
+    "none": "no check",
+    "unreached": "not reached",
+}
 
 #: Characters of a utilisation bar: ten cells, each a tenth of the capacity.
 BAR_CELLS = 10
@@ -142,14 +148,18 @@ def _review(s: Sheet) -> list[str]:
             "section lists every value.",
             "",
         ]
-    out += ["## Utilisation", "", "Demand over capacity of each check (1 / margin).", ""]
-    out += _table(
-        ["check", "utilisation", "", ""],
-        [
-            [b.name, bar(b.utilisation), f"{b.utilisation * 100:.0f} %", MARK[b.status]]
-            for b in s.bars
-        ],
-    )
+    out += ["## Utilisation", ""]
+    if s.bars:
+        out += ["Demand over capacity of each check (1 / margin).", ""]
+        out += _table(
+            ["check", "utilisation", "", ""],
+            [
+                [b.name, bar(b.utilisation), f"{b.utilisation * 100:.0f} %", MARK[b.status]]
+                for b in s.bars
+            ],
+        )
+    else:
+        out += [no_checks(s.status), ""]
     out += ["## Load cycle", ""]
     if s.cycle is None:
         out += [r"This design has no duty cycle: its requirement has no \[duty\] table.", ""]

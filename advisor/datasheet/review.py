@@ -69,8 +69,13 @@ class Required:
     check_id: str
     achieved: str  # "value against limit unit" of the governing check
     margin: str
-    status: str  # fails | tight | passes | none
+    status: str  # fails | tight | passes | none | unreached (no design reached its checks)
     more: int  # other checks that cover it too
+
+
+def _patterns(path: tuple[str, ...], covers: dict[str, tuple[str, ...]]) -> list[str]:
+    """The check-id patterns the application names for a field or a table holding it."""
+    return [p for k in range(len(path), 0, -1) for p in covers.get(".".join(path[:k]), ())]
 
 
 def covering(
@@ -79,9 +84,7 @@ def covering(
     """The ids of the checks that cover a requirement field: those the application names for
     the field or for a table holding it (``duty`` covers ``duty.cycle_time_s``), and a check
     named as the field is (``travel_time`` covers ``linear.travel_time_s``)."""
-    patterns: list[str] = []
-    for k in range(len(path), 0, -1):
-        patterns += covers.get(".".join(path[:k]), ())
+    patterns = _patterns(path, covers)
     stem = split_key(path[-1])[0].replace(" ", "_")
     found = [i for i in ids if any(fnmatchcase(i, p) for p in patterns) or i == stem]
     return found
@@ -108,6 +111,39 @@ def _value(v: Any) -> str:
     return number(v)
 
 
+#: What the "covered by" column says where no check covers a requirement, and where the
+#: checks that would cover it were never reached because no design exists.
+UNCOVERED = "no check covers this requirement"
+NOT_REACHED = "not reached: the requirement is infeasible (see why)"
+
+
+def _covered_row(
+    path: tuple[str, ...], label: str, v: Any, unit: str, covering_checks: list
+) -> Required:
+    """The row of a requirement covered by ``covering_checks``: the least margin governs."""
+    c = min(covering_checks, key=lambda c: c["margin"])
+    achieved = f"{number(c['value'])} against {number(c['limit'])} {c['unit']}".strip()
+    return Required(
+        ".".join(path),
+        label,
+        _value(v),
+        unit,
+        c["name"],
+        c["id"],
+        achieved,
+        f"{c['margin']:.3f}",
+        status_of(c),
+        len(covering_checks) - 1,
+    )
+
+
+def _uncovered_row(path: tuple[str, ...], label: str, v: Any, unit: str, reached: bool) -> Required:
+    """The row of a requirement no check in the report covers: none covers it (``reached``:
+    the report has a design), or its checks were not reached (no design)."""
+    text, status = (UNCOVERED, "none") if reached else (NOT_REACHED, "unreached")
+    return Required(".".join(path), label, _value(v), unit, text, "", "", "", status, 0)
+
+
 def required_vs_achieved(
     doc: dict,
     labels: dict[tuple[str, ...], tuple[str, str]],
@@ -117,8 +153,11 @@ def required_vs_achieved(
     """One row per requirement field the design was made to, in the file's order: the value
     required, and the check that covers it with the least margin (the governing one). A
     field at its model's default (``defaults``) is counted, not listed: the Requirements
-    section lists it. Returns the rows and that count."""
+    section lists it. An infeasible report's rows name the failing checks it holds; a
+    field the application covers by checks that no design reached says so. Returns the rows
+    and that count."""
     checks = {c["id"]: c for c in doc.get("checks", [])}
+    infeasible = (doc.get("report") or {}).get("status") == "infeasible"
     rows = []
     at_default = 0
     for path, v in _leaves(doc.get("requirements", {}), ()):
@@ -130,37 +169,10 @@ def required_vs_achieved(
         if path == ("uncertainty", "target") and (row := _probability_row(doc, label, v)):
             rows.append(row)
         elif ids:
-            c = min((checks[i] for i in ids), key=lambda c: c["margin"])
-            achieved = f"{number(c['value'])} against {number(c['limit'])} {c['unit']}".strip()
-            rows.append(
-                Required(
-                    ".".join(path),
-                    label,
-                    _value(v),
-                    unit,
-                    c["name"],
-                    c["id"],
-                    achieved,
-                    f"{c['margin']:.3f}",
-                    status_of(c),
-                    len(ids) - 1,
-                )
-            )
+            rows.append(_covered_row(path, label, v, unit, [checks[i] for i in ids]))
         else:
-            rows.append(
-                Required(
-                    ".".join(path),
-                    label,
-                    _value(v),
-                    unit,
-                    "no check covers this requirement",
-                    "",
-                    "",
-                    "",
-                    "none",
-                    0,
-                )
-            )
+            reached = not (infeasible and not checks and _patterns(path, covers))
+            rows.append(_uncovered_row(path, label, v, unit, reached))
     return rows, at_default
 
 

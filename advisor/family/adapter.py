@@ -13,6 +13,7 @@ the rest imports the errors and the report helpers from here.
 from typing import Any, NamedTuple
 
 from advisor.core.errors import AdvisorError, ExitCode, InfeasibleError, InputError
+from advisor.core.io_safety import OutputError, show
 from advisor.core.report import round_sig, write_atomic
 
 __all__ = [
@@ -21,9 +22,11 @@ __all__ = [
     "InfeasibleError",
     "InputError",
     "Outcome",
+    "OutputError",
     "advise_one",
     "field_problems",
     "round_sig",
+    "show",
     "write_atomic",
 ]
 
@@ -118,6 +121,7 @@ def field_problems(requirement: dict[str, Any]) -> list[FieldProblem]:
         walk_location,
     )
 
+    written = requirement  # echoed as typed where a refused value was a quantity string
     try:
         kind = RequirementHead.model_validate(requirement).application.kind
         model: Any = requirements_model(kind)
@@ -136,7 +140,9 @@ def field_problems(requirement: dict[str, Any]) -> list[FieldProblem]:
         except ValidationError as exc:
             errors = exc
     out = []
-    for err, line in zip(errors.errors(), format_validation_error(errors, model), strict=True):
+    for err, line in zip(
+        errors.errors(), format_validation_error(errors, model, written), strict=True
+    ):
         loc, info, _ = walk_location(tuple(err["loc"]), model)
         holds_table = info is not None and hasattr(info.annotation, "model_fields")
         cross = err["type"] == "value_error" and (not loc or holds_table)

@@ -256,12 +256,36 @@ def check_writable(folder: Path, what: str) -> None:
 
 
 def remove_if_empty(created: list[Path]) -> None:
-    """Remove the folders this run created (innermost first) that are still empty."""
+    """Remove the folders this run created (innermost first) that are still empty; in a
+    DIR it created, first what a run that wrote no result leaves (:func:`clear_unstarted`)."""
+    if created:
+        clear_unstarted(created[-1])
     for d in reversed(created):
         try:
             d.rmdir()  # refuses a folder that is not empty
         except OSError:
             return
+
+
+def clear_unstarted(out: Path) -> None:
+    """A DIR's empty ``reports/`` and its ``chunks/`` holding no chunk (the manifest alone
+    resumes nothing), removed: only for a DIR this run created, where nothing is another's."""
+    from advisor.family.study import MANIFEST
+
+    chunks = out / "chunks"
+    try:
+        (out / "reports").rmdir()  # refuses a folder holding a report
+    except FileNotFoundError:
+        pass
+    except OSError:
+        return
+    try:
+        if set(os.listdir(chunks)) - {MANIFEST}:
+            return  # a chunk: kept for a resume
+        (chunks / MANIFEST).unlink(missing_ok=True)
+        chunks.rmdir()
+    except OSError:
+        return
 
 
 #: Loggers that write to the terminal on their own: Dask's (e.g. "Couldn't gather keys"
@@ -443,10 +467,12 @@ def write_results(
     joined); the summary document. Each is built before any is replaced: a damaged chunk or
     a failure leaves the folder's previous results as they were."""
     from advisor.family.adapter import write_atomic
-    from advisor.family.study import join_to_temp
+    from advisor.family.study import join_to_temp, writing
     from advisor.family.summary import summary_text
 
-    joined = join_to_temp(family, out, extra["chunk_size"], builder)
+    kept = "the chunks are kept: free space and run the same command again to write the results"
+    with writing(out / "designs.csv", kept):
+        joined = join_to_temp(family, out, extra["chunk_size"], builder)
     try:
         doc, pictures = builder.finish(extra)
         summary = summary_text(doc)
@@ -459,9 +485,11 @@ def write_results(
     except BaseException:
         joined.unlink(missing_ok=True)
         raise
-    write_atomic(out / "summary.toml", summary)
+    with writing(out / "summary.toml", kept):
+        write_atomic(out / "summary.toml", summary)
     if page is not None:
-        write_atomic(out / "family.html", page)
+        with writing(out / "family.html", kept):
+            write_atomic(out / "family.html", page)
     return doc
 
 

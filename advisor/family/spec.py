@@ -250,10 +250,21 @@ def check_range(where: str, spec: dict[str, Any]) -> tuple[Any, Any, Any, Any]:
 
 
 def range_axis(key: str, spec: dict[str, Any]) -> Axis:
-    """An axis of ``steps`` values from ``from`` to ``to`` (both as written), the others
-    rounded to six significant digits; whole numbers stay whole."""
+    """An axis of ``steps`` values from ``from`` to ``to`` (both as written, a quantity
+    string converted to the key's unit as a list axis's is), the others rounded to six
+    significant digits; whole numbers stay whole."""
     where = f"family axis {key!r}"
-    lo, hi, steps, scale = check_range(where, spec)
+    ends = {k: _in_unit(key, spec[k]) for k in ("from", "to") if k in spec}
+    if any(isinstance(v, str) for v in ends.values()):  # no quantity of the key's unit
+        from advisor.core.questions import unit_of
+
+        unit = unit_of(key.rsplit(".", 1)[-1])
+        shown = ", ".join(f"{k} = {spec[k]!r}" for k in ("from", "to") if k in spec)
+        raise InputError(
+            f"{where}: {shown}: must be finite numbers"
+            + (f", or quantities in {unit} (e.g. '100 {unit}')" if unit else "")
+        )
+    lo, hi, steps, scale = check_range(where, {**spec, **ends})
     if steps == 1:
         return Axis(key, (lo,), scale)
     raw = _range(lo, hi, steps, scale)

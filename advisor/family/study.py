@@ -19,17 +19,21 @@ import stat
 import sys
 import time
 import uuid
-from collections.abc import Callable, Generator, Iterable
+from collections.abc import Callable, Generator, Iterable, Iterator
+from contextlib import contextmanager
 from pathlib import Path
 from typing import Any, NamedTuple, Protocol
 
-from advisor.family.adapter import InputError, write_atomic
+from advisor.family.adapter import InputError, OutputError, show, write_atomic
 from advisor.family.cells import columns
 from advisor.family.chunks import ChunkResult, rows_csv, run_chunk
 from advisor.family.spec import Family
 from advisor.family.summary import SummaryBuilder
 
 MANIFEST = "study.json"
+#: what a failed write says has become of the study (exit 2: a full disk is not a bug)
+NOTHING_WRITTEN = "nothing was written"
+RESUME = "the chunks written so far are kept: free space and run the same command again to resume"
 #: (chunk number, first variant, variant after the last)
 Job = tuple[int, int, int]
 
@@ -162,8 +166,9 @@ def check_manifest(out_dir: Path, manifest: dict[str, Any]) -> None:
         if old != manifest:
             raise _another_study(out_dir, old)
         return
-    path.parent.mkdir(parents=True, exist_ok=True)
-    write_atomic(path, json.dumps(manifest, indent=1, sort_keys=True) + "\n")
+    with writing(path, NOTHING_WRITTEN):
+        path.parent.mkdir(parents=True, exist_ok=True)
+        write_atomic(path, json.dumps(manifest, indent=1, sort_keys=True) + "\n")
 
 
 def previous_chunk_size(out_dir: Path) -> int | None:
@@ -351,7 +356,8 @@ def start_study(
     """Check or write the manifest; the chunks already written and their variants."""
     check_manifest(out_dir, make_manifest(family, chunk_size, reports, catalog_dir))
     if reports:
-        (out_dir / "reports").mkdir(exist_ok=True)
+        with writing(out_dir / "reports", NOTHING_WRITTEN):
+            (out_dir / "reports").mkdir(exist_ok=True)
     done = chunks_written(out_dir, chunk_count(family.size, chunk_size))
     done = drop_damaged(out_dir, family, chunk_size, done)
     variants = sum(b - a for a, b in (chunk_range(n, family.size, chunk_size) for n in done))
@@ -377,8 +383,23 @@ def remove_own_temporaries(out_dir: Path) -> None:
 def write_chunk(out_dir: Path, res: ChunkResult) -> None:
     """A chunk's reports, then its rows: a chunk file marks its reports written."""
     for name, text in res.reports:
-        write_replace(out_dir / "reports" / name, text)
-    write_atomic(chunk_path(out_dir, res.number), rows_csv(res.rows))
+        with writing(out_dir / "reports" / name, RESUME):
+            write_replace(out_dir / "reports" / name, text)
+    path = chunk_path(out_dir, res.number)
+    with writing(path, RESUME):
+        write_atomic(path, rows_csv(res.rows))
+
+
+@contextmanager
+def writing(path: Path, after: str) -> Iterator[None]:
+    """Writes to ``path``; a write that fails (a full disk, a read-only folder, a quota)
+    becomes an :class:`OutputError` naming the file, its reason and ``after`` (what is left
+    of the study): exit 2 in one line, as the batch's full disk, not a bug to report."""
+    try:
+        yield
+    except OSError as exc:
+        why = exc.strerror or type(exc).__name__
+        raise OutputError(f"{show(path, 200)}: cannot write ({why}); {after}") from None
 
 
 def run_study(

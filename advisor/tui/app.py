@@ -247,8 +247,12 @@ class DriveAdvisorApp(StartUp, KeysInOrder, StepPages, StepChecks, ResultViews, 
                 fields.put(self.doc, f.path, None)
                 self._changed()
             return
-        if fields.get(self.doc, f.path) is None and event.value == self._shown_choice(f):
-            return  # the shown default, not a choice the user made: keep the file as it was
+        # a Select built on a real default reports it: the shown default, not a choice the
+        # user made (keep the file as it was); a field without one starts blank, so any
+        # value it reports, its first choice too, was picked
+        unchosen = fields.get(self.doc, f.path) is None and f.default is not None
+        if unchosen and event.value == self._shown_choice(f):
+            return
         fields.put(self.doc, f.path, event.value)
         self.query_one(f"#{f.id}-err", Label).update("")
         self._changed()

@@ -75,7 +75,7 @@ def test_usage_errors(tmp_path, capsys):
         main(["--batch", a, a, "--out-dir", str(tmp_path), "-o", "x.toml"])
         == ExitCode.INVALID_INPUT
     )
-    assert "-o/--output takes one input" in capsys.readouterr().err
+    assert "-o/--output and --out-dir exclude each other" in capsys.readouterr().err
     assert main(["--batch", a, "--out-dir", str(tmp_path), "-j", "0"]) == ExitCode.INVALID_INPUT
     assert main(["--batch", str(tmp_path / "none.toml"), a, "--out-dir", str(tmp_path)]) == 2
     assert "no such file" in capsys.readouterr().err

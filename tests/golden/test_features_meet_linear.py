@@ -73,26 +73,28 @@ def _phase(rep: dict, name: str) -> dict:
 
 # ------------------------------------------------------------------ the device's inertia
 def test_the_worm_inertia_counts_in_the_linear_cycle():
-    """lind_worm.toml: the coast of move 1 is J·ω/M_L with J the whole motor side.
-    J = 0.013 (4A100L8) + 4.045e-5 (screw) + 9.124e-4 (nut) + 1.59855e-4 (worm, seed 004
-    sized at the screw torque 5.37478 N·m) = 0.014113 kg·m²; M_L = M/η_worm = 16.2321 N·m."""
+    """lind_worm.toml: the coast of move 1 is J·ω/M_L with J the whole motor side, the screw
+    side reflected through the worm as its torque is (J_L/η_worm, as the rotary's /η_d):
+    J = 0.013 (4A100L8) + 1.59855e-4 (worm, seed 004 sized at the screw torque 5.37478 N·m)
+    + (4.045e-5 (screw) + 9.124e-4 (nut))/0.33112 = 0.0160375 kg·m² (0.014113 without
+    the /η_worm); M_L = M/η_worm = 16.2321 N·m."""
     rep = report(linear_doc("worm", SEGMENTS_DUTY))
     duty, device = rep["design"]["duty"], rep["design"]["one_way"]
     assert duty["motor"] == "4A100L8"
     j_worm = ow.worm(SCREW_TORQUE_NM).inertia_kgm2
     assert j_worm == pytest.approx(1.59855e-4, rel=1e-5)
     assert device["inertia_kgm2"] == pytest.approx(j_worm, rel=1e-5)
-    j_total = 0.013 + J_SCREW + J_NUT + j_worm
-    assert j_total == pytest.approx(0.014113, rel=1e-4)
+    j_total = 0.013 + j_worm + (J_SCREW + J_NUT) / WORM_ETA
+    assert j_total == pytest.approx(0.0160375, rel=1e-4)
     load = SCREW_TORQUE_NM / WORM_ETA
     assert load == pytest.approx(16.2321, rel=1e-5)
     coast = _phase(rep, "1 move: coast")
     w = coast["speed_start_rpm"] * math.pi / 30.0
-    assert coast["time_s"] == pytest.approx(j_total * w / load, rel=1e-5)  # was 0.0641622 s
+    assert coast["time_s"] == pytest.approx(j_total * w / load, rel=1e-5)  # was 0.0648973 s
     # the inertia ratio: the load at the motor over the motor side, J_L/(J_M + J_d) = 0.07241
     ratio = (J_SCREW + J_NUT) / (0.013 + j_worm)
     assert duty["inertia_ratio"] == pytest.approx(ratio, rel=1e-5)  # was 0.0733002
-    # FI = (J_M + J_d + J_L)/J_M (IEC 60034-1, 3.18)
+    # FI = (J_M + J_d + J_L/η_worm)/J_M (IEC 60034-1, 3.18)
     assert duty["inertia_factor"] == pytest.approx(j_total / 0.013, rel=1e-5)
 
 

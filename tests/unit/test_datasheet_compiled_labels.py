@@ -23,12 +23,9 @@ def test_compiled_labels_and_defaults_equal_the_models_for_every_shipped_applica
         got_labels, got_defaults = labels.for_application(kind)
         assert got_labels == labels.requirement_labels(model)
         full = labels.requirement_defaults(model)
-        assert set(got_defaults) <= set(full)
-        for path, value in full.items():
-            if path in got_defaults:
-                assert got_defaults[path] == value
-            else:  # left out: a model instance, which never equals a report's plain data
-                assert not labels.literal_default(value)
+        # every default is compiled, a list of tables (magnet_losses) as plain tables: a
+        # default left out would count its field as given on the datasheet
+        assert got_defaults == full
 
 
 def test_a_datasheet_imports_no_pydantic(tmp_path):

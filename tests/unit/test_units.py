@@ -208,7 +208,11 @@ def test_lists_and_tables_in_lists_take_units_too():
 def test_the_range_is_checked_after_conversion():
     with pytest.raises(InputError) as err:
         parse_requirements(_linear(stroke_m="30 m"))
-    assert str(err.value).startswith("linear.stroke_m = 30.0: must be ≤ 20 (stroke, m")
+    # echoed as typed ('30 m' is 30 m, so no SI value beside it)
+    assert str(err.value).startswith("linear.stroke_m = '30 m': must be ≤ 20 (stroke, m")
+    with pytest.raises(InputError) as err:
+        parse_requirements(_linear(stroke_m="30000 mm"))
+    assert str(err.value).startswith("linear.stroke_m = '30000 mm' (30 m): must be ≤ 20")
 
 
 def test_strings_elsewhere_are_still_refused_by_the_model():

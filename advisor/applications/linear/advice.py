@@ -12,7 +12,9 @@ from collections.abc import Callable, Iterable
 from typing import NamedTuple
 
 from advisor.applications.linear.choice import catalog_parts, choice_options, thread_screens
+from advisor.applications.linear.holding import holding_checks
 from advisor.applications.linear.motor import MotorPlan, motor_evaluation, plan_motor
+from advisor.applications.linear.no_drive import power_reasons
 from advisor.applications.linear.report import LinearDesignOut
 from advisor.applications.linear.screw_checks import screw_checks
 from advisor.applications.linear.tables import motor_out, screw_out
@@ -104,8 +106,9 @@ def _one_way(
     """Seed 004 for a screw drive: no device when the screw holds with margin, otherwise one
     at the motor side carrying the torque that drives the screw (thread and thrust face) — at
     the rated force or, if larger, at the emergency stop's momentary force, times the service
-    factor: the device holds the stop by its sizing (a check of it against the same torque
-    could only state a margin of 1.000). Its power share is over the motor's mechanical
+    factor; the check that it holds the load with the power off states the smaller torque
+    the load gives it back through the screw (:mod:`advisor.applications.linear.holding`).
+    Its power share is over the motor's mechanical
     power at the working point, ``motor_power_W``."""
     from advisor.one_way.advice import choose_device
     from advisor.one_way.report import OneWayOut
@@ -131,7 +134,7 @@ def _one_way(
     warnings.insert(
         0,
         f"{thread} is not self-locking at the low end of the friction range (f = "
-        f"{friction_low:g}): a {device.type.replace('_', ' ')} at the motor side holds the load",
+        f"{friction_low:g}): {ow_rules.with_article(device.type)} at the motor side holds the load",
     )
     return device.replace(output_side=None), warnings
 
@@ -428,10 +431,12 @@ def advise_linear(
     plan = chain.plan
     sel = plan.evaluations[plan.selected.rated_power_kW]
     assert sel is not None
-    one_way = None
+    one_way, hold_checks = None, []
     if hold:
         one_way, device_warnings = _holding_device(req, ev, chosen.label, chain, demand, trace, sel)
         warnings += device_warnings
+        friction_low = demand.material.friction_low
+        hold_checks = holding_checks(req, ev, one_way, chosen.label, friction_low)
     if s.friction_model == "paper":
         warnings.append(_paper_friction_warning(ev))
     advisor_choice = trace.find("SCR-04").inputs.get("advisor_choice")
@@ -446,7 +451,7 @@ def advise_linear(
         warnings.append(_too_fast(chain.at_motor, sel, plan, screens, cat, lin.travel_time_s))
     sf = service_factor(getattr(req, "design", None))
     own_checks, own_warnings = screw_checks(req, ev, sel, demand.thrust, sf, cat)
-    return design, checks + own_checks + duty_checks, warnings + own_warnings
+    return design, checks + own_checks + duty_checks + hold_checks, warnings + own_warnings
 
 
 #: A stroke made in less than this share of the time asked for is flagged.
@@ -473,6 +478,7 @@ def _too_fast(
     passing = [e for e in screens if e.passed]
     finest = min(passing, key=lambda e: e.thread.pitch_mm * e.starts)
     finest_lead = finest.thread.pitch_mm * finest.starts
+    finest_name = screw_rules.thread_label(finest.thread.name, finest.starts)
     text = (
         f"the motor makes the stroke in {sel.travel_time_s:.3g} s, much faster than the "
         f"{travel_time_s:g} s asked for: an induction motor on 50 Hz has no speed between its "
@@ -482,7 +488,7 @@ def _too_fast(
         text += (
             f". No lead suits: even the slowest catalog motor ({slowest.rated_speed_rpm:g} rpm) "
             f"would need a lead of {lead_needed_mm:.3g} mm, and the finest that passes the "
-            f"checks is {finest_lead:g} mm ({finest.thread.name})"
+            f"checks is {finest_lead:g} mm ({finest_name})"
         )
     ratio = sel.working_speed_rpm / ev.speed_rpm
     need_kW = plan.required_power_kW / REDUCER_EFFICIENCY
@@ -544,7 +550,6 @@ def _no_drive(
         )
     speeds = sorted(ev.speed_rpm for ev in passing)
     fastest = max(m.rated_speed_rpm for m in cat.motors)
-    biggest_kw = max(m.rated_power_kW for m in cat.motors)
     names = {ev.name for ev in passing}
     reasons = [
         f"{len(names)} threads pass the strength checks; they need {speeds[0]:.4g} … "
@@ -562,12 +567,7 @@ def _no_drive(
             "travel time or use more thread starts"
         )
     else:
-        reachable = [ev for ev in passing if ev.speed_rpm <= fastest]
-        least = min(ev.torque_Nm * ev.speed_rpm * math.pi / 30.0 / 1e3 for ev in reachable)
-        reasons.append(
-            f"the power needed ({least:.3g} kW or more at a reachable speed) exceeds what the "
-            f"catalog's motors give (up to {biggest_kw:g} kW) at that speed"
-        )
+        reasons += power_reasons(passing, cat)
     return InfeasibleError(
         "no feasible design: no catalog motor can drive a thread that passes its checks",
         reasons,

@@ -4,7 +4,8 @@ through a cycle of moves, dwells and holds, or an IEC 60034-1 duty type.
 Per move, at the motor: a direct-on-line start with the motor's mean starting torque
 M_m (the mean of its refined Kloss curve between standstill and the working slip, the usual
 approximation: Chilikin, «Общий курс электропривода», ch. 2) against the screw torque M_L, on
-J_Σ = J_M + J_screw + m·(L/2π)²/η; the run at the working point M(s) = M_L; switched off,
+J_Σ = J_M + J_d + (J_screw + m·(L/2π)²/η)/η_d (a one-way device J_d, η_d at the motor side);
+the run at the working point M(s) = M_L; switched off,
 the load and the thread friction stop it (motor torque 0). The screw torque is seed 001's
 M = F·d2/2·tan(ψ + φ') against the load and F·d2/2·tan(φ' − ψ) with it (negative: the load
 drives the motor, which then generates above synchronous speed).
@@ -71,13 +72,22 @@ def _lead_m(ev) -> float:
 
 
 class MotorModel:
-    """One catalog motor's curve, speeds and starts (scalar, no numpy)."""
+    """One catalog motor's curve, speeds and starts (scalar, no numpy), with what it turns:
+    the screw side's inertia ``j_load`` (the screw and the moving mass) behind the one-way
+    device ``passage``, whose own inertia ``j_device`` turns with the rotor."""
 
-    def __init__(self, m, j_load: float) -> None:
+    def __init__(
+        self, m, j_load: float, j_device: float = 0.0, passage=one_way_calc.NO_DEVICE
+    ) -> None:
         self.m = m
         self.curve = fit_motor(m).curve  # the fit is cached by the ratings it depends on
         self.w0 = m.synchronous_speed_rpm * math.pi / 30.0
-        self.j = m.inertia_kgm2 + j_load
+        self.j_rotor = m.inertia_kgm2 + j_device
+        self.j_screw = j_load
+        self.passage = passage
+        #: beside the rotor while the motor drives the load through the device: J_L/η_d + J_d
+        self.j_ext = j_load / passage.efficiency + j_device
+        self.j = m.inertia_kgm2 + self.j_ext
 
     def slip(self, torque: float) -> float | None:
         """Working slip under a torque; a generating load (torque < 0) mirrors the curve."""
@@ -90,15 +100,21 @@ class MotorModel:
         """Mean of M(s) from standstill to the working slip (Simpson, 64 intervals)."""
         return self.curve.mean_torque(max(s_work, 0.0), 1.0, 64)
 
-    def move(self, name: str, path_rad: float, load: float) -> tuple[list[Phase], float, float]:
-        """Start, run, coast over a path at the motor: (phases, mean start torque, k_L)."""
+    def move(
+        self, name: str, path_rad: float, load: float, screw: float | None = None
+    ) -> tuple[list[Phase], float, float]:
+        """Start, run, coast over a path at the motor: (phases, mean start torque, k_L).
+        ``load``: the run's torque at the motor; ``screw``: the screw's own torque behind
+        the device (signed, :func:`ramp_accelerations`), ``load`` where no device sits."""
         s = self.slip(load)
         if s is None:
             raise ValueError("stall")
         w = self.w0 * (1.0 - s)
         mm = self.mean_start_torque(max(s, 0.0))
-        e1 = (mm - load) / self.j
-        e2 = load / self.j if load > 0 else math.inf  # the stop: the load and friction
+        inertias = (self.j_rotor, self.j_screw)
+        e1, e2 = ramp_accelerations(
+            mm, load, load if screw is None else screw, inertias, self.passage, self.j
+        )
         ramps = w * w / (2.0 * e1) + (w * w / (2.0 * e2) if e2 != math.inf else 0.0)
         if path_rad < ramps:  # a short move: switched off before reaching speed
             w = math.sqrt(2.0 * path_rad / (1.0 / e1 + (1.0 / e2 if e2 != math.inf else 0.0)))
@@ -113,12 +129,74 @@ class MotorModel:
         return out, mm, mm / (mm - load) if load > 0 else 1.0
 
 
+def ramp_accelerations(
+    mean_start_Nm: float,
+    load_Nm: float,
+    screw_Nm: float,
+    inertias: tuple[float, float],
+    p: one_way_calc.Passage,
+    j_forward: float,
+) -> tuple[float, float]:
+    """The start's and the coast's acceleration at the motor (magnitudes) of a move through
+    the one-way device: M_m = M_dev(J_L·ε + M_s) + J_R·ε (J_R = J_M + J_d; J_L the screw
+    side at the motor shaft; M_s the screw torque, signed; M_dev
+    :func:`advisor.calc.one_way.motor_torque_through`), as the rotary cycle has it:
+
+        driving (J_L·ε + M_s ≥ 0):    J = J_R + J_L/η_d,
+            ε_start = (M_m − M_s/η_d)/J,   ε_coast = M_s/η_d / J
+        a load lowered through a self-locking device (M_s < 0, lowering factor k):
+            J = J_R − k·J_L,   ε_start = (M_m − k·|M_s|)/J   while J_L·ε ≤ |M_s| (the
+            load's torque outweighs its inertia's), else the driving branch;
+            ε_coast = k·|M_s|/J: the rotor's energy drives the load down; none (∞, the
+            device locks at once) for k = 0 or J ≤ 0
+
+    A back-drivable passage (the electromagnetic clutch, or no device) has η_d = 1.
+    Parameters
+    ----------
+    mean_start_Nm : float
+        The motor's mean starting torque M_m [N·m]
+    load_Nm : float
+        The run's torque at the motor, M_dev(M_s) [N·m]
+    screw_Nm : float
+        The screw torque M_s behind the device [N·m], < 0 where the load drives
+    inertias : tuple[float, float]
+        J_R and J_L at the motor shaft [kg·m²]
+    p : Passage
+        The device's driving efficiency η_d, back-drivability and lowering factor k
+    j_forward : float
+        J_R + J_L/η_d as the caller sums it [kg·m²]
+
+    Returns
+    -------
+    tuple[float, float]
+        Start and coast accelerations [rad/s²]; the coast's ∞ where it stops at once
+    References
+    ----------
+    Seed 004 (the device's passage); Chilikin, ch. 2; docs/reference/duty.md.
+    """
+    j_rotor, j_load = inertias
+    forward = (
+        (mean_start_Nm - load_Nm) / j_forward,
+        load_Nm / j_forward if load_Nm > 0 else math.inf,
+    )
+    if screw_Nm >= 0.0 or p.back_drivable:
+        return forward
+    k = p.lowering_factor
+    j_back = j_rotor - k * j_load
+    if j_back <= 0.0:  # the load's inertia outweighs what the device asks: driving branch
+        return (mean_start_Nm - screw_Nm / p.efficiency) / j_forward, math.inf
+    e_start = (mean_start_Nm - load_Nm) / j_back
+    if j_load * e_start > -screw_Nm:
+        e_start = (mean_start_Nm - screw_Nm / p.efficiency) / j_forward
+    return e_start, load_Nm / j_back if load_Nm > 0 else math.inf
+
+
 def _unheld(ev, n: int, force: float, when: str) -> str:
     return (
         f"segment {n}: {when} the load of {force:g} N back-drives the screw "
         f"{ev.thread.name} (not self-locking at the low end of its friction range) and an "
-        "induction motor on the line cannot hold a load at standstill; set "
-        "application.hold_without_power = true for a one-way device"
+        f"induction motor on the line cannot hold a load at standstill; {UNHELD_REMEDY} for "
+        "a one-way device"
     )
 
 
@@ -135,13 +213,14 @@ class CycleLoads(NamedTuple):
     braking_heat: float = 0.0
 
 
-def _move_phases(ev, mot: MotorModel, n: int, seg, load: float):
+def _move_phases(ev, mot: MotorModel, n: int, seg, load: float, screw: float | None = None):
     """One move segment at the motor: its start, run and coast and the rest to its time_s,
     the start's load factor k_L (``None``: the motor stalls under the load) and what is
-    wrong with it."""
+    wrong with it. ``screw``: the screw's torque behind the device (``load`` without one)."""
     label = f"{n} {seg.kind}"
     try:
-        phases, _, k_l = mot.move(label, seg.distance_m / _lead_m(ev) * 2.0 * math.pi, load)
+        path_rad = seg.distance_m / _lead_m(ev) * 2.0 * math.pi
+        phases, _, k_l = mot.move(label, path_rad, load, screw)
     except ValueError:
         return (
             [],
@@ -192,7 +271,7 @@ def _segments_cycle(
         peak_load = max(peak_load, abs(load))
         if holder is None and force > 0:
             problems.append(_unheld(ev, n, force, "switched off at the end of the move,"))
-        move, k_move, trouble = _move_phases(ev, mot, n, seg, load)
+        move, k_move, trouble = _move_phases(ev, mot, n, seg, load, screw)
         problems += trouble
         if k_move is None:
             continue
@@ -268,8 +347,9 @@ def _iec_phases(duty, mot: MotorModel, load: float, w: float, mean_start: float,
         return [Phase("run", duty.duration_min * 60.0, w, w, load)], 0.0, []
     if t == "S3":
         return [Phase("run", on, w, w, load), Phase("rest", period - on, 0.0, 0.0, 0.0)], 0.0, []
-    if t == "S6":
-        return [Phase("run", on, w, w, load), Phase("no load", period - on, w, w, 0.0)], 0.0, []
+    if t == "S6":  # unloaded, the cage motor runs at its synchronous speed (slip 0)
+        idle = Phase("no load", period - on, mot.w0, mot.w0, 0.0)
+        return [Phase("run", on, w, w, load), idle], 0.0, []
     if t in START_STOP_TYPES:
         return _start_stop_phases(t, mot, load, w, mean_start, period, on)
     return _shared_load_phases(duty, mot, load, period)
@@ -278,7 +358,8 @@ def _iec_phases(duty, mot: MotorModel, load: float, w: float, mean_start: float,
 def _iec_cycle(req, ev, mot: MotorModel, passage=one_way_calc.NO_DEVICE) -> CycleLoads:
     """One cycle of an IEC 60034-1 duty type at the rated force's screw torque (through the
     holding device's efficiency where one sits at the motor). Starts are counted where the
-    duty type starts the motor, or gives starts per hour with a cyclic duration (S3, S6)."""
+    duty type starts the motor (S4, S5, S7): in S3 and S6 starting does not significantly
+    affect the temperature (IEC 60034-1), and their starts_per_hour is said ignored."""
     duty = req.duty
     load = one_way_calc.motor_torque_through(passage, ev.torque_Nm)
     slip = mot.slip(load)
@@ -290,7 +371,7 @@ def _iec_cycle(req, ev, mot: MotorModel, passage=one_way_calc.NO_DEVICE) -> Cycl
     mean_start = mot.mean_start_torque(slip)
     k_l = mean_start / (mean_start - load)
     phases, braking, problems = _iec_phases(duty, mot, load, w, mean_start, period)
-    if duty.duty_type not in (*START_STOP_TYPES, "S3", "S6"):
+    if duty.duty_type not in START_STOP_TYPES:
         starts_h = 0.0
     # the load's torque: the motor's own starting and braking torques are not a demand
     peak = max(
@@ -310,8 +391,7 @@ def _cycle(req, ev, mot: MotorModel, holder: str | None, passage) -> CycleLoads:
             f"{req.duty.duty_type}: the load of {req.linear.force_N:g} N back-drives the screw "
             f"{ev.thread.name} (not self-locking at the low end of its friction range) "
             "whenever the motor stops, and an induction motor on the line cannot hold a "
-            "load at standstill; set application.hold_without_power = true for a one-way "
-            "device"
+            f"load at standstill; {UNHELD_REMEDY} for a one-way device"
         )
     return cycle
 
@@ -376,19 +456,28 @@ def _limit_problems(e: CycleEvaluation) -> list[str]:
 
 
 def evaluate(
-    req, ev, m, j_load: float, holder: str | None, passage=one_way_calc.NO_DEVICE
+    req,
+    ev,
+    m,
+    j_load: float,
+    holder: str | None,
+    passage=one_way_calc.NO_DEVICE,
+    j_device: float = 0.0,
 ) -> CycleEvaluation:
     """The cycle with motor m: phases, RMS, starts and every problem. ``j_load``: the
-    inertia the motor turns beside its rotor, at its shaft (the screw, the moving mass and a
-    one-way device at the motor side); ``holder``: what holds the load at standstill
-    ('screw', 'one_way' or None); ``passage``: the one-way device's."""
-    mot = MotorModel(m, j_load)
+    screw side's inertia at the motor shaft (the screw and the moving mass), behind the
+    device; ``j_device``: a one-way device at the motor side, turning with the rotor;
+    ``holder``: what holds the load at standstill ('screw', 'one_way' or None);
+    ``passage``: the one-way device's (the motor accelerates J_L through it: J_L/η_d)."""
+    passage = passage if holder == "one_way" else one_way_calc.NO_DEVICE
+    mot = MotorModel(m, j_load, j_device, passage)
     duty = req.duty
-    cycle = _cycle(req, ev, mot, holder, passage if holder == "one_way" else one_way_calc.NO_DEVICE)
+    cycle = _cycle(req, ev, mot, holder, passage)
     phases = cycle.phases
-    # a start's heat, the load's share included (k_L), is counted by the starts per hour:
-    # in the equivalent torque it counts as a ramp at zero torque
-    thermal = [p._replace(torque_Nm=0.0) if p.name.endswith("start") else p for p in phases]
+    # a start's heat, the load's share included (k_L), and an electric stop's (k_b) are
+    # counted by the starts per hour: in the equivalent torque each counts as a ramp at zero
+    # torque, else the heat would be counted twice
+    thermal = [p._replace(torque_Nm=0.0) if _counted_by_starts(p) else p for p in phases]
     rms = duty_calc.rms_torque(thermal, duty.standstill_cooling_factor) if phases else 0.0
     rated = m.rated_torque_Nm
     # S2: SEW's power increasing factor K raises the thermal limit to K·M_n (same speed)
@@ -396,7 +485,7 @@ def evaluate(
     p_loss = m.rated_power_kW * 1e3 * (100.0 / m.efficiency_pct - 1.0)
     ramp = (1.0 + duty.standstill_cooling_factor) / 2.0
     z0 = duty_calc.no_load_starts_per_hour(p_loss, m.inertia_kgm2, mot.w0, ramp)
-    fi = duty_calc.inertia_factor(m.inertia_kgm2, j_load)
+    fi = duty_calc.inertia_factor(m.inertia_kgm2, mot.j_ext)
     k_l = cycle.load_factor
     s3 = duty.duty_type == "S3"
     # S3: the running torque also against SEW's K·M_n for the cdf (the stricter decides)
@@ -427,6 +516,24 @@ def evaluate(
     return replace(record, problems=[*cycle.problems, *_limit_problems(record)])
 
 
+def _zero_torque_words(phases: list[Phase]) -> str:
+    """Which phases the equivalent torque counts at zero torque, and why, in words."""
+    if any(p.name == "electric brake" for p in phases):
+        return (
+            "A start and an electric stop count at zero torque: their heat, the load's share "
+            "included, is counted by the starts per hour (k_b for the stop)."
+        )
+    return (
+        "A start counts at zero torque: its heat, the load's share included, is counted by "
+        "the starts per hour."
+    )
+
+
+def _counted_by_starts(p: Phase) -> bool:
+    """A start or an electric stop: its heat is counted by the starts per hour."""
+    return p.name.endswith("start") or p.name == "electric brake"
+
+
 def _held_by(ev, holder: str | None, passage) -> str:
     """What holds the load whenever the motor is off, in words for the report."""
     if holder == "screw":
@@ -443,10 +550,19 @@ def _mean_start(phases: list[Phase]) -> float | None:
 
 def segment_loads_within_rating(req) -> None:
     """A segment's force above linear.force_N is refused: the screw, the nut and the holding
-    device are sized for the rated force, and a larger one in the cycle would pass unchecked."""
+    device are sized for the rated force, and a larger one in the cycle would pass unchecked.
+    So is an S9 or S10 load share above 1: it loads the screw with share × linear.force_N."""
+    rated = req.linear.force_N
+    for k, x in enumerate(req.duty.loads or (), 1):
+        if req.duty.duty_type in ("S9", "S10") and x.load_share > 1.0:
+            raise InputError(
+                f"duty.loads[{k}].load_share = {x.load_share:g}: loads the screw with "
+                f"{x.load_share * rated:g} N, above linear.force_N = {rated:g}, the force the "
+                "screw, nut and holding device are sized for; raise linear.force_N to the "
+                "largest force of the cycle and give the shares of it (at most 1)"
+            )
     if not req.duty.segments:
         return
-    rated = req.linear.force_N
     for n, seg in enumerate(req.duty.segments, 1):
         if seg.force_N is not None and seg.force_N > rated:
             raise InputError(
@@ -456,16 +572,49 @@ def segment_loads_within_rating(req) -> None:
             )
 
 
-def _motor_for_cycle(req, ev, selected, cat, holder, passage, j_load, j_basis, trace: Trace):
+#: The words of :func:`_unheld`'s remedy, by which a refusal tells its cause.
+UNHELD_REMEDY = "set application.hold_without_power = true"
+
+
+def _no_motor_for_cycle(ev, tried: list) -> InfeasibleError:
+    """The refusal when no motor passes the cycle. Where every motor fails because the load
+    back-drives an unheld screw (:func:`_unheld`), no motor size or travel time cures it:
+    the refusal names that cause and its remedies instead of larger motors."""
+    shown = [tried[0], tried[-1]] if len(tried) > 1 else tried
+    lines = [f"{e.motor.model}: " + "; ".join(e.problems) for e in shown]
+    if all(any(UNHELD_REMEDY in p for p in e.problems) for e in tried):
+        return InfeasibleError(
+            f"no feasible design: the load back-drives the screw {ev.thread.name} whenever the "
+            "motor is off, and nothing holds it",
+            [
+                *lines,
+                "no motor size or travel time cures this: set application.hold_without_power = "
+                "true (a one-way device at the motor side holds the load), choose a thread "
+                "that is self-locking at the low end of its friction range (fewer starts, a finer "
+                "pitch, or a pair of higher friction), or hold it with a brake",
+            ],
+        )
+    return InfeasibleError(
+        "no feasible design: no motor of the chosen pole count passes the duty cycle",
+        [
+            *lines,
+            "larger motors of the same pole count were tried; the moves run at the speed "
+            "chosen for linear.travel_time_s (a shorter one picks a faster motor)",
+        ],
+    )
+
+
+def _motor_for_cycle(req, ev, selected, cat, holder, passage, inertias, j_basis, trace: Trace):
     """The point's motor, or the next larger of its pole count, the first that passes the
-    cycle (rule DU-08); infeasible when none does."""
+    cycle (rule DU-08); infeasible when none does. ``inertias``: the screw side's J_L and
+    the device's J_d at the motor shaft."""
     duty = req.duty
     line = [
         m
         for m in cat.motors_with_poles(selected.poles)
         if m.rated_power_kW >= selected.rated_power_kW
     ]
-    tried = [evaluate(req, ev, m, j_load, holder, passage) for m in line]
+    tried = [evaluate(req, ev, m, inertias[0], holder, passage, inertias[1]) for m in line]
     ok = [e for e in tried if not e.problems]
     if duty.duty_type:
         trace.apply(
@@ -475,15 +624,7 @@ def _motor_for_cycle(req, ev, selected, cat, holder, passage, j_load, j_basis, t
             _iec_how(duty),
         )
     if not ok:
-        shown = [tried[0], tried[-1]] if len(tried) > 1 else tried
-        raise InfeasibleError(
-            "no feasible design: no motor of the chosen pole count passes the duty cycle",
-            [
-                *(f"{e.motor.model}: " + "; ".join(e.problems) for e in shown),
-                "larger motors of the same pole count were tried; the moves run at the speed "
-                "chosen for linear.travel_time_s (a shorter one picks a faster motor)",
-            ],
-        )
+        raise _no_motor_for_cycle(ev, tried)
     rows = {x.motor.model: (x.motor.rated_power_kW, x.problems) for x in tried}
     trace.apply(duty_rules.motor_for_cycle_linear, rows, selected.model, j_basis)
     return ok[0]
@@ -508,8 +649,7 @@ def _thermal_verdict(duty, e: CycleEvaluation, trace: Trace) -> tuple[float, str
         thermal_how = (
             f"Equivalent torque √(Σ M²·t / Σ β·t) = {rms:.4g} N·m against the rated "
             f"{rated:.4g} N·m of {m.model}; β = 1 at speed, β0 = {beta0:g} at standstill, "
-            f"(1 + β0)/2 in a ramp (a self-ventilated motor, IP44). A start counts at zero "
-            "torque: its heat, the load's share included, is counted by the starts per hour."
+            f"(1 + β0)/2 in a ramp (a self-ventilated motor, IP44). " + _zero_torque_words(e.phases)
         )
         basis = f"equivalent torque (β0 = {beta0:g} at standstill) over the rated torque"
     if duty.duty_type == "S3":
@@ -648,6 +788,8 @@ def _duty_out(duty, ev, e: CycleEvaluation, thermal, inertia_ratio: float, held_
     _, back_J = duty_calc.energies([p for p in phases if p.name != "electric brake"])
     t_cycle = duty_calc.cycle_time(phases)
     counted = e.starts_per_hour > 0  # allowed starts mean something only where counted
+    # S1 runs continuously and S2 is one run from cold: no cycle that repeats
+    per_hour = None if duty.duty_type in ("S1", "S2") else 3600.0 / t_cycle if t_cycle else 0.0
     return DutyOut.make(
         motor=e.motor.model,
         ratio=2.0 * math.pi / _lead_m(ev),
@@ -667,8 +809,7 @@ def _duty_out(duty, ev, e: CycleEvaluation, thermal, inertia_ratio: float, held_
         energy_per_cycle_J=out_J,
         regenerated_per_cycle_J=back_J,
         mean_speed_rpm=duty_calc.mean_speed(phases) * RPM,
-        # S2 is one run from cold, not a cycle that repeats
-        cycles_per_hour=None if duty.duty_type == "S2" else 3600.0 / t_cycle if t_cycle else 0.0,
+        cycles_per_hour=per_hour,
         duty_type=duty.duty_type or "cycle",
         held_by=held_by,
         regenerated_to=REGENERATED_TO if back_J > 0 else None,
@@ -703,15 +844,25 @@ def advise_duty(
     passes; the duty table, the motor, the checks and the warnings.
 
     ``device_inertia_kgm2``: the one-way device at the motor side turns with the rotor (a
-    1:1 element): its inertia J_d adds to the motor side's, J_Σ = J_M + J_d + J_load, in
-    every start, stop and start count (FI), and the inertia ratio is J_load/(J_M + J_d)."""
+    1:1 element): its inertia J_d adds to the motor side's, and the motor accelerates the
+    screw side through it as it drives the load, J_Σ = J_M + J_d + J_load/η_d, in every
+    start, stop and start count (FI) (a load lowered through a self-locking device:
+    :func:`ramp_accelerations`); the inertia ratio is J_load/(J_M + J_d), the rotary's
+    without η_d."""
     segment_loads_within_rating(req)
     duty = req.duty
     j_load, j_basis = load_inertia(ev, duty.moving_mass_kg, req.linear.support_span_m)
     j_dev = device_inertia_kgm2 if holder == "one_way" else 0.0
     if j_dev > 0:
         j_basis += f" + the {passage.type.replace('_', ' ')} at the motor side {j_dev:.3g} kg·m²"
-    e = _motor_for_cycle(req, ev, selected, cat, holder, passage, j_load + j_dev, j_basis, trace)
+    if j_dev > 0 and passage.efficiency < 1.0:
+        j_basis += (
+            f"; the motor accelerates the screw side through the {passage.type.replace('_', ' ')}"
+            f": J_L/η_d = {j_load:.3g}/{passage.efficiency:.5g} = "
+            f"{j_load / passage.efficiency:.3g} kg·m² in its starts and stops"
+        )
+    inertias = (j_load, j_dev)
+    e = _motor_for_cycle(req, ev, selected, cat, holder, passage, inertias, j_basis, trace)
     m = e.motor
     thermal = _thermal_verdict(duty, e, trace)
     _peak_verdict(e, trace)

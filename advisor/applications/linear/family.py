@@ -1,5 +1,6 @@
 """The linear actuator's key outputs in a family study's designs.csv (seed 001): the
-catalog motor, its working speed, the screw's thread and the mass.
+catalog motor, its working speed, the screw's thread (its GOST 24739-81 designation with the
+starts, so that a change of starts is a change) and the mass.
 
 The columns are the family's (:data:`advisor.family.outputs.COLUMNS`); a column this
 application leaves out stays blank."""
@@ -26,7 +27,7 @@ def key_outputs(report: dict[str, Any]) -> Row:
         "pole_pairs": m["pole_pairs"],
         "motor_speed_rpm": m["working_speed_rpm"],
         "mass_kg": round_sig(m["mass_kg"] + one_way_mass_kg(d)),
-        "screw_thread": s["thread"],
+        "screw_thread": s["designation"],
         **one_way(d),
         **lowest_margin(report),
     }

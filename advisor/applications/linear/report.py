@@ -33,6 +33,12 @@ class ThrustOut(ReportTable):
     torque_Nm: float
     drive_torque_Nm: float  # thread + thrust face: what the motor moves
     efficiency: float  # F·L / (2π·(T_thread + T_thrust))
+    # a rolling bearing's basic rating life (ISO 281) under f_B·F: reported, not checked
+    equivalent_load_N: float | None = None
+    life_L10_Mrev: float | None = None
+    life_L10_h: float | None = None
+    life_speed_rpm: float | None = None  # the mean screw speed L10h is counted at
+    life_basis: str | None = None
 
 
 class BucklingOut(ReportTable):
@@ -46,7 +52,8 @@ class BucklingOut(ReportTable):
 
 
 class ScrewOut(ReportTable):
-    thread: str
+    thread: str  # the profile (GOST 24737-81): Tr14x2
+    designation: str  # with its starts (GOST 24739-81): Tr14x8(P2); as thread for one start
     imposed: bool
     advisor_choice: str | None = None
     nominal_diameter_mm: float

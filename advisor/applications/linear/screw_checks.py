@@ -1,5 +1,6 @@
 """The chosen screw's own checks beyond its strength: the whirling speed, the thrust
-bearing's static load, and the nut's wear and heat at the motor's working speed."""
+bearing's static load (and its rating life, reported), and the nut's wear and heat at the
+motor's working speed."""
 
 import math
 from typing import NamedTuple
@@ -68,8 +69,77 @@ def _mean_friction_power(req: Requirements, ev: ThreadEvaluation, power_W: float
             f"duty segments: {work:.4g} J of thread friction a cycle × "
             f"{duty.cycles_per_hour:g} cycles/h",
         )
-    share = 1.0 if duty.duty_type in ("S1",) else (duty.cyclic_duration_factor or 1.0)
+    share = _running_share(duty)
     return power_W * share, f"duty {duty.duty_type}, running share {share:g}"
+
+
+def _running_share(duty) -> float:
+    """The share of the time an IEC duty type runs the screw [-]."""
+    # the running share the duty type has: its cdf where it uses one (S3 to S6); S1, S2 and S7
+    # run throughout, S9 and S10 taken at the rated load throughout (the larger side)
+    from advisor.core.ignored import DUTY_KEYS_USED
+
+    uses_cdf = duty.duty_type in DUTY_KEYS_USED["cyclic_duration_factor"]
+    return duty.cyclic_duration_factor if uses_cdf and duty.cyclic_duration_factor else 1.0
+
+
+class ThrustLife(NamedTuple):
+    """The thrust bearing's basic rating life (ISO 281) under the factored axial force."""
+
+    equivalent_load_N: float
+    life_Mrev: float
+    life_h: float | None  # None where the duty never turns the screw
+    speed_rpm: float
+    basis: str
+
+
+def _mean_screw_speed(req: Requirements, ev: ThreadEvaluation, n_work: float):
+    """The screw's speed averaged over the time [rpm], as the nut's mean friction power takes
+    its running share: the duty's moves (revolutions a cycle × cycles per hour); an IEC duty
+    type by its running share; no duty: continuous running at the working speed (the worst
+    case), said so."""
+    duty = req.duty
+    if duty is None:
+        return n_work, "no [duty]: continuous running at the working speed assumed"
+    if getattr(duty, "segments", None):
+        lead = ev.thread.pitch_mm * 1e-3 * ev.starts
+        revs = sum(s.distance_m / lead for s in duty.segments if s.kind == "move")
+        return (
+            revs * duty.cycles_per_hour / 60.0,
+            f"duty segments: {revs:.4g} screw revolutions a cycle × "
+            f"{duty.cycles_per_hour:g} cycles/h",
+        )
+    share = _running_share(duty)
+    return n_work * share, f"duty {duty.duty_type}: working speed × running share {share:g}"
+
+
+def thrust_bearing_life(
+    req: Requirements, ev: ThreadEvaluation, n_work: float
+) -> ThrustLife | None:
+    """The rolling thrust bearing's basic rating life: P = X·F_r + Y·F_a with F_a = f_B·F
+    (F_r = 0), L10 = (C/P)³ millions of revolutions, L10h = 10⁶·L10/(60·n̄) at the screw's
+    mean speed n̄ (ISO 281:2007, eq. (1) and table 3); None without a rolling bearing.
+
+    Every duty segment's force is at most linear.force_N, so the life at it is the shorter
+    side of the one at the duty's own forces."""
+    from advisor.calc.bearing_life import equivalent_load, hours_from_Mrev, rating_life_Mrev
+
+    if ev.thrust is None or ev.thrust.kind != "bearing":
+        return None
+    b = ev.thrust.bearing
+    axial = ev.service_factor * req.linear.force_N
+    p = equivalent_load(b, 0.0, axial)
+    life = rating_life_Mrev(b.C_kN * 1e3, p.load_N)
+    speed, words = _mean_screw_speed(req, ev, n_work)
+    kind = "deep groove" if b.type == "deep_groove" else f"angular contact {b.contact_angle_deg:g}°"
+    basis = (
+        f"P = Y·F_a = {p.Y:.4g} × {axial:g} N (F_a = f_B·F, F_r = 0; Y of ISO 281 table 3, "
+        f"{kind}), L10 = (C/P)³ with C = {b.C_kN:g} kN; "
+        f"L10h at the mean screw speed ({words}), hours of service"
+    )
+    return ThrustLife(
+        p.load_N, life, hours_from_Mrev(life, speed) if speed > 0 else None, speed, basis
+    )
 
 
 def nut_heat(req: Requirements, ev: ThreadEvaluation, speed_rpm: float) -> NutHeat:

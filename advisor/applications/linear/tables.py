@@ -15,7 +15,12 @@ from advisor.applications.linear.report import (
     ThrustOut,
     back_driving_words,
 )
-from advisor.applications.linear.screw_checks import NutHeat, nut_heat, whirling_speed_rpm
+from advisor.applications.linear.screw_checks import (
+    NutHeat,
+    nut_heat,
+    thrust_bearing_life,
+    whirling_speed_rpm,
+)
 from advisor.calc import screw as screw_calc
 from advisor.calc.induction import synchronous_speed_rpm
 from advisor.calc.screw import (
@@ -28,6 +33,7 @@ from advisor.calc.sizing import MotorEvaluation, ScrewMaterial, ThreadEvaluation
 from advisor.core.cite import text
 from advisor.core.reading import Requirements
 from catalogs import Catalogs
+from rules import screw as screw_rules
 
 
 def _buckling_out(ev: ThreadEvaluation, req: Requirements, cat: Catalogs) -> BucklingOut:
@@ -57,19 +63,26 @@ def _buckling_out(ev: ThreadEvaluation, req: Requirements, cat: Catalogs) -> Buc
     )
 
 
-def _thrust_out(ev: ThreadEvaluation, force_N: float) -> ThrustOut | None:
-    """The thrust face's table: its friction torque and the efficiency with it."""
+def _thrust_out(ev: ThreadEvaluation, req: Requirements, n_work: float) -> ThrustOut | None:
+    """The thrust face's table: its friction torque and the efficiency with it, and a
+    rolling bearing's rating life at the screw's mean speed."""
     if ev.thrust is None:
         return None
     lead = ev.thread.pitch_mm * 1e-3 * ev.starts
+    life = thrust_bearing_life(req, ev, n_work)
     return ThrustOut.make(
         kind=ev.thrust.kind,
         model=ev.thrust.describe(),
         torque_Nm=ev.thrust_torque_Nm,
         drive_torque_Nm=ev.drive_torque_Nm,
         efficiency=screw_calc.thread_efficiency_with_thrust(
-            force_N, lead, ev.torque_Nm, ev.thrust_torque_Nm
+            req.linear.force_N, lead, ev.torque_Nm, ev.thrust_torque_Nm
         ),
+        equivalent_load_N=life and life.equivalent_load_N,
+        life_L10_Mrev=life and life.life_Mrev,
+        life_L10_h=life and life.life_h,
+        life_speed_rpm=life and life.speed_rpm,
+        life_basis=life and life.basis,
     )
 
 
@@ -134,6 +147,7 @@ def screw_out(
     v = screw_calc.linear_speed(lin.stroke_m, lin.travel_time_s)
     return ScrewOut.make(
         thread=t.name,
+        designation=screw_rules.thread_label(t.name, ev.starts),
         imposed=s.thread is not None,
         advisor_choice=advisor_choice,
         nominal_diameter_mm=t.d_mm,
@@ -173,7 +187,7 @@ def screw_out(
         output_power_W=lin.force_N * v,
         nut=_nut_out(ev, req, material, heat),
         buckling=_buckling_out(ev, req, cat),
-        thrust=_thrust_out(ev, lin.force_N),
+        thrust=_thrust_out(ev, req, sel.working_speed_rpm or ev.speed_rpm),
         critical_speed_rpm=whirling_speed_rpm(req, t, cat),
         service_factor=ev.service_factor if ev.service_factor != 1.0 else None,
     )

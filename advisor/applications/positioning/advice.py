@@ -187,9 +187,11 @@ def motion_out(
     required: tuple[float, str] | None,
 ) -> MotionOut:
     """The report's motion table: the chosen motor's move, every candidate's beside it, and
-    with a required time the fastest motor."""
+    with a required time the fastest motor by the rule that chooses (MO-05: an estimated
+    inertia at the top of its band), so that the time it states is one the advisor accepts."""
     d, s = best.drive, best.solution
-    fastest = min(solved, key=lambda x: x.solution.move_time_s)
+    decisive = {x.name: _decisive_time(x, path, profile, INERTIA_BAND) for x in solved}
+    fastest = min(solved, key=lambda x: decisive[x.name])
     return MotionOut.make(
         motor=best.name,
         ratio_i0=s.ratio_i0,
@@ -202,7 +204,7 @@ def motion_out(
         torque_ratio=d.torque_ratio,
         required_move_time_s=None if required is None else required[0],
         fastest_motor=None if required is None else fastest.name,
-        fastest_move_time_s=None if required is None else fastest.solution.move_time_s,
+        fastest_move_time_s=None if required is None else decisive[fastest.name],
         candidates=[candidate_out(x) for x in sorted(solved, key=lambda x: x.solution.move_time_s)],
         curve=curve_out(d, path, s.ratio),
         **_solution_fields(s),
@@ -237,6 +239,30 @@ def _ratio_checks(best: Solved, built_ratio: float | None = None) -> list[Check]
     ]
 
 
+def move_time_checks(required_s: float | None, move_time_s: float) -> list[Check]:
+    """The built drive's move within the required move time (positioning.move_time_s):
+    value its move time t_Σ at the ratio it is built with (seed 003, eqs. (3)–(4), the speed
+    graph that happens there), limit the required time, margin t_req/t_Σ. No time asked, no
+    check: a duty cycle's own ``duty_move_fits`` holds the move to the cycle time.
+
+    >>> [round(c.margin, 4) for c in move_time_checks(0.8, 0.305658)]  # 0.8/0.305658
+    [2.6173]
+    """
+    if required_s is None:
+        return []
+    return [
+        Check(
+            "move_time",
+            "move time within the required move time",
+            move_time_s,
+            required_s,
+            "s",
+            required_s / move_time_s,
+            SEED_003.at("eqs. (3)–(4)"),
+        )
+    ]
+
+
 def _duty(
     req: Requirements,
     cat: Catalogs,
@@ -246,7 +272,7 @@ def _duty(
     trace: Trace,
 ):
     """The move repeated every cycle_time_s: the motor and ratio for the cycle."""
-    from advisor.applications.positioning.duty import advise_duty, rated_torques
+    from advisor.applications.positioning.duty import advise_duty, rated_torques, start_heats
 
     return advise_duty(
         solved,
@@ -256,6 +282,7 @@ def _duty(
         best.name,
         trace,
         required_s=None if required is None else required[0],
+        heats=start_heats(req, cat),
     )
 
 
@@ -276,11 +303,15 @@ def advise_positioning(req: Requirements, cat: Catalogs, trace: Trace):
     motion_table = motion_out(best, solved, pos.profile, path, required)
     duty = None
     if req.duty is None:
-        checks = _ratio_checks(best)
+        checks = _ratio_checks(best) + move_time_checks(pos.move_time_s, best.solution.move_time_s)
     else:
         duty, duty_checks, duty_warnings = _duty(req, cat, solved, best, required, trace)
-        # the design is built at the cycle's motor and ratio: the check states that design
+        # the design is built at the cycle's motor and ratio: the checks state that design
         built = next(s for s in solved if s.name == duty.motor)
-        checks = _ratio_checks(built, duty.ratio) + duty_checks
+        checks = (
+            _ratio_checks(built, duty.ratio)
+            + move_time_checks(pos.move_time_s, duty.move_time_s)
+            + duty_checks
+        )
         warnings += duty_warnings
     return PositioningDesignOut.make(motion=motion_table, duty=duty), checks, warnings

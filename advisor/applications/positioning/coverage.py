@@ -8,7 +8,7 @@ check that does not test it."""
 COVERS: dict[str, tuple[str, ...]] = {
     "positioning.load_torque_Nm": ("ratio_moves_load", "duty_rms_torque"),
     "positioning.motors": ("ratio_moves_load", "duty_rms_torque"),
-    "positioning.move_time_s": ("*move_time*", "duty_move_fits"),
+    "positioning.move_time_s": ("move_time",),
     "positioning.travel_rad": ("duty_move_fits",),
     "positioning.load_inertia_kgm2": ("duty_move_fits", "duty_rms_torque"),
     "duty": ("duty_*",),

@@ -3,8 +3,12 @@
 At ratio i the motor accelerates with M_λ against M_p/i, runs at ω0 with M_p/i and brakes with
 M_λ helped by M_p/i, on J0 + J_p/i² (seed 003, eqs. (1)–(4)); then it rests, holding nothing
 (seed 003's M_p resists the motion, like friction: at rest it asks no torque). The RMS torque
-of that cycle is checked against the motor's continuous (S1) torque; the motor is the one
-whose move is fastest among those that pass, each at the fastest ratio that passes.
+of that cycle is checked against the motor's continuous (S1) torque. A catalog induction motor
+starts direct-on-line and stops electrically once a cycle, and the heat of those starts is not
+a torque (the starting current is several times the rated one): its starts per hour are checked
+as the linear duty's are (:func:`advisor.calc.duty.allowed_starts_per_hour`). The motor is the
+one whose move is fastest among those that pass (or, with a required time, the smallest), each
+at the fastest ratio that passes.
 """
 
 import math
@@ -15,10 +19,14 @@ import rules.duty
 from advisor.applications.positioning.candidates import Solved
 from advisor.calc.checks import Check
 from advisor.calc.duty import (
+    DC_BRAKING_HEAT,
     Phase,
+    allowed_starts_per_hour,
     cycle_time,
     energies,
+    inertia_factor,
     mean_speed,
+    no_load_starts_per_hour,
     peak_torque,
     reflected_inertia,
     rms_torque,
@@ -32,6 +40,64 @@ from advisor.duty.report import DutyOut, phases_out
 from rules.motion import SEED_003, CycleFit, Size, smallest_for_cycle
 
 RPM = 30.0 / math.pi
+#: β0 of the catalog's self-ventilated (4A, IP44) motors at standstill, the linear duty's
+#: default for the same motors: a motor that only starts and stops is cooled by (1 + β0)/2.
+STANDSTILL_COOLING = 0.5
+#: The seed's move ends with the motor braking at M_λ: an electric (DC-injection) stop, whose
+#: heat is taken equal to a start's (k_b = 1; plugging would be 3).
+BRAKING_HEAT = DC_BRAKING_HEAT
+
+
+@dataclass(frozen=True, slots=True)
+class StartHeat:
+    """What bounds a catalog induction motor's starts (DU-06): its no-load starts per hour z0
+    (rated losses over a start's heat J_M·ω0², cooled by (1 + β0)/2), its rotor inertia and
+    rated torque, and the starts the cycle asks (one direct-on-line start and one electric
+    stop per cycle)."""
+
+    no_load_starts_per_hour: float
+    motor_inertia_kgm2: float
+    rated_torque_Nm: float
+    starts_per_hour: float
+    braking_heat: float = BRAKING_HEAT
+
+
+@dataclass(frozen=True, slots=True)
+class StartFigures:
+    """The starts a motor allows at one ratio: z = z0·(1 − u²)/(FI·k_L·(1 + k_b))."""
+
+    starts_per_hour: float
+    allowed_starts_per_hour: float
+    no_load_starts_per_hour: float
+    inertia_factor: float
+    load_factor: float
+    running_utilisation: float
+    braking_heat: float
+
+
+def start_heat(m, cycle_time_s: float) -> StartHeat:
+    """A catalog induction motor's start-heat budget: P_loss = P_n·(100/η − 1), z0 =
+    3600·P_loss·(1 + β0)/2/(J_M·ω_s²) at the synchronous speed ω_s
+    (:func:`advisor.calc.duty.no_load_starts_per_hour`)."""
+    p_loss = m.rated_power_kW * 1e3 * (100.0 / m.efficiency_pct - 1.0)
+    w_sync = m.synchronous_speed_rpm * math.pi / 30.0
+    z0 = no_load_starts_per_hour(p_loss, m.inertia_kgm2, w_sync, (1.0 + STANDSTILL_COOLING) / 2.0)
+    return StartHeat(z0, m.inertia_kgm2, m.rated_torque_Nm, 3600.0 / cycle_time_s)
+
+
+def start_figures(h: StartHeat, d: Drive, path: float, i: float, t_cycle: float) -> StartFigures:
+    """The starts the motor allows at ratio i: FI = (J_M + J_p/i²)/J_M, k_L = M_λ/(M_λ − M_p/i)
+    (the start at M_λ against M_p/i), u the running copper heat — the RMS over the cycle with
+    the start and the stop at zero torque, their heat being what the starts count — over the
+    rated torque, cdf 1 (u already averages over the cycle)."""
+    load = d.load_torque_Nm / i
+    fi = inertia_factor(h.motor_inertia_kgm2, reflected_inertia(d.load_inertia_kgm2, i))
+    k_l = d.accel_torque_Nm / (d.accel_torque_Nm - load) if d.accel_torque_Nm > load else math.inf
+    phases = cycle(d, path, i, t_cycle) or []
+    running = [p if p.name == "run" else p._replace(torque_Nm=0.0) for p in phases]
+    u = rms_torque(running, STANDSTILL_COOLING) / h.rated_torque_Nm if running else math.inf
+    z = allowed_starts_per_hour(h.no_load_starts_per_hour, fi, k_l, u, 1.0, h.braking_heat)
+    return StartFigures(h.starts_per_hour, z, h.no_load_starts_per_hour, fi, k_l, u, h.braking_heat)
 
 
 def cycle(d: Drive, path_rad: float, i: float, cycle_time_s: float) -> list[Phase] | None:
@@ -111,25 +177,38 @@ def _refine(f, a: float, b: float, n: int = 80) -> float:
 
 
 def fastest_passing(
-    d: Drive, path: float, t_cycle: float, rated: float, fastest: float
+    d: Drive,
+    path: float,
+    t_cycle: float,
+    rated: float,
+    fastest: float,
+    heat: StartHeat | None = None,
 ) -> tuple[float, float] | None:
-    """The fastest ratio whose cycle passes (move fits, RMS ≤ rated): (ratio, move time).
-    The unconstrained optimum when it passes; otherwise the constraint binds, and the best
-    ratio lies on the boundary of the passing set, found by bisection from a grid."""
+    """The fastest ratio whose cycle passes (move fits, RMS ≤ rated, and with a start-heat
+    budget the starts per hour within those allowed): (ratio, move time). The unconstrained
+    optimum when it passes; otherwise a constraint binds, and the best ratio lies on the
+    boundary of the passing set, found by bisection from a grid."""
 
     at = cycle_figures(d, path, t_cycle)
 
+    def starts_ok(i: float) -> bool:
+        if heat is None:
+            return True
+        return (
+            heat.starts_per_hour <= start_figures(heat, d, path, i, t_cycle).allowed_starts_per_hour
+        )
+
     def ok(i: float) -> bool:
         t, r = at(i)
-        return t <= t_cycle and r <= rated
+        return t <= t_cycle and r <= rated and starts_ok(i)
 
     if ok(fastest):
         return fastest, at(fastest)[0]
     grid = _grid(d, fastest)
     moves, flags = [], []  # each grid point evaluated once: its move time and its verdict
-    for t, r in map(at, grid):
+    for i, (t, r) in zip(grid, map(at, grid), strict=True):
         moves.append(t)
-        flags.append(t <= t_cycle and r <= rated)
+        flags.append(t <= t_cycle and r <= rated and starts_ok(i))
     best: tuple[float, float] | None = None
     for k, i in enumerate(grid):
         if not flags[k]:
@@ -186,6 +265,7 @@ class CycleAtRatio:
     rated_torque_Nm: float
     min_rms_ratio: float  # the ratio of least RMS torque whose move fits (DU-02)
     min_rms_torque_Nm: float
+    starts: StartFigures | None = None  # a catalog induction motor's starts (DU-06)
 
     @property
     def utilisation(self) -> float:
@@ -196,12 +276,49 @@ class CycleAtRatio:
         return reflected_inertia(self.drive.load_inertia_kgm2, self.ratio) / self.drive.inertia_kgm2
 
 
+def most_starts(
+    d: Drive, path: float, t_cycle: float, rated: float, fastest: float, heat: StartHeat
+) -> tuple[float, float]:
+    """The most starts per hour the motor allows at any ratio of the grid whose cycle
+    passes the torques (move fits, RMS ≤ rated), and that ratio; (0, fastest) where none."""
+    at = cycle_figures(d, path, t_cycle)
+    best = (0.0, fastest)
+    for i in _grid(d, fastest):
+        t, r = at(i)
+        if t <= t_cycle and r <= rated:
+            z = start_figures(heat, d, path, i, t_cycle).allowed_starts_per_hour
+            if z > best[0]:
+                best = (z, i)
+    return best
+
+
+def _starts_fail(
+    s: Solved, rated: float, path: float, t_cycle: float, heat: StartHeat
+) -> tuple[CycleFit, str]:
+    """A motor whose torques pass the cycle at some ratio but whose starts do not at any."""
+    i_fast = s.solution.ratio
+    z, i = most_starts(s.drive, path, t_cycle, rated, i_fast, heat)
+    t_fast = move_and_rms(s.drive, path, i_fast, t_cycle)[0]
+    need = heat.starts_per_hour
+    return CycleFit(t_fast, i_fast, False, f"{need:.4g} starts/h > {z:.4g} allowed"), (
+        f"motor {s.name}: {need:.4g} starts/h (a direct-on-line start and an electric stop "
+        f"every {t_cycle:g} s), at most {z:.4g} allowed at any ratio whose RMS torque passes "
+        f"(i = {i:.4g}): the heat of its starts overheats it"
+    )
+
+
 def fit_cycle(
-    s: Solved, rated: float, path: float, cycle_time_s: float, required_s: float | None
+    s: Solved,
+    rated: float,
+    path: float,
+    cycle_time_s: float,
+    required_s: float | None,
+    heat: StartHeat | None = None,
 ) -> tuple[CycleFit, str | None]:
     """A motor against the cycle: at the fastest ratio whose cycle passes, its move time and
-    whether it passes (the move fits, the RMS torque within the rated one, and with a required
-    time the move meets it); where it fails, the reason the infeasible report gives."""
+    whether it passes (the move fits, the RMS torque within the rated one, with a start-heat
+    budget the starts per hour within those allowed, and with a required time the move meets
+    it); where it fails, the reason the infeasible report gives."""
     name, d, i_fast = s.name, s.drive, s.solution.ratio
     t_fast, rms_fast = move_and_rms(d, path, i_fast, cycle_time_s)
     if t_fast > cycle_time_s:
@@ -209,7 +326,9 @@ def fit_cycle(
             f"motor {name}: its fastest move takes {t_fast:.4g} s (i = {i_fast:.4g}), "
             f"longer than duty.cycle_time_s = {cycle_time_s:g} s"
         )
-    found = fastest_passing(d, path, cycle_time_s, rated, i_fast)
+    found = fastest_passing(d, path, cycle_time_s, rated, i_fast, heat)
+    if found is None and heat is not None and fastest_passing(d, path, cycle_time_s, rated, i_fast):
+        return _starts_fail(s, rated, path, cycle_time_s, heat)
     if found is None:
         i_min, rms_min = least_rms(d, path, cycle_time_s, i_fast)
         return CycleFit(t_fast, i_fast, False, f"RMS {rms_fast:.4g} > {rated:.4g} N·m"), (
@@ -234,16 +353,27 @@ def choose_for_cycle(
     cycle_time_s: float,
     required_s: float | None,
     trace: Trace,
+    heats: dict[str, StartHeat] | None = None,
 ) -> tuple[Solved, float]:
     """The motor and ratio for the cycle: the fastest that passes (DU-01), or with a required
-    time the smallest that passes (MO-06); none: no feasible design."""
+    time the smallest that passes (MO-06); none: no feasible design. ``heats``: the start-heat
+    budgets of catalog induction motors, whose starts per hour must pass too."""
+    heats = heats or {}
     rows: dict[str, CycleFit] = {}
     reasons = []
     for s in solved:
-        rows[s.name], reason = fit_cycle(s, rated[s.name], path, cycle_time_s, required_s)
+        rows[s.name], reason = fit_cycle(
+            s, rated[s.name], path, cycle_time_s, required_s, heats.get(s.name)
+        )
         if reason is not None:
             reasons.append(reason)
     if not any(r.passes for r in rows.values()):
+        if any("starts/h" in r.why_not for r in rows.values()):
+            reasons.append(
+                "a cage motor started direct-on-line and stopped electrically this often is "
+                "limited by the heat of its starts: allow a longer duty.cycle_time_s, or list "
+                "motors for frequent starting (servo or inverter-fed) in [[positioning.motors]]"
+            )
         raise InfeasibleError("no feasible design: no motor passes the duty cycle", reasons)
     if required_s is None:
         best = trace.apply(rules.duty.motor_for_cycle, rows)
@@ -253,8 +383,16 @@ def choose_for_cycle(
     return next(s for s in solved if s.name == best), rows[best].ratio
 
 
-def cycle_at(s: Solved, i: float, rated: float, path: float, cycle_time_s: float) -> CycleAtRatio:
-    """The chosen motor's cycle at ratio ``i``, with the ratio of least RMS torque beside it."""
+def cycle_at(
+    s: Solved,
+    i: float,
+    rated: float,
+    path: float,
+    cycle_time_s: float,
+    heat: StartHeat | None = None,
+) -> CycleAtRatio:
+    """The chosen motor's cycle at ratio ``i``, with the ratio of least RMS torque beside it
+    and, with a start-heat budget, its starts."""
     phases = cycle(s.drive, path, i, cycle_time_s)
     assert phases is not None
     i_min, rms_min = least_rms(s.drive, path, cycle_time_s, s.solution.ratio)
@@ -268,6 +406,7 @@ def cycle_at(s: Solved, i: float, rated: float, path: float, cycle_time_s: float
         rated_torque_Nm=rated,
         min_rms_ratio=i_min,
         min_rms_torque_Nm=rms_min,
+        starts=None if heat is None else start_figures(heat, s.drive, path, i, cycle_time_s),
     )
 
 
@@ -298,6 +437,22 @@ def explain_cycle(c: CycleAtRatio, trace: Trace) -> bool:
         "Seed 003's move starts and brakes at the motor's M_λ: the peak is M_λ by "
         "construction, the motor's own starting and braking torque.",
     )
+    if c.starts is not None:
+        z = c.starts
+        trace.apply(
+            rules.duty.starts,
+            z.starts_per_hour,
+            z.allowed_starts_per_hour,
+            f"z = z0·(1 − u²)/(FI·k_L·(1 + k_b)) = {z.no_load_starts_per_hour:.4g}·(1 − "
+            f"{z.running_utilisation:.3g}²)/({z.inertia_factor:.4g}·{z.load_factor:.4g}·"
+            f"(1 + {z.braking_heat:g})): z0 = 3600·P_loss·(1 + β0)/2/(J_M·ω_s²) from the "
+            f"catalog's rated losses P_n·(100/η − 1) and rotor inertia, β0 = "
+            f"{STANDSTILL_COOLING:g} (self-ventilated); FI = (J_M + J_p/i²)/J_M; k_L = "
+            "M_λ/(M_λ − M_p/i); u the running torque's RMS over the rated torque (the start "
+            "and the stop counted here, not in it); k_b = 1, the seed's braking at M_λ taken "
+            "as a DC-injection stop. A start heats rotor and stator by J·ω0²/2 each "
+            "(R1/R2' = 1): Chilikin, ch. 9.",
+        )
     return trace.apply(rules.duty.inertia_ratio, c.inertia_ratio)
 
 
@@ -352,6 +507,25 @@ def cycle_checks(c: CycleAtRatio, cycle_time_s: float) -> list[Check]:
             rated / rms if rms > 0 else math.inf,
             rules.duty.KLYUCHEV + rules.duty.DUTY_METHOD,
         ),
+        *_starts_checks(c),
+    ]
+
+
+def _starts_checks(c: CycleAtRatio) -> list[Check]:
+    """A catalog induction motor's starts per hour within those it allows."""
+    if c.starts is None:
+        return []
+    z = c.starts
+    return [
+        Check(
+            "duty_starts_per_hour",
+            "starts per hour within what the motor allows",
+            z.starts_per_hour,
+            z.allowed_starts_per_hour,
+            "1/h",
+            z.allowed_starts_per_hour / z.starts_per_hour,
+            rules.duty.IEC_60034_1 + rules.duty.DUTY_METHOD,
+        )
     ]
 
 
@@ -378,8 +552,22 @@ def duty_out(c: CycleAtRatio, cycle_time_s: float) -> DutyOut:
         duty_type="cycle",
         min_rms_ratio=c.min_rms_ratio,
         min_rms_torque_Nm=c.min_rms_torque_Nm,
+        **_starts_fields(c.starts),
         phases=phases_out(c.phases),
     )
+
+
+def _starts_fields(z: StartFigures | None) -> dict:
+    """The duty table's starts, where they are counted."""
+    if z is None:
+        return {}
+    return {
+        "starts_per_hour": z.starts_per_hour,
+        "allowed_starts_per_hour": z.allowed_starts_per_hour,
+        "no_load_starts_per_hour": z.no_load_starts_per_hour,
+        "inertia_factor": z.inertia_factor,
+        "standstill_cooling_factor": STANDSTILL_COOLING,
+    }
 
 
 def advise_duty(
@@ -390,14 +578,17 @@ def advise_duty(
     seed_best: str,
     trace: Trace,
     required_s: float | None = None,
+    heats: dict[str, StartHeat] | None = None,
 ) -> tuple[DutyOut, list[Check], list[str]]:
     """Choose motor and ratio for the cycle; the checks and warnings of that choice.
 
     ``required_s`` — a required move time: a motor passes only if its move at the cycle's
     ratio also meets it, and the smallest that passes is chosen (MO-06); without it, the
-    fastest that passes (DU-01)."""
-    best, i = choose_for_cycle(solved, rated, path, cycle_time_s, required_s, trace)
-    c = cycle_at(best, i, rated[best.name], path, cycle_time_s)
+    fastest that passes (DU-01). ``heats`` — the catalog induction motors' start-heat
+    budgets: their starts per hour must pass too (DU-06)."""
+    heats = heats or {}
+    best, i = choose_for_cycle(solved, rated, path, cycle_time_s, required_s, trace, heats)
+    c = cycle_at(best, i, rated[best.name], path, cycle_time_s, heats.get(best.name))
     within = explain_cycle(c, trace)
     warnings = cycle_warnings(c, within, seed_best, best.solution.ratio, required_s is not None)
     return duty_out(c, cycle_time_s), cycle_checks(c, cycle_time_s), warnings
@@ -409,3 +600,11 @@ def rated_torques(req, cat) -> dict[str, float]:
     if req.positioning.motors:
         return {m.name: m.rated_torque_Nm for m in req.positioning.motors}
     return {m.model: m.rated_torque_Nm for m in cat.motors}
+
+
+def start_heats(req, cat) -> dict[str, StartHeat]:
+    """The start-heat budgets of the catalog's induction motors (none for listed motors, whose
+    kind and losses are not given: a servo or an inverter-fed motor is not limited so)."""
+    if req.positioning.motors:
+        return {}
+    return {m.model: start_heat(m, req.duty.cycle_time_s) for m in cat.motors}

@@ -2,6 +2,7 @@
 
 from advisor.core.report import ReportTable
 from advisor.duty.report import DutyOut
+from rules.motion import INERTIA_BAND
 
 
 class MotionCandidateOut(ReportTable):
@@ -60,6 +61,16 @@ def design_ratio(report) -> tuple[str, float, float]:
     return motion.motor, motion.optimal_ratio, motion.move_time_s
 
 
+def _fastest_time(motion) -> str:
+    """The fastest motor's time as the required time is judged: where its inertia is an
+    estimate counted higher (MO-05), said so."""
+    t = motion.fastest_move_time_s
+    nominal = next(c.move_time_s for c in motion.candidates if c.name == motion.fastest_motor)
+    if t == nominal:
+        return f"{t:.4g} s"
+    return f"{t:.4g} s with its estimated inertia {INERTIA_BAND * 100:.0f} % higher"
+
+
 def headline(report) -> str:
     """The design in a few words: motor, ratio, move time; with a required move time, that
     time and the fastest motor beside the chosen one (MO-05); with a duty cycle, the cycle's
@@ -70,7 +81,7 @@ def headline(report) -> str:
     if motion.required_move_time_s is not None:
         text += f", required ≤ {motion.required_move_time_s:.4g} s"
         if motion.fastest_motor is not None and motion.fastest_motor != motor:
-            text += f" (fastest: motor {motion.fastest_motor}, {motion.fastest_move_time_s:.4g} s)"
+            text += f" (fastest: motor {motion.fastest_motor}, {_fastest_time(motion)})"
     if report.design.duty is not None and (motor, ratio) != (motion.motor, motion.optimal_ratio):
         single = "fastest move" if motion.required_move_time_s is None else "the move's choice"
         text += (

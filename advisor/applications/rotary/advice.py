@@ -579,7 +579,7 @@ def _one_way(
         req.one_way, sized_motor, sized_output, power, trace, at_output=at_output
     )
     device = device.replace(basis=device.basis + _sized_for(req))
-    checks = []
+    checks = _holding_checks(req, device, q, eta, at_output)
     if device.efficiency < 1.0:
         # the motor torque (and so the losses the speed choice weighed) already includes the
         # device's 1/η_d: this check states that share of the losses by name
@@ -598,10 +598,31 @@ def _one_way(
     return device, checks, warnings
 
 
+def _holding_checks(req: Requirements, device, q: float, eta: float, at_output: bool):
+    """The device holds the load with the power off (:mod:`advisor.one_way.holding`): the
+    torque it is sized for against the one the standing load gives it — the output torque
+    or, if larger, the emergency stop's, × f_B; at the motor side through the back-driven
+    wave gear, M·η/q (its back-driven efficiency taken equal to its forward one, as in the
+    duty cycle), so the margin is 1/η² there. At the output the load's torque is the one the
+    device is sized for: a check of it could only state 1.000, so only a gear's self-locking
+    is checked there."""
+    from advisor.one_way.holding import device_checks, self_locking_check
+
+    out, stop = req.rotary.torque_Nm, req.rotary.emergency_stop_torque_Nm
+    held = max(out, stop or 0.0)
+    what = "the emergency stop's" if held > out else "the output torque"
+    f_b = service_factor(req.design).value
+    if at_output:
+        locking = self_locking_check(device.type)
+        return [locking] if locking else []
+    how = f"{what} {held:.4g} N·m back through the wave gear, M·η/q = {held:.4g}·{eta:.6g}/{q:.4g}"
+    return device_checks(device.type, device.torque_Nm, held * eta / q, f_b, how)
+
+
 def _sized_for(req: Requirements) -> str:
-    """What the device is sized for, in words, where it is more than the output torque: it
-    holds the emergency stop's momentary peak by its sizing (a check of it against the same
-    torque could only state a margin of 1.000)."""
+    """What the device is sized for, in words, where it is more than the output torque: the
+    emergency stop's momentary peak (the holding check, :func:`_holding_checks`, states the
+    torque it holds against it)."""
     out, stop = req.rotary.torque_Nm, req.rotary.emergency_stop_torque_Nm
     f_b = service_factor(req.design).value
     if (stop is None or stop <= out) and f_b == 1.0:

@@ -269,6 +269,8 @@ def _iec_cycle(req, q: float, eta: float, w: float, frame: Frame, holder: Holder
     run_torque = _at_motor(rot.torque_Nm, q, eta, holder)
     cdf = duty.cyclic_duration_factor or 1.0
     period = 3600.0 / duty.starts_per_hour if t in ("S4", "S5", "S7") else duty.cycle_time_s
+    if t == "S2":  # one run of duration_min, checked as S1 (its losses against the limit)
+        period = duty.duration_min * 60.0
     on = cdf * period if t != "S7" else period
     rest = duty_calc.Phase("rest", period - on, 0.0, 0.0, _held(rot.torque_Nm, q, eta, holder))
     if t in ("S1", "S2"):
@@ -311,8 +313,8 @@ def _iec_starts(req, q, eta, w, frame: Frame, holder: Holder, on: float, rest):
             tb = _electric_stop_time(req.rotary.torque_Nm, (jl, jm), q, eta * eta_d, w, peak, tb)
     if ta + tb > on:
         return [], [
-            f"{t}: starting at the peak torque {peak:.3g} N·m takes {ta:.3g} s, braking "
-            f"{tb:.3g} s: more than the time under load, {on:.4g} s"
+            f"{w * RPM:.6g} rpm: {t}: starting at the peak torque {peak:.3g} N·m takes "
+            f"{ta:.3g} s, braking {tb:.3g} s: more than the time under load, {on:.4g} s"
         ]
     out = [
         duty_calc.Phase("start", ta, 0.0, w, peak),
@@ -423,6 +425,8 @@ class CycleResult(NamedTuple):
     peak: float = 0.0
     peak_limit: float = 0.0
     losses: list | tuple = ()  # (losses [W], time [s]) per phase
+    #: the winding's highest rise in the settled cycle (first-order model)  [K]
+    peak_rise_K: float = 0.0
 
 
 def evaluate(
@@ -452,7 +456,44 @@ def evaluate(
             f"({req.duty.peak_torque_factor:g} × the continuous {frame.continuous_torque():.4g})"
         )
     losses = [(c + k, dt) for (c, k), dt in parts]
-    return CycleResult(phases, problems, copper, core, total, peak, peak_limit, losses)
+    rise = peak_rise(losses, frame)
+    if not bldc_rules.within_limit(rise, CLASS_F_RISE_K):
+        problems.append(
+            f"{speed_rpm:g} rpm: within a cycle the winding peaks at {rise:.4g} K rise "
+            f"(first-order model, τ = {frame.data.time_constant_s:g} s), above the "
+            f"{CLASS_F_RISE_K:g} K of class F (+ {bldc_rules.LIMIT_REL_TOL:.1%} allowance): "
+            "the cycle is long against the motor's time constant, its mean losses do not decide"
+        )
+    return CycleResult(phases, problems, copper, core, total, peak, peak_limit, losses, rise)
+
+
+def peak_rise(losses: list | tuple, frame: Frame) -> float:
+    """The winding's highest rise over the settled cycle, first-order model.
+
+        R = ΔT_F/P_limit,   ΔT₊ = ΔT·e^(−t/τ) + P·R·(1 − e^(−t/τ)) phase by phase
+
+    The cycle-averaged losses decide only for a cycle short against τ (the method of
+    equivalent quantities, Klyuchev §11; Chilikin ch. 9); a phase long against τ heats the
+    winding to its own P·R, which this rise shows.
+
+    Parameters
+    ----------
+    losses : list
+        (losses [W], time [s]) per phase of the cycle
+    frame : Frame
+        Its loss limit P_limit [W] and thermal time constant τ [s]
+
+    Returns
+    -------
+    float
+        Peak rise of the periodic steady state [K] (:func:`advisor.calc.duty.periodic_peak_rise`)
+
+    References
+    ----------
+    IEC 60034-1, class 155 (F): 105 K by resistance; Klyuchev §11.
+    """
+    r_th = CLASS_F_RISE_K / frame.limit_W
+    return duty_calc.periodic_peak_rise(list(losses), r_th, frame.data.time_constant_s)
 
 
 def segment_loads_within_rating(req) -> None:
@@ -576,27 +617,22 @@ class _Thermal(NamedTuple):
 
 
 def _thermal(e: CycleResult, frame: Frame, t_cycle: float) -> _Thermal:
-    """First-order thermal model over repeated cycles, R from the limit and class F."""
+    """First-order thermal model over repeated cycles, R from the limit and class F: enough
+    cycles from cold to span 5τ (within 1 − e^(−5) = 99.3 % of the settled rise), thinned to
+    about 400 points."""
     tau = frame.data.time_constant_s
     r_th = CLASS_F_RISE_K / frame.limit_W
-    n = max(1, min(2000, math.ceil(5.0 * tau / t_cycle)))
+    n = max(1, math.ceil(5.0 * tau / t_cycle))
     hist = duty_calc.thermal_history(e.losses, r_th, tau, n, max_points=400)
-    return _Thermal(r_th, hist, duty_calc.periodic_peak_rise(e.losses, r_th, tau))
+    return _Thermal(r_th, hist, e.peak_rise_K)
 
 
-def _duty_warnings(ir: float, within: bool, thermal: _Thermal, tau: float) -> list[str]:
+def _duty_warnings(ir: float, within: bool) -> list[str]:
     warnings = []
     if not within:
         warnings.append(
             f"duty: the load's inertia at the motor is {ir:.3g} times the motor's (guideline "
             f"{duty_rules.INERTIA_RATIO_GUIDELINE:g})"
-        )
-    peak_rise = thermal.peak_rise_K
-    if peak_rise > CLASS_F_RISE_K * (1 + 1e-9):
-        warnings.append(
-            f"duty: within a cycle the winding peaks at {peak_rise:.4g} K rise (first-order "
-            f"model, τ = {tau:g} s), above the {CLASS_F_RISE_K:g} K of class F, although the "
-            "cycle's mean losses pass: the cycle is long against the motor's time constant"
         )
     return warnings
 
@@ -642,7 +678,27 @@ def _duty_checks(e: CycleResult, frame: Frame) -> list[Check]:
                 "the advisor's duty-cycle method, docs/reference/duty.md; duty.peak_torque_factor"
             ),
         ),
+        _peak_rise_check(e.peak_rise_K),
     ]
+
+
+def _peak_rise_check(rise_K: float) -> Check:
+    """The winding's peak rise of the settled cycle against class F's 105 K, with the
+    allowance of the losses' check: R maps the loss limit onto 105 K, so a cycle of constant
+    losses passes both or neither."""
+    allowed = CLASS_F_RISE_K * (1.0 + bldc_rules.LIMIT_REL_TOL)
+    return Check(
+        "duty_peak_rise",
+        f"winding's peak temperature rise of the cycle within class F ({CLASS_F_RISE_K:g} K + "
+        f"{bldc_rules.LIMIT_REL_TOL:.1%} allowance)",
+        rise_K,
+        allowed,
+        "K",
+        allowed / rise_K if rise_K > 0 else math.inf,
+        (cite("iec-60034-1", "class 155 (F) by resistance") + duty_rules.KLYUCHEV).with_note(
+            "first-order thermal model of the advisor's duty-cycle method, docs/reference/duty.md"
+        ),
+    )
 
 
 def advise_duty(
@@ -661,7 +717,7 @@ def advise_duty(
     t_cycle = duty_calc.cycle_time(phases)
     tau = frame.data.time_constant_s
     thermal = _thermal(e, frame, t_cycle)
-    warnings = _duty_warnings(ir, within, thermal, tau)
+    warnings = _duty_warnings(ir, within)
     out_J, back_J = duty_calc.energies(phases)
     out = DutyOut.make(
         motor=f"{speed_rpm:g} rpm",
@@ -680,7 +736,8 @@ def advise_duty(
         energy_per_cycle_J=out_J,
         regenerated_per_cycle_J=back_J,
         mean_speed_rpm=duty_calc.mean_speed(phases) * RPM,
-        cycles_per_hour=3600.0 / t_cycle,
+        # S1 and S2 run without a cycle that repeats
+        cycles_per_hour=None if duty.duty_type in ("S1", "S2") else 3600.0 / t_cycle,
         duty_type=duty.duty_type or "cycle",
         held_by=holder.words(),
         losses_W={"copper": e.copper, "iron_and_magnets": e.core, "total": e.total},

@@ -148,14 +148,14 @@ class DriveReq(StrictModel):
     """The servo drive's DC bus ([drive]): where the energy the motor gives back goes."""
 
     bus_voltage_V: Annotated[
-        float, number_field(ge=12, le=2000, desc="nominal DC-bus voltage, {range} V")
+        float, number_field(ge=12, le=2000, desc="nominal DC-bus voltage, {range}")
     ] = 300.0
     bus_max_voltage_V: Annotated[
         float,
         number_field(
             ge=12,
             le=2500,
-            desc="largest DC-bus voltage (the braking chopper's threshold), {range} V",
+            desc="largest DC-bus voltage (the braking chopper's threshold), {range}",
         ),
     ] = 400.0
     bus_capacitance_uF: Annotated[
@@ -163,7 +163,7 @@ class DriveReq(StrictModel):
         number_field(
             gt=0,
             le=1e6,
-            desc="the drive's DC-bus capacitance, {range} µF; left out: the resistor is "
+            desc="the drive's DC-bus capacitance, {range}; left out: the resistor is "
             "sized as if the bus took nothing",
         ),
     ] = None
