@@ -1,6 +1,7 @@
 """Rules of the sliding screw–nut stage (seed 001 and the power-screw design texts)."""
 
 import heapq
+import re
 from collections.abc import Callable
 from operator import attrgetter
 from typing import NamedTuple
@@ -124,6 +125,19 @@ def thread_label(thread: str, starts: int) -> str:
         return thread
     d, p = thread[2:].split("x")
     return f"Tr{d}x{float(p) * starts:g}(P{p})"
+
+
+#: ``Tr20x8(P4)``: diameter, lead, then pitch (GOST 24739-81).
+_MULTI_START = re.compile(r"Tr(?P<d>[0-9.]+)x(?P<lead>[0-9.]+)\(P(?P<p>[0-9.]+)\)")
+
+
+def thread_and_starts(label: str) -> tuple[str, int]:
+    """The inverse of :func:`thread_label`: ``Tr20x8(P4)`` → (``Tr20x4``, 2), the thread
+    (d x P, GOST 24738-81) and its starts = lead / pitch; a one-start ``Tr20x4`` → (it, 1)."""
+    m = _MULTI_START.fullmatch(label)
+    if m is None:
+        return label, 1
+    return f"Tr{m['d']}x{m['p']}", round(float(m["lead"]) / float(m["p"]))
 
 
 #: :attr:`DriveOption.motor_size`, then :attr:`DriveOption.screw_weight`, as one flat tuple:

@@ -53,3 +53,38 @@ async def test_an_imposed_thread_is_said_imposed(wizard):
         text = await _open_compare(pilot, wizard)
         assert "the requirement imposes the thread." in text and "runners-up" not in text
         assert isinstance(app.query_one("#compare-box Static"), Static)
+
+
+def _multi_start_doc() -> dict:
+    """A fast stroke (0.3 m in 1 s, 3000 N): the chosen screw and its runners-up are
+    multi-start (the chosen one Tr22x20(P5), 4 starts of pitch 5)."""
+    return {
+        "application": {"kind": "linear", "title": "multi-start"},
+        "linear": {
+            "force_N": 3000,
+            "stroke_m": 0.3,
+            "travel_time_s": 1.0,
+            "support_span_m": 0.4,
+        },
+        "motor": {"kind": "induction"},
+    }
+
+
+async def test_use_on_a_multi_start_runner_up_imposes_its_thread_and_starts(wizard):
+    """GOST 24739-81 writes a multi-start screw TrD x lead (P pitch): Tr24x20(P5) is the
+    thread Tr24x5 (d 24 mm, P 5 mm) cut with 20 / 5 = 4 starts. "Use" puts both in the
+    requirement (the designation itself is no thread the requirement takes), and the
+    chosen row shows the chosen screw's designation, as its runners-up do."""
+    app = DriveAdvisorApp(_multi_start_doc(), save_drafts=False, offer_draft=False)
+    async with app.run_test(size=wizard.SIZE) as pilot:
+        text = await _open_compare(pilot, wizard)
+        assert "▶ Tr22x20(P5)" in text  # SCR-04: "Thread Tr22x20(P5) with 4A90L6"
+        labels = [str(b.label) for b in app.query("#compare-box Button")]
+        assert labels[0] == "Use Tr24x20(P5)"
+        start = app.results_version
+        app.query("#compare-box Button").first().press()
+        await wizard.settle(pilot, start)
+        assert app.doc["screw"]["thread"] == "Tr24x5"  # d 24 mm, P 5 mm
+        assert app.doc["screw"]["starts"] == 4  # lead / pitch = 20 / 5
+        screw = app.report.design.screw  # computed: the requirement is accepted
+        assert screw.designation == "Tr24x20(P5)" and screw.imposed

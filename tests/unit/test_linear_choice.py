@@ -307,3 +307,14 @@ def test_a_multi_start_screw_is_named_so_in_the_summary_and_the_wizard():
     assert "3 (lead 24 mm)" in console.export_text()
     one = advise(parse_requirements(_req(2000, 1.0, 3, 1.2, starts=1)))
     assert "starts" not in headline(one) + dict(summary_rows(one))["screw"]
+
+
+def test_thread_and_starts_reads_a_designation_back():
+    """GOST 24739-81: TrD x lead (P pitch); starts = lead / pitch: Tr30x20(P10) is Tr30x10
+    with 20 / 10 = 2 starts, Tr24x20(P5) Tr24x5 with 4; a one-start Tr16x2 is itself, 1."""
+    assert screw_rules.thread_and_starts("Tr30x20(P10)") == ("Tr30x10", 2)
+    assert screw_rules.thread_and_starts("Tr24x20(P5)") == ("Tr24x5", 4)
+    assert screw_rules.thread_and_starts("Tr16x2") == ("Tr16x2", 1)
+    for thread, starts in (("Tr14x2", 4), ("Tr26x3", 2), ("Tr12x3", 1)):
+        label = screw_rules.thread_label(thread, starts)
+        assert screw_rules.thread_and_starts(label) == (thread, starts)

@@ -131,20 +131,31 @@ def _runners_section(report, runners: list[RunnerUp]) -> Any:
     s, m = report.design.screw, report.design.motor
     r = table("thread", "motor", "motor rating", "travel s")
     rating = f"{m.rated_power_kW:g} kW, {2 * m.pole_pairs}-pole"
-    r.add_row(mark(True, s.thread), m.model, rating, _num(m.travel_time_s))
+    r.add_row(mark(True, s.designation), m.model, rating, _num(m.travel_time_s))
     options: list[Any] = []
     for x in runners:
         r.add_row(mark(False, x.thread), x.motor, x.detail, _num(x.travel_time_s))
         label = f"Use {x.thread}"
-        if x.thread != s.thread and x.motor != "—" and all(o.label != label for o in options):
-            options.append(Option(label, ((("screw", "thread"), x.thread),)))
+        if x.thread != s.designation and x.motor != "—" and all(o.label != label for o in options):
+            options.append(Option(label, _use_thread(x.thread)))
     return Section(
         "Thread and motor: the runners-up",
         r,
         decision(report, "SCR-04"),
         tuple(options),
-        "“Use” imposes the thread (screw.thread); the motor then follows from it.",
+        "“Use” imposes the thread and its starts (screw.thread, screw.starts); the motor "
+        "then follows from them.",
     )
+
+
+def _use_thread(designation: str) -> tuple[tuple[tuple[str, ...], Any], ...]:
+    """The requirement values that impose a runner-up: a designation such as Tr24x20(P5)
+    (GOST 24739-81: lead 20, pitch 5) is the thread Tr24x5 with 4 starts; the requirement
+    takes the thread as d x P and the starts apart."""
+    from rules import screw as screw_rules
+
+    thread, starts = screw_rules.thread_and_starts(designation)
+    return ((("screw", "thread"), thread), (("screw", "starts"), starts))
 
 
 def _num(v) -> str:
