@@ -109,10 +109,12 @@ def _checks(a: dict, b: dict) -> list[Change]:
     ca, cb = of(a), of(b)
 
     def said(c: dict | None) -> str:
+        from advisor.core.report import margin_text
+
         if c is None:
             return ""
         shown = f"{_text(c['value'])} against {_text(c['limit'])} {c['unit']}".strip()
-        return f"margin {c['margin']:.3f} ({shown})"
+        return f"margin {margin_text(c['margin'])} ({shown})"
 
     out = []
     for k in [*ca, *(k for k in cb if k not in ca)]:

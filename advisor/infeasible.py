@@ -11,7 +11,7 @@ from typing import Any
 
 from advisor import __version__
 from advisor.core.errors import InfeasibleError
-from advisor.core.report import Report, ReportHeader, ReportTable
+from advisor.core.report import Report, ReportHeader, ReportTable, margin_text
 
 
 class InfeasibleOut(ReportTable):
@@ -37,7 +37,8 @@ def shortfall(name: str, value: float, limit: float, unit: str, margin: float) -
     less = (1.0 - margin) * 100.0
     unit = f" {unit}" if unit else ""
     return (
-        f"{name}: {value:.4g}{unit} against the limit {limit:.4g}{unit} (margin {margin:.3f}): "
+        f"{name}: {value:.4g}{unit} against the limit {limit:.4g}{unit} "
+        f"(margin {margin_text(margin)}): "
         f"{more:.0f} % more capacity, or {less:.0f} % less demand"
     )
 

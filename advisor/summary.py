@@ -10,7 +10,7 @@ from pathlib import Path
 from typing import TextIO
 
 from advisor.core.io_safety import printable
-from advisor.core.report import Report
+from advisor.core.report import Report, margin_text
 
 
 def summary_lines(report: Report, path: Path) -> list[str]:
@@ -31,7 +31,7 @@ def summary_lines(report: Report, path: Path) -> list[str]:
     ]
     if report.checks:
         worst = min(report.checks, key=lambda c: c.margin)
-        rows.append(("lowest margin", printable(f"{worst.name}: {worst.margin:.3f}")))
+        rows.append(("lowest margin", printable(f"{worst.name}: {margin_text(worst.margin)}")))
     else:
         rows.append(("lowest margin", "none: no check applies to this design"))
     width = max(len(name) for name, _ in rows)

@@ -11,7 +11,7 @@ from advisor.core.cite import Cite, cited_ids, note, text
 from advisor.core.errors import InfeasibleError
 from advisor.core.ignored import ignored
 from advisor.core.reading import Requirements
-from advisor.core.report import DecisionOut, Report, ReportHeader, SourceOut, check_out
+from advisor.core.report import DecisionOut, Report, ReportHeader, SourceOut, check_out, margin_text
 from advisor.core.rulebook import Trace
 from catalogs import load_catalogs
 
@@ -48,7 +48,7 @@ def advise_with(req: Requirements, cat) -> Report:
             [
                 f"{c.name}: {c.value:.4g}"
                 + (f" × service factor {c.factor:g}" if getattr(c, "factor", None) else "")
-                + f" against {c.limit:.4g} {c.unit} (margin {c.margin:.3f})"
+                + f" against {c.limit:.4g} {c.unit} (margin {margin_text(c.margin)})"
                 for c in failed
             ],
             checks=finite_checks(checks),

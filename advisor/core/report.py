@@ -9,6 +9,7 @@ import copy
 import inspect
 import math
 import re
+from decimal import Decimal
 from typing import Any, ClassVar
 
 from advisor.calc.checks import Check
@@ -224,6 +225,38 @@ def round_sig(x: float, digits: int = 6) -> float:
     if x == 0 or not math.isfinite(x):
         return x
     return round(x, digits - 1 - math.floor(math.log10(abs(x))))
+
+
+def ends_in_tie(x: float, decimals: int) -> bool:
+    """Whether ``x`` as written (``repr``) ends in a single 5 just past ``decimals``
+    decimals: a value the report's six-digit rounding left on a tie (5.9075 of 5.907502),
+    which rounding again to ``decimals`` can take the wrong way (5.907, binary 5.90749…).
+
+    >>> ends_in_tie(5.9075, 3), ends_in_tie(5.90751, 3), ends_in_tie(10282.5, 0)
+    (True, False, True)
+    """
+    digits = Decimal(repr(x)).as_tuple()
+    return (
+        isinstance(digits.exponent, int)
+        and -digits.exponent == decimals + 1
+        and digits.digits[-1] == 5
+    )
+
+
+def margin_text(margin: float) -> str:
+    """A check's margin as every view shows it: three decimals of the report's value
+    (:func:`round_sig`, six significant digits), and a fourth where that value is a tie at
+    the third, so the datasheet (which reads the rounded report), the wizard and the
+    summaries (which hold the value as computed) show the same digits.
+
+    >>> margin_text(5.907502), margin_text(5.9075), margin_text(1.51), margin_text(0.98765)
+    ('5.9075', '5.9075', '1.510', '0.988')
+    """
+    if not math.isfinite(margin):
+        return f"{margin:.3f}"
+    value = round_sig(margin)
+    decimals = 4 if ends_in_tie(value, 3) else 3
+    return f"{value:.{decimals}f}"
 
 
 class NonFiniteValue(ValueError):

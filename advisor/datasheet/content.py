@@ -9,7 +9,7 @@ six); curves are left to the plots.
 from dataclasses import dataclass, field
 from typing import Any
 
-from advisor.core.report import curve_part, is_curve
+from advisor.core.report import curve_part, is_curve, margin_text
 from advisor.datasheet.labels import UNITS as UNITS  # re-exported
 from advisor.datasheet.labels import number as number  # re-exported
 from advisor.datasheet.labels import split_key as split_key  # re-exported
@@ -161,10 +161,10 @@ def _probability_checks(u: dict, labels: Labels, conf: str) -> Table:
         rows.append(
             [
                 c["name"],
-                f"{c['nominal_margin']:.3f}",
+                margin_text(c["nominal_margin"]),
                 f"{c['p_pass']:.4f}",
                 f"{c['p_pass_low']:.4f} … {c['p_pass_high']:.4f}",
-                f"{c['margin_p05']:.3f}",
+                margin_text(c["margin_p05"]),
                 *[f"{rho[n]:+.2f}" if modelled and n in rho else "—" for n in names],
             ]
         )
@@ -316,7 +316,7 @@ def _check(c: dict[str, Any]) -> Check:
         value=number(c["value"]),
         limit=number(c["limit"]),
         unit=c["unit"],
-        margin=f"{c['margin']:.3f}",
+        margin=margin_text(c["margin"]),
         status=_status(c),
         source=readable(c["source"]),
     )
@@ -353,7 +353,7 @@ def sheet(
     lowest = min(doc.get("checks", []), key=lambda c: c["margin"], default=None)
     rows = list(summary)
     if lowest is not None:
-        rows.append(("lowest margin", f"{lowest['name']}: {lowest['margin']:.3f}"))
+        rows.append(("lowest margin", f"{lowest['name']}: {margin_text(lowest['margin'])}"))
     rows.append(("checks", _tally(checks)))
     sources = [d["source"] for d in doc.get("decisions", [])] + [
         c["source"] for c in doc.get("checks", [])

@@ -9,10 +9,10 @@ from its words and the unit its suffix names (``outer_diameter_mm`` → "outer d
 
 import math
 import re
-from decimal import Decimal
 from typing import Any
 
 from advisor.core.questions import UNIT_SUFFIXES
+from advisor.core.report import ends_in_tie
 
 #: Units named by the suffixes of report keys: the requirement suffixes and the report's own.
 UNITS = {
@@ -242,16 +242,6 @@ if __name__ == "__main__":
     write_compiled()
 
 
-def _tie(x: float, decimals: int) -> bool:
-    """Whether ``x`` as written ends in a single 5 just past ``decimals`` decimals."""
-    digits = Decimal(repr(x)).as_tuple()
-    return (
-        isinstance(digits.exponent, int)
-        and -digits.exponent == decimals + 1
-        and digits.digits[-1] == 5
-    )
-
-
 def number(x: Any) -> str:
     """A value as a reader wants it: four significant digits, no exponent between 0.001 and
     a million, yes/no for booleans.
@@ -274,7 +264,7 @@ def number(x: Any) -> str:
             return f"{x:g}"
         if 1e-3 <= abs(x) < 1e6:
             decimals = max(0, 3 - math.floor(math.log10(abs(x))))
-            if _tie(x, decimals):  # the report's own rounding made it one: say it unrounded
+            if ends_in_tie(x, decimals):  # the report's own rounding made it one: say it unrounded
                 decimals += 1
             text = f"{x:.{decimals}f}"
             return text.rstrip("0").rstrip(".") if "." in text else text

@@ -9,6 +9,7 @@ from dataclasses import dataclass
 from fnmatch import fnmatchcase
 from typing import Any
 
+from advisor.core.report import margin_text
 from advisor.datasheet.labels import number, split_key
 
 #: A check whose margin is below this passes, but with little to spare: marked "tight".
@@ -131,7 +132,7 @@ def _covered_row(
         c["name"],
         c["id"],
         achieved,
-        f"{c['margin']:.3f}",
+        margin_text(c["margin"]),
         status_of(c),
         len(covering_checks) - 1,
     )
@@ -196,7 +197,7 @@ def _probability_row(doc: dict, label: str, target: Any) -> Required | None:
         f"P(pass) of the design, the lower end of its {conf} interval",
         "",
         f"{number(low)} against {number(target)}",
-        f"{margin:.3f}",
+        margin_text(margin),
         status,
         0,
     )

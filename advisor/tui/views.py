@@ -10,6 +10,7 @@ from rich.text import Text
 from advisor.core import registry
 from advisor.core.io_safety import plain
 from advisor.core.registry import headline
+from advisor.core.report import margin_text
 
 
 def kv(title: str, rows: list[tuple[str, Any]]) -> Table:
@@ -63,7 +64,7 @@ def summary(report, previous=None) -> Group:
     if hold:
         lines.append(plain(hold))
     if worst is not None:
-        lines.append(plain(f"lowest margin: {worst.name} — {worst.margin:.3f}"))
+        lines.append(plain(f"lowest margin: {worst.name} — {margin_text(worst.margin)}"))
     lines.extend(plain(line) for line in probability_lines(report))
     for w in report.warnings:
         lines.append(plain(f"⚠ {w}", "yellow"))
@@ -231,7 +232,7 @@ def checks(report) -> Table:
             Text.assemble(plain(c.name), "\n", plain(c.source, "dim")),
             f"{c.value:.4g} {c.unit}".strip(),
             f"{c.limit:.4g} {c.unit}".strip(),
-            f"{c.margin:.3f}",
+            margin_text(c.margin),
             *p,
             "ok" if c.passed else "FAIL",
         )

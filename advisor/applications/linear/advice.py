@@ -35,6 +35,7 @@ from advisor.core.cite import cite
 from advisor.core.errors import InfeasibleError, InputError
 from advisor.core.ignored import IGNORED_PREFIX
 from advisor.core.reading import Requirements
+from advisor.core.report import margin_text
 from advisor.core.rulebook import Trace
 from advisor.duty.report import DutyOut
 from catalogs import Catalogs
@@ -512,7 +513,7 @@ def _describe(c: Check) -> str:
     factor = f" × service factor {c.factor:g}" if c.factor else ""
     return (
         f"{c.name}: {c.value:.4g}{unit}{factor} against the limit {c.limit:.4g}{unit} "
-        f"(margin {c.margin:.3f})"
+        f"(margin {margin_text(c.margin)})"
     )
 
 
