@@ -59,6 +59,9 @@ class DutyOut(ReportTable):
     allowed_starts_per_hour: float | None = None
     no_load_starts_per_hour: float | None = None
     inertia_factor: float | None = None
+    #: positioning with a required time: the fastest motor that passes the cycle (MO-06)
+    fastest_motor: str | None = None
+    fastest_move_time_s: float | None = None
     losses_W: dict[str, float] | None = None
     loss_limit_W: float | None = None
     thermal: ThermalOut | None = None

@@ -2,7 +2,13 @@
 move; then the motor — the fastest of the listed motors (seed 003), or, where a move time is
 required, the smallest motor that meets it (MO-05). Orchestration only."""
 
-from advisor.applications.positioning.candidates import CandidateSet, Solved, candidates, usable
+from advisor.applications.positioning.candidates import (
+    CandidateSet,
+    Solved,
+    candidates,
+    held_to,
+    usable,
+)
 from advisor.applications.positioning.report import (
     CurveOut,
     MotionCandidateOut,
@@ -18,6 +24,7 @@ from catalogs import Catalogs
 from rules.motion import (
     INERTIA_BAND,
     SEED_003,
+    Size,
     Sized,
     fastest_motor,
     profile_check,
@@ -37,26 +44,16 @@ def required_time(req: Requirements) -> tuple[float, str] | None:
     return None
 
 
-def _decisive_time(s: Solved, path: float, profile: str, band: float) -> float:
-    """The move time that decides whether a candidate meets a required time: its own, or,
-    with an estimated inertia, the time with that inertia at the top of its band."""
-    if not s.candidate.inertia_estimated:
-        return s.solution.move_time_s
-    d = s.drive
-    high = d._replace(inertia_kgm2=d.inertia_kgm2 * (1.0 + band))
-    return motion.solve_ratio(high, path, profile).move_time_s
-
-
 def _smallest_meeting(
     solved: list[Solved],
+    held: dict[str, Solved],
     cands: CandidateSet,
     required: tuple[float, str],
-    path: float,
-    profile: str,
     trace: Trace,
 ) -> str:
-    """MO-05: the smallest candidate whose move meets the required time (an estimated inertia
-    at the top of its band); none: no feasible design, with the fastest named."""
+    """MO-05: the smallest candidate whose move meets the required time (``held``: each as the
+    decision holds it, an estimated inertia at the top of its band); none: no feasible design,
+    with the fastest named."""
     t_req, field = required
     band = INERTIA_BAND
     rows = {
@@ -64,13 +61,13 @@ def _smallest_meeting(
             s.candidate.power_W,
             s.drive.inertia_kgm2,
             s.solution.move_time_s,
-            _decisive_time(s, path, profile, band),
+            held[s.name].solution.move_time_s,
         )
         for s in solved
     }
     if not any(r.decisive_time_s <= t_req for r in rows.values()):
         fast = min(rows, key=lambda n: rows[n].decisive_time_s)
-        i = next(s for s in solved if s.name == fast).solution.ratio
+        i = held[fast].solution.ratio
         estimated = any(s.candidate.inertia_estimated for s in solved if s.name == fast)
         raise InfeasibleError(
             f"no feasible design: no motor moves the load within {field} = {t_req:g} s",
@@ -87,10 +84,9 @@ def _smallest_meeting(
 
 def _choose_motor(
     solved: list[Solved],
+    held: dict[str, Solved],
     cands: CandidateSet,
     required: tuple[float, str] | None,
-    path: float,
-    profile: str,
     trace: Trace,
 ) -> Solved:
     """The motor of the drive: with listed motors and no time, seed 003's rule, the fastest
@@ -99,7 +95,7 @@ def _choose_motor(
         times = {s.name: s.solution.move_time_s for s in solved}
         best = trace.apply(fastest_motor, times)
     else:
-        best = _smallest_meeting(solved, cands, required, path, profile, trace)
+        best = _smallest_meeting(solved, held, cands, required, trace)
     return next(s for s in solved if s.name == best)
 
 
@@ -182,15 +178,17 @@ def curve_out(d: motion.Drive, path: float, ratio: float) -> CurveOut:
 def motion_out(
     best: Solved,
     solved: list[Solved],
+    held: dict[str, Solved],
     profile: str,
     path: float,
     required: tuple[float, str] | None,
 ) -> MotionOut:
     """The report's motion table: the chosen motor's move, every candidate's beside it, and
-    with a required time the fastest motor by the rule that chooses (MO-05: an estimated
-    inertia at the top of its band), so that the time it states is one the advisor accepts."""
+    with a required time the fastest motor by the rule that chooses (MO-05: ``held``, an
+    estimated inertia at the top of its band), so that the time it states is one the advisor
+    accepts."""
     d, s = best.drive, best.solution
-    decisive = {x.name: _decisive_time(x, path, profile, INERTIA_BAND) for x in solved}
+    decisive = {x.name: held[x.name].solution.move_time_s for x in solved}
     fastest = min(solved, key=lambda x: decisive[x.name])
     return MotionOut.make(
         motor=best.name,
@@ -239,27 +237,34 @@ def _ratio_checks(best: Solved, built_ratio: float | None = None) -> list[Check]
     ]
 
 
-def move_time_checks(required_s: float | None, move_time_s: float) -> list[Check]:
+def move_time_checks(
+    required_s: float | None, move_time_s: float, raised_at: str | None = None
+) -> list[Check]:
     """The built drive's move within the required move time (positioning.move_time_s):
-    value its move time t_Σ at the ratio it is built with (seed 003, eqs. (3)–(4), the speed
-    graph that happens there), limit the required time, margin t_req/t_Σ. No time asked, no
-    check: a duty cycle's own ``duty_move_fits`` holds the move to the cycle time.
+    value its move time t_Σ (seed 003, eqs. (3)–(4), the speed graph that happens there),
+    limit the required time, margin t_req/t_Σ. ``raised_at``: where the time was taken with
+    the catalog's estimated rotor inertia at the top of its band, the inertia the choice
+    holds the motor to (MO-05, and the duty cycle's MO-06), so that the margin is the one the
+    choice rests on; None: the ratio it is built with, the inertia as given. No time asked,
+    no check: a duty cycle's own ``duty_move_fits`` holds the move to the cycle time.
 
     >>> [round(c.margin, 4) for c in move_time_checks(0.8, 0.305658)]  # 0.8/0.305658
     [2.6173]
+    >>> move_time_checks(0.2, 0.194658, "i = 6.79309")[0].name  # the margin 0.2/0.194658 = 1.027
+    'move time within the required move time, the estimated rotor inertia 30 % higher'
     """
     if required_s is None:
         return []
-    return [
-        Check(
-            "move_time",
-            "move time within the required move time",
-            move_time_s,
-            required_s,
-            "s",
-            required_s / move_time_s,
-            SEED_003.at("eqs. (3)–(4)"),
+    name, source = "move time within the required move time", SEED_003.at("eqs. (3)–(4)")
+    if raised_at is not None:
+        pct = f"{INERTIA_BAND * 100:.0f} %"
+        name += f", the estimated rotor inertia {pct} higher"
+        source = source.with_note(
+            f"the catalog's estimated rotor inertia {pct} higher, as the choice holds it "
+            f"(MO-05), at {raised_at}"
         )
+    return [
+        Check("move_time", name, move_time_s, required_s, "s", required_s / move_time_s, source)
     ]
 
 
@@ -267,15 +272,17 @@ def _duty(
     req: Requirements,
     cat: Catalogs,
     solved: list[Solved],
+    held: dict[str, Solved],
     best: Solved,
     required: tuple[float, str] | None,
     trace: Trace,
 ):
-    """The move repeated every cycle_time_s: the motor and ratio for the cycle."""
+    """The move repeated every cycle_time_s: the motor and ratio for the cycle, each
+    candidate as the decisions hold it (``held``), ranked by its size as MO-05 ranks it."""
     from advisor.applications.positioning.duty import advise_duty, rated_torques, start_heats
 
     return advise_duty(
-        solved,
+        [held[s.name] for s in solved],
         rated_torques(req, cat),
         req.positioning.travel_rad,
         req.duty.cycle_time_s,
@@ -283,6 +290,19 @@ def _duty(
         trace,
         required_s=None if required is None else required[0],
         heats=start_heats(req, cat),
+        sizes={s.name: Size(s.candidate.power_W, s.drive.inertia_kgm2) for s in solved},
+    )
+
+
+def _single_move_checks(pos, best: Solved, held: Solved) -> list[Check]:
+    """Without a cycle: the ratio moves the load, and the move within the required time as
+    MO-05 judged it (an estimated inertia at the top of its band, at its fastest ratio
+    there)."""
+    raised = None
+    if held is not best:
+        raised = f"its fastest ratio with that inertia, i = {held.solution.ratio:.6g}"
+    return _ratio_checks(best) + move_time_checks(
+        pos.move_time_s, held.solution.move_time_s, raised
     )
 
 
@@ -296,21 +316,26 @@ def advise_positioning(req: Requirements, cat: Catalogs, trace: Trace):
     kept, left_out = usable(cands)
     warnings = [*cands.warnings, *left_out]
     solved = [Solved(c, motion.solve_ratio(c.drive, path, pos.profile)) for c in kept]
+    held = {s.name: held_to(s, path, pos.profile) for s in solved}
     required = required_time(req)
-    best = _choose_motor(solved, cands, required, path, pos.profile, trace)
+    best = _choose_motor(solved, held, cands, required, trace)
     _explain_ratio(best, pos.profile, path, trace)
     warnings += _ratio_warnings(best, solved, pos.profile)
-    motion_table = motion_out(best, solved, pos.profile, path, required)
+    motion_table = motion_out(best, solved, held, pos.profile, path, required)
     duty = None
     if req.duty is None:
-        checks = _ratio_checks(best) + move_time_checks(pos.move_time_s, best.solution.move_time_s)
+        checks = _single_move_checks(pos, best, held[best.name])
     else:
-        duty, duty_checks, duty_warnings = _duty(req, cat, solved, best, required, trace)
-        # the design is built at the cycle's motor and ratio: the checks state that design
+        duty, duty_checks, duty_warnings = _duty(req, cat, solved, held, best, required, trace)
+        # the design is built at the cycle's motor and ratio: the checks state that design,
+        # its move taken with the inertia the cycle was judged with
         built = next(s for s in solved if s.name == duty.motor)
+        raised = None
+        if held[built.name] is not built:
+            raised = f"the duty cycle's ratio i = {duty.ratio:.6g}"
         checks = (
             _ratio_checks(built, duty.ratio)
-            + move_time_checks(pos.move_time_s, duty.move_time_s)
+            + move_time_checks(pos.move_time_s, duty.move_time_s, raised)
             + duty_checks
         )
         warnings += duty_warnings

@@ -3,9 +3,9 @@ motors of the catalog at their rated speed with their starting torque; each with
 ranks them where a move time is required (MO-05)."""
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
-from advisor.calc.motion import RATIO_MAX, Drive, RatioSolution
+from advisor.calc.motion import RATIO_MAX, Drive, RatioSolution, solve_ratio
 from advisor.core.errors import InfeasibleError
 from advisor.core.reading import Requirements
 from catalogs import Catalogs
@@ -45,6 +45,33 @@ class Solved:
     @property
     def drive(self) -> Drive:
         return self.candidate.drive
+
+
+def inertia_is_estimate(motor) -> bool:
+    """Whether a catalog motor's rotor inertia is an estimated value (its row's ``estimated``)."""
+    return "inertia_kgm2" in motor.estimated
+
+
+def decisive_inertia(inertia_kgm2: float, estimated: bool) -> float:
+    """The rotor inertia a decision holds a motor to (MO-05): an estimated one at the top of
+    its band, J0·(1 + INERTIA_BAND), so that the estimate never makes a motor look fast enough
+    or its starts look few enough; a given one as it is.
+
+    >>> round(decisive_inertia(0.00079, True), 9), decisive_inertia(0.00079, False)  # 0.00079·1.3
+    (0.001027, 0.00079)
+    """
+    return inertia_kgm2 * (1.0 + INERTIA_BAND) if estimated else inertia_kgm2
+
+
+def held_to(s: Solved, path_rad: float, profile: str) -> Solved:
+    """The candidate as the decisions hold it: with an estimated inertia, its drive at the
+    decisive inertia (:func:`decisive_inertia`) and its fastest ratio there (seed 003); a given
+    inertia, itself. Its ``inertia_estimated`` stays set, so apply it once."""
+    c = s.candidate
+    if not c.inertia_estimated:
+        return s
+    d = c.drive._replace(inertia_kgm2=decisive_inertia(c.drive.inertia_kgm2, True))
+    return Solved(replace(c, drive=d), solve_ratio(d, path_rad, profile))
 
 
 def listed_candidates(req: Requirements) -> CandidateSet:
@@ -90,7 +117,7 @@ def catalog_candidates(req: Requirements, cat: Catalogs) -> CandidateSet:
                 pos.load_torque_Nm,
             ),
             m.rated_power_kW * 1e3,
-            "inertia_kgm2" in m.estimated,
+            inertia_is_estimate(m),
         )
         for m in cat.motors
     )

@@ -8,7 +8,8 @@ starts direct-on-line and stops electrically once a cycle, and the heat of those
 a torque (the starting current is several times the rated one): its starts per hour are checked
 as the linear duty's are (:func:`advisor.calc.duty.allowed_starts_per_hour`). The motor is the
 one whose move is fastest among those that pass (or, with a required time, the smallest), each
-at the fastest ratio that passes.
+at the fastest ratio that passes. A catalog motor whose rotor inertia is an estimate is held to
+that inertia 30 % higher throughout — move, torques and starts — as MO-05 holds its move.
 """
 
 import math
@@ -16,7 +17,11 @@ from collections.abc import Callable
 from dataclasses import dataclass
 
 import rules.duty
-from advisor.applications.positioning.candidates import Solved
+from advisor.applications.positioning.candidates import (
+    Solved,
+    decisive_inertia,
+    inertia_is_estimate,
+)
 from advisor.calc.checks import Check
 from advisor.calc.duty import (
     DC_BRAKING_HEAT,
@@ -37,7 +42,7 @@ from advisor.calc.roots import golden_min
 from advisor.core.errors import InfeasibleError
 from advisor.core.rulebook import Trace
 from advisor.duty.report import DutyOut, phases_out
-from rules.motion import SEED_003, CycleFit, Size, smallest_for_cycle
+from rules.motion import INERTIA_BAND, SEED_003, CycleFit, Size, smallest_for_cycle
 
 RPM = 30.0 / math.pi
 #: β0 of the catalog's self-ventilated (4A, IP44) motors at standstill, the linear duty's
@@ -75,14 +80,16 @@ class StartFigures:
     braking_heat: float
 
 
-def start_heat(m, cycle_time_s: float) -> StartHeat:
+def start_heat(m, cycle_time_s: float, inertia_kgm2: float | None = None) -> StartHeat:
     """A catalog induction motor's start-heat budget: P_loss = P_n·(100/η − 1), z0 =
     3600·P_loss·(1 + β0)/2/(J_M·ω_s²) at the synchronous speed ω_s
-    (:func:`advisor.calc.duty.no_load_starts_per_hour`)."""
+    (:func:`advisor.calc.duty.no_load_starts_per_hour`). ``inertia_kgm2``: the rotor inertia
+    J_M to count (the catalog's where not given)."""
+    j_m = m.inertia_kgm2 if inertia_kgm2 is None else inertia_kgm2
     p_loss = m.rated_power_kW * 1e3 * (100.0 / m.efficiency_pct - 1.0)
     w_sync = m.synchronous_speed_rpm * math.pi / 30.0
-    z0 = no_load_starts_per_hour(p_loss, m.inertia_kgm2, w_sync, (1.0 + STANDSTILL_COOLING) / 2.0)
-    return StartHeat(z0, m.inertia_kgm2, m.rated_torque_Nm, 3600.0 / cycle_time_s)
+    z0 = no_load_starts_per_hour(p_loss, j_m, w_sync, (1.0 + STANDSTILL_COOLING) / 2.0)
+    return StartHeat(z0, j_m, m.rated_torque_Nm, 3600.0 / cycle_time_s)
 
 
 def start_figures(h: StartHeat, d: Drive, path: float, i: float, t_cycle: float) -> StartFigures:
@@ -266,6 +273,7 @@ class CycleAtRatio:
     min_rms_ratio: float  # the ratio of least RMS torque whose move fits (DU-02)
     min_rms_torque_Nm: float
     starts: StartFigures | None = None  # a catalog induction motor's starts (DU-06)
+    inertia_estimated: bool = False  # the drive's J0 is the catalog's estimate raised (MO-05)
 
     @property
     def utilisation(self) -> float:
@@ -346,6 +354,17 @@ def fit_cycle(
     return CycleFit(t, i, True, ""), None
 
 
+@dataclass(frozen=True, slots=True)
+class CycleChoice:
+    """The cycle's motor and ratio, and with a required time the fastest motor that passes
+    the cycle (all its checks, the starts included) with its move there."""
+
+    motor: Solved
+    ratio: float
+    fastest_motor: str | None = None
+    fastest_move_time_s: float | None = None
+
+
 def choose_for_cycle(
     solved: list[Solved],
     rated: dict[str, float],
@@ -354,10 +373,13 @@ def choose_for_cycle(
     required_s: float | None,
     trace: Trace,
     heats: dict[str, StartHeat] | None = None,
-) -> tuple[Solved, float]:
+    sizes: dict[str, Size] | None = None,
+) -> CycleChoice:
     """The motor and ratio for the cycle: the fastest that passes (DU-01), or with a required
-    time the smallest that passes (MO-06); none: no feasible design. ``heats``: the start-heat
-    budgets of catalog induction motors, whose starts per hour must pass too."""
+    time the smallest that passes (MO-06), the fastest that passes beside it; none: no
+    feasible design. ``heats``: the start-heat budgets of catalog induction motors, whose
+    starts per hour must pass too; ``sizes``: what ranks the motors (MO-06; by default the
+    power and the inertia of ``solved``)."""
     heats = heats or {}
     rows: dict[str, CycleFit] = {}
     reasons = []
@@ -377,10 +399,17 @@ def choose_for_cycle(
         raise InfeasibleError("no feasible design: no motor passes the duty cycle", reasons)
     if required_s is None:
         best = trace.apply(rules.duty.motor_for_cycle, rows)
-    else:
+        return CycleChoice(next(s for s in solved if s.name == best), rows[best].ratio)
+    if sizes is None:
         sizes = {s.name: Size(s.candidate.power_W, s.drive.inertia_kgm2) for s in solved}
-        best = trace.apply(smallest_for_cycle, required_s, rows, sizes)
-    return next(s for s in solved if s.name == best), rows[best].ratio
+    best = trace.apply(smallest_for_cycle, required_s, rows, sizes)
+    fastest = trace.find("MO-06").inputs["fastest_motor"]
+    return CycleChoice(
+        next(s for s in solved if s.name == best),
+        rows[best].ratio,
+        fastest,
+        rows[fastest].move_time_s,
+    )
 
 
 def cycle_at(
@@ -407,6 +436,7 @@ def cycle_at(
         min_rms_ratio=i_min,
         min_rms_torque_Nm=rms_min,
         starts=None if heat is None else start_figures(heat, s.drive, path, i, cycle_time_s),
+        inertia_estimated=s.candidate.inertia_estimated,
     )
 
 
@@ -439,6 +469,7 @@ def explain_cycle(c: CycleAtRatio, trace: Trace) -> bool:
     )
     if c.starts is not None:
         z = c.starts
+        raised = f" (its estimate {INERTIA_BAND * 100:.0f} % higher, MO-05)"
         trace.apply(
             rules.duty.starts,
             z.starts_per_hour,
@@ -446,7 +477,8 @@ def explain_cycle(c: CycleAtRatio, trace: Trace) -> bool:
             f"z = z0·(1 − u²)/(FI·k_L·(1 + k_b)) = {z.no_load_starts_per_hour:.4g}·(1 − "
             f"{z.running_utilisation:.3g}²)/({z.inertia_factor:.4g}·{z.load_factor:.4g}·"
             f"(1 + {z.braking_heat:g})): z0 = 3600·P_loss·(1 + β0)/2/(J_M·ω_s²) from the "
-            f"catalog's rated losses P_n·(100/η − 1) and rotor inertia, β0 = "
+            f"catalog's rated losses P_n·(100/η − 1) and rotor inertia J_M = "
+            f"{c.drive.inertia_kgm2:.4g} kg·m²{raised if c.inertia_estimated else ''}, β0 = "
             f"{STANDSTILL_COOLING:g} (self-ventilated); FI = (J_M + J_p/i²)/J_M; k_L = "
             "M_λ/(M_λ − M_p/i); u the running torque's RMS over the rated torque (the start "
             "and the stop counted here, not in it); k_b = 1, the seed's braking at M_λ taken "
@@ -475,9 +507,11 @@ def cycle_warnings(
             "(design.motion), which does not pass the cycle"
         )
     elif abs(c.ratio / fastest_ratio - 1.0) > 1e-9:
+        raised = f" (its estimated inertia {INERTIA_BAND * 100:.0f} % higher)"
         warnings.append(
             f"duty: the cycle needs i = {c.ratio:.4g}, not the fastest ratio "
-            f"{fastest_ratio:.4g}: there the RMS torque exceeds the rated torque; i is the ratio "
+            f"{fastest_ratio:.4g}{raised if c.inertia_estimated else ''}: there the RMS torque "
+            "exceeds the rated torque; i is the ratio "
             "nearest the fastest where the RMS torque equals the rated one, so its thermal "
             "margin is 1.000 by construction — a ratio a little larger runs cooler at almost "
             "the same move time"
@@ -529,9 +563,16 @@ def _starts_checks(c: CycleAtRatio) -> list[Check]:
     ]
 
 
-def duty_out(c: CycleAtRatio, cycle_time_s: float) -> DutyOut:
-    """The report's duty table of the chosen cycle."""
+def duty_out(c: CycleAtRatio, cycle_time_s: float, choice: CycleChoice | None = None) -> DutyOut:
+    """The report's duty table of the chosen cycle; with ``choice`` of a required time, the
+    fastest motor that passes the cycle beside it."""
     out_J, back_J = energies(c.phases)
+    fastest = {}
+    if choice is not None and choice.fastest_motor is not None:
+        fastest = {
+            "fastest_motor": choice.fastest_motor,
+            "fastest_move_time_s": choice.fastest_move_time_s,
+        }
     return DutyOut.make(
         motor=c.motor,
         ratio=c.ratio,
@@ -553,8 +594,27 @@ def duty_out(c: CycleAtRatio, cycle_time_s: float) -> DutyOut:
         min_rms_ratio=c.min_rms_ratio,
         min_rms_torque_Nm=c.min_rms_torque_Nm,
         **_starts_fields(c.starts),
+        **_inertia_fields(c),
+        **fastest,
         phases=phases_out(c.phases),
     )
+
+
+def _inertia_fields(c: CycleAtRatio) -> dict:
+    """The rotor inertia the cycle used, where it is not the one given: the catalog's
+    estimate at the top of its band (MO-05)."""
+    if not c.inertia_estimated:
+        return {}
+    j = c.drive.inertia_kgm2
+    pct = f"{INERTIA_BAND * 100:.0f} %"
+    return {
+        "motor_inertia_kgm2": j,
+        "motor_inertia_basis": (
+            f"the catalog's estimated rotor inertia {j / (1.0 + INERTIA_BAND):.4g} kg·m², "
+            f"counted {pct} higher (MO-05): the move, the torques and the starts of the cycle "
+            "are taken with it"
+        ),
+    }
 
 
 def _starts_fields(z: StartFigures | None) -> dict:
@@ -579,19 +639,25 @@ def advise_duty(
     trace: Trace,
     required_s: float | None = None,
     heats: dict[str, StartHeat] | None = None,
+    sizes: dict[str, Size] | None = None,
 ) -> tuple[DutyOut, list[Check], list[str]]:
     """Choose motor and ratio for the cycle; the checks and warnings of that choice.
 
-    ``required_s`` — a required move time: a motor passes only if its move at the cycle's
-    ratio also meets it, and the smallest that passes is chosen (MO-06); without it, the
-    fastest that passes (DU-01). ``heats`` — the catalog induction motors' start-heat
-    budgets: their starts per hour must pass too (DU-06)."""
+    ``solved`` — the candidates as the decisions hold them
+    (:func:`~advisor.applications.positioning.candidates.held_to`: an estimated inertia at the
+    top of its band, its fastest ratio there), so that the move, the torques and the starts
+    are judged with the inertia MO-05 judges the move with. ``required_s`` — a required move
+    time: a motor passes only if its move at the cycle's ratio also meets it, and the
+    smallest that passes is chosen (MO-06), ranked by ``sizes``; without it, the fastest that
+    passes (DU-01). ``heats`` — the catalog induction motors' start-heat budgets (at the same
+    inertia): their starts per hour must pass too (DU-06)."""
     heats = heats or {}
-    best, i = choose_for_cycle(solved, rated, path, cycle_time_s, required_s, trace, heats)
+    choice = choose_for_cycle(solved, rated, path, cycle_time_s, required_s, trace, heats, sizes)
+    best, i = choice.motor, choice.ratio
     c = cycle_at(best, i, rated[best.name], path, cycle_time_s, heats.get(best.name))
     within = explain_cycle(c, trace)
     warnings = cycle_warnings(c, within, seed_best, best.solution.ratio, required_s is not None)
-    return duty_out(c, cycle_time_s), cycle_checks(c, cycle_time_s), warnings
+    return duty_out(c, cycle_time_s, choice), cycle_checks(c, cycle_time_s), warnings
 
 
 def rated_torques(req, cat) -> dict[str, float]:
@@ -604,7 +670,14 @@ def rated_torques(req, cat) -> dict[str, float]:
 
 def start_heats(req, cat) -> dict[str, StartHeat]:
     """The start-heat budgets of the catalog's induction motors (none for listed motors, whose
-    kind and losses are not given: a servo or an inverter-fed motor is not limited so)."""
+    kind and losses are not given: a servo or an inverter-fed motor is not limited so), each
+    at the rotor inertia the decisions hold it to: an estimated one at the top of its band
+    (MO-05), since a larger J_M means fewer starts."""
     if req.positioning.motors:
         return {}
-    return {m.model: start_heat(m, req.duty.cycle_time_s) for m in cat.motors}
+    return {
+        m.model: start_heat(
+            m, req.duty.cycle_time_s, decisive_inertia(m.inertia_kgm2, inertia_is_estimate(m))
+        )
+        for m in cat.motors
+    }

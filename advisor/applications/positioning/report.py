@@ -71,18 +71,37 @@ def _fastest_time(motion) -> str:
     return f"{t:.4g} s with its estimated inertia {INERTIA_BAND * 100:.0f} % higher"
 
 
+def _fastest(report, motor: str) -> str:
+    """The fastest motor beside the chosen one where a time is required: with a cycle the
+    fastest that passes it (MO-06: its move at its cycle's ratio), else the single move's
+    (MO-05); empty where it is the chosen motor or none is stated."""
+    motion, duty = report.design.motion, report.design.duty
+    if duty is not None:
+        if duty.fastest_motor is None or duty.fastest_motor == motor:
+            return ""
+        return (
+            f" (fastest that passes the cycle: motor {duty.fastest_motor}, "
+            f"{duty.fastest_move_time_s:.4g} s)"
+        )
+    if motion.fastest_motor is None or motion.fastest_motor == motor:
+        return ""
+    return f" (fastest: motor {motion.fastest_motor}, {_fastest_time(motion)})"
+
+
 def headline(report) -> str:
     """The design in a few words: motor, ratio, move time; with a required move time, that
-    time and the fastest motor beside the chosen one (MO-05); with a duty cycle, the cycle's
-    ratio, the single move's beside it, labelled so."""
-    motion = report.design.motion
+    time and the fastest motor beside the chosen one (MO-05, or with a duty cycle the fastest
+    that passes it); with a duty cycle, the cycle's ratio, the single move's beside it,
+    labelled so."""
+    motion, duty = report.design.motion, report.design.duty
     motor, ratio, time_s = design_ratio(report)
-    text = f"motor {motor}, i = {ratio:.4g}, {time_s:.4g} s ({motion.profile_actual})"
+    how = motion.profile_actual
+    if duty is not None and duty.motor_inertia_kgm2 is not None:
+        how += f", its estimated inertia {INERTIA_BAND * 100:.0f} % higher"
+    text = f"motor {motor}, i = {ratio:.4g}, {time_s:.4g} s ({how})"
     if motion.required_move_time_s is not None:
-        text += f", required ≤ {motion.required_move_time_s:.4g} s"
-        if motion.fastest_motor is not None and motion.fastest_motor != motor:
-            text += f" (fastest: motor {motion.fastest_motor}, {_fastest_time(motion)})"
-    if report.design.duty is not None and (motor, ratio) != (motion.motor, motion.optimal_ratio):
+        text += f", required ≤ {motion.required_move_time_s:.4g} s" + _fastest(report, motor)
+    if duty is not None and (motor, ratio) != (motion.motor, motion.optimal_ratio):
         single = "fastest move" if motion.required_move_time_s is None else "the move's choice"
         text += (
             f" for the duty cycle; {single} without the cycle: motor {motion.motor}, "
