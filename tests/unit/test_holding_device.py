@@ -213,3 +213,62 @@ def test_unheld_screw_in_a_cycle_is_refused_for_its_real_cause():
     text = " ".join(err.reasons)
     assert "hold_without_power = true" in text and "brake" in text
     assert "larger motors of the same pole count" not in text
+
+
+def _four_starts_unheld(duty: dict) -> dict:
+    """Seed 001's load (3500 N, 0.2 m in 3 s, span 0.4 m) on four starts at f = 0.06,
+    nothing to hold it."""
+    data = seed001_requirement(friction_coefficient=0.06, starts=4)
+    data["linear"]["travel_time_s"] = 3
+    data["duty"] = duty
+    return data
+
+
+@pytest.mark.parametrize(
+    "duty",
+    [
+        {
+            "cycles_per_hour": 20,
+            "moving_mass_kg": 40,
+            "segments": [
+                {"kind": "move", "distance_m": 0.2, "time_s": 8, "direction": "against"},
+                {"kind": "hold", "time_s": 60},
+                {"kind": "move", "distance_m": 0.2, "time_s": 8, "direction": "with"},
+                {"kind": "dwell", "time_s": 60},
+            ],
+        },
+        {"duty_type": "S3", "cyclic_duration_factor": 0.4, "cycle_time_s": 600},
+    ],
+    ids=["segments", "S3"],
+)
+def test_the_unheld_refusal_names_the_multi_start_screw(duty):
+    # Tr14x2 with 4 starts is Tr14x8(P2) (GOST 24739-81, lead 4 × 2 = 8 mm): d2 = 13 mm,
+    # ψ = atan(8 / (π·13)) = 11.08° > φ' = atan(0.06 / cos 15°) = 3.55°, so it back-drives;
+    # the one-start Tr14x2 (ψ = atan(2 / (π·13)) = 2.80° < 3.55°) would hold, so the
+    # refusal must not name it
+    with pytest.raises(InfeasibleError) as info:
+        advise(parse_requirements(_four_starts_unheld(duty)))
+    text = " ".join([str(info.value), *info.value.reasons])
+    assert "back-drives the screw Tr14x8(P2) whenever the motor is off" in str(info.value)
+    assert "the load of 3500 N back-drives the screw Tr14x8(P2) (not self-locking" in text
+    assert "screw Tr14x2" not in text
+
+
+def test_held_by_names_the_multi_start_screw():
+    # Tr26x3 with 2 starts is Tr26x6(P3): lead 2 × 3 = 6 mm; it holds by itself here
+    data = seed001_requirement(thread="Tr26x3", starts=2)
+    data["application"]["hold_without_power"] = True
+    data["linear"]["travel_time_s"] = 3
+    data["duty"] = {
+        "cycles_per_hour": 20,
+        "moving_mass_kg": 40,
+        "segments": [
+            {"kind": "move", "distance_m": 0.2, "time_s": 8, "direction": "against"},
+            {"kind": "hold", "time_s": 60},
+            {"kind": "move", "distance_m": 0.2, "time_s": 8, "direction": "with"},
+            {"kind": "dwell", "time_s": 60},
+        ],
+    }
+    rep = advise(parse_requirements(data))
+    held_by = rep.design.duty.held_by
+    assert held_by == "the screw Tr26x6(P3), self-locking over its whole friction range"

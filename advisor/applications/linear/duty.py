@@ -31,6 +31,7 @@ from advisor.core.errors import InfeasibleError, InputError
 from advisor.core.rulebook import Trace
 from advisor.duty.report import DutyOut, phases_out
 from rules import duty as duty_rules
+from rules.screw import thread_label
 
 RPM = 30.0 / math.pi
 STEEL_DENSITY_KG_M3 = 7850.0
@@ -191,10 +192,16 @@ def ramp_accelerations(
     return e_start, load_Nm / j_back if load_Nm > 0 else math.inf
 
 
+def _screw(ev) -> str:
+    """The screw as the report designates it: Tr14x8(P2) for four starts of Tr14x2 (GOST
+    24739-81), whose lead, not its pitch, decides whether it holds."""
+    return thread_label(ev.thread.name, ev.starts)
+
+
 def _unheld(ev, n: int, force: float, when: str) -> str:
     return (
-        f"segment {n}: {when} the load of {force:g} N back-drives the screw "
-        f"{ev.thread.name} (not self-locking at the low end of its friction range) and an "
+        f"segment {n}: {when} the load of {force:g} N back-drives the screw {_screw(ev)} "
+        "(not self-locking at the low end of its friction range) and an "
         f"induction motor on the line cannot hold a load at standstill; {UNHELD_REMEDY} for "
         "a one-way device"
     )
@@ -389,7 +396,7 @@ def _cycle(req, ev, mot: MotorModel, holder: str | None, passage) -> CycleLoads:
     if holder is None and req.linear.force_N > 0:  # the same rule as for the segments
         cycle.problems.append(
             f"{req.duty.duty_type}: the load of {req.linear.force_N:g} N back-drives the screw "
-            f"{ev.thread.name} (not self-locking at the low end of its friction range) "
+            f"{_screw(ev)} (not self-locking at the low end of its friction range) "
             "whenever the motor stops, and an induction motor on the line cannot hold a "
             f"load at standstill; {UNHELD_REMEDY} for a one-way device"
         )
@@ -537,7 +544,7 @@ def _counted_by_starts(p: Phase) -> bool:
 def _held_by(ev, holder: str | None, passage) -> str:
     """What holds the load whenever the motor is off, in words for the report."""
     if holder == "screw":
-        return f"the screw {ev.thread.name}, self-locking over its whole friction range"
+        return f"the screw {_screw(ev)}, self-locking over its whole friction range"
     if holder == "one_way":
         return f"the {passage.type.replace('_', ' ')} at the motor side"
     return "nothing: no load stands on the screw while the motor is off"
@@ -584,7 +591,7 @@ def _no_motor_for_cycle(ev, tried: list) -> InfeasibleError:
     lines = [f"{e.motor.model}: " + "; ".join(e.problems) for e in shown]
     if all(any(UNHELD_REMEDY in p for p in e.problems) for e in tried):
         return InfeasibleError(
-            f"no feasible design: the load back-drives the screw {ev.thread.name} whenever the "
+            f"no feasible design: the load back-drives the screw {_screw(ev)} whenever the "
             "motor is off, and nothing holds it",
             [
                 *lines,
