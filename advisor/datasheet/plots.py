@@ -100,14 +100,17 @@ def duty(doc: dict) -> Plot | None:
 
 
 def duty_thermal(doc: dict) -> Plot | None:
-    """The winding's temperature rise over repeated duty cycles against its limit."""
+    """The winding's temperature rise over repeated duty cycles (S2: its one run from cold)
+    against its limit."""
     th = at(doc, "design", "duty", "thermal")
     if not isinstance(th, dict) or not th.get("time_s") or not th.get("rise_K"):
         return None
     lim = th.get("limit_rise_K")
+    single = at(doc, "design", "duty", "duty_type") == "S2"
+    over = "one S2 run from cold" if single else "repeated cycles"
     return Plot(
         "duty-thermal",
-        "Winding temperature rise over repeated cycles",
+        f"Winding temperature rise over {over}",
         "time, s",
         "rise, K",
         [Line("rise", th["time_s"], th["rise_K"])],

@@ -17,13 +17,14 @@ class PhaseOut(ReportTable):
 
 
 class ThermalOut(ReportTable):
-    """A first-order thermal model of the motor over repeated cycles."""
+    """A first-order thermal model of the motor over repeated cycles (S2: its one run from
+    cold)."""
 
     time_constant_s: float
     time_constant_basis: str
     resistance_K_W: float
     steady_rise_K: float  # at the cycle-averaged losses
-    peak_rise_K: float  # the highest rise within a settled cycle
+    peak_rise_K: float  # the highest rise within a settled cycle (S2: at the run's end)
     limit_rise_K: float  # the rise at the frame's limit
     time_s: list[float]
     rise_K: list[float]

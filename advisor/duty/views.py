@@ -39,9 +39,10 @@ def _thermal(duty) -> list[PlotData]:
     if th is None:
         return []
     lim = th.limit_rise_K
+    over = "one S2 run from cold" if duty.duty_type == "S2" else "repeated cycles"
     return [
         PlotData(
-            f"Winding temperature rise over repeated cycles (τ = {th.time_constant_s:g} s)",
+            f"Winding temperature rise over {over} (τ = {th.time_constant_s:g} s)",
             "time, s",
             "rise, K",
             [("rise", th.time_s, th.rise_K), ("limit", [0.0, th.time_s[-1]], [lim, lim])],

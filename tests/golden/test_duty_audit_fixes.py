@@ -193,6 +193,28 @@ def test_a_rotary_s2_run_lasts_its_duration_and_does_not_repeat(minutes):
     assert "ignored: duty.cycle_time_s, because duty_type = 'S2' does not use it" in r.warnings
 
 
+def test_a_rotary_s2_thermal_history_is_its_one_run_from_cold():
+    # S2 for 2 min, τ = 900 s, at the rated point: P = 68.97 + 159.45 = 228.42 W, the frame's
+    # limit, so the steady rise is P·R = 105 K. One run from cold rises
+    # ΔT(t) = ΔT_ss·(1 − e^(−t/τ)): 105·(1 − e^(−120/900)) = 13.107 K at its end, the peak
+    # stated (the history drew 38 runs back to back to 104.3 K at 4560 s, continuous running).
+    # The verdict stays S1's: the check holds the run's losses until the rise settles, 105 K.
+    doc = _rotary_iec(duty_type="S2", duration_min=2)
+    doc["duty"]["thermal_time_constant_s"] = 900.0
+    r = advise(parse_requirements(doc))
+    th = r.design.duty.thermal
+    assert th.steady_rise_K == pytest.approx(105.0, rel=1e-3)
+    assert th.time_s[0] == 0.0 and th.time_s[-1] == pytest.approx(120.0, rel=1e-12)
+    assert len(th.time_s) > 100  # a curve, not the line of two points
+    for t, rise in zip(th.time_s, th.rise_K, strict=True):
+        assert rise == pytest.approx(th.steady_rise_K * -math.expm1(-t / 900.0), rel=1e-9)
+    assert th.peak_rise_K == pytest.approx(105.0 * (1 - math.exp(-120 / 900)), rel=1e-3)
+    assert th.peak_rise_K == pytest.approx(13.107, abs=0.02)
+    check = next(c for c in r.checks if c.id == "duty_peak_rise")
+    assert check.value == pytest.approx(th.steady_rise_K, rel=1e-12)
+    assert "S2 run held as S1" in check.name
+
+
 def test_s1_reports_no_cycles_per_hour():
     # S1 runs continuously: the default cycle_time_s of 600 s is no cycle (it said 6 an hour)
     assert (

@@ -15,7 +15,8 @@ iron and magnets from the speed profile, averaged over each ramp by Simpson's ru
 the frame's limit, the same limit as the point check (:mod:`advisor.applications.rotary.motor`).
 A first-order model, ΔT' = (P − ΔT/R)/C with τ = R·C stated in the requirement and R set so
 the limit losses give the insulation class F rise of 105 K (IEC 60034-1, table of limits of
-temperature rise, class 155 (F) by resistance), shows the rise over repeated cycles.
+temperature rise, class 155 (F) by resistance), shows the rise over repeated cycles
+(S2: over its one run from cold).
 """
 
 import math
@@ -616,12 +617,22 @@ class _Thermal(NamedTuple):
     peak_rise_K: float
 
 
-def _thermal(e: CycleResult, frame: Frame, t_cycle: float) -> _Thermal:
-    """First-order thermal model over repeated cycles, R from the limit and class F: enough
+#: Steps a single run's thermal history is drawn with (S2: its rise is a curve, not a line).
+RUN_STEPS = 200
+
+
+def _thermal(e: CycleResult, frame: Frame, t_cycle: float, single_run: bool) -> _Thermal:
+    """First-order thermal model, R from the limit and class F. A repeated cycle: enough
     cycles from cold to span 5τ (within 1 − e^(−5) = 99.3 % of the settled rise), thinned to
-    about 400 points."""
+    about 400 points, its peak that of the settled cycle. ``single_run`` (S2, one run of
+    duration_min from cold): that run alone, in :data:`RUN_STEPS` steps, its peak the rise at
+    its end, ΔT_ss·(1 − e^(−t/τ)) at constant losses."""
     tau = frame.data.time_constant_s
     r_th = CLASS_F_RISE_K / frame.limit_W
+    if single_run:
+        steps = [(p, dt / RUN_STEPS) for p, dt in e.losses for _ in range(RUN_STEPS)]
+        hist = duty_calc.thermal_history(steps, r_th, tau, 1, max_points=len(steps) + 1)
+        return _Thermal(r_th, hist, max(rise for _, rise in hist))
     n = max(1, math.ceil(5.0 * tau / t_cycle))
     hist = duty_calc.thermal_history(e.losses, r_th, tau, n, max_points=400)
     return _Thermal(r_th, hist, e.peak_rise_K)
@@ -653,7 +664,7 @@ def _device_inertia_words(holder: Holder) -> str:
     )
 
 
-def _duty_checks(e: CycleResult, frame: Frame) -> list[Check]:
+def _duty_checks(e: CycleResult, frame: Frame, single_run: bool = False) -> list[Check]:
     from advisor.applications.rotary.motor import losses_check
 
     return [
@@ -678,18 +689,20 @@ def _duty_checks(e: CycleResult, frame: Frame) -> list[Check]:
                 "the advisor's duty-cycle method, docs/reference/duty.md; duty.peak_torque_factor"
             ),
         ),
-        _peak_rise_check(e.peak_rise_K),
+        _peak_rise_check(e.peak_rise_K, single_run),
     ]
 
 
-def _peak_rise_check(rise_K: float) -> Check:
+def _peak_rise_check(rise_K: float, single_run: bool = False) -> Check:
     """The winding's peak rise of the settled cycle against class F's 105 K, with the
     allowance of the losses' check: R maps the loss limit onto 105 K, so a cycle of constant
-    losses passes both or neither."""
+    losses passes both or neither. ``single_run`` (S2): checked as S1, the run's losses held
+    until the rise settles (its own rise from cold, in the thermal table, is less)."""
     allowed = CLASS_F_RISE_K * (1.0 + bldc_rules.LIMIT_REL_TOL)
+    what = "the S2 run held as S1 (continuous)" if single_run else "the cycle"
     return Check(
         "duty_peak_rise",
-        f"winding's peak temperature rise of the cycle within class F ({CLASS_F_RISE_K:g} K + "
+        f"winding's peak temperature rise of {what} within class F ({CLASS_F_RISE_K:g} K + "
         f"{bldc_rules.LIMIT_REL_TOL:.1%} allowance)",
         rise_K,
         allowed,
@@ -716,7 +729,8 @@ def advise_duty(
     ir, within = _decisions(req, e, frame, q, eta, speed_rpm, holder, trace)
     t_cycle = duty_calc.cycle_time(phases)
     tau = frame.data.time_constant_s
-    thermal = _thermal(e, frame, t_cycle)
+    single_run = duty.duty_type == "S2"  # one run from cold, checked as S1
+    thermal = _thermal(e, frame, t_cycle, single_run)
     warnings = _duty_warnings(ir, within)
     out_J, back_J = duty_calc.energies(phases)
     out = DutyOut.make(
@@ -754,7 +768,7 @@ def advise_duty(
         ),
         phases=phases_out(phases),
     )
-    return out, _duty_checks(e, frame), warnings
+    return out, _duty_checks(e, frame, single_run), warnings
 
 
 def frames(ref, steel, steel_mass: float, terms, limit_W: float, data: MotorData | None = None):
