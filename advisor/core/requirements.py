@@ -389,7 +389,8 @@ def format_validation_error(exc: ValidationError, root: Any, typed: Any = None) 
         shown = _show(value)
         written = _written_at(typed, loc) if typed is not None else None
         if isinstance(written, str) and _is_number(value):
-            shown = _as_written(written, value, _field_unit(loc, info))
+            unit = _field_unit(loc, info) or _row_unit_at(typed, loc)
+            shown = _as_written(written, value, unit, ctx)
         if typ == "literal_error":
             what = f"must be one of {ctx.get('expected')}"
         elif typ in _FRIENDLY:
@@ -434,11 +435,54 @@ def _field_unit(loc: tuple[Any, ...], info: Any) -> str:
     return field_extra(info).get("x-unit") or unit_of(names[-1])
 
 
-def _as_written(text: str, value: float, unit: str) -> str:
+def _row_unit_at(typed: Any, loc: tuple[Any, ...]) -> str:
+    """The unit of a field of a row whose numbers are in the unit of the input its ``name``
+    names (an ``[[uncertainty.inputs]]`` row's sd of linear.force_N: N)."""
+    from advisor.core.units import row_unit
+
+    if len(loc) < 3 or not isinstance(loc[-2], int):
+        return ""
+    return row_unit(tuple(loc[:-2]), _written_at(typed, loc[:-1]))
+
+
+def _as_written(text: str, value: float, unit: str, bounds: dict) -> str:
     """A quantity string as typed, with the SI number it was read as where that says more:
-    '3500 µN' (0.0035 N); '60 Hz' alone."""
-    si = f"{_num_text(value)} {unit}".strip()
+    '3500 µN' (0.0035 N); '60 Hz' and '0.99999949 N' (typed in the field's unit) alone."""
+    if _reads_as(text, value, unit):
+        return _show(text)
+    si = f"{_outside_text(value, bounds)} {unit}".strip()
     return _show(text) if " ".join(text.split()) == si else f"{_show(text)} ({si})"
+
+
+def _reads_as(text: str, value: float, unit: str) -> bool:
+    """Whether ``text`` is ``value`` typed in ``unit`` itself ('-5 N', '0.9999999 N')."""
+    number, _, typed_unit = " ".join(text.split()).partition(" ")
+    try:
+        return bool(unit) and typed_unit == unit and float(number) == value
+    except ValueError:
+        return False
+
+
+#: Pydantic's bounds of a range refusal, and whether a value lies outside each.
+_OUTSIDE = {
+    "ge": lambda x, b: x < b,
+    "gt": lambda x, b: x <= b,
+    "le": lambda x, b: x > b,
+    "lt": lambda x, b: x >= b,
+}
+
+
+def _outside_text(v: float, bounds: dict) -> str:
+    """``v`` in six significant digits, or as many more as it takes for the shown number to
+    lie outside the range it is refused by: 0.9999995 N is not shown '1 N' beside "must be
+    ≥ 1" (it shows 0.9999995), 9.549296585 rpm below 100 stays '9.5493'."""
+    limits = [(_OUTSIDE[k], b) for k, b in bounds.items() if k in _OUTSIDE and _is_number(b)]
+    for digits in range(6, 18):
+        text = format(v, f".{digits}g")
+        shown = float(text)
+        if shown == v or all(outside(shown, b) for outside, b in limits):
+            return text
+    return repr(v)
 
 
 def capped(lines: list[str]) -> list[str]:

@@ -451,7 +451,7 @@ def _model_for(ann: Any, value: dict) -> "type[BaseModel] | None":
 UNIT_OF_NAME = frozenset({("uncertainty", "inputs")})
 
 
-def _row_unit(table: tuple[Any, ...], row: Any) -> str:
+def row_unit(table: tuple[Any, ...], row: Any) -> str:
     """The unit of a row of ``table`` by its ``name`` ('' for none: pure numbers)."""
     if (
         table not in UNIT_OF_NAME
@@ -462,6 +462,33 @@ def _row_unit(table: tuple[Any, ...], row: Any) -> str:
     from advisor.core.questions import unit_of
 
     return unit_of(row["name"].rsplit(".", 1)[-1])
+
+
+def _names_known(table: tuple[Any, ...], row: Any, model: "type[BaseModel]") -> bool:
+    """Whether a row whose numbers take the unit of its ``name`` names one of the inputs
+    its model allows: an unknown name ('linear.force', the _N forgotten) gives no unit to
+    read the row's quantity strings in, so they are left out and the model's refusal names
+    the input and the allowed ones (not "N is a force, not a pure number")."""
+    if table not in UNIT_OF_NAME or not isinstance(row, dict):
+        return True
+    field = model.model_fields.get("name")
+    allowed = get_args(strip_optional(field.annotation)) if field is not None else ()
+    return not allowed or row.get("name") in allowed
+
+
+def _convert_row(table: tuple[Any, ...], i: int, row: Any, item: Any, errors: list[str]) -> Any:
+    """One row of a list of tables, converted with its model (and the unit of its name)."""
+    m = _model_for(item, row) if isinstance(row, dict) else None
+    if m is None:
+        return row
+    if not _names_known(table, row, m):  # no unit to read its strings in: the name alone
+        return {k: v for k, v in row.items() if not (isinstance(v, str) and _numeric(m, k))}
+    return _convert(row, m, (*table, i), errors, row_unit(table, row))
+
+
+def _numeric(model: "type[BaseModel]", name: str) -> bool:
+    info = model.model_fields.get(name)
+    return info is not None and _is_number(strip_optional(info.annotation))
 
 
 def _where(path: tuple[Any, ...]) -> str:
@@ -520,12 +547,7 @@ def _convert(
                     for i, v in enumerate(value)
                 ]
             elif _models(item):
-                out[name] = [
-                    _convert(v, m, (*here, i), errors, _row_unit(here, v))
-                    if isinstance(v, dict) and (m := _model_for(item, v))
-                    else v
-                    for i, v in enumerate(value)
-                ]
+                out[name] = [_convert_row(here, i, v, item, errors) for i, v in enumerate(value)]
         elif isinstance(value, dict):
             sub = _model_for(ann, value)
             if sub is not None:

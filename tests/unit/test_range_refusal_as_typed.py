@@ -82,3 +82,50 @@ def test_a_family_variant_is_worded_as_the_batch_words_it():
 
     (problem,) = field_problems(_doc("3500 µN"))
     assert problem.message == f"linear.force_N = '3500 µN' (0.0035 N): {_RANGE}"
+
+
+@pytest.mark.parametrize("compiled", [True, False])
+@pytest.mark.parametrize("typed", ["0.9999999 N", "0.9999995 N", "0.99999949 N"])
+def test_a_value_just_below_the_limit_is_not_echoed_as_the_limit(compiled, typed):
+    # 0.9999999 N < 1 N is refused; six digits of it read "1 N", which "must be ≥ 1" would
+    # contradict: typed in the field's own unit, the text alone is echoed
+    assert _messages(_doc(typed), compiled) == [f"linear.force_N = '{typed}': {_RANGE}"]
+
+
+@pytest.mark.parametrize("compiled", [True, False])
+def test_a_converted_value_just_below_the_limit_shows_the_digits_that_keep_it_below(compiled):
+    # 0.0009999995 kN = 0.9999995 N: six digits would say 1 N; seven say 0.9999995
+    (line,) = _messages(_doc("0.0009999995 kN"), compiled)
+    assert line == f"linear.force_N = '0.0009999995 kN' (0.9999995 N): {_RANGE}"
+
+
+def _uncertain_force(sd) -> dict:
+    doc = _doc(3500)
+    doc["uncertainty"] = {
+        "inputs": [{"name": "linear.force_N", "distribution": "normal", "sd": sd}]
+    }
+    return doc
+
+
+@pytest.mark.parametrize("compiled", [True, False])
+def test_an_uncertainty_row_is_echoed_in_the_unit_of_its_input(compiled):
+    # a row's numbers are in the unit of the input it names: -0.175 kN = -175 N
+    (line,) = _messages(_uncertain_force("-0.175 kN"), compiled)
+    assert line.startswith("uncertainty.inputs[1].sd = '-0.175 kN' (-175 N): must be > 0")
+    (line,) = _messages(_uncertain_force("-175 N"), compiled)
+    assert line.startswith("uncertainty.inputs[1].sd = '-175 N': must be > 0")
+
+
+@pytest.mark.parametrize("compiled", [True, False])
+@pytest.mark.parametrize("sd", ["175 N", 175])
+def test_a_mistyped_input_name_is_refused_for_the_name(compiled, sd):
+    # 'linear.force' (the _N forgotten) names no input, so there is no unit to read
+    # '175 N' in: the refusal names the input and the allowed ones, not the unit
+    doc = _uncertain_force(sd)
+    doc["uncertainty"]["inputs"][0]["name"] = "linear.force"
+    (line,) = _messages(doc, compiled)
+    assert line.startswith(
+        "uncertainty.inputs[1].name = 'linear.force': must be one of 'linear.force_N', "
+        "'linear.support_span_m', 'screw.friction_coefficient' or "
+        "'screw.thrust.friction_coefficient'"
+    )
