@@ -48,8 +48,7 @@ def build_parser() -> argparse.ArgumentParser:
     )
     p.add_argument(
         "--out-dir",
-        metavar="DIR",
-        type=Path,
+        metavar="DIR",  # a str: Path('') is '.', and an empty DIR must be refused
         help="with several inputs: write one NAME.report.toml per input here, then a summary",
     )
     p.add_argument(
@@ -413,23 +412,32 @@ def _is_terminal(stream) -> bool:
         return False
 
 
-def _output_problem(output: str | None, out_dir: Path | None) -> str | None:
+def _output_problem(output: str | None, out_dir_text: str | None) -> str | None:
     """What is wrong with the outputs asked for, said before anything is read: both -o and
-    --out-dir, an empty -o (a Path of '' is '.', which would be refused as a directory the
-    user never typed), an --out-dir that exists and is no folder."""
+    --out-dir, an empty or blank -o or --out-dir (a Path of '' is '.': the reports would land
+    in the current folder, or a file be named by blanks, where the typical cause is an unset
+    variable, ``--out-dir "$OUT"``), an --out-dir that exists and is no folder."""
     from advisor.core.io_safety import show
 
-    if output is not None and out_dir is not None:
+    if output is not None and out_dir_text is not None:
         return (
             "-o/--output and --out-dir exclude each other: -o writes one input's report to "
             "a file, --out-dir one report per input into a folder"
         )
-    if output == "":
-        return "-o/--output: an empty output path; give the report's file name"
+    if output is not None and not output.strip():
+        return f"-o/--output: {_blank(output)} output path; give the report's file name"
+    if out_dir_text is not None and not out_dir_text.strip():
+        return f"--out-dir: {_blank(out_dir_text)} folder name; give the folder for the reports"
+    out_dir = Path(out_dir_text) if out_dir_text is not None else None
     if out_dir is not None and out_dir.exists() and not out_dir.is_dir():
         what = "a file, not a directory" if out_dir.is_file() else "not a directory"
         return f"--out-dir {show(out_dir, 200)}: is {what}; give a folder for the reports"
     return None
+
+
+def _blank(text: str) -> str:
+    """'an empty' for '', 'a blank' for a name of spaces or tabs alone."""
+    return "an empty" if text == "" else "a blank"
 
 
 def _dispatch(args: argparse.Namespace) -> int:
@@ -473,6 +481,6 @@ def _dispatch(args: argparse.Namespace) -> int:
                 f"--format {args.format} takes one input; with --out-dir the reports are TOML"
             )
             return ExitCode.INVALID_INPUT
-        return run_many(inputs, args.out_dir, args.catalog_dir, args.jobs)
+        return run_many(inputs, Path(args.out_dir), args.catalog_dir, args.jobs)
     output = Path(args.output) if args.output is not None else None
     return run_batch(inputs[0], output, args.catalog_dir, args.format)

@@ -36,7 +36,8 @@ def build_parser() -> argparse.ArgumentParser:
         "again to resume).",
     )
     p.add_argument("family", type=Path, metavar="FAMILY.toml", help="the family file")
-    p.add_argument("--out", type=Path, required=True, metavar="DIR", help="results folder")
+    # a str, made a Path once checked: Path('') is '.', and an empty DIR must be refused
+    p.add_argument("--out", required=True, metavar="DIR", help="results folder")
     p.add_argument(
         "--scheduler",
         metavar="tcp://HOST:PORT",
@@ -344,6 +345,11 @@ def main(argv: list[str]) -> int:
         args = build_parser().parse_args(argv)
     except SystemExit as exc:
         return int(exc.code or 0)
+    if not args.out.strip():  # an unset variable (--out "$OUT") would write into '.'
+        blank = "an empty" if args.out == "" else "a blank"
+        _err(f"--out: {blank} folder name; give the folder for the results")
+        return ExitCode.INVALID_INPUT
+    args.out = Path(args.out)
     try:
         return _run(args)
     except AdvisorError as exc:

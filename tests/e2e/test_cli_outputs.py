@@ -1,5 +1,5 @@
 """The batch's output options said plainly when they are wrong: -o with --out-dir, an empty
--o, an --out-dir that is a file; and ``advisor diff`` given a folder asks for a report.
+or blank -o or --out-dir (and family --out), an --out-dir that is a file; and ``advisor diff`` given a folder asks for a report.
 Each is exit 2 in one line, before anything is read or written."""
 
 import pytest
@@ -32,6 +32,38 @@ def test_an_empty_o_is_said_to_be_empty(tmp_path, capsys, monkeypatch):
     assert _one_line(capsys) == (
         "advisor: -o/--output: an empty output path; give the report's file name"
     )
+
+
+@pytest.mark.parametrize(
+    ("argv", "said"),
+    [
+        (["-o", " "], "-o/--output: a blank output path; give the report's file name"),
+        (["-o", "\t"], "-o/--output: a blank output path; give the report's file name"),
+        (["--out-dir", ""], "--out-dir: an empty folder name; give the folder for the reports"),
+        (["--out-dir", "  "], "--out-dir: a blank folder name; give the folder for the reports"),
+    ],
+)
+def test_a_blank_output_is_refused_and_nothing_written(tmp_path, capsys, monkeypatch, argv, said):
+    # Path('') is '.': --out-dir '' (an unset $OUT) wrote into the current folder, and
+    # -o ' ' a file named by a blank
+    monkeypatch.chdir(tmp_path)
+    assert main(["--batch", str(LINEAR), *argv]) == 2
+    assert _one_line(capsys) == f"advisor: {said}"
+    assert list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.parametrize("out", ["", " "])
+def test_a_blank_family_out_is_refused_and_nothing_written(tmp_path, capsys, monkeypatch, out):
+    from advisor.family.cli import main as family_main
+
+    monkeypatch.chdir(tmp_path)
+    family = EXAMPLES / "families" / "valve_actuators.toml"
+    assert family_main([str(family), "--out", out, "--quiet"]) == 2
+    blank = "an empty" if out == "" else "a blank"
+    assert _one_line(capsys) == (
+        f"advisor: --out: {blank} folder name; give the folder for the results"
+    )
+    assert list(tmp_path.iterdir()) == []
 
 
 def test_an_out_dir_that_is_a_file_is_said_to_be_one(tmp_path, capsys):
