@@ -15,6 +15,7 @@ import itertools
 import json
 import math
 import os
+import re
 import stat
 import sys
 import time
@@ -34,6 +35,7 @@ MANIFEST = "study.json"
 #: what a failed write says has become of the study (exit 2: a full disk is not a bug)
 NOTHING_WRITTEN = "nothing was written"
 RESUME = "the chunks written so far are kept: free space and run the same command again to resume"
+START_OVER = ": free space and run the same command again"
 #: (chunk number, first variant, variant after the last)
 Job = tuple[int, int, int]
 
@@ -381,25 +383,47 @@ def remove_own_temporaries(out_dir: Path) -> None:
 
 
 def write_chunk(out_dir: Path, res: ChunkResult) -> None:
-    """A chunk's reports, then its rows: a chunk file marks its reports written."""
+    """A chunk's reports, then its rows: a chunk file marks its reports written. A write
+    that fails says what is left: the chunks written before it (kept, for a resume), or,
+    where there is none yet, that nothing was written (a run that wrote no chunk removes
+    the DIR it created)."""
+
+    def kept() -> str:
+        return RESUME if any_chunk_written(out_dir) else NOTHING_WRITTEN + START_OVER
+
     for name, text in res.reports:
-        with writing(out_dir / "reports" / name, RESUME):
+        with writing(out_dir / "reports" / name, kept):
             write_replace(out_dir / "reports" / name, text)
     path = chunk_path(out_dir, res.number)
-    with writing(path, RESUME):
+    with writing(path, kept):
         write_atomic(path, rows_csv(res.rows))
 
 
+#: A chunk file's name (:func:`chunk_path`).
+_CHUNK_NAME = re.compile(r"c[0-9]{6}\.csv")
+
+
+def any_chunk_written(out_dir: Path) -> bool:
+    """Whether ``out_dir/chunks`` holds a chunk file (a resume has something to keep)."""
+    try:
+        with os.scandir(out_dir / "chunks") as entries:
+            return any(_CHUNK_NAME.fullmatch(e.name) for e in entries)
+    except OSError:
+        return False
+
+
 @contextmanager
-def writing(path: Path, after: str) -> Iterator[None]:
+def writing(path: Path, after: str | Callable[[], str]) -> Iterator[None]:
     """Writes to ``path``; a write that fails (a full disk, a read-only folder, a quota)
     becomes an :class:`OutputError` naming the file, its reason and ``after`` (what is left
-    of the study): exit 2 in one line, as the batch's full disk, not a bug to report."""
+    of the study, or a function that says it when the write has failed): exit 2 in one line,
+    as the batch's full disk, not a bug to report."""
     try:
         yield
     except OSError as exc:
         why = exc.strerror or type(exc).__name__
-        raise OutputError(f"{show(path, 200)}: cannot write ({why}); {after}") from None
+        left = after() if callable(after) else after
+        raise OutputError(f"{show(path, 200)}: cannot write ({why}); {left}") from None
 
 
 def run_study(

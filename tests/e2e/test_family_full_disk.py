@@ -69,6 +69,9 @@ def test_a_first_chunk_on_a_full_disk_is_exit_2_and_leaves_no_folder(tmp_path, c
     assert main(argv) == 2
     line = _one_line(capsys)
     assert f"{out / 'chunks' / 'c000000.csv'}: cannot write (No space left on device)" in line
+    # no chunk to keep (the folder is removed): the words say so, not "kept … to resume"
+    assert line.endswith("; nothing was written: free space and run the same command again")
+    assert "kept" not in line and "resume" not in line
     assert not (tmp_path / "new").exists()  # the manifest alone resumes nothing
 
 
@@ -78,6 +81,7 @@ def test_a_report_on_a_full_disk_is_exit_2_and_leaves_no_folder(tmp_path, capsys
     assert main(argv) == 2
     line = _one_line(capsys)
     assert f"{out / 'reports'}" in line and "cannot write (No space left on device)" in line
+    assert "nothing was written" in line and "kept" not in line
     assert not (tmp_path / "new").exists()
 
 
