@@ -93,23 +93,58 @@ def test_the_duty_cycle_is_taken_with_the_inertia_30_percent_higher():
 
 def test_move_time_check_states_the_time_mo05_decided_on():
     """0.2 s required, no cycle: MO-05 takes 4A112MB6 (4 kW, 950 rpm, M_λ = 2·M_n, J0 = 0.021
-    kg·m² estimated) on its time with J0·1.3 = 0.0273 kg·m² at its fastest ratio there,
-    i = 6.79309: ω0 = 99.484 rad/s, M_λ = 80.415 N·m, M_p/i = 0.73604 N·m, J = 0.0273 +
-    2/6.79309² = 0.070641; t = 0.10726 + 0.04436 + 0.04304 = 0.194658 s, margin 0.2/0.194658
-    = 1.02744 (0.186864 s and 1.0703 at the nominal J0: not the basis of the choice)."""
+    kg·m² estimated) on its time with J0·1.3 = 0.0273 kg·m² at the ratio it is built with,
+    its fastest with the catalog's J0, i = 6.79306: ω0 = 99.484 rad/s, M_λ = 80.415 N·m,
+    M_p/i = 0.73604 N·m, J = 0.0273 + 2/6.79306² = 0.070641; t = 0.10726 + 0.04436 + 0.04304
+    = 0.194658 s, margin 0.2/0.194658 = 1.02744 (0.186864 s and 1.0703 at the nominal J0:
+    not the basis of the choice)."""
     rep = advise(parse_requirements(_req(0.2)))
     assert rep.design.motion.motor == "4A112MB6"
-    t = _trapezoid(950, 4.0, 2.0, 0.021 * 1.3, 6.79309)
+    t = _trapezoid(950, 4.0, 2.0, 0.021 * 1.3, 6.79306)
     assert t == pytest.approx(0.194658, abs=1e-6)
-    # the ratio is the optimum with that inertia: the time grows either side
-    assert _trapezoid(950, 4.0, 2.0, 0.0273, 6.79309 * 1.01) > t
-    assert _trapezoid(950, 4.0, 2.0, 0.0273, 6.79309 / 1.01) > t
+    # the built ratio is the optimum with the catalog's J0: that time grows either side
+    t_nominal = _trapezoid(950, 4.0, 2.0, 0.021, 6.79306)
+    assert _trapezoid(950, 4.0, 2.0, 0.021, 6.79306 * 1.01) > t_nominal
+    assert _trapezoid(950, 4.0, 2.0, 0.021, 6.79306 / 1.01) > t_nominal
     check = next(c for c in rep.checks if c.id == "move_time")
     assert check.value == pytest.approx(t, rel=1e-6)
     assert check.margin == pytest.approx(1.02744, abs=1e-5)
-    assert "30 % higher" in check.name and "i = 6.79309" in check.source
+    assert "30 % higher" in check.name and "i = 6.79306" in check.source
     mo05 = next(d for d in rep.decisions if d.id == "MO-05")
     assert check.value == mo05.inputs["decisive_move_time_s"]
+
+
+def _triangle(rpm: float, power_kW: float, j0: float, i: float) -> float:
+    """Seed 003's triangular move (no run at ω0) of a catalog motor with M_λ = 2·M_n at ratio
+    i, by hand: θ = α·i, a1,2 = (M_λ ∓ M_p/i)/(J0 + J_p/i²), t = √(2θ·(1/a1 + 1/a2))."""
+    w0 = rpm * math.pi / 30.0
+    m_l = 2.0 * power_kW * 1e3 / w0
+    j = j0 + J_P / i**2
+    a1, a2 = (m_l - M_P / i) / j, (m_l + M_P / i) / j
+    peak = math.sqrt(2 * QUARTER * i / (1 / a1 + 1 / a2))
+    assert peak < w0  # the move is a triangle
+    return math.sqrt(2 * QUARTER * i * (1 / a1 + 1 / a2))
+
+
+def test_a_triangular_move_is_judged_at_the_built_ratio():
+    """4A132M4 (11 kW, 1460 rpm, J0 = 0.04 kg·m² estimated) is built at its fastest ratio with
+    the catalog's J0, i = 7.07141 (triangular: ω0 = 152.891 rad/s, M_λ = 143.894 N·m, peak
+    131.8 rad/s). With J0·1.3 = 0.052 there, t = 0.168544 s; the ratio that J0·1.3 would make
+    fastest, i ≈ 6.202, gives 0.167822 s, but that drive is not the one built. So 0.1680 s,
+    between the two, is refused, and the fastest stated is 0.168544 s, which can be required."""
+    t_built = _triangle(1460, 11.0, 0.052, 7.07141)
+    assert t_built == pytest.approx(0.168544, abs=1e-6)
+    assert _triangle(1460, 11.0, 0.052, 6.202) == pytest.approx(0.167822, abs=1e-6)
+    assert _triangle(1460, 11.0, 0.04, 7.07141) == pytest.approx(0.157167, abs=1e-6)
+    with pytest.raises(InfeasibleError, match=r"4A132M4, takes 0\.1685 s"):
+        advise(parse_requirements(_req(0.168)))
+    rep = advise(parse_requirements(_req(0.2)))
+    assert rep.design.motion.fastest_move_time_s == pytest.approx(t_built, rel=1e-5)
+    met = advise(parse_requirements(_req(0.16855)))
+    assert met.design.motion.motor == "4A132M4"
+    check = next(c for c in met.checks if c.id == "move_time")
+    assert check.value == pytest.approx(t_built, rel=1e-6)
+    assert "i = 7.07141" in check.source
 
 
 def test_listed_motors_keep_their_inertia():

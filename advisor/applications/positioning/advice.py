@@ -6,6 +6,7 @@ from advisor.applications.positioning.candidates import (
     CandidateSet,
     Solved,
     candidates,
+    held_as_built,
     held_to,
     usable,
 )
@@ -296,11 +297,10 @@ def _duty(
 
 def _single_move_checks(pos, best: Solved, held: Solved) -> list[Check]:
     """Without a cycle: the ratio moves the load, and the move within the required time as
-    MO-05 judged it (an estimated inertia at the top of its band, at its fastest ratio
-    there)."""
+    MO-05 judged it (an estimated inertia at the top of its band, at the built ratio)."""
     raised = None
     if held is not best:
-        raised = f"its fastest ratio with that inertia, i = {held.solution.ratio:.6g}"
+        raised = f"the built ratio i = {held.solution.ratio:.6g}"
     return _ratio_checks(best) + move_time_checks(
         pos.move_time_s, held.solution.move_time_s, raised
     )
@@ -316,7 +316,8 @@ def advise_positioning(req: Requirements, cat: Catalogs, trace: Trace):
     kept, left_out = usable(cands)
     warnings = [*cands.warnings, *left_out]
     solved = [Solved(c, motion.solve_ratio(c.drive, path, pos.profile)) for c in kept]
-    held = {s.name: held_to(s, path, pos.profile) for s in solved}
+    # a single move is judged as built; a cycle fits its own ratio with the raised inertia
+    held = {s.name: held_as_built(s, path) for s in solved}
     required = required_time(req)
     best = _choose_motor(solved, held, cands, required, trace)
     _explain_ratio(best, pos.profile, path, trace)
@@ -326,12 +327,13 @@ def advise_positioning(req: Requirements, cat: Catalogs, trace: Trace):
     if req.duty is None:
         checks = _single_move_checks(pos, best, held[best.name])
     else:
-        duty, duty_checks, duty_warnings = _duty(req, cat, solved, held, best, required, trace)
+        fitted = {s.name: held_to(s, path, pos.profile) for s in solved}
+        duty, duty_checks, duty_warnings = _duty(req, cat, solved, fitted, best, required, trace)
         # the design is built at the cycle's motor and ratio: the checks state that design,
         # its move taken with the inertia the cycle was judged with
         built = next(s for s in solved if s.name == duty.motor)
         raised = None
-        if held[built.name] is not built:
+        if fitted[built.name] is not built:
             raised = f"the duty cycle's ratio i = {duty.ratio:.6g}"
         checks = (
             _ratio_checks(built, duty.ratio)

@@ -5,7 +5,7 @@ ranks them where a move time is required (MO-05)."""
 import math
 from dataclasses import dataclass, replace
 
-from advisor.calc.motion import RATIO_MAX, Drive, RatioSolution, solve_ratio
+from advisor.calc.motion import RATIO_MAX, Drive, RatioSolution, move_time, solve_ratio
 from advisor.core.errors import InfeasibleError
 from advisor.core.reading import Requirements
 from catalogs import Catalogs
@@ -72,6 +72,21 @@ def held_to(s: Solved, path_rad: float, profile: str) -> Solved:
         return s
     d = c.drive._replace(inertia_kgm2=decisive_inertia(c.drive.inertia_kgm2, True))
     return Solved(replace(c, drive=d), solve_ratio(d, path_rad, profile))
+
+
+def held_as_built(s: Solved, path_rad: float) -> Solved:
+    """The candidate as built, at its fastest ratio with the catalog's inertia (seed 003), and
+    judged as the decisions judge a single move: an estimated inertia at the top of its band
+    (:func:`decisive_inertia`), the move that then happens at that same ratio. A given inertia:
+    itself. The ratio the raised inertia would make fastest is not the one built: for a
+    triangular move the built drive is the slower (4A132M4: 0.16854 s at i = 7.07 against
+    0.16782 s at i = 6.20), and a required time between the two must be refused."""
+    c = s.candidate
+    if not c.inertia_estimated:
+        return s
+    d = c.drive._replace(inertia_kgm2=decisive_inertia(c.drive.inertia_kgm2, True))
+    t, law = move_time(d, path_rad, s.solution.ratio)
+    return Solved(replace(c, drive=d), replace(s.solution, move_time_s=t, profile=law))
 
 
 def listed_candidates(req: Requirements) -> CandidateSet:
