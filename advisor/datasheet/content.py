@@ -391,11 +391,18 @@ def sheet(
 
 
 def no_checks(status: str) -> str:
-    """What the Utilisation section says where the report has no check: an infeasible one
-    has no design whose checks could be shown."""
+    """What the Utilisation and Checks sections say where the report has no check: an
+    infeasible one has no design whose checks could be shown."""
+    return nothing_to_show("check", status)
+
+
+def nothing_to_show(what: str, status: str) -> str:
+    """The one line of a section with nothing in it (checks, components, decisions), in
+    place of a bare table header or an empty heading: an infeasible report reached no
+    design, and says why in its Summary."""
     if status == "infeasible":
-        return "No check: no design was reached (see why in the Summary)."
-    return "No check applies."
+        return f"No {what}: no design was reached (see why in the Summary)."
+    return f"No {what} applies."
 
 
 def no_probability(doc: dict[str, Any]) -> str:

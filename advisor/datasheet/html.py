@@ -12,6 +12,7 @@ from advisor.datasheet.content import (
     Sheet,
     Table,
     no_checks,
+    nothing_to_show,
 )
 from advisor.datasheet.plots import Plot, svg, tornado_svg
 
@@ -208,6 +209,39 @@ def _parts(rows: list[list[str]]) -> str:
     return f'<table class="wide"><tr>{head}</tr>{body}</table>'
 
 
+def _checks(s: Sheet) -> str:
+    """The checks' table, or one line where there is none (no bare header)."""
+    if not s.checks:
+        return f"<p>{_e(no_checks(s.status))}</p>"
+    rows = "".join(
+        f'<tr class="{c.status}"><td class="mark-{c.status}">{_e(MARK[c.status])}</td>'
+        f"<td>{_e(c.id)}</td><td>{_e(c.name)}</td>{_num_cell(c.value)}{_num_cell(c.limit)}"
+        f"<td>{_e(c.unit)}</td>{_num_cell(c.margin)}<td>{_e(c.source)}</td></tr>"
+        for c in s.checks
+    )
+    return (
+        "<p>The margin is the limit over the value (or the value over the limit, whichever "
+        "way the check passes): at least 1 passes; below 1.1 it is marked tight.</p>"
+        "<table><tr><th></th><th>id</th><th>check</th><th>value</th><th>limit</th>"
+        f"<th>unit</th><th>margin</th><th>source</th></tr>{rows}</table>"
+    )
+
+
+def _decisions(s: Sheet) -> str:
+    """Each decision with its reason, source and inputs, or one line where there is none."""
+    return (
+        "\n".join(
+            f'<div class="decision" id="decision-{_e(d.id)}"><h3>{_e(d.id)} — {_e(d.title)}</h3>'
+            f'<p class="what">{_e(d.decision)}</p><p>{_e(d.rationale)}</p>'
+            f'<p class="src">Source: {_e(d.source)}</p>'
+            + (f'<p class="src">Inputs: {_e(d.inputs)}</p>' if d.inputs else "")
+            + "</div>"
+            for d in s.decisions
+        )
+        or f"<p>{_e(nothing_to_show('decision', s.status))}</p>"
+    )
+
+
 def render(s: Sheet, plots: list[Plot]) -> str:
     body: dict[str, str] = {}
     body["header"] = _header(s)
@@ -220,31 +254,15 @@ def render(s: Sheet, plots: list[Plot]) -> str:
     body["warnings"] = "".join(f'<p class="warning">{_e(w)}</p>' for w in s.warnings) or (
         "<p>None.</p>"
     )
-    body["components"] = "\n".join(_block(b, 3) for b in s.components)
-    rows = "".join(
-        f'<tr class="{c.status}"><td class="mark-{c.status}">{_e(MARK[c.status])}</td>'
-        f"<td>{_e(c.id)}</td><td>{_e(c.name)}</td>{_num_cell(c.value)}{_num_cell(c.limit)}"
-        f"<td>{_e(c.unit)}</td>{_num_cell(c.margin)}<td>{_e(c.source)}</td></tr>"
-        for c in s.checks
+    body["components"] = "\n".join(_block(b, 3) for b in s.components) or (
+        f"<p>{_e(nothing_to_show('component', s.status))}</p>"
     )
-    body["checks"] = (
-        "<p>The margin is the limit over the value (or the value over the limit, whichever "
-        "way the check passes): at least 1 passes; below 1.1 it is marked tight.</p>"
-        "<table><tr><th></th><th>id</th><th>check</th><th>value</th><th>limit</th>"
-        f"<th>unit</th><th>margin</th><th>source</th></tr>{rows}</table>"
-    )
+    body["checks"] = _checks(s)
     body["uncertainty"] = _probability(s.probability, s.no_probability)
     body["plots"] = "\n".join(_figure(p, i) for i, p in enumerate(plots, 1)) or (
         "<p>This report has no curves to plot.</p>"
     )
-    body["decisions"] = "\n".join(
-        f'<div class="decision" id="decision-{_e(d.id)}"><h3>{_e(d.id)} — {_e(d.title)}</h3>'
-        f'<p class="what">{_e(d.decision)}</p><p>{_e(d.rationale)}</p>'
-        f'<p class="src">Source: {_e(d.source)}</p>'
-        + (f'<p class="src">Inputs: {_e(d.inputs)}</p>' if d.inputs else "")
-        + "</div>"
-        for d in s.decisions
-    )
+    body["decisions"] = _decisions(s)
     body["requirements"] = "\n".join(_block(b, 3) for b in s.requirements)
     body["references"] = (
         "<ol>" + "".join(f"<li>{_e(r)}</li>" for r in s.references) + "</ol>"

@@ -21,7 +21,14 @@ rules are CommonMark's (https://spec.commonmark.org/0.31.2/) and GitHub's table 
 
 import re
 
-from advisor.datasheet.content import Block, Probability, Sheet, Table, no_checks
+from advisor.datasheet.content import (
+    Block,
+    Probability,
+    Sheet,
+    Table,
+    no_checks,
+    nothing_to_show,
+)
 
 MARK = {
     "fails": "✗ FAILS",
@@ -211,6 +218,19 @@ def tornado_bar(rho: float) -> str:
     return f"{left}│{right}"
 
 
+def _checks(s: Sheet) -> list[str]:
+    """The checks' table, or one line where there is none (no bare header)."""
+    if not s.checks:
+        return [no_checks(s.status), ""]
+    return _table(
+        ["", "check", "value", "limit", "unit", "margin", "source"],
+        [
+            [MARK[c.status], f"{c.id} {c.name}", c.value, c.limit, c.unit, c.margin, c.source]
+            for c in s.checks
+        ],
+    )
+
+
 def render(s: Sheet) -> str:
     out = [_heading(1, s.title), ""]
     out += [f"Drive Advisor {text(s.version)} — {text(s.application)}, {text(s.status)}", ""]
@@ -223,14 +243,10 @@ def render(s: Sheet) -> str:
     out += ["", "## Components", ""]
     for b in s.components:
         out += _block(b, 3)
+    if not s.components:
+        out += [nothing_to_show("component", s.status), ""]
     out += ["## Checks", ""]
-    out += _table(
-        ["", "check", "value", "limit", "unit", "margin", "source"],
-        [
-            [MARK[c.status], f"{c.id} {c.name}", c.value, c.limit, c.unit, c.margin, c.source]
-            for c in s.checks
-        ],
-    )
+    out += _checks(s)
     out += _probability(s.probability, s.no_probability)
     out += ["## Decisions", ""]
     for d in s.decisions:
@@ -239,6 +255,8 @@ def render(s: Sheet) -> str:
         out += [f"*Source:* {text(d.source)}", ""]
         if d.inputs:
             out += [f"*Inputs:* {text(d.inputs)}", ""]
+    if not s.decisions:
+        out += [nothing_to_show("decision", s.status), ""]
     out += ["## Requirements (SI)", ""]
     for b in s.requirements:
         out += _block(b, 3)

@@ -225,6 +225,33 @@ def test_an_infeasible_report_without_a_design_says_its_checks_were_not_reached(
     assert "| check | utilisation |" not in md
 
 
+@pytest.mark.parametrize("path", sorted((EXAMPLES / "infeasible").glob("*.toml")), ids=str)
+def test_an_infeasible_report_says_why_its_sections_are_empty(path):
+    # no design: no component, no check, no decision; each section says so in one line
+    # (as Utilisation does) instead of a bare table header or an empty heading
+    report = _infeasible(path)
+    assert not (report.checks or report.decisions)
+    said = "no design was reached (see why in the Summary)."
+    md = render(report, "md")
+    for what, next_heading in (
+        ("component", "## Checks"),
+        ("check", "## Probability of passing"),
+        ("decision", "## Requirements (SI)"),
+    ):
+        assert f"\n\nNo {what}: {said}\n\n{next_heading}\n" in md
+    assert "|  | check | value | limit | unit | margin | source |" not in md
+    html = render(report, "html")
+    for what, section in (
+        ("component", "components"),
+        ("check", "checks"),
+        ("decision", "decisions"),
+    ):
+        assert f'<section id="{section}"><h2>' in html
+        body = html.split(f'<section id="{section}">', 1)[1].split("</section>", 1)[0]
+        assert f"<p>No {what}: {said}</p>" in body
+    assert "<th>margin</th><th>source</th></tr></table>" not in html
+
+
 def test_an_infeasible_report_with_checks_maps_them():
     # the nearest design's failing check: 15 nut turns where 10 are allowed, margin 10/15
     bad = Check("nut_turns", "engaged nut turns", 15.0, 10.0, "", 10.0 / 15.0, cite("GOST"))
