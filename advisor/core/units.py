@@ -180,14 +180,24 @@ _SHOWN = (
 # ------------------------------------------------------------------ the grammar
 #: The grammar's shape (not its list of names) as the JSON Schema states it, so that an
 #: editor flags "5 kN + 3 kN" as the advisor would; the length cap and the names are checked
-#: here.
-_U = r"[A-Za-zµμΩ°]+((\^|\*\*)[-+]?[0-9]+|⁻?[¹²³⁴])?"
+#: here. It takes what the reader takes before parsing (:data:`_SPACES`): the no-break and
+#: thin spaces, the dot operator ⋅ (U+22C5) and the ohm sign Ω (U+2126).
+_BLANK = "[ \\t\u00a0\u2009\u202f]*"
+_U = "[A-Za-zµμΩ\u2126°]+((\\^|\\*\\*)[-+]?[0-9]+|⁻?[¹²³⁴])?"
 PATTERN = (
-    r"^[ \t]*[-+]?([0-9]+(\.[0-9]*)?|\.[0-9]+)([eE][-+]?[0-9]+)?[ \t]*"
+    "^"
+    + _BLANK
+    + r"[-+]?([0-9]+(\.[0-9]*)?|\.[0-9]+)([eE][-+]?[0-9]+)?"
+    + _BLANK
     + _U
-    + r"([ \t]*[*·/][ \t]*"
+    + "("
+    + _BLANK
+    + "[*·\u22c5/]"
+    + _BLANK
     + _U
-    + r")*[ \t]*$"
+    + ")*"
+    + _BLANK
+    + "$"
 )
 
 #: What a quantity copied from a typeset page holds, read as what it stands for: the spaces

@@ -293,6 +293,22 @@ def test_the_schema_allows_the_strings_on_number_fields_only():
     assert all(pattern.match(t) for t in ("2 kg*m^2", "7.8 g·cm⁻³", "1 kN·m", "32 mm²/s"))
     bad = ("5 kN + 3 kN", "1 N*(1/0)", "5 kN # x", "3500 N%", "5 N*", "9**9**8 N", "5 kN\u202e")
     assert not any(pattern.match(t) for t in bad)
+    # what the reader takes from a typeset page, the schema takes too: the dot operator
+    # U+22C5, the ohm sign U+2126, the no-break, thin and narrow no-break spaces
+    typeset = ("1620 N\u22c5m", "1.14 \u2126", "2 m\u2126", "5\u00a0kN", "5\u2009kN", "5\u202fkN")
+    assert all(pattern.match(t) for t in typeset)
+    assert [
+        to_unit(t, u) for t, u in zip(typeset, ("N·m", "Ω", "Ω", "N", "N", "N"), strict=True)
+    ] == [
+        1620.0,
+        1.14,
+        0.002,
+        5000.0,
+        5000.0,
+        5000.0,
+    ]
+    shipped = json.loads((EXAMPLES / "requirements.schema.json").read_text(encoding="utf-8"))
+    assert shipped == json.loads(json.dumps(schema))  # the shipped file is regenerated
     starts = schema["$defs"]["ScrewReq"]["properties"]["starts"]
     assert starts["type"] == "integer" and "anyOf" not in starts
     text = json.dumps(schema, ensure_ascii=False)
