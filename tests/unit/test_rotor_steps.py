@@ -137,3 +137,28 @@ def test_more_bearings_share_the_pairs_reaction(count, per_side):
     assert s.slewing_Nm == pytest.approx(
         count * loads.friction_slewing.total_Nm + s.aero_Nm, rel=1e-12
     )
+
+
+@pytest.mark.parametrize("mass_kg", [0.3, 0.4, 0.5, 0.56, 0.7, 1.0, 2.0])
+def test_without_a_slew_the_steady_torque_never_reaches_speed(mass_kg):
+    """With Ω = 0 the moment is M = H·Ω·sin α = 0, so the steady torque with the reaction is
+    the resistance at speed, M_steady = M_res(ω): J·dω/dt = M_steady − M_res(ω') → 0 as ω' → ω
+    and t = ∫₀^ω J dω'/(M_steady − M_res(ω')) diverges (like ln, the integrand ≈ J/(slope·(ω −
+    ω')) at the top). The key is absent, whatever way the two routes to M_res round (the
+    term-by-term sum and the polynomial differed by ±1e-18 N·m and gave 4244 s for some
+    masses)."""
+    import tomllib
+
+    from advisor.core.reading import parse_requirements
+
+    data = tomllib.loads(GYRO.read_text(encoding="utf-8"))
+    data["rotor"].update(slew_rate_rad_s=0.0, mass_kg=mass_kg)
+    req = parse_requirements(data)
+    out = advise(req).design.rotor
+    assert out.steady_torque_Nm.with_reaction == out.steady_torque_Nm.without_reaction
+    assert out.run_up_time_at_steady_torque_s is None
+    # the slowest slew the requirements take still gives a finite (long) time: a real excess
+    data["rotor"]["slew_rate_rad_s"] = 1e-6
+    slow = advise(parse_requirements(data)).design.rotor
+    assert slow.steady_torque_Nm.with_reaction > slow.steady_torque_Nm.without_reaction
+    assert math.isfinite(slow.run_up_time_at_steady_torque_s)

@@ -128,16 +128,37 @@ def run_up(req: Requirements, rotor: Rotor, steady: SteadyTorques, trace: Trace)
     w = r.speed_rad_s
     run_up_torque = torque_for_run_up(rotor, w, r.run_up_time_s)
     required = trace.apply(drive_torque, run_up_torque, steady.slewing_Nm, r.run_up_time_s)
-    at_steady = run_up_time(rotor, steady.slewing_Nm, w)
     times, speeds = run_up_curve(rotor, required, w)
     return RunUp(
         run_up_torque,
         required,
         run_up_time(rotor, required, w),
-        at_steady if math.isfinite(at_steady) else None,
+        time_at_steady_torque(rotor, steady, w),
         times,
         speeds,
     )
+
+
+#: Below this excess over the resistance at speed, relative to it, the steady torque is taken as
+#: the resistance itself. Its two routes (term by term, and the polynomial the run-up integrates)
+#: differ by a few units of the last place (~1e-16), and the time near the top grows like
+#: J/(dM_res/dω)·ln(1/excess): for the seed's rotor a rounding excess of 1.5e-16 gives 4244 s,
+#: a true one of 1e-12 gives 3245 s. The same floor as :func:`torque_for_run_up`'s.
+SAME_TORQUE_REL = 1e-12
+
+
+def time_at_steady_torque(rotor: Rotor, steady: SteadyTorques, speed: float) -> float | None:
+    """The run-up time at the steady torque with the reaction, s; None where that torque does
+    not exceed the resistance of the run-up (without the reaction) at speed: with no slew the
+    two are the same torque and the rotor never quite reaches the speed.
+
+    The decision compares the two steady torques, both summed term by term from the same loads
+    (the run-up's resistance at speed is the steady torque without the reaction), so rounding of
+    the polynomial :func:`advisor.calc.rotor.run_up_time` integrates cannot decide it."""
+    if steady.slewing_Nm - steady.calm_Nm <= SAME_TORQUE_REL * steady.calm_Nm:
+        return None
+    t = run_up_time(rotor, steady.slewing_Nm, speed)
+    return t if math.isfinite(t) else None
 
 
 def slew_duration(req: Requirements) -> float:
