@@ -373,14 +373,17 @@ def allowed(unit: str) -> str:
 
 def to_unit(text: str, unit: str) -> float:
     """The value of ``text`` (``"5 kN"``) in ``unit`` (a key's unit, as
-    :func:`advisor.core.questions.unit_of` names it), rounded to 12 significant digits so
-    that a decimal conversion reads as typed (200 mm → 0.2 m, not 0.20000000000000004); a
-    number in the key's own unit is taken as typed (no conversion: nothing to round).
+    :func:`advisor.core.questions.unit_of` names it). A decimal conversion reads as typed
+    (200 mm → 0.2 m, not 0.20000000000000004): where the product lies within a few units in
+    the last place of its 12-significant-digit rounding, that rounding is the value. A
+    conversion through π (rpm, degrees) is kept as computed: rounded, 40000 rpm would be
+    4188.79020479 rad/s, 3.4e-8 rpm above a bearing's 40000 rpm limit, and refused at it.
+    A number in the key's own unit is taken as typed (no conversion: nothing to round).
 
     >>> to_unit("5 kN", "N"), to_unit("200 mm", "m"), to_unit("1500 rpm", "rad/s")
-    (5000.0, 0.2, 157.079632679)
+    (5000.0, 0.2, 157.07963267948966)
     >>> to_unit("90 deg", "rad"), to_unit("3 N*m", "N·m")
-    (1.57079632679, 3.0)
+    (1.5707963267948966, 3.0)
     """
     try:
         want = _target(unit)
@@ -416,13 +419,21 @@ def to_unit(text: str, unit: str) -> float:
     value = q.number * (q.factor / factor)
     if not math.isfinite(value):
         raise UnitError(_expected(unit, "must be finite"))
-    return _round12(value)
+    return _decimal_or_exact(value)
 
 
-def _round12(x: float) -> float:
+#: Units in the last place within which a converted value is taken as the decimal it rounds
+#: to: the error of one or two float operations on a decimal number.
+_NOISE_ULPS = 4
+
+
+def _decimal_or_exact(x: float) -> float:
+    """``x`` rounded to 12 significant digits where it differs from that only by float noise
+    (a decimal conversion), else ``x`` as computed."""
     if x == 0 or not math.isfinite(x):
         return x
-    return round(x, 11 - math.floor(math.log10(abs(x))))
+    r = round(x, 11 - math.floor(math.log10(abs(x))))
+    return r if abs(r - x) <= _NOISE_ULPS * math.ulp(x) else x
 
 
 def _expected(unit: str, what: str) -> str:

@@ -21,6 +21,7 @@ from advisor.calc.checks import Check
 from advisor.calc.rotor import gyroscopic_loads, gyroscopic_moment, slew_loss, steady_torques
 from advisor.core.cite import cite
 from advisor.core.reading import Requirements
+from advisor.core.report import round_sig
 from advisor.core.rulebook import Trace
 from catalogs import Catalogs
 from catalogs.rows import Bearing
@@ -40,7 +41,10 @@ def _checks(
     """The bearing's speed, static safety and (where required) life; the drive holds speed
     under the gyroscopic load."""
     r = req.rotor
-    n_rpm = r.speed_rad_s * RPM
+    # in rpm to 12 significant digits: the limit is a catalog figure in rpm, and a speed
+    # given as that figure ("40000 rpm", or its rad/s) comes back from rad/s a few units in
+    # the last place above it (22000 rpm: 22000.000000000004), refused at its own limit
+    n_rpm = round_sig(r.speed_rad_s * RPM, 12)
     required, s0 = drive.required_torque_Nm, rating.static_safety
     checks = [
         Check(
