@@ -91,16 +91,65 @@ def _checks(
     return checks
 
 
+def _and(items: list[str]) -> str:
+    return ", ".join(items[:-1]) + " and " + items[-1] if len(items) > 1 else items[0]
+
+
+def rating_outputs(b: Bearing) -> list[str]:
+    """What rests on the row's estimated ratings: C is the life's; C0 the static safety's, the
+    life's where X/Y are read at Fa/C0 (deep groove, by f0·Fa/C0, and 15° angular contact) and
+    the deep-groove SKF friction's; f0 the deep-groove X/Y, so the life's."""
+    est = set(b.estimated)
+    reads_c0 = b.type == "deep_groove" or b.contact_angle_deg < 20.0
+    life = "C_kN" in est or "f0" in est or ("C0_kN" in est and reads_c0)
+    static = "C0_kN" in est
+    skf = "C0_kN" in est and b.type == "deep_groove"
+    names = ("the life", "the static safety", "the SKF friction")
+    return [n for n, on in zip(names, (life, static, skf), strict=True) if on]
+
+
+def estimate_warning(b: Bearing) -> str:
+    """The warning for a row with estimated fields: which, and what rests on each. The ball set
+    is eq. (4)'s (r_B/D_w, z, the ball mass), so the steady power and the drive torque; the
+    pitch diameter is also r of eq. (3), the reaction behind every load; the ratings are the
+    life's, the static safety's and (deep groove) the SKF friction's."""
+    est = set(b.estimated)
+    clauses = [
+        f"bearing {b.designation}: {', '.join(b.estimated)} estimated (see the catalog "
+        "file for how)"
+    ]
+    if est & {"pitch_diameter_mm", "ball_diameter_mm", "ball_count"}:
+        clauses.append(
+            "the eq. (4) friction rests on the ball set, and with it the steady power and "
+            "the drive torque"
+        )
+    if "pitch_diameter_mm" in est:
+        clauses.append(
+            "the pitch diameter is also r of eq. (3), so the reaction and through it the "
+            "life, the static safety and the SKF friction"
+        )
+    ratings = rating_outputs(b)
+    if ratings:
+        fields = [f for f in b.estimated if f in ("C_kN", "C0_kN", "f0")]
+        verb = "rests" if len(ratings) == 1 else "rest"
+        clauses.append(f"{_and(ratings)} {verb} on {_and(fields)}")
+    if est & {"ball_diameter_mm", "ball_count"}:
+        # eq. (4): the load terms go as 1 + 2·r_B/D_w = 2r/D_w, the centrifugal one as
+        # z·D_w³·r_B/D_w with z ∝ 1/D_w, i.e. about as D_w
+        clauses.append(
+            "a ball larger than the real one lowers eq. (4)'s load terms and raises its "
+            "centrifugal term, so whether the estimate errs low (unsafe) depends on the speed"
+        )
+    return "; ".join(clauses)
+
+
 def _warnings(req: Requirements, b: Bearing, angle: float) -> list[str]:
     """Estimated catalog values the result rests on; a contact angle other than the
     catalog's."""
     r = req.rotor
     warnings = []
     if b.estimated:
-        warnings.append(
-            f"bearing {b.designation}: {', '.join(b.estimated)} estimated (see the catalog "
-            "file for how); the life and the SKF friction rest on them"
-        )
+        warnings.append(estimate_warning(b))
     if r.contact_angle_deg is not None and b.contact_angle_deg and angle != b.contact_angle_deg:
         warnings.append(
             f"contact angle {angle:g}° given instead of the catalog's {b.contact_angle_deg:g}°"
