@@ -162,3 +162,24 @@ def test_without_a_slew_the_steady_torque_never_reaches_speed(mass_kg):
     slow = advise(parse_requirements(data)).design.rotor
     assert slow.steady_torque_Nm.with_reaction > slow.steady_torque_Nm.without_reaction
     assert math.isfinite(slow.run_up_time_at_steady_torque_s)
+
+
+def test_the_slew_plots_name_each_drive_torque():
+    """Both plots of a sustained slew (datasheet and wizard) draw the design's drive, held at
+    4453 rad/s (0.06563 N·m > 0.01935 N·m, the resistance with the reaction at speed), and a
+    drive limited to the steady torque without the reaction, 49.15 W / 4453 rad/s =
+    0.01104 N·m, which settles at 2784 rad/s; each line is named with its torque."""
+    from advisor.applications.spinning_rotor import plots, views
+    from advisor.core.report import plain
+
+    report = advise(read_requirements(GYRO))
+    sheet = plots.slew(plain(report))
+    labels = [line.label for line in sheet.lines]
+    assert labels == ["design drive, 0.06563 N·m", "drive sized without the reaction, 0.01104 N·m"]
+    assert set(sheet.lines[0].y) == {4453.0}
+    assert sheet.lines[0].x[-1] == sheet.lines[1].x[-1]
+    wizard = views.slew_plot(report.design.rotor)
+    assert [name for name, _, _ in wizard.series] == [
+        "design drive, 0.06563 N·m",
+        "sized without reaction, 0.01104 N·m",
+    ]

@@ -159,8 +159,9 @@ def _warnings(req: Requirements, b: Bearing, angle: float) -> list[str]:
 
 def advise_spinning_rotor(req: Requirements, cat: Catalogs, trace: Trace):
     """The bearing; the rotor's model (RO-03); the gyroscopic loads (RO-01); the steady
-    torques; the drive torque and run-up (RO-02); the slew with the drive sized on the steady
-    power; the bearing's rating. Returns the design's tables, its checks and its warnings."""
+    torques; the drive torque and run-up (RO-02); a sustained slew at the design's drive torque
+    and with a drive sized on the steady power without the reaction; the bearing's rating.
+    Returns the design's tables, its checks and its warnings."""
     r = req.rotor
     w = r.speed_rad_s
     b, angle = chosen_bearing(req, cat)
@@ -180,10 +181,15 @@ def advise_spinning_rotor(req: Requirements, cat: Catalogs, trace: Trace):
     )
     steady = steady_torques(rotor, loads, w)
     drive = run_up(req, rotor, steady, trace)
-    # the drive sized on the steady power without the reaction, saturated during a slew
-    slew = slew_loss(rotor, steady.calm_Nm, w, slew_duration(req))
+    duration = slew_duration(req)
+    # the design's drive (at least the steady torque with the reaction: it keeps the speed), and
+    # seed 002's fig. 4: a drive sized on the steady power without the reaction, saturated
+    slews = (
+        slew_loss(rotor, drive.required_torque_Nm, w, duration),
+        slew_loss(rotor, steady.calm_Nm, w, duration),
+    )
     rating = bearing_rating(req, cat, b, loads)
     checks = _checks(req, cat, b, rating, drive, steady.slewing_Nm)
     bearing = bearing_out(b, angle, w * RPM, loads, rating, cat)
-    out = rotor_out(req, loads, steady, drive, bearing, rating, slew)
+    out = rotor_out(req, loads, steady, drive, bearing, rating, slews)
     return RotorDesignOut.make(rotor=out), checks, _warnings(req, b, angle)

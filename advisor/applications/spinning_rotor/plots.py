@@ -24,22 +24,40 @@ def run_up(doc: dict) -> Plot | None:
 
 
 def slew(doc: dict) -> Plot | None:
-    """The rotor's speed in a sustained slew with the drive limited to the steady torque
-    without the gyroscopic reaction (seed 002)."""
-    s = at(doc, "design", "rotor", "slew")
-    curve = at(s, "curve")
-    if not isinstance(curve, dict) or not curve.get("time_s"):
+    """The rotor's speed in a sustained slew: at the design's drive torque (which holds it,
+    drawn flat) and with a drive limited to the steady torque without the gyroscopic reaction
+    (seed 002, fig. 4), each line labelled with its torque."""
+    rotor = at(doc, "design", "rotor")
+    design, sized = at(rotor, "slew"), at(rotor, "slew_if_sized_without_reaction")
+    if not isinstance(design, dict) or not isinstance(sized, dict):
         return None
-    settle = s.get("balance_speed_rad_s")
+    curves = [s.get("curve") or {} for s in (design, sized)]
+    end = max([c["time_s"][-1] for c in curves if c.get("time_s")], default=0.0)
+    if end <= 0.0:
+        return None  # neither loses speed: nothing to draw
+    names = ("design drive", "drive sized without the reaction")
+    lines = [
+        Line(f"{who}, {s['drive_torque_Nm']:.4g} N·m", *held_or_curve(s, c, end))
+        for s, c, who in zip((design, sized), curves, names, strict=True)
+    ]
+    settle = sized.get("balance_speed_rad_s")
     return Plot(
         "slew",
-        "Rotor speed in a sustained slew at the steady torque",
+        "Rotor speed in a sustained slew, by drive torque",
         "time, s",
         "speed, rad/s",
-        [Line("speed", curve["time_s"], curve["speed_rad_s"])],
+        lines,
         [],
         [(settle, f"settles at {settle:.4g} rad/s")] if settle is not None else [],
     )
+
+
+def held_or_curve(slew: dict, curve: dict, end_s: float) -> tuple[list[float], list[float]]:
+    """A slew's times and speeds: its curve, or its held speed drawn flat up to ``end_s``."""
+    if curve.get("time_s"):
+        return list(curve["time_s"]), list(curve["speed_rad_s"])
+    held = slew["speed_after_slew_rad_s"]
+    return [0.0, end_s], [held, held]
 
 
 #: The datasheet's plots of this application, in the datasheet's order.

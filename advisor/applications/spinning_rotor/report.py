@@ -55,12 +55,14 @@ class CurveOut(ReportTable):
 
 
 class SlewOut(ReportTable):
+    basis: str  # what the drive torque is
     drive_torque_Nm: float
     duration_s: float
     speed_after_slew_rad_s: float
     speed_drop_pct: float
     balance_speed_rad_s: float
-    curve: CurveOut
+    # absent where the drive holds the speed (the curve would be the one point)
+    curve: CurveOut | None = None
 
 
 class RotorOut(ReportTable):
@@ -89,7 +91,9 @@ class RotorOut(ReportTable):
     run_up_time_at_steady_torque_s: float | None = None
     bearing_life_h: float
     bearing: BearingOut
-    slew: SlewOut
+    slew: SlewOut  # at the design's drive torque
+    # seed 002's fig. 4: a drive limited to the steady torque without the reaction
+    slew_if_sized_without_reaction: SlewOut
     run_up: CurveOut
 
 

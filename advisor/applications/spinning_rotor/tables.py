@@ -65,15 +65,25 @@ def bearing_out(
     )
 
 
-def slew_out(slew: SlewLoss, speed: float) -> SlewOut:
-    """The speed lost in a sustained slew with the drive sized on the steady power."""
+#: What drives each slew of the report (the design's first).
+SLEW_BASIS = (
+    "the design's drive torque (RO-02)",
+    "a drive limited to the steady torque without the reaction (seed 002, fig. 4)",
+)
+
+
+def slew_out(slew: SlewLoss, speed: float, basis: str) -> SlewOut:
+    """The speed lost in a sustained slew at a drive torque, and what that torque is."""
     return SlewOut.make(
+        basis=basis,
         drive_torque_Nm=slew.drive_torque_Nm,
         duration_s=slew.duration_s,
         speed_after_slew_rad_s=slew.speed_after_rad_s,
         speed_drop_pct=100.0 * (1.0 - slew.speed_after_rad_s / speed),
         balance_speed_rad_s=slew.balance_speed_rad_s,
-        curve=CurveOut.make(time_s=slew.time_s, speed_rad_s=slew.speed_rad_s),
+        curve=CurveOut.make(time_s=slew.time_s, speed_rad_s=slew.speed_rad_s)
+        if len(slew.time_s) > 1
+        else None,
     )
 
 
@@ -88,9 +98,10 @@ def rotor_out(
     run_up: RunUp,
     bearing: BearingOut,
     rating: BearingRating,
-    slew: SlewLoss,
+    slews: tuple[SlewLoss, SlewLoss],
 ) -> RotorOut:
-    """The rotor's table: loads, friction, losses, drive torque, run-up and the slew."""
+    """The rotor's table: loads, friction, losses, drive torque, run-up and the slew at the
+    design's drive torque and at a drive sized without the reaction."""
     r = req.rotor
     w, n = r.speed_rad_s, r.bearing_count
     calm, slewing = loads.friction_calm.total_Nm, loads.friction_slewing.total_Nm
@@ -121,6 +132,7 @@ def rotor_out(
         run_up_time_at_steady_torque_s=run_up.time_at_steady_torque_s,
         bearing_life_h=rating.life_h,
         bearing=bearing,
-        slew=slew_out(slew, w),
+        slew=slew_out(slews[0], w, SLEW_BASIS[0]),
+        slew_if_sized_without_reaction=slew_out(slews[1], w, SLEW_BASIS[1]),
         run_up=CurveOut.make(time_s=run_up.curve_time_s, speed_rad_s=run_up.curve_speed_rad_s),
     )

@@ -50,10 +50,19 @@ def plots(report) -> list[PlotData]:
         "speed, rad/s",
         [("run-up", r.run_up.time_s, r.run_up.speed_rad_s)],
     )
-    slew = PlotData(
-        "Speed during a sustained slew",
-        "time, s",
-        "speed, rad/s",
-        [("sustained slew", r.slew.curve.time_s, r.slew.curve.speed_rad_s)],
-    )
-    return [run_up, slew]
+    return [run_up, slew_plot(r)]
+
+
+def slew_plot(r) -> PlotData:
+    """A sustained slew at the design's drive torque (held: drawn flat) and with a drive sized on
+    the steady power without the reaction (seed 002, fig. 4), each named with its torque."""
+    slews = ((r.slew, "design drive"), (r.slew_if_sized_without_reaction, "sized without reaction"))
+    end = max((s.curve.time_s[-1] for s, _ in slews if s.curve), default=1.0)
+    series = []
+    for s, who in slews:
+        if s.curve:
+            t, w = s.curve.time_s, s.curve.speed_rad_s
+        else:
+            t, w = [0.0, end], [s.speed_after_slew_rad_s] * 2
+        series.append((f"{who}, {s.drive_torque_Nm:.4g} N·m", t, w))
+    return PlotData("Speed during a sustained slew", "time, s", "speed, rad/s", series)
