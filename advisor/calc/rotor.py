@@ -449,11 +449,14 @@ class Rotor(NamedTuple):
 
     @property
     def couple_share(self) -> float:
-        """The share 1/⌊n/2⌋ of one pair's gyroscopic reaction one bearing carries [-].
+        """The share 1/⌊n/2⌋ of a support's gyroscopic reaction one bearing carries [-].
 
-        Seed 002's eq. (3) is the reaction of one pair of bearings, one a side of the centre
-        of mass. With n bearings, n/2 a side (duplex sets), the bearings of a side share
-        their side's force: each takes F(M)/(n/2) = F(2·M/n), eq. (3) being linear in M. An
+        Seed 002's eq. (3) is the force of one contact answering the whole moment, F = M/R
+        (fig. 1, "a rotor … in a bearing"), and its example loads each bearing of its pair
+        with it: each support takes F(M), so the pair carries 2·M, twice what equilibrium
+        needs for one bearing a side (kept as the seed's: conservative). With n bearings, n/2
+        a side (duplex sets), the bearings of a support share its force: each takes
+        F(M)/(n/2) = F(2·M/n), eq. (3) being linear in M. An
         odd n puts ⌊n/2⌋ on one side, whose bearings then carry F/⌊n/2⌋ each; every bearing
         is taken at that (the larger) share, so the friction of the other side's is
         overstated, never understated. The weight is shared by all n (``weight_share_N``)."""
@@ -646,7 +649,8 @@ def gyroscopic_loads(rotor: Rotor, moment: float, speed: float) -> GyroscopicLoa
     (19.1, 60.6)
     """
     balls, h, share = rotor.balls, rotor.plane_to_cg_m, rotor.weight_share_N
-    # one bearing answers its share of the couple: eq. (3) is one pair's, ⌊n/2⌋ bearings a side
+    # one bearing answers its share of a support's force: eq. (3) is each support's (the
+    # seed's reading, 2·M over a pair), ⌊n/2⌋ bearings a support
     m_one = moment * rotor.couple_share
     f_ax, f_rad = reaction_forces(m_one, balls.pitch_radius_m, h)
     calm = bearing_loads(share, 0.0, balls, h, speed)

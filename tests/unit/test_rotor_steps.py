@@ -107,13 +107,13 @@ def test_the_report_is_built_from_the_records(steps):
 
 @pytest.mark.parametrize(("count", "per_side"), [(2, 1), (3, 1), (4, 2), (6, 3), (8, 4)])
 def test_more_bearings_share_the_pairs_reaction(count, per_side):
-    """Seed 002's eq. (3) is one pair's reaction; n bearings stand n/2 a side (⌊n/2⌋ on the
+    """Seed 002's eq. (3) is each support's reaction; n bearings stand n/2 a side (⌊n/2⌋ on the
     smaller side of an odd count), and a side's bearings share its force.
 
     By hand for the example (M = H·Ω·sin α = 1.814·0.0765·1 = 0.138771 N·m, r = 6.6 mm,
     h = 10 mm, ωt = 0): r² + h² = 4.356e-5 + 1e-4 = 1.4356e-4 m²,
     F_ax = M·r/(r² + h²) = 0.138771·0.0066/1.4356e-4 = 6.37983 N,
-    F_rad = M·h/(r² + h²) = 0.138771·0.010/1.4356e-4 = 9.66641 N per pair; per bearing
+    F_rad = M·h/(r² + h²) = 0.138771·0.010/1.4356e-4 = 9.66641 N per support; per bearing
     F/⌊n/2⌋. The weight 0.56·9.80665 = 5.49172 N is shared n ways."""
     import tomllib
 
@@ -183,3 +183,16 @@ def test_the_slew_plots_name_each_drive_torque():
         "design drive, 0.06563 N·m",
         "sized without reaction, 0.01104 N·m",
     ]
+
+
+def test_each_bearing_of_a_pair_answers_the_whole_moment(steps):
+    """Seed 002's eq. (3) is one contact answering the whole moment (fig. 1, "a rotor in a
+    bearing"): the resultant F = √(F_ax² + F_rad²) = M/R at the lever R = √(r² + h²). Its
+    example loads each bearing of the pair with it; the advisor keeps that reading (a pair
+    carries 2·M, conservative against equilibrium with one bearing a side, M/(2R) each).
+    By hand: R = √(6.6² + 10²) mm = 11.9817 mm, F = 0.138771/0.0119817 = 11.5819 N, and
+    √(9.66641² + 6.37983²) = 11.5819 N; F·R = 0.138771 N·m = M, on each of the two."""
+    *_, loads = steps
+    resultant = math.hypot(loads.reaction_radial_N, loads.reaction_axial_N)
+    assert resultant == pytest.approx(11.5819, rel=1e-5)
+    assert resultant * math.hypot(0.0066, 0.010) == pytest.approx(loads.moment_Nm, rel=1e-12)

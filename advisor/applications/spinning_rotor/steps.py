@@ -92,8 +92,8 @@ def aero_k(req: Requirements) -> float:
 
 def rotor_model(req: Requirements, b: Bearing, angle_deg: float) -> Rotor:
     """Everything the motion equation (5) needs, in SI. The bearings share the weight, n
-    ways, and seed 002's eq. (3) reaction of one pair, ⌊n/2⌋ a side
-    (:attr:`advisor.calc.rotor.Rotor.couple_share`)."""
+    ways, and seed 002's eq. (3) reaction, the full force on each support as in the seed's
+    example, ⌊n/2⌋ bearings a support (:attr:`advisor.calc.rotor.Rotor.couple_share`)."""
     r = req.rotor
     return Rotor(
         inertia_kgm2=r.inertia,
