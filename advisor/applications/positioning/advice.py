@@ -16,6 +16,7 @@ from advisor.applications.positioning.report import (
     MotionOut,
     PositioningDesignOut,
 )
+from advisor.applications.positioning.stated import stated_up
 from advisor.calc import motion
 from advisor.calc.checks import Check
 from advisor.core.errors import InfeasibleError
@@ -71,10 +72,10 @@ def _smallest_meeting(
         i = held[fast].solution.ratio
         estimated = any(s.candidate.inertia_estimated for s in solved if s.name == fast)
         raise InfeasibleError(
-            f"no feasible design: no motor moves the load within {field} = {t_req:g} s",
+            f"no feasible design: no motor moves the load within {field} = {t_req:.10g} s",
             [
                 f"the fastest of {len(rows)} candidates, {fast}, takes "
-                f"{rows[fast].decisive_time_s:.4g} s at its optimal ratio i = {i:.4g}"
+                f"{stated_up(rows[fast].decisive_time_s):g} s at its optimal ratio i = {i:.4g}"
                 + (f" (its estimated inertia {band * 100:.0f} % higher)" if estimated else ""),
                 f"allow a longer {field}, or list stronger or faster motors in "
                 "[[positioning.motors]]",
@@ -187,7 +188,9 @@ def motion_out(
     """The report's motion table: the chosen motor's move, every candidate's beside it, and
     with a required time the fastest motor by the rule that chooses (MO-05: ``held``, an
     estimated inertia at the top of its band), so that the time it states is one the advisor
-    accepts."""
+    accepts: rounded up at the report's six digits (:func:`stated_up`). The transient time is
+    the start and stop of the move that happens: eq. (3)'s to full speed for a trapezoidal
+    graph, the whole move for a triangular one (it never reaches ω0)."""
     d, s = best.drive, best.solution
     decisive = {x.name: held[x.name].solution.move_time_s for x in solved}
     fastest = min(solved, key=lambda x: decisive[x.name])
@@ -196,14 +199,16 @@ def motion_out(
         ratio_i0=s.ratio_i0,
         k_factor=s.k_factor,
         coefficient_A=motion.coefficient_a(d, path),
-        transient_time_s=motion.transient_time(d, s.ratio),
+        transient_time_s=s.move_time_s
+        if s.profile == "triangular"
+        else motion.transient_time(d, s.ratio),
         profile_assumed=profile,
         profile_actual=s.profile,
         inertia_ratio=d.inertia_ratio,
         torque_ratio=d.torque_ratio,
         required_move_time_s=None if required is None else required[0],
         fastest_motor=None if required is None else fastest.name,
-        fastest_move_time_s=None if required is None else decisive[fastest.name],
+        fastest_move_time_s=None if required is None else stated_up(decisive[fastest.name]),
         candidates=[candidate_out(x) for x in sorted(solved, key=lambda x: x.solution.move_time_s)],
         curve=curve_out(d, path, s.ratio),
         **_solution_fields(s),

@@ -22,6 +22,7 @@ from advisor.applications.positioning.candidates import (
     decisive_inertia,
     inertia_is_estimate,
 )
+from advisor.applications.positioning.stated import shown_above, shown_apart, stated_up
 from advisor.calc.checks import Check
 from advisor.calc.duty import (
     DC_BRAKING_HEAT,
@@ -92,6 +93,15 @@ def start_heat(m, cycle_time_s: float, inertia_kgm2: float | None = None) -> Sta
     return StartHeat(z0, j_m, m.rated_torque_Nm, 3600.0 / cycle_time_s)
 
 
+def cooling_at_rest(heat: StartHeat | None) -> float:
+    """β0 of the cycle's equivalent torque (:func:`~advisor.calc.duty.rms_torque`): a catalog
+    induction motor (one with a start-heat budget) is self-ventilated, cooled by β0 =
+    ``STANDSTILL_COOLING`` at rest and (1 + β0)/2 in a ramp, as the linear duty takes the same
+    motors (Klyuchev, §11); a listed motor's cooling is not given, and its rated_torque_Nm is
+    taken as the continuous torque it holds in this cycle's cooling (β0 = 1)."""
+    return 1.0 if heat is None else STANDSTILL_COOLING
+
+
 def start_figures(h: StartHeat, d: Drive, path: float, i: float, t_cycle: float) -> StartFigures:
     """The starts the motor allows at ratio i: FI = (J_M + J_p/i²)/J_M, k_L = M_λ/(M_λ − M_p/i)
     (the start at M_λ against M_p/i), u the running copper heat — the RMS over the cycle with
@@ -122,10 +132,14 @@ def cycle(d: Drive, path_rad: float, i: float, cycle_time_s: float) -> list[Phas
     return phases
 
 
-def cycle_figures(d: Drive, path: float, t_cycle: float) -> Callable[[float], tuple[float, float]]:
+def cycle_figures(
+    d: Drive, path: float, t_cycle: float, standstill_cooling: float = 1.0
+) -> Callable[[float], tuple[float, float]]:
     """(move time [s], RMS torque over the cycle [N·m]) as a function of the ratio i, for one
     drive, path and cycle; the RMS is inf where the move does not fit in the cycle, both are
-    inf where the load cannot move (i ≤ m).
+    inf where the load cannot move (i ≤ m). ``standstill_cooling``: β0 of the equivalent
+    torque M_eq = √(Σ M²·t / Σ β·t) (β = β0 at rest, (1 + β0)/2 in a ramp, 1 at speed;
+    1: the plain RMS over the cycle).
 
     The figures of :func:`cycle` and :func:`~advisor.calc.duty.rms_torque` to the last bit
     (the same operations in the same order) without building the phases: the ratio scans
@@ -134,6 +148,8 @@ def cycle_figures(d: Drive, path: float, t_cycle: float) -> Callable[[float], tu
     the rest at zero torque."""
     speed, inertia, torque, load_inertia, load_torque = d
     speed_2, square = speed**2, torque**2
+    beta0 = standstill_cooling
+    beta_ramp = (1.0 + beta0) / 2.0
 
     def at(i: float) -> tuple[float, float]:
         load = load_torque / i
@@ -152,22 +168,34 @@ def cycle_figures(d: Drive, path: float, t_cycle: float) -> Callable[[float], tu
         if move > t_cycle:
             return move, math.inf
         num = square * t_accel + load**2 * t_run + square * t_brake
-        den = move + (t_cycle - move) if t_cycle - move > 0 else move  # with the rest, if any
+        rest = t_cycle - move
+        if beta0 == 1.0:
+            den = move + rest if rest > 0 else move  # with the rest, if any
+        else:
+            den = t_accel * beta_ramp + t_run + t_brake * beta_ramp
+            den = den + rest * beta0 if rest > 0 else den
         return move, math.sqrt(num / den)
 
     return at
 
 
-def move_and_rms(d: Drive, path: float, i: float, t_cycle: float) -> tuple[float, float]:
+def move_and_rms(
+    d: Drive, path: float, i: float, t_cycle: float, standstill_cooling: float = 1.0
+) -> tuple[float, float]:
     """:func:`cycle_figures` at one ratio i."""
-    return cycle_figures(d, path, t_cycle)(i)
+    return cycle_figures(d, path, t_cycle, standstill_cooling)(i)
 
 
-def _grid(d: Drive, fastest: float) -> list[float]:
+def _search_range(d: Drive, fastest: float) -> tuple[float, float]:
+    """The ratios searched: three decades either side of the fastest, above m."""
     lo = max(d.torque_ratio * (1.0 + 1e-6), RATIO_MIN, fastest / 1e3)
     hi = min(max(fastest * 1e3, lo * 10.0), RATIO_MAX)
-    n = 400
-    return [lo * (hi / lo) ** (k / n) for k in range(n + 1)]
+    return lo, hi
+
+
+def _log_points(a: float, b: float, n: int = 400) -> list[float]:
+    """n + 1 ratios from a to b (both included), spaced evenly on log i."""
+    return [a * (b / a) ** (k / n) for k in range(n + 1)]
 
 
 def _refine(f, a: float, b: float, n: int = 80) -> float:
@@ -183,6 +211,43 @@ def _refine(f, a: float, b: float, n: int = 80) -> float:
     return a
 
 
+def fitting_window(
+    at: Callable[[float], tuple[float, float]], d: Drive, t_cycle: float, fastest: float
+) -> tuple[float, float]:
+    """The ratios whose move fits in the cycle, [lo, hi] within the range searched.
+
+    The move time t(i) of seed 003's law is unimodal in i, least at the fastest ratio and
+    growing without bound as i → m and as i → ∞ (eqs. (3)–(4); checked on dense grids over six
+    decades of every input), so the ratios that fit are one interval around the fastest and
+    each end is the root of t(i) = t_cycle on its side, found by bisection on log i. The
+    fastest ratio must fit (t(fastest) ≤ t_cycle); an end of the range searched that fits is
+    the window's end."""
+    lo, hi = _search_range(d, fastest)
+
+    def fits(i: float) -> bool:
+        return at(i)[0] <= t_cycle
+
+    a = lo if fits(lo) else _refine(fits, fastest, lo)
+    b = hi if fits(hi) else _refine(fits, fastest, hi)
+    return a, b
+
+
+def _nearest_passing(ok, fastest: float, edge: float, seed: float | None = None) -> float | None:
+    """The passing ratio nearest the fastest (which fails) between it and ``edge``: the first
+    of 200 ratios spaced evenly on log i that passes, walking out from the fastest, then
+    bisection back towards it. ``seed``: a ratio known to pass, among the points if it lies on
+    this side, so that a passing set narrower than the points' step is not missed."""
+    points = _log_points(fastest, edge, 200)[1:]
+    if seed is not None and min(fastest, edge) <= seed <= max(fastest, edge):
+        points = sorted([*points, seed], key=lambda i: abs(math.log(i / fastest)))
+    previous = fastest
+    for i in points:
+        if ok(i):
+            return _refine(ok, i, previous)
+        previous = i
+    return None
+
+
 def fastest_passing(
     d: Drive,
     path: float,
@@ -190,13 +255,16 @@ def fastest_passing(
     rated: float,
     fastest: float,
     heat: StartHeat | None = None,
+    standstill_cooling: float = 1.0,
 ) -> tuple[float, float] | None:
     """The fastest ratio whose cycle passes (move fits, RMS ≤ rated, and with a start-heat
     budget the starts per hour within those allowed): (ratio, move time). The unconstrained
-    optimum when it passes; otherwise a constraint binds, and the best ratio lies on the
-    boundary of the passing set, found by bisection from a grid."""
-
-    at = cycle_figures(d, path, t_cycle)
+    optimum when it passes; otherwise a constraint binds, and since the move time grows on
+    each side of the fastest ratio (:func:`fitting_window`), the best ratio is the passing one
+    nearest the fastest on one side, on the boundary of the passing set. Where no point of the
+    walk passes, the ratio of least RMS torque seeds it (:func:`least_rms`): if that passes,
+    a passing ratio exists and is found, however narrow the passing set."""
+    at = cycle_figures(d, path, t_cycle, standstill_cooling)
 
     def starts_ok(i: float) -> bool:
         if heat is None:
@@ -211,47 +279,34 @@ def fastest_passing(
 
     if ok(fastest):
         return fastest, at(fastest)[0]
-    grid = _grid(d, fastest)
-    moves, flags = [], []  # each grid point evaluated once: its move time and its verdict
-    for i, (t, r) in zip(grid, map(at, grid), strict=True):
-        moves.append(t)
-        flags.append(t <= t_cycle and r <= rated and starts_ok(i))
-    best: tuple[float, float] | None = None
-    for k, i in enumerate(grid):
-        if not flags[k]:
-            continue
-        if best is None or moves[k] < best[1]:
-            best = (i, moves[k])
-        edges = []
-        if k > 0 and not flags[k - 1]:
-            edges.append(_refine(ok, i, grid[k - 1]))
-        if k + 1 < len(grid) and not flags[k + 1]:
-            edges.append(_refine(ok, i, grid[k + 1]))
-        for c in edges:
-            t = at(c)[0]
-            if t < best[1]:
-                best = (c, t)
-    return best
+    edges = fitting_window(at, d, t_cycle, fastest)
+    found = [_nearest_passing(ok, fastest, e) for e in edges]
+    if all(i is None for i in found):
+        seed = least_rms(d, path, t_cycle, fastest, standstill_cooling)[0]
+        if ok(seed):
+            found = [_nearest_passing(ok, fastest, e, seed) for e in edges]
+    times = [(at(i)[0], i) for i in found if i is not None]
+    if not times:
+        return None
+    t, i = min(times)
+    return i, t
 
 
-def least_rms(d: Drive, path: float, t_cycle: float, fastest: float) -> tuple[float, float]:
-    """The ratio of least RMS torque over the cycle among those whose move fits: a grid, then
-    a golden-section search on log i around the grid's minimum, or, where the minimum lies
-    at the edge of the fitting ratios (the move filling the whole cycle), bisection on that
-    edge."""
-    at = cycle_figures(d, path, t_cycle)
-    grid = _grid(d, fastest)
+def least_rms(
+    d: Drive, path: float, t_cycle: float, fastest: float, standstill_cooling: float = 1.0
+) -> tuple[float, float]:
+    """The ratio of least RMS torque over the cycle among those whose move fits, and that
+    RMS: the window of fitting ratios (:func:`fitting_window`, the fastest ratio inside it),
+    401 ratios across it, then a golden-section search on log i around the least of them (an
+    end of the window is itself a point: a minimum where the move fills the whole cycle is
+    found exactly). ``fastest``: the ratio of the fastest move, which must fit."""
+    at = cycle_figures(d, path, t_cycle, standstill_cooling)
+    grid = _log_points(*fitting_window(at, d, t_cycle, fastest))
     vals = [rms for _, rms in map(at, grid)]
     k = min(range(len(grid)), key=vals.__getitem__)
     best = (grid[k], vals[k])
-    for j in (k - 1, k + 1):
-        if 0 <= j < len(grid) and math.isinf(vals[j]):
-            edge = _refine(lambda i: at(i)[0] <= t_cycle, grid[k], grid[j])
-            r = at(edge)[1]
-            if r < best[1]:
-                best = (edge, r)
-    if 0 < k < len(grid) - 1 and math.isfinite(vals[k - 1]) and math.isfinite(vals[k + 1]):
-        a, b = math.log(grid[k - 1]), math.log(grid[k + 1])
+    a, b = math.log(grid[max(k - 1, 0)]), math.log(grid[min(k + 1, len(grid) - 1)])
+    if a < b:
         f = lambda x: at(math.exp(x))[1]  # noqa: E731
         x = golden_min(f, a, b, iterations=100)
         if f(x) < best[1]:
@@ -274,6 +329,7 @@ class CycleAtRatio:
     min_rms_torque_Nm: float
     starts: StartFigures | None = None  # a catalog induction motor's starts (DU-06)
     inertia_estimated: bool = False  # the drive's J0 is the catalog's estimate raised (MO-05)
+    standstill_cooling: float = 1.0  # β0 of the RMS torque (:func:`cooling_at_rest`)
 
     @property
     def utilisation(self) -> float:
@@ -287,11 +343,12 @@ class CycleAtRatio:
 def most_starts(
     d: Drive, path: float, t_cycle: float, rated: float, fastest: float, heat: StartHeat
 ) -> tuple[float, float]:
-    """The most starts per hour the motor allows at any ratio of the grid whose cycle
-    passes the torques (move fits, RMS ≤ rated), and that ratio; (0, fastest) where none."""
-    at = cycle_figures(d, path, t_cycle)
+    """The most starts per hour the motor allows at any of 401 ratios across those whose move
+    fits (:func:`fitting_window`) whose RMS torque passes (with the catalog motor's standstill
+    cooling β0), and that ratio; (0, fastest) where none."""
+    at = cycle_figures(d, path, t_cycle, STANDSTILL_COOLING)
     best = (0.0, fastest)
-    for i in _grid(d, fastest):
+    for i in _log_points(*fitting_window(at, d, t_cycle, fastest)):
         t, r = at(i)
         if t <= t_cycle and r <= rated:
             z = start_figures(heat, d, path, i, t_cycle).allowed_starts_per_hour
@@ -306,7 +363,7 @@ def _starts_fail(
     """A motor whose torques pass the cycle at some ratio but whose starts do not at any."""
     i_fast = s.solution.ratio
     z, i = most_starts(s.drive, path, t_cycle, rated, i_fast, heat)
-    t_fast = move_and_rms(s.drive, path, i_fast, t_cycle)[0]
+    t_fast = move_and_rms(s.drive, path, i_fast, t_cycle, STANDSTILL_COOLING)[0]
     need = heat.starts_per_hour
     return CycleFit(t_fast, i_fast, False, f"{need:.4g} starts/h > {z:.4g} allowed"), (
         f"motor {s.name}: {need:.4g} starts/h (a direct-on-line start and an electric stop "
@@ -326,30 +383,37 @@ def fit_cycle(
     """A motor against the cycle: at the fastest ratio whose cycle passes, its move time and
     whether it passes (the move fits, the RMS torque within the rated one, with a start-heat
     budget the starts per hour within those allowed, and with a required time the move meets
-    it); where it fails, the reason the infeasible report gives."""
+    it); where it fails, the reason the infeasible report gives. A catalog induction motor
+    (``heat`` given) is self-ventilated: its RMS torque is weighted by β0 at rest
+    (:func:`standstill_cooling`)."""
     name, d, i_fast = s.name, s.drive, s.solution.ratio
-    t_fast, rms_fast = move_and_rms(d, path, i_fast, cycle_time_s)
+    beta0 = cooling_at_rest(heat)
+    t_fast, rms_fast = move_and_rms(d, path, i_fast, cycle_time_s, beta0)
     if t_fast > cycle_time_s:
         return CycleFit(t_fast, i_fast, False, "the move does not fit in the cycle"), (
-            f"motor {name}: its fastest move takes {t_fast:.4g} s (i = {i_fast:.4g}), "
-            f"longer than duty.cycle_time_s = {cycle_time_s:g} s"
+            f"motor {name}: its fastest move takes {shown_above(t_fast, cycle_time_s)} s "
+            f"(i = {i_fast:.4g}), longer than duty.cycle_time_s = {cycle_time_s:.10g} s"
         )
-    found = fastest_passing(d, path, cycle_time_s, rated, i_fast, heat)
-    if found is None and heat is not None and fastest_passing(d, path, cycle_time_s, rated, i_fast):
+    found = fastest_passing(d, path, cycle_time_s, rated, i_fast, heat, beta0)
+    if (
+        found is None
+        and heat is not None
+        and fastest_passing(d, path, cycle_time_s, rated, i_fast, None, beta0)
+    ):
         return _starts_fail(s, rated, path, cycle_time_s, heat)
     if found is None:
-        i_min, rms_min = least_rms(d, path, cycle_time_s, i_fast)
+        i_min, rms_min = least_rms(d, path, cycle_time_s, i_fast, beta0)
         return CycleFit(t_fast, i_fast, False, f"RMS {rms_fast:.4g} > {rated:.4g} N·m"), (
             f"motor {name}: RMS torque {rms_fast:.4g} N·m at its fastest ratio "
-            f"{i_fast:.4g}, and at least {rms_min:.4g} N·m at any ratio (i = {i_min:.4g}), "
-            f"against its rated torque {rated:.4g} N·m"
+            f"{i_fast:.4g}, and at least {shown_above(rms_min, rated)} N·m at any ratio "
+            f"(i = {i_min:.4g}), against its rated torque {rated:.4g} N·m"
         )
     i, t = found
     if required_s is not None and t > required_s:
         return CycleFit(t, i, False, f"move > {required_s:g} s required"), (
             f"motor {name}: its move at the ratio that passes the cycle, i = "
-            f"{i:.4g}, takes {t:.4g} s, longer than the required "
-            f"{required_s:g} s"
+            f"{i:.4g}, takes {shown_above(t, required_s)} s, longer than the required "
+            f"{required_s:.10g} s"
         )
     return CycleFit(t, i, True, ""), None
 
@@ -424,19 +488,42 @@ def cycle_at(
     and, with a start-heat budget, its starts."""
     phases = cycle(s.drive, path, i, cycle_time_s)
     assert phases is not None
-    i_min, rms_min = least_rms(s.drive, path, cycle_time_s, s.solution.ratio)
+    beta0 = cooling_at_rest(heat)
+    i_min, rms_min = least_rms(s.drive, path, cycle_time_s, s.solution.ratio, beta0)
     return CycleAtRatio(
         motor=s.name,
         drive=s.drive,
         ratio=i,
         phases=phases,
         move_time_s=sum(p.time_s for p in phases if p.name != "rest"),
-        rms_torque_Nm=rms_torque(phases),
+        rms_torque_Nm=rms_torque(phases, beta0),
         rated_torque_Nm=rated,
         min_rms_ratio=i_min,
         min_rms_torque_Nm=rms_min,
         starts=None if heat is None else start_figures(heat, s.drive, path, i, cycle_time_s),
         inertia_estimated=s.candidate.inertia_estimated,
+        standstill_cooling=beta0,
+    )
+
+
+def _thermal_basis(c: CycleAtRatio) -> str:
+    """DU-04's basis: the equivalent torque of the cycle and the cooling it is weighted by."""
+    head = (
+        f"the motor's rated (S1) torque {c.rated_torque_Nm:.4g} N·m; the phases M_λ, M_p/i, M_λ "
+        "of seed 003, then rest at zero torque (the load resists motion only)."
+    )
+    if c.standstill_cooling == 1.0:
+        return (
+            f"RMS torque over the cycle √(Σ M²·t / T) = {c.rms_torque_Nm:.4g} N·m against {head} "
+            "A listed motor's cooling is not given: it is taken as at speed throughout (β0 = 1), "
+            "rated_torque_Nm being the continuous torque it holds in this cycle's cooling."
+        )
+    beta0 = c.standstill_cooling
+    return (
+        f"Equivalent torque over the cycle √(Σ M²·t / Σ β·t) = {c.rms_torque_Nm:.4g} N·m against "
+        f"{head} The catalog's induction motor is self-ventilated (IP44): β = {beta0:g} at rest, "
+        f"{(1.0 + beta0) / 2.0:g} in the ramps, 1 at speed (β0 = {beta0:g}, as the linear duty "
+        "and the starts check take it; Klyuchev, §11)."
     )
 
 
@@ -454,11 +541,7 @@ def explain_cycle(c: CycleAtRatio, trace: Trace) -> bool:
     trace.apply(
         rules.duty.thermal,
         c.utilisation,
-        f"RMS torque over the cycle √(Σ M²·t / T) = {c.rms_torque_Nm:.4g} N·m against the "
-        f"motor's rated (S1) torque {c.rated_torque_Nm:.4g} N·m; the phases M_λ, M_p/i, M_λ of "
-        "seed 003, then rest at zero torque (the load resists motion only). The motor's cooling "
-        "is taken as at speed throughout (β0 = 1): rated_torque_Nm is the continuous torque it "
-        "holds in this cycle's cooling.",
+        _thermal_basis(c),
     )
     trace.apply(
         rules.duty.peak,
@@ -488,11 +571,68 @@ def explain_cycle(c: CycleAtRatio, trace: Trace) -> bool:
     return trace.apply(rules.duty.inertia_ratio, c.inertia_ratio)
 
 
+@dataclass(frozen=True, slots=True)
+class AtFastest:
+    """The chosen motor's cycle at its fastest ratio: what a warning compares the built ratio
+    with where the cycle moved it."""
+
+    ratio: float
+    move_time_s: float
+    rms_torque_Nm: float
+    allowed_starts_per_hour: float | None  # a catalog induction motor's (DU-06)
+
+
+def at_fastest(s: Solved, path: float, cycle_time_s: float, heat: StartHeat | None) -> AtFastest:
+    """The motor's move, RMS torque and allowed starts at its fastest ratio."""
+    i = s.solution.ratio
+    t, rms = move_and_rms(s.drive, path, i, cycle_time_s, cooling_at_rest(heat))
+    z = None if heat is None else start_figures(heat, s.drive, path, i, cycle_time_s)
+    return AtFastest(i, t, rms, None if z is None else z.allowed_starts_per_hour)
+
+
+def _ratio_moved(c: CycleAtRatio, fast: AtFastest) -> str:
+    """Why the cycle's ratio is not the fastest: the checks that fail at the fastest, the one
+    at its limit at the built ratio (the lowest margin: the limit that moved it), and the size
+    of the change, in ratio and in move time."""
+    rms_margin = c.rated_torque_Nm / c.rms_torque_Nm if c.rms_torque_Nm > 0 else math.inf
+    z = c.starts
+    starts_margin = math.inf if z is None else z.allowed_starts_per_hour / z.starts_per_hour
+    there = []
+    if fast.rms_torque_Nm > c.rated_torque_Nm:
+        there.append(
+            f"the RMS torque {fast.rms_torque_Nm:.4g} N·m exceeds the rated "
+            f"{c.rated_torque_Nm:.4g} N·m (DU-04)"
+        )
+    if z is not None and fast.allowed_starts_per_hour < z.starts_per_hour:
+        there.append(
+            f"the motor allows {fast.allowed_starts_per_hour:.4g} starts/h, fewer than the "
+            f"{z.starts_per_hour:.4g} the cycle asks (DU-06)"
+        )
+    if starts_margin < rms_margin:
+        limit = (
+            f"the starts it allows equal those asked, so its starts margin is {starts_margin:.3f}"
+        )
+    else:
+        limit = f"the RMS torque equals the rated one, so its thermal margin is {rms_margin:.3f}"
+    r = c.ratio / fast.ratio
+    if abs(r - 1.0) < 0.5:
+        ratio = f"the ratio {abs(r - 1.0) * 100:.3g} % {'larger' if r > 1 else 'smaller'}"
+    else:
+        ratio = f"the ratio {r:.3g} times the fastest"
+    slower = (c.move_time_s / fast.move_time_s - 1.0) * 100
+    move, move_fast = shown_apart(c.move_time_s, fast.move_time_s)
+    return (
+        f"there {' and '.join(there) or 'the cycle does not pass'}; i is the ratio nearest the "
+        f"fastest where {limit} by construction — {ratio}, the move {move} s against "
+        f"{move_fast} s ({slower:+.3g} %)"
+    )
+
+
 def cycle_warnings(
-    c: CycleAtRatio, within: bool, seed_best: str, fastest_ratio: float, sized: bool
+    c: CycleAtRatio, within: bool, seed_best: str, fast: AtFastest, sized: bool
 ) -> list[str]:
     """What the reader of the cycle must know: a hard-to-tune inertia ratio, a motor or a
-    ratio other than the single move's."""
+    ratio other than the single move's (``fast``: the chosen motor at its fastest ratio)."""
     warnings = []
     if not within:
         warnings.append(
@@ -506,15 +646,11 @@ def cycle_warnings(
             f"duty: the cycle chooses motor {c.motor}, not {single} of the single move "
             "(design.motion), which does not pass the cycle"
         )
-    elif abs(c.ratio / fastest_ratio - 1.0) > 1e-9:
+    elif abs(c.ratio / fast.ratio - 1.0) > 1e-9:
         raised = f" (its estimated inertia {INERTIA_BAND * 100:.0f} % higher)"
         warnings.append(
             f"duty: the cycle needs i = {c.ratio:.4g}, not the fastest ratio "
-            f"{fastest_ratio:.4g}{raised if c.inertia_estimated else ''}: there the RMS torque "
-            "exceeds the rated torque; i is the ratio "
-            "nearest the fastest where the RMS torque equals the rated one, so its thermal "
-            "margin is 1.000 by construction — a ratio a little larger runs cooler at almost "
-            "the same move time"
+            f"{fast.ratio:.4g}{raised if c.inertia_estimated else ''}: {_ratio_moved(c, fast)}"
         )
     return warnings
 
@@ -571,7 +707,7 @@ def duty_out(c: CycleAtRatio, cycle_time_s: float, choice: CycleChoice | None = 
     if choice is not None and choice.fastest_motor is not None:
         fastest = {
             "fastest_motor": choice.fastest_motor,
-            "fastest_move_time_s": choice.fastest_move_time_s,
+            "fastest_move_time_s": stated_up(choice.fastest_move_time_s),
         }
     return DutyOut.make(
         motor=c.motor,
@@ -656,7 +792,8 @@ def advise_duty(
     best, i = choice.motor, choice.ratio
     c = cycle_at(best, i, rated[best.name], path, cycle_time_s, heats.get(best.name))
     within = explain_cycle(c, trace)
-    warnings = cycle_warnings(c, within, seed_best, best.solution.ratio, required_s is not None)
+    fast = at_fastest(best, path, cycle_time_s, heats.get(best.name))
+    warnings = cycle_warnings(c, within, seed_best, fast, required_s is not None)
     return duty_out(c, cycle_time_s, choice), cycle_checks(c, cycle_time_s), warnings
 
 

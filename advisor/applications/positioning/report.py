@@ -1,5 +1,6 @@
 """Report tables of the positioning drive (imported only on that path)."""
 
+from advisor.applications.positioning.stated import stated_up
 from advisor.core.report import ReportTable
 from advisor.duty.report import DutyOut
 from rules.motion import INERTIA_BAND
@@ -66,7 +67,7 @@ def _fastest_time(motion) -> str:
     estimate counted higher (MO-05), said so."""
     t = motion.fastest_move_time_s
     nominal = next(c.move_time_s for c in motion.candidates if c.name == motion.fastest_motor)
-    if t == nominal:
+    if t == stated_up(nominal):  # the stated time is rounded up (stated_up): a given inertia
         return f"{t:.4g} s"
     return f"{t:.4g} s with its estimated inertia {INERTIA_BAND * 100:.0f} % higher"
 
