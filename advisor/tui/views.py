@@ -136,7 +136,10 @@ def infeasible(exc) -> Text:
     for c in getattr(exc, "checks", []):
         if not c.passed:
             text.append_text(
-                plain("\nTo be feasible: " + shortfall(c.name, c.value, c.limit, c.unit, c.margin))
+                plain(
+                    "\nTo be feasible: "
+                    + shortfall(c.name, c.value, c.limit, c.unit, c.margin, c.id)
+                )
             )
     return text
 

@@ -86,10 +86,29 @@ def test_a_design_that_fails_its_checks_says_what_it_would_take():
 
 
 def test_shortfall_by_hand():
-    # buckling: 5 MN against 3138 N: margin 6.276e-4; 5e6 / 3138 = 1593.37 times the capacity
+    # buckling: 5 MN against 3138 N: margin 6.276e-4; 5e6 / 3138 = 1593.37 times the capacity;
+    # the demand must fall by 1 − 6.276e-4 = 99.937 %, not to nothing ("100 %")
     text = shortfall("buckling", 5e6, 3138.0, "N", 3138.0 / 5e6)
     assert text.startswith("buckling: 5e+06 N against the limit 3138 N (margin 0.001): ")
-    assert "159237 % more capacity" in text and "100 % less demand" in text
+    assert "159237 % more capacity" in text and "99.94 % less demand" in text
+    # a margin a hair below 1 (1 − 8.6e-13) misses by 8.6e-11 %, not "0 %"
+    tiny = shortfall("speed", 1.0, 1.0, "rpm", 1.0 - 8.6e-13)
+    assert "8.6e-11 % more capacity, or 8.6e-11 % less demand" in tiny
+
+
+def test_a_life_shortfall_is_said_in_the_load_and_the_rating():
+    """L10h ∝ (C/P)³ (ISO 281:2007, eq. (1), ball bearings): a life of 0.004776 h against
+    1000 h (margin 4.776e-6) needs P lower by 1 − (4.776e-6)^(1/3) = 1 − 0.016840 = 98.3 %,
+    or C higher by 1/0.016840 − 1 = 58.38 → 5838 %; not "100 % less demand" (a required life
+    of nothing). Other checks keep the capacity/demand wording."""
+    m = 0.004776 / 1000.0
+    text = shortfall("basic rating life L10h", 0.004776, 1000.0, "h", m, "bearing_life")
+    assert text.endswith("the load P lower by 98 %, or the rating C higher by 5838 %")
+    assert "less demand" not in text
+    same = shortfall("output bearing L10h", 500.0, 1000.0, "h", 0.5, "output_bearing_life")
+    assert same.endswith("the load P lower by 21 %, or the rating C higher by 26 %")
+    other = shortfall("static safety", 0.5, 1.0, "", 0.5, "bearing_static")
+    assert other.endswith("100 % more capacity, or 50 % less demand")
 
 
 def test_many_files_write_the_infeasible_report_beside_the_designs(tmp_path, capsys):
