@@ -25,6 +25,8 @@ COLUMNS = (
     "mass_kg",
     "outer_diameter_mm",
     "losses_W",
+    "required_torque_Nm",
+    "bearing_life_h",
     "screw_thread",
     "one_way",
     "lowest_margin",

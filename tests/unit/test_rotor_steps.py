@@ -196,3 +196,17 @@ def test_each_bearing_of_a_pair_answers_the_whole_moment(steps):
     resultant = math.hypot(loads.reaction_radial_N, loads.reaction_axial_N)
     assert resultant == pytest.approx(11.5819, rel=1e-5)
     assert resultant * math.hypot(0.0066, 0.010) == pytest.approx(loads.moment_Nm, rel=1e-12)
+
+
+def test_a_rotor_family_row_has_the_drive_torque_and_the_life():
+    """designs.csv of a rotor family: the drive torque that sizes the drive, 0.06563 N·m for
+    the example (RO-02: the 30 s run-up, above the 86.15 W / 4453 rad/s = 0.01935 N·m that
+    holds speed), and one bearing's L10h = 10⁶/(60·42523)·(4427/22.56)³ = 2.97e6 h (ISO 281,
+    P = 0.44·12.41 + 1.47·11.63 = 22.56 N), beside the steady power 86.15 W."""
+    from advisor.core.report import plain
+    from advisor.family.outputs import key_outputs
+
+    row = key_outputs(plain(advise(read_requirements(GYRO))))
+    assert row["required_torque_Nm"] == pytest.approx(0.06563, rel=1e-4)
+    assert row["bearing_life_h"] == pytest.approx(2.97e6, rel=2e-3)
+    assert row["losses_W"] == pytest.approx(86.15, rel=1e-4)
