@@ -117,6 +117,40 @@ def rating_life_h(b: Bearing, load_N: float, speed_rpm: float) -> float:
     return 1e6 / (60.0 * speed_rpm) * (b.C_kN * 1e3 / load_N) ** 3
 
 
+#: Weibull slope of ball-bearing fatigue (Lundberg–Palmgren; SKF General Catalogue, system life).
+BALL_WEIBULL_SLOPE = 10.0 / 9.0
+
+
+def set_life_h(life_h: float, bearings: int, slope: float = BALL_WEIBULL_SLOPE) -> float:
+    """The L10 life of a set of equal bearings at equal loads: the time by which 10 % of such
+    sets have lost a bearing.
+
+        L_set = (Σ L_i^(−e))^(−1/e) = L·n^(−1/e)
+
+    Parameters
+    ----------
+    life_h : float
+        L10h of one bearing [h]
+    bearings : int
+        Bearings in the set, n [-], ≥ 1
+    slope : float
+        Weibull slope e [-]; 10/9 for ball bearings
+
+    Returns
+    -------
+    float
+        L10h of the set [h]; a pair of ball bearings 0.536·L
+
+    References
+    ----------
+    SKF General Catalogue, system life; Lundberg–Palmgren.
+
+    >>> round(set_life_h(1000.0, 2), 1)
+    535.9
+    """
+    return life_h * bearings ** (-1.0 / slope)
+
+
 def static_safety(b: Bearing, radial_N: float, axial_N: float) -> float:
     """s0 = C0/P0 with P0 = max(F_r, 0.5·F_r + 0.46·F_a) for 15° angular contact, 0.6/0.5 for
     deep groove (ISO 76 / SKF catalogue).

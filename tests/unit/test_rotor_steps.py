@@ -210,3 +210,26 @@ def test_a_rotor_family_row_has_the_drive_torque_and_the_life():
     assert row["required_torque_Nm"] == pytest.approx(0.06563, rel=1e-4)
     assert row["bearing_life_h"] == pytest.approx(2.97e6, rel=2e-3)
     assert row["losses_W"] == pytest.approx(86.15, rel=1e-4)
+
+
+def test_the_life_is_each_bearings_and_the_sets_is_beside_it():
+    """The life check is one bearing's L10h (every bearing of the rotor at the same loads);
+    the set of n fails when its first bearing does: L_set = (Σ L_i^(−e))^(−1/e) = L·n^(−1/e),
+    e = 10/9 for ball bearings (SKF, system life). The example's pair: 2965960 h ×
+    2^(−0.9) = 2965960 × 0.535887 = 1589420 h."""
+    data = _gyro_data()
+    data["rotor"]["required_life_h"] = 1000
+    from advisor.core.reading import parse_requirements
+
+    report = advise(parse_requirements(data))
+    r = report.design.rotor
+    assert r.bearing_set_life_h == pytest.approx(r.bearing_life_h * 0.535887, rel=1e-6)
+    assert r.bearing_set_life_h == pytest.approx(1589420, rel=1e-5)
+    (life,) = [c for c in report.checks if c.id == "bearing_life"]
+    assert "of each bearing" in life.name and life.value == r.bearing_life_h
+
+
+def _gyro_data() -> dict:
+    import tomllib
+
+    return tomllib.loads(GYRO.read_text(encoding="utf-8"))

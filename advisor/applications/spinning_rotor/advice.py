@@ -80,7 +80,7 @@ def _checks(
         checks.append(
             Check(
                 "bearing_life",
-                "basic rating life L10h under the gyroscopic load",
+                "basic rating life L10h of each bearing under the gyroscopic load",
                 rating.life_h,
                 r.required_life_h,
                 "h",

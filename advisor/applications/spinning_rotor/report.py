@@ -89,7 +89,8 @@ class RotorOut(ReportTable):
     # absent when the steady torque only equals the resistance at speed (no slew): the rotor
     # then approaches the speed without ever reaching it
     run_up_time_at_steady_torque_s: float | None = None
-    bearing_life_h: float
+    bearing_life_h: float  # each bearing's L10h
+    bearing_set_life_h: float  # the set's: 10 % of sets lose a bearing (e = 10/9)
     bearing: BearingOut
     slew: SlewOut  # at the design's drive torque
     # seed 002's fig. 4: a drive limited to the steady torque without the reaction

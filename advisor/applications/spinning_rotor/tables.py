@@ -11,6 +11,7 @@ from advisor.applications.spinning_rotor.report import (
     SlewOut,
 )
 from advisor.applications.spinning_rotor.steps import RPM, BearingRating, RunUp
+from advisor.calc.bearing_life import set_life_h
 from advisor.calc.rotor import FrictionParts, GyroscopicLoads, Loads, SlewLoss, SteadyTorques
 from advisor.core.cite import text
 from advisor.core.reading import Requirements
@@ -131,6 +132,7 @@ def rotor_out(
         run_up_time_s=run_up.time_s,
         run_up_time_at_steady_torque_s=run_up.time_at_steady_torque_s,
         bearing_life_h=rating.life_h,
+        bearing_set_life_h=set_life_h(rating.life_h, n),
         bearing=bearing,
         slew=slew_out(slews[0], w, SLEW_BASIS[0]),
         slew_if_sized_without_reaction=slew_out(slews[1], w, SLEW_BASIS[1]),
