@@ -289,3 +289,18 @@ def test_a_triangular_moves_transient_time_is_the_move():
     assert motion.transient_time_s == motion.move_time_s
     assert motion.transient_time_s == pytest.approx(0.119027, abs=1e-6)
     assert "0.119 s" in headline(advise(parse_requirements(req)))
+
+
+def test_a_least_rms_a_hair_above_the_rating_reads_above_it():
+    """Rated 14.99684 N·m, cycle 2 s: the least M_eq over the ratios that fit, by a dense scan
+    by hand, is 14.99699 N·m near i = 19.01, above the rating by 1e-5 relative: refused. At
+    four digits both read 15, which says 'at least 15 against 15'; the two are written with
+    the digits that tell them apart."""
+    rms_min, i_min = _hand_least_rms(2.0, 17.0, 21.0)
+    assert rms_min == pytest.approx(14.99699, abs=2e-5)
+    assert 14.99684 < rms_min and 18.9 < i_min < 19.1
+    with pytest.raises(InfeasibleError) as err:
+        advise(parse_requirements(_motor_c(2.0, 14.99684)))
+    why = " ".join(err.value.reasons)
+    assert "at least 14.997 N·m at any ratio" in why
+    assert "against its rated torque 14.9968 N·m" in why
