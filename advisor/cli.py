@@ -120,16 +120,14 @@ def _check_output(output: Path, req_path: Path) -> None:
     check_target(output)
 
 
-def _advise_or_why(req: Any, catalog_dir: Path | None, why_wanted: bool) -> tuple[Any, Any]:
+def _advise_or_why(req: Any, catalog_dir: Path | None) -> tuple[Any, Any]:
     """(report, None), or (a report saying why, the InfeasibleError) when no design is
-    feasible and ``why_wanted`` (a file or a datasheet asked for); else the error is raised."""
+    feasible: written where a design's report would be, in every format."""
     from advisor.core.engine import advise
 
     try:
         return advise(req, catalog_dir), None
     except InfeasibleError as exc:
-        if not why_wanted:  # nothing asked for but the exit code and why
-            raise
         from advisor.infeasible import infeasible_report
 
         return infeasible_report(req, exc), exc
@@ -202,7 +200,7 @@ def run_batch(
     if output is not None:
         _check_output(output, req_path)
     req = read_requirements(req_path)
-    report, infeasible = _advise_or_why(req, catalog_dir, output is not None or fmt != "toml")
+    report, infeasible = _advise_or_why(req, catalog_dir)
     _warn_ignored(report.warnings)
     text = _text(report, fmt)
     if text is None:

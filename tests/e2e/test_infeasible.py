@@ -35,10 +35,17 @@ def test_the_example_exits_3_and_writes_its_report(tmp_path, capsys):
     assert any(r.startswith("Tr100x20: buckling between supports") for r in d["reasons"])
 
 
-def test_without_output_nothing_is_written_on_stdout(capsys):
+def test_without_output_the_report_goes_to_stdout(tmp_path, capsys):
+    """As a design's TOML does, and as --format json and md already did: the report saying
+    why is on stdout, the reasons on stderr, exit 3 (`advisor --batch f.toml > r.toml` wrote
+    an empty r.toml)."""
     assert main(["--batch", str(EXAMPLE)]) == ExitCode.INFEASIBLE
     io = capsys.readouterr()
-    assert io.out == "" and "no feasible design" in io.err
+    assert "no feasible design" in io.err
+    assert tomllib.loads(io.out)["report"]["status"] == "infeasible"
+    out = tmp_path / "r.toml"
+    assert main(["--batch", str(EXAMPLE), "-o", str(out)]) == ExitCode.INFEASIBLE
+    assert io.out == out.read_text(encoding="utf-8")
 
 
 @pytest.mark.parametrize("fmt", ["md", "html"])
