@@ -86,6 +86,7 @@ def ignored(req: Any) -> list[str]:
             IGNORED_PREFIX + "the [one_way] table, because application.hold_without_power = "
             "false: no holding device is chosen (set it true to choose one)"
         )
+    out += _unused_priority(req)
     duty = getattr(req, "duty", None)
     out += _unused_rated_torques(req, duty)
     if duty is not None and hasattr(duty, "duty_type"):
@@ -101,6 +102,23 @@ def ignored(req: Any) -> list[str]:
                 + ("it" if len(unused) == 1 else "them")
             )
     return out
+
+
+def _unused_priority(req: Any) -> list[str]:
+    """``one_way.priority`` with a named ``one_way.type``: the priority ranks the devices only
+    for the automatic choice (rule OW-02), so a named type leaves it unused."""
+    one_way = getattr(req, "one_way", None)
+    if (
+        one_way is None
+        or "priority" not in one_way.model_fields_set
+        or getattr(one_way, "type", "auto") == "auto"
+        or not req.application.hold_without_power
+    ):
+        return []
+    return [
+        IGNORED_PREFIX + f"one_way.priority, because one_way.type = {one_way.type!r} names "
+        "the device: the priority ranks the devices only for type = 'auto'"
+    ]
 
 
 def _unused_rated_torques(req: Any, duty: Any) -> list[str]:
