@@ -75,6 +75,21 @@ class WizardPilot:
         await self.settle(pilot, start)
         await pilot.pause()
 
+    @staticmethod
+    async def export_report(pilot, target: Path) -> None:
+        """ctrl+s, the report's path typed into the export screen, saved, the screen gone."""
+        from textual.widgets import Input
+
+        from advisor.tui.screens.export import ExportScreen
+
+        await pilot.press("ctrl+s")
+        await pilot.pause()
+        assert isinstance(pilot.app.screen, ExportScreen)
+        pilot.app.screen.query_one("#export-path", Input).value = str(target)
+        await pilot.click("#save-report")
+        await pilot.pause()
+        assert not isinstance(pilot.app.screen, ExportScreen)
+
 
 @pytest.fixture
 def wizard(tmp_path, monkeypatch):

@@ -14,7 +14,7 @@ from advisor.core.engine import advise
 from advisor.core.reading import read_requirements
 from advisor.core.report import to_toml
 from advisor.tui import draft as drafts
-from advisor.tui.app import ConfirmScreen, DriveAdvisorApp, ExportScreen
+from advisor.tui.app import ConfirmScreen, DriveAdvisorApp
 
 #: the shared Pilot set-up (tests/conftest.py): own drafts, no animation, a temporary cwd
 pytestmark = pytest.mark.usefixtures("wizard")
@@ -58,14 +58,8 @@ async def test_each_example_exports_the_batch_report(example, tmp_path, wizard):
     app = DriveAdvisorApp(tomllib.loads(src.read_text(encoding="utf-8")), src, save_drafts=False)
     async with app.run_test(size=SIZE) as pilot:
         await wizard.compute(pilot)
-        await pilot.press("ctrl+s")
-        await pilot.pause()
-        assert isinstance(app.screen, ExportScreen)
         target = tmp_path / "out.report.toml"
-        app.screen.query_one("#export-path", Input).value = str(target)
-        await pilot.click("#save-report")
-        await pilot.pause()
-        assert not isinstance(app.screen, ExportScreen)
+        await wizard.export_report(pilot, target)
     assert target.read_text(encoding="utf-8") == to_toml(advise(read_requirements(src)))
 
 
@@ -79,13 +73,8 @@ async def test_export_offers_the_batch_formats(suffix, tmp_path, wizard):
     app = DriveAdvisorApp(tomllib.loads(src.read_text(encoding="utf-8")), src, save_drafts=False)
     async with app.run_test(size=SIZE) as pilot:
         await wizard.compute(pilot)
-        await pilot.press("ctrl+s")
-        await pilot.pause()
         target = tmp_path / f"design{suffix}"
-        app.screen.query_one("#export-path", Input).value = str(target)
-        await pilot.click("#save-report")
-        await pilot.pause()
-        assert not isinstance(app.screen, ExportScreen)
+        await wizard.export_report(pilot, target)
     expected = render(advise(read_requirements(src)), format_of(target))
     assert target.read_text(encoding="utf-8") == expected
 

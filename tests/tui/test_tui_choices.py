@@ -7,13 +7,13 @@ import tomllib
 
 import pytest
 from helpers import EXAMPLES
-from textual.widgets import Input, Select, Static
+from textual.widgets import Select, Static
 
 from advisor.core.engine import advise
 from advisor.core.reading import read_requirements
 from advisor.core.report import to_toml
 from advisor.tui import fields
-from advisor.tui.app import DriveAdvisorApp, ExportScreen
+from advisor.tui.app import DriveAdvisorApp
 
 #: the shared Pilot set-up (tests/conftest.py): own drafts, no animation, a temporary cwd
 pytestmark = pytest.mark.usefixtures("wizard")
@@ -57,14 +57,8 @@ async def test_picking_s1_enters_the_duty_and_the_export_is_the_batchs(tmp_path,
         review = wizard.text(app.query_one("#review-text", Static))
         assert "[duty]" in review and 'duty_type = "S1"' in review
         await wizard.compute(pilot)
-        await pilot.press("ctrl+s")
-        await pilot.pause()
-        assert isinstance(app.screen, ExportScreen)
         target = tmp_path / "out.report.toml"
-        app.screen.query_one("#export-path", Input).value = str(target)
-        await pilot.click("#save-report")
-        await pilot.pause()
-        assert not isinstance(app.screen, ExportScreen)
+        await wizard.export_report(pilot, target)
     # the batch's report of the same file with the S1 written by hand
     by_hand = tmp_path / "s1.toml"
     by_hand.write_text(LINEAR.read_text(encoding="utf-8") + '\n[duty]\nduty_type = "S1"\n')

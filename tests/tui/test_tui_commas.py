@@ -16,7 +16,7 @@ from advisor.core.reading import read_requirements
 from advisor.core.report import to_toml
 from advisor.tui import draft as drafts
 from advisor.tui import fields
-from advisor.tui.app import DriveAdvisorApp, ExportScreen
+from advisor.tui.app import DriveAdvisorApp
 
 #: the shared Pilot set-up (tests/conftest.py): own drafts, no animation, a temporary cwd
 pytestmark = pytest.mark.usefixtures("wizard")
@@ -173,12 +173,7 @@ async def test_a_loaded_comma_item_is_fixed_in_its_box_and_computed_as_the_batch
         await pilot.pause()
         assert not wizard.text(app.query_one(f"{BOX}-err", Static)).strip()
         await wizard.compute(pilot)
-        await pilot.press("ctrl+s")
-        await pilot.pause()
-        assert isinstance(app.screen, ExportScreen)
         target = tmp_path / "out.report.toml"
-        app.screen.query_one("#export-path", Input).value = str(target)
-        await pilot.click("#save-report")
-        await pilot.pause()
+        await wizard.export_report(pilot, target)
     assert app.doc["motor"]["candidate_speeds_rpm"] == [3000.0, 3500.0]
     assert target.read_text(encoding="utf-8") == to_toml(advise(read_requirements(fixed)))

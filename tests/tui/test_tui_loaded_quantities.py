@@ -12,7 +12,7 @@ from advisor.core.reading import read_requirements
 from advisor.core.report import to_toml
 from advisor.tui import draft as drafts
 from advisor.tui import fields
-from advisor.tui.app import DriveAdvisorApp, ExportScreen
+from advisor.tui.app import DriveAdvisorApp
 
 #: the shared Pilot set-up (tests/conftest.py): own drafts, no animation, a temporary cwd
 pytestmark = pytest.mark.usefixtures("wizard")
@@ -46,13 +46,8 @@ async def test_a_list_of_speeds_with_units_is_kept_and_computed_as_the_batch(
         assert shown == speeds.strip("[]").replace('"', "")
         assert not wizard.text(app.query_one("#f-motor-candidate-speeds-rpm-err", Static)).strip()
         await wizard.compute(pilot)
-        await pilot.press("ctrl+s")
-        await pilot.pause()
-        assert isinstance(app.screen, ExportScreen)
         target = tmp_path / "out.report.toml"
-        app.screen.query_one("#export-path", Input).value = str(target)
-        await pilot.click("#save-report")
-        await pilot.pause()
+        await wizard.export_report(pilot, target)
     assert target.read_text(encoding="utf-8") == to_toml(advise(read_requirements(src)))
 
 
